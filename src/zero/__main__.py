@@ -1,0 +1,3 @@
+from zero.cli import main
+
+main()

@@ -1,0 +1,110 @@
+"""Findings: severity, location, message and an optional fix.
+
+This module imports nothing else from zero, so every other module can use it.
+Lines and columns are 1-based; ``end_column`` is exclusive (one past the last
+character), so a span of width zero marks a position between two characters.
+"""
+
+from __future__ import annotations
+
+import enum
+from dataclasses import dataclass, field
+
+
+class Severity(enum.IntEnum):
+    """How bad a finding is. Ordered so that ``max()`` gives the worst."""
+
+    INFO = 1
+    WARNING = 2
+    ERROR = 3
+
+    @property
+    def label(self) -> str:
+        return self.name.lower()
+
+    @classmethod
+    def parse(cls, text: str) -> Severity:
+        try:
+            return cls[text.strip().upper()]
+        except KeyError:
+            raise ValueError(f"unknown severity {text!r} (use error, warning or info)") from None
+
+
+@dataclass(frozen=True, slots=True)
+class Span:
+    """A region of a file: 1-based line and column, end column exclusive."""
+
+    line: int
+    column: int
+    end_line: int
+    end_column: int
+
+    @classmethod
+    def on_line(cls, line: int, start: int, end: int) -> Span:
+        """A span on one line from 0-based character offsets ``start``..``end``."""
+        return cls(line, start + 1, line, max(end, start) + 1)
+
+
+@dataclass(frozen=True, slots=True)
+class Edit:
+    """Replace the text of ``span`` with ``replacement``."""
+
+    span: Span
+    replacement: str
+
+
+@dataclass(frozen=True, slots=True)
+class Fix:
+    """A change that resolves a finding. ``safe`` fixes keep what the controller reads."""
+
+    title: str
+    edits: tuple[Edit, ...] = ()
+    safe: bool = True
+
+    def to_json(self) -> dict[str, object]:
+        return {
+            "title": self.title,
+            "safe": self.safe,
+            "edits": [
+                {
+                    "line": e.span.line,
+                    "column": e.span.column,
+                    "end_line": e.span.end_line,
+                    "end_column": e.span.end_column,
+                    "replacement": e.replacement,
+                }
+                for e in self.edits
+            ],
+        }
+
+
+@dataclass(frozen=True, slots=True)
+class Diagnostic:
+    """One finding. ``hint`` is a one-line suggestion shown under the source line."""
+
+    code: str
+    severity: Severity
+    message: str
+    span: Span
+    path: str = "-"
+    param_id: str | None = None
+    fix: Fix | None = None
+    hint: str | None = field(default=None, compare=False)
+
+    def sort_key(self) -> tuple[str, int, int, str]:
+        return (self.path, self.span.line, self.span.column, self.code)
+
+    def to_json(self) -> dict[str, object]:
+        """The JSON contract of ``--output-format json``: exactly these keys."""
+        return {
+            "path": self.path,
+            "line": self.span.line,
+            "column": self.span.column,
+            "end_line": self.span.end_line,
+            "end_column": self.span.end_column,
+            "code": self.code,
+            "severity": self.severity.label,
+            "message": self.message,
+            "param_id": self.param_id,
+            "fix": self.fix.to_json() if self.fix is not None else None,
+        }

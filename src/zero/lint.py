@@ -1,0 +1,145 @@
+"""Run the rules over a document: select, stamp severity, sort.
+
+Everything the ``zero lint`` command does is callable from here.
+"""
+
+from __future__ import annotations
+
+import os
+from collections.abc import Iterable, Iterator
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from zero.diagnostics import Diagnostic, Severity
+from zero.model import Document
+from zero.registry import Registry, default_registry
+from zero.rules import CHECKS, RULES
+from zero.rules.base import Context, Resolved, read_value
+from zero.tokenizer import tokenize
+
+LIST_SUFFIXES = (".lis", ".lst")
+MAX_FILE_BYTES = 256 * 1024 * 1024
+
+
+class ZeroError(Exception):
+    """A usage or I/O problem: reported in one line, exit code 2."""
+
+
+@dataclass(slots=True)
+class LintOptions:
+    select: tuple[str, ...] = ()  # code prefixes; empty = all
+    ignore: tuple[str, ...] = ()
+    kind: str | None = None  # force the list kind
+
+
+@dataclass(slots=True)
+class LintResult:
+    path: str
+    document: Document
+    kind: str | None
+    diagnostics: list[Diagnostic] = field(default_factory=list)
+
+    @property
+    def worst(self) -> Severity | None:
+        return max((d.severity for d in self.diagnostics), default=None)
+
+
+def selected_rules(options: LintOptions) -> dict[str, Severity]:
+    """Code → severity of every rule the options enable (longest prefix wins)."""
+    out: dict[str, Severity] = {}
+    for code, r in RULES.items():
+        sel = max((len(p) for p in options.select if code.startswith(p)), default=-1)
+        ign = max((len(p) for p in options.ignore if code.startswith(p)), default=-1)
+        if options.select and sel < 0:
+            continue
+        if ign > sel:
+            continue
+        out[code] = r.severity
+    return out
+
+
+def build_context(doc: Document, registry: Registry, kind: str | None,
+                  severities: dict[str, Severity]) -> Context:
+    entries = doc.entries
+    if kind is None:
+        kind = registry.detect_kind((e.key.pattern for e in entries if e.key), doc.path)
+    ctx = Context(doc, registry, kind, severities, entries)
+    for e in entries:
+        if e.key is None:
+            continue
+        via_alias = False
+        spec = registry.by_pattern(e.key.pattern, kind)
+        if spec is None:
+            spec = registry.alias(e.key.pattern, kind)
+            via_alias = spec is not None
+        if spec is None or e.value_kind is None:
+            continue
+        res = Resolved(e, spec, read_value(spec, e), via_alias)
+        ctx.resolved.append(res)
+        ctx.by_id.setdefault(spec.id, {})[e.key.indices] = res
+    return ctx
+
+
+def lint_document(doc: Document, registry: Registry | None = None,
+                  options: LintOptions | None = None) -> LintResult:
+    registry = registry or default_registry()
+    options = options or LintOptions()
+    severities = selected_rules(options)
+    ctx = build_context(doc, registry, options.kind, severities)
+    found = [d for check in CHECKS for d in check(ctx) if d.code in severities]
+    found.sort(key=Diagnostic.sort_key)
+    return LintResult(doc.path, doc, ctx.kind, found)
+
+
+def lint_bytes(data: bytes, path: str = "-", registry: Registry | None = None,
+               options: LintOptions | None = None) -> LintResult:
+    return lint_document(tokenize(data, path), registry, options)
+
+
+def read_file(path: str | Path) -> bytes:
+    """Read a list file; :class:`ZeroError` with a one-line reason on failure."""
+    p = Path(path)
+    try:
+        size = p.stat().st_size
+        if size > MAX_FILE_BYTES:
+            raise ZeroError(f"{path}: file is {size} bytes, larger than the "
+                            f"{MAX_FILE_BYTES // (1024 * 1024)} MiB zero reads")
+        return p.read_bytes()
+    except FileNotFoundError:
+        raise ZeroError(f"{path}: no such file") from None
+    except IsADirectoryError:
+        raise ZeroError(f"{path}: is a directory") from None
+    except PermissionError:
+        raise ZeroError(f"{path}: permission denied") from None
+    except OSError as exc:
+        raise ZeroError(f"{path}: {exc.strerror or exc}") from None
+
+
+def lint_file(path: str | Path, registry: Registry | None = None,
+              options: LintOptions | None = None) -> LintResult:
+    return lint_bytes(read_file(path), str(path), registry, options)
+
+
+def collect_files(paths: Iterable[str | Path]) -> list[Path]:
+    """Files named explicitly, plus ``*.lis``/``*.lst`` below named directories (sorted)."""
+    out: list[Path] = []
+    for raw in paths:
+        p = Path(raw)
+        if p.is_dir():
+            found: list[Path] = []
+            for root, dirs, files in os.walk(p):
+                dirs[:] = sorted(d for d in dirs if not d.startswith("."))
+                found.extend(Path(root) / f for f in files if f.lower().endswith(LIST_SUFFIXES))
+            out.extend(sorted(found))
+        elif p.exists():
+            out.append(p)
+        else:
+            raise ZeroError(f"{raw}: no such file or directory")
+    return out
+
+
+def lint_paths(paths: Iterable[str | Path], registry: Registry | None = None,
+               options: LintOptions | None = None) -> Iterator[LintResult]:
+    registry = registry or default_registry()
+    for p in collect_files(paths):
+        yield lint_file(p, registry, options)

@@ -1,0 +1,226 @@
+"""M rules: what the values of one list mean together, as the manuals define it."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+from zero.diagnostics import Diagnostic, Severity, Span
+from zero.ranges import TYPE_LIMITS, Number
+from zero.rules.base import Context, Resolved, Rule, rule
+
+E, W, I = Severity.ERROR, Severity.WARNING, Severity.INFO
+
+SWE_NEG, SWE_POS, SWE_TOL = "P-AXIS-00177", "P-AXIS-00178", "P-AXIS-00179"
+SWE_BEHAVIOUR, SWE_CHECK = "P-AXIS-00554", "P-AXIS-00705"
+OFFSET_NEG, OFFSET_POS = "P-AXIS-00137", "P-AXIS-00138"
+AXIS_TYPE = "P-AXIS-00018"
+G53_AVAILABLE, DEFAULT_INDEX, OFFSET, INACTIVE = (
+    "P-ZERO-00001", "P-ZERO-00002", "P-ZERO-00003", "P-ZERO-00004",
+)
+
+RULES: dict[str, Rule] = {
+    r.code: r
+    for r in (
+        rule("M001", "soft-limits-inverted", E, "The negative soft limit is not below the positive one",
+             """
+What it checks: `kenngr.swe_neg` < `kenngr.swe_pos` (P-AXIS-00177 < P-AXIS-00178), with
+the default for whichever of the two the list does not set.
+
+Why it matters on the machine: each limit's range is defined against the other, so the
+start-up check rejects them and puts in the defaults (±10 m): the axis runs with soft
+limits that no longer protect it.
+
+Example: `kenngr.swe_neg 5000000` with `kenngr.swe_pos -5000000`
+Fix: swap or correct the values.
+"""),
+        rule("M002", "g53-offset-no-effect", W, "Offsets in group 0 while G53 cancels all offsets",
+             """
+What it checks: non-zero `np_grp[0].achse[j].versch` while `g53_verfuegbar` is 0 or absent.
+
+Why it matters on the machine: with `g53_verfuegbar` 0, G53 (G159=0) deselects every zero
+offset; the values of group 0 are never applied. Someone expecting G53 to shift the axis
+will cut in the wrong place.
+
+Fix: set `g53_verfuegbar 1` if group 0 is meant as a full offset set, or clear the values.
+"""),
+        rule("M003", "masked-offset", I, "A non-zero offset masked by `inaktiv 1`",
+             """
+What it checks: `np_grp[i].achse[j].versch` ≠ 0 while `np_grp[i].achse[j].inaktiv` is 1.
+
+Why it matters on the machine: the offset is not applied when the group is selected.
+That can be intended (the ZERO manual's own example masks offsets), so this is
+information: make sure it is.
+
+Fix: set `inaktiv 0` to apply the offset, or set the offset to 0.
+"""),
+        rule("M004", "default-index-empty", W, "`default_index` selects a group the list does not fill",
+             """
+What it checks: `default_index` n > 0 while the list has no `np_grp[n]` entry.
+
+Why it matters on the machine: group n is active after every program start (instead of
+G53); with no data in the list it holds whatever the controller has, usually zeros —
+probably not the offsets the engineer meant to activate.
+
+Fix: point `default_index` at the intended group, or add its offsets.
+"""),
+        rule("M005", "soft-limit-check-off", W, "Soft-limit monitoring switched off (`swe_check 0`)",
+             """
+What it checks: `kenngr.swe_check` (P-AXIS-00705) set to 0.
+
+Why it matters on the machine: 0 switches soft-limit monitoring off whatever the axis
+type and mode; the axis can travel into its hardware limits or into the machine.
+
+Fix: use -1 (monitoring by axis type, the default) or 1.
+"""),
+        rule("M006", "soft-limit-warning-only", W, "Overrunning a soft limit only warns (`swe_behaviour WARNING`)",
+             """
+What it checks: `kenngr.swe_behaviour` (P-AXIS-00554) set to WARNING.
+
+Why it matters on the machine: path planning and the position controller then only warn
+when a soft limit is overrun; the movement is not stopped by the monitoring.
+
+Fix: use ERROR (default) or ERROR_LR.
+"""),
+        rule("M007", "manual-offset-check-off", W, "Both manual-mode offset limits 0: monitoring off",
+             """
+What it checks: `handbetrieb.offsetgrenze_neg` and `handbetrieb.offsetgrenze_pos`
+(P-AXIS-00137/00138) both 0.
+
+Why it matters on the machine: with both at 0 the manual-mode offset monitoring is off;
+for an axis that is not homed these limits are the only range limit in manual mode.
+
+Fix: set real limits (defaults ±100 mm).
+"""),
+        rule("M008", "soft-limit-tolerance-overflow", W, "Soft limit plus tolerance leaves the SGN32 range",
+             """
+What it checks: `swe_pos + swe_toleranz` above MAX(SGN32), or `swe_neg - swe_toleranz`
+below MIN(SGN32).
+
+Why it matters on the machine: actual positions are monitored against the limits widened
+by the tolerance; a sum that does not fit the position type makes that monitoring
+meaningless or wraps around.
+
+Fix: reduce the tolerance or move the limit inward.
+"""),
+    )
+}
+
+
+def length_text(value: Number, rotary: bool | None = None) -> str:
+    """0.1 µm / 0.0001° units as mm or degrees (both when the axis type is unknown)."""
+    scaled = value / 10000
+    shown = f"{scaled:.4f}".rstrip("0").rstrip(".")
+    if rotary is None:
+        return f"{shown} mm (or °)"
+    return f"{shown} °" if rotary else f"{shown} mm"
+
+
+def _rotary(ctx: Context) -> bool | None:
+    res = ctx.value_of(AXIS_TYPE)
+    if res is None or res.value.number is None:
+        return None if ctx.kind != "AXIS" else False
+    return int(res.value.number) in (2,)
+
+
+def _span(res: Resolved) -> Span:
+    e = res.entry
+    return Span.on_line(e.line, e.value_start, e.value_end)
+
+
+def check_soft_limits(ctx: Context) -> Iterator[Diagnostic]:
+    """M001, M005, M006, M007, M008."""
+    neg, pos = ctx.value_of(SWE_NEG), ctx.value_of(SWE_POS)
+    rotary = _rotary(ctx)
+    if neg is not None or pos is not None:
+        n, p = ctx.number_of(SWE_NEG), ctx.number_of(SWE_POS)
+        if n is not None and p is not None and n >= p:
+            at = max((r for r in (neg, pos) if r is not None), key=lambda r: r.entry.line)
+            yield ctx.report(
+                "M001",
+                _span(at),
+                f"negative soft limit {length_text(n, rotary)} is not below the positive "
+                f"{length_text(p, rotary)}: the controller rejects the limits and falls back "
+                "to the defaults (±10 m), so they no longer protect the axis",
+                param_id=at.spec.id,
+            )
+        tol = ctx.number_of(SWE_TOL)
+        lo, hi = TYPE_LIMITS["SGN32"]
+        if tol is not None and p is not None and pos is not None and p + tol > hi:
+            yield ctx.report(
+                "M008", _span(pos),
+                f"swe_pos + swe_toleranz = {p + tol} exceeds MAX(SGN32): the actual-position "
+                "limit cannot be represented", param_id=SWE_POS,
+            )
+        if tol is not None and n is not None and neg is not None and n - tol < lo:
+            yield ctx.report(
+                "M008", _span(neg),
+                f"swe_neg - swe_toleranz = {n - tol} is below MIN(SGN32): the actual-position "
+                "limit cannot be represented", param_id=SWE_NEG,
+            )
+    check = ctx.value_of(SWE_CHECK)
+    if check is not None and check.value.number == 0:
+        yield ctx.report(
+            "M005", _span(check),
+            "`swe_check 0` switches soft-limit monitoring off for this axis, whatever its type",
+            param_id=SWE_CHECK,
+        )
+    behaviour = ctx.value_of(SWE_BEHAVIOUR)
+    if behaviour is not None and behaviour.value.text == "WARNING":
+        yield ctx.report(
+            "M006", _span(behaviour),
+            "`swe_behaviour WARNING`: overrunning a soft limit only warns, the axis is not stopped",
+            param_id=SWE_BEHAVIOUR,
+        )
+    oneg, opos = ctx.value_of(OFFSET_NEG), ctx.value_of(OFFSET_POS)
+    if (oneg is not None and opos is not None
+            and oneg.value.number == 0 and opos.value.number == 0):
+        at = max(oneg, opos, key=lambda r: r.entry.line)
+        yield ctx.report(
+            "M007", _span(at),
+            "both manual-mode offset limits are 0: the controller does not monitor the offset "
+            "in manual mode",
+            param_id=at.spec.id,
+        )
+
+
+def check_zero_offsets(ctx: Context) -> Iterator[Diagnostic]:
+    """M002, M003, M004."""
+    offsets = ctx.by_id.get(OFFSET, {})
+    if not offsets and ctx.value_of(DEFAULT_INDEX) is None:
+        return
+    g53 = ctx.number_of(G53_AVAILABLE)
+    for idx, res in sorted(offsets.items(), key=lambda kv: kv[1].entry.line):
+        value = res.value.number
+        if not value:
+            continue
+        if idx[:1] == (0,) and not g53:
+            yield ctx.report(
+                "M002", _span(res),
+                f"offset {length_text(value)} in group 0 has no effect: `g53_verfuegbar` is "
+                f"{'0' if ctx.value_of(G53_AVAILABLE) else 'absent'}, so G53 cancels all offsets",
+                param_id=OFFSET,
+            )
+        mask = ctx.value_of(INACTIVE, idx)
+        if mask is not None and mask.value.number == 1:
+            yield ctx.report(
+                "M003", _span(res),
+                f"offset {length_text(value)} of axis {idx[1] if len(idx) > 1 else '?'} in group "
+                f"{idx[0]} is masked by `inaktiv 1` on line {mask.entry.line}: it is not applied",
+                param_id=OFFSET,
+            )
+    default = ctx.value_of(DEFAULT_INDEX)
+    if default is not None and default.value.number:
+        group = int(default.value.number)
+        has = any(i[:1] == (group,) for slot in (OFFSET, INACTIVE)
+                  for i in ctx.by_id.get(slot, {}))
+        if not has:
+            gcode = f"G{53 + group}" if group <= 6 else f"G159={group}"
+            yield ctx.report(
+                "M004", _span(default),
+                f"`default_index {group}` activates group {group} ({gcode}) after every program "
+                "start, but this list has no entry for that group",
+                param_id=DEFAULT_INDEX,
+            )
+
+
+CHECKS = (check_soft_limits, check_zero_offsets)

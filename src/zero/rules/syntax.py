@@ -1,0 +1,243 @@
+"""S rules: how the controller reads a line, before any parameter meaning."""
+
+from __future__ import annotations
+
+from collections.abc import Iterator
+
+from zero.diagnostics import Diagnostic, Edit, Fix, Severity, Span
+from zero.model import CommentStyle, Problem, ValueKind
+from zero.rules.base import Context, Rule, rule
+
+E, W, I = Severity.ERROR, Severity.WARNING, Severity.INFO
+
+RULES: dict[str, Rule] = {
+    r.code: r
+    for r in (
+        rule("S001", "malformed-line", E, "A line that is neither an entry, a comment nor blank",
+             """
+What it checks: the first word of a line must be a key made of members and indices
+(`name[n].name`); a line like `*****` or `np_grp[1.achse` is not.
+
+Why it matters on the machine: the controller cannot assign such a line to any
+parameter and does not take it over; whatever it was meant to set keeps its default.
+
+Example: `*****  decorative line`
+Fix: turn it into a comment (`# *****`) or correct the key.
+"""),
+        rule("S002", "missing-value", E, "A key without a value",
+             """
+What it checks: every entry needs a value after its key.
+
+Why it matters on the machine: the entry sets nothing; the parameter keeps its
+default value at start-up, which is rarely what the engineer who wrote the key meant.
+
+Example: `kenngr.swe_pos`
+Fix: write the value (`kenngr.swe_pos 15000000`) or delete the line.
+"""),
+        rule("S003", "unterminated-quote", E, "A quoted string value without its closing quote",
+             """
+What it checks: a value that starts with `"` must end with `"` on the same line.
+
+Why it matters on the machine: the controller cannot tell where the string ends; the
+entry is faulty and the parameter falls back to its default.
+
+Example: `example[0].name "STRING_WITH_COMMENT( # /*`
+Fix: close the quote: `example[0].name "STRING_WITH_COMMENT( # /*)"`.
+"""),
+        rule("S004", "key-whitespace", E, "Whitespace inside a key",
+             """
+What it checks: a key is one word; `np_grp[0].achse[1]. inaktiv 0` (from the ZERO
+manual's own example) has a blank after the dot.
+
+Why it matters on the machine: the controller reads the key up to the first blank,
+so it sees the unknown key `np_grp[0].achse[1].` with the value `inaktiv`. The entry
+is not taken over and the parameter keeps its default — for `inaktiv 1` the offset
+stays active although the list says it is masked. zero reads the joined key for its
+other checks, so that one slip gives one finding.
+
+Example: `np_grp[0].achse[1]. inaktiv 0`
+Fix: remove the blank (safe fix): `np_grp[0].achse[1].inaktiv 0`.
+"""),
+        rule("S005", "hash-no-space", W, "`#` not followed by a space",
+             """
+What it checks: a full-line comment is `#` followed by a space (a lone `#` or `#`
+and a tab are accepted too). Vendor lists comment out parameters as `#key value`.
+
+Why it matters on the machine: the manual requires the space; without it the
+controller may read the line as an entry with the unknown key `#key`, and warn at
+start-up. If the parameter was meant to be disabled, that is what happens anyway,
+but the warning hides real ones.
+
+Example: `#m_default_outp_ax_name[0]   X`
+Fix: insert a space after `#` (safe fix): `# m_default_outp_ax_name[0]   X`.
+"""),
+        rule("S006", "string-comment", W, "A comment after a string value that does not start with `(`",
+             """
+What it checks: after a value of a STRING parameter only `(` starts a comment; a
+blank, `#` or `/*` does not (the manual's rule). Numeric values may be followed by
+any comment.
+
+Why it matters on the machine: the controller may take the words after the string as
+part of the value, or reject the entry and use the default.
+
+Example: `kopf.log_achs_name  X_Achse  # main axis`
+Fix: start the comment with `(`: `kopf.log_achs_name  X_Achse  ( main axis`.
+"""),
+        rule("S007", "undecodable", E, "Bytes that are not valid in the file's encoding",
+             """
+What it checks: a list is UTF-8 (with or without BOM) or Windows-1252/Latin-1 as a
+whole. A byte that is invalid UTF-8 in a file that also holds UTF-8 text means the
+file mixes encodings (typically an editor saved a Latin-1 `µ` into a UTF-8 file).
+
+Why it matters on the machine: names and comments come out garbled; in a value the
+controller reads something other than what the engineer sees in the editor.
+
+Example: a UTF-8 file with `ä` in one comment and byte 0xB5 in another.
+Fix: re-save the file in one encoding.
+"""),
+        rule("S008", "nul-byte", E, "A NUL byte in the file",
+             """
+What it checks: byte 0x00 anywhere in a list.
+
+Why it matters on the machine: the controller reads lines as C strings; a NUL ends
+the line early, so the rest of it (often the value) is lost. Files with NUL bytes are
+usually corrupt copies or UTF-16 files.
+
+Fix: remove the NUL bytes, or convert a UTF-16 file to UTF-8.
+"""),
+        rule("S009", "after-end", W, "Entries after the `Ende` line",
+             """
+What it checks: nothing but comments and blank lines may follow the `Ende` line.
+
+Why it matters on the machine: the controller stops reading at `Ende`; every entry
+after it is silently ignored, however important.
+
+Example: `Ende` followed by `kenngr.swe_pos 15000000`
+Fix: move the entries above `Ende`.
+"""),
+        rule("S010", "control-character", W, "A control character in a line",
+             """
+What it checks: characters below 0x20 other than tab, and DEL; a carriage return
+that is not part of a CRLF line ending.
+
+Why it matters on the machine: invisible in most editors, but part of the key or
+value the controller reads, which then matches nothing.
+
+Fix: delete the character.
+"""),
+        rule("S011", "mixed-line-endings", I, "LF and CRLF line endings in one file",
+             """
+What it checks: whether a file uses one kind of line ending throughout.
+
+Why it matters on the machine: the controller reads both, but mixed endings are a
+sign of a list assembled from several sources, and they make diffs noisy.
+
+Fix: convert the file to one line ending (zero keeps what it finds when it rewrites).
+"""),
+    )
+}
+
+_MESSAGES = {
+    "malformed-line": (
+        "S001",
+        lambda p: f"`{_short(p.detail)}` is not a key: the controller cannot read this line "
+        "and ignores it",
+    ),
+    "missing-value": (
+        "S002",
+        lambda p: f"`{_short(p.detail)}` has no value: the entry sets nothing and the parameter "
+        "keeps its default",
+    ),
+    "unterminated-quote": (
+        "S003",
+        lambda p: f"the string value of `{_short(p.detail)}` has no closing quote: the entry is "
+        "faulty and the default is used",
+    ),
+    "key-whitespace": (
+        "S004",
+        lambda p: f"whitespace inside the key `{_short(p.detail)}`: the controller reads a "
+        "different, unknown key and does not take the entry over",
+    ),
+    "undecodable": (
+        "S007",
+        lambda p: f"byte {p.detail} is not valid UTF-8 in a file that also contains UTF-8 text "
+        "(mixed encodings)",
+    ),
+    "nul-byte": ("S008", lambda p: "NUL byte: the controller ends the line here"),
+    "after-end": (
+        "S009",
+        lambda p: f"content after `Ende` (line {p.detail}): the controller stops reading at "
+        "`Ende` and ignores it",
+    ),
+    "control-char": (
+        "S010",
+        lambda p: f"control character {p.detail}: invisible, but part of what the controller reads",
+    ),
+    "mixed-endings": (
+        "S011",
+        lambda p: "line ending differs from the first line's: the file mixes LF and CRLF",
+    ),
+}
+
+
+def _short(text: str, limit: int = 60) -> str:
+    return text if len(text) <= limit else text[: limit - 1] + "…"
+
+
+def check_problems(ctx: Context) -> Iterator[Diagnostic]:
+    """Findings for the faults the tokenizer recorded."""
+    for p in ctx.doc.problems:
+        if p.kind == "hash-no-space":
+            yield _hash_no_space(ctx, p)
+            continue
+        code, make = _MESSAGES[p.kind]
+        span = Span.on_line(p.line, p.start, p.end)
+        fix = None
+        if p.kind == "key-whitespace":
+            fix = Fix("Remove the whitespace inside the key", (Edit(span, ""),))
+        elif p.kind == "unterminated-quote":
+            end = Span.on_line(p.line, p.end, p.end)
+            fix = Fix("Close the quote at the end of the line", (Edit(end, '"'),), safe=False)
+        yield ctx.report(code, span, make(p), fix=fix, hint=fix.title if fix else None)
+
+
+def _hash_no_space(ctx: Context, p: Problem) -> Diagnostic:
+    span = Span.on_line(p.line, p.start, p.end)
+    fix = Fix("Insert a space after `#`", (Edit(Span.on_line(p.line, p.end, p.end), " "),))
+    if p.detail == "entry":
+        msg = ("`#` without a space before a commented-out parameter: the controller may read "
+               "the line as an unknown entry and warn at start-up")
+    else:
+        msg = ("`#` not followed by a space: the manual requires one, and the controller may "
+               "read the line as an unknown entry")
+    return ctx.report("S005", span, msg, fix=fix, hint=fix.title)
+
+
+def check_string_comments(ctx: Context) -> Iterator[Diagnostic]:
+    """S006: after a STRING value only `(` opens a comment."""
+    for res in ctx.resolved:
+        e = res.entry
+        if res.spec.type != "STRING" or e.comment is None:
+            continue
+        if e.comment_style is CommentStyle.PAREN:
+            continue
+        if e.value_kind is ValueKind.FLAGS:
+            continue
+        span = Span.on_line(e.line, e.comment_start, len(ctx.doc.line_text(e.line)))
+        fix = Fix(
+            "Start the comment with `(`",
+            (Edit(Span.on_line(e.line, e.comment_start, e.comment_start), "( "),),
+            safe=False,
+        )
+        yield ctx.report(
+            "S006",
+            span,
+            f"comment after the string value of `{e.key_text}` does not start with `(`: the "
+            "controller may read it as part of the value",
+            param_id=res.spec.id,
+            fix=fix,
+            hint=fix.title,
+        )
+
+
+CHECKS = (check_problems, check_string_comments)
