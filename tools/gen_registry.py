@@ -25,7 +25,7 @@ OUT = ROOT / "src" / "zero" / "data" / "registry.json"
 
 def compact(row: dict[str, object]) -> dict[str, object]:
     """Drop empty fields so the table stays small."""
-    return {k: v for k, v in row.items() if v not in (None, [], False, "")}
+    return {k: v for k, v in row.items() if not (v is None or v is False or v in ([], ""))}
 
 
 def main(argv: list[str]) -> int:

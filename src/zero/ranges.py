@@ -315,10 +315,10 @@ def parse_range(text: str | None, own_id: str = "") -> Range | None:
     if len({t for k, t in tokens if k == "ident"}) > 1:
         return None
     p = _Parser(tokens, own_id)
-    first = p.expr()
-    if first is None and p.peek() is not None and p.peek()[0] == "op" and p.peek()[1] in _CMP:  # type: ignore[index]
-        first = "x"  # `> 0`: the variable is implied
-        p.pos = 0
+    if tokens[0][0] == "op" and tokens[0][1] in _CMP:
+        first: Expr | str | None = "x"  # `> 0`: the variable is implied
+    else:
+        first = p.expr()
     if first is None:
         return None
     terms: list[Expr | str] = [first]
