@@ -8,9 +8,9 @@ from pathlib import Path
 
 import pytest
 
+from zero.ranges import parse_range
 from zero.registry import KINDS, build_registry, default_registry, load_registry
 from zero.rules.base import default_number
-from zero.ranges import parse_range
 
 
 def test_all_parameters_of_fourteen_kinds() -> None:

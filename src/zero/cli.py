@@ -8,13 +8,16 @@ from __future__ import annotations
 
 import os
 import sys
-from enum import Enum
+from enum import StrEnum
 from pathlib import Path
-from typing import Annotated
+from typing import TYPE_CHECKING, Annotated
 
 import typer
 
 from zero import __version__
+
+if TYPE_CHECKING:
+    from zero.registry import Registry
 
 app = typer.Typer(
     name="zero",
@@ -25,7 +28,7 @@ app = typer.Typer(
 )
 
 
-class OutputFormat(str, Enum):
+class OutputFormat(StrEnum):
     text = "text"
     json = "json"
 
@@ -42,7 +45,7 @@ def _fail(message: str) -> typer.Exit:
     return typer.Exit(code=2)
 
 
-def _registry():  # type: ignore[no-untyped-def]
+def _registry() -> Registry:
     from zero.paramdesc import ParamDescError
     from zero.registry import load_registry
 

@@ -66,7 +66,8 @@ def diagnostic_lines(d: Diagnostic, source: str | None) -> list[list[Segment]]:
     if source is not None:
         start = d.span.column - 1
         end = d.span.end_column - 1 if d.span.end_line == d.span.line else len(source)
-        text, s, e = _window(_printable(source), start, max(end, start))
+        text, s, e = _window(source, start, max(end, start))
+        text = _printable(text)
         num = str(d.span.line)
         pad = " " * len(num)
         out.append([(f" {pad} |", "blue")])
@@ -135,7 +136,7 @@ def render_text(results: Sequence[LintResult], stream: TextIO | None = None,
 def render_json(results: Sequence[LintResult], stream: TextIO | None = None) -> None:
     stream = stream or sys.stdout
     data = [d.to_json() for r in results for d in r.diagnostics]
-    stream.write(json.dumps(data, indent=2, ensure_ascii=False) + "\n")
+    stream.write(json.dumps(data, indent=2) + "\n")
 
 
 def rule_text(code: str) -> str:

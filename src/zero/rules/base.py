@@ -8,6 +8,7 @@ drops the findings of rules that are not selected.
 
 from __future__ import annotations
 
+import re
 from collections.abc import Callable, Iterator
 from dataclasses import dataclass, field
 
@@ -80,6 +81,8 @@ class Context:
         fix: Fix | None = None,
         hint: str | None = None,
     ) -> Diagnostic:
+        if len(message) > 300:
+            message = _LONG_QUOTED.sub(_shorten, message)
         return Diagnostic(
             code,
             self.severities.get(code, Severity.ERROR),
@@ -116,6 +119,14 @@ class Context:
                 return self.number_of(rid, (ridx,) if ridx is not None else (), _depth + 1)
             return None
         return default_number(spec, self, _depth)
+
+
+_LONG_QUOTED = re.compile(r"`([^`]{81,})`")
+
+
+def _shorten(m: re.Match[str]) -> str:
+    text = m.group(1)
+    return f"`{text[:60]}…{text[-12:]}` ({len(text)} characters)"
 
 
 Check = Callable[[Context], Iterator[Diagnostic]]

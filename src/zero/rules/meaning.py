@@ -8,7 +8,7 @@ from zero.diagnostics import Diagnostic, Severity, Span
 from zero.ranges import TYPE_LIMITS, Number
 from zero.rules.base import Context, Resolved, Rule, rule
 
-E, W, I = Severity.ERROR, Severity.WARNING, Severity.INFO
+E, W, INFO = Severity.ERROR, Severity.WARNING, Severity.INFO
 
 SWE_NEG, SWE_POS, SWE_TOL = "P-AXIS-00177", "P-AXIS-00178", "P-AXIS-00179"
 SWE_BEHAVIOUR, SWE_CHECK = "P-AXIS-00554", "P-AXIS-00705"
@@ -43,7 +43,7 @@ will cut in the wrong place.
 
 Fix: set `g53_verfuegbar 1` if group 0 is meant as a full offset set, or clear the values.
 """),
-        rule("M003", "masked-offset", I, "A non-zero offset masked by `inaktiv 1`",
+        rule("M003", "masked-offset", INFO, "A non-zero offset masked by `inaktiv 1`",
              """
 What it checks: `np_grp[i].achse[j].versch` ≠ 0 while `np_grp[i].achse[j].inaktiv` is 1.
 

@@ -11,7 +11,7 @@ from zero.ranges import Bounds, Number, Ref
 from zero.registry import KINDS, ParamSpec
 from zero.rules.base import Context, Resolved, Rule, default_number, rule
 
-E, W, I = Severity.ERROR, Severity.WARNING, Severity.INFO
+E, W, INFO = Severity.ERROR, Severity.WARNING, Severity.INFO
 
 RULES: dict[str, Rule] = {
     r.code: r

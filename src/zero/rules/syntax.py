@@ -2,13 +2,13 @@
 
 from __future__ import annotations
 
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 
 from zero.diagnostics import Diagnostic, Edit, Fix, Severity, Span
 from zero.model import CommentStyle, Problem, ValueKind
 from zero.rules.base import Context, Rule, rule
 
-E, W, I = Severity.ERROR, Severity.WARNING, Severity.INFO
+E, W, INFO = Severity.ERROR, Severity.WARNING, Severity.INFO
 
 RULES: dict[str, Rule] = {
     r.code: r
@@ -125,7 +125,7 @@ value the controller reads, which then matches nothing.
 
 Fix: delete the character.
 """),
-        rule("S011", "mixed-line-endings", I, "LF and CRLF line endings in one file",
+        rule("S011", "mixed-line-endings", INFO, "LF and CRLF line endings in one file",
              """
 What it checks: whether a file uses one kind of line ending throughout.
 
@@ -137,7 +137,7 @@ Fix: convert the file to one line ending (zero keeps what it finds when it rewri
     )
 }
 
-_MESSAGES = {
+_MESSAGES: dict[str, tuple[str, Callable[[Problem], str]]] = {
     "malformed-line": (
         "S001",
         lambda p: f"`{_short(p.detail)}` is not a key: the controller cannot read this line "
