@@ -122,6 +122,14 @@ Fix: correct the ID.
 
 _KIND_NAMES = {k: v[1] for k, v in KINDS.items()}
 
+# Value problems (see zero.rules.base.read_value) with a fixed message: code, template.
+_SIMPLE_PROBLEMS = {
+    "type": ("R004", "`{value}` is not {what} ({type}) for `{key}`"),
+    "overflow": ("R004", "{value} does not fit {type} for `{key}`"),
+    "length": ("R004", "the string for `{key}` has {detail} characters, more than the {max_len} allowed"),
+    "bool": ("R005", "`{value}` is not a BOOLEAN (0/1, FALSE/TRUE) for `{key}`"),
+}
+
 
 def _value_span(e: Entry) -> Span:
     if e.value_end > e.value_start:
@@ -240,40 +248,13 @@ def _check_value(ctx: Context, res: Resolved) -> Iterator[Diagnostic]:
                 param_id=spec.id,
             )
         return
-    if v.problem == "type":
+    simple = _SIMPLE_PROBLEMS.get(v.problem or "")
+    if simple is not None:
+        code, template = simple
         what = {"integer": "an integer", "number": "a number"}.get(v.detail, v.detail)
-        yield ctx.report(
-            "R004",
-            span,
-            f"`{e.value}` is not {what} ({spec.type}) for `{e.key_text}`: {_default_phrase(spec)}",
-            param_id=spec.id,
-        )
-        return
-    if v.problem == "overflow":
-        yield ctx.report(
-            "R004",
-            span,
-            f"{e.value} does not fit {spec.type} for `{e.key_text}`: {_default_phrase(spec)}",
-            param_id=spec.id,
-        )
-        return
-    if v.problem == "length":
-        yield ctx.report(
-            "R004",
-            span,
-            f"the string for `{e.key_text}` has {v.detail} characters, more than the "
-            f"{spec.max_len} allowed: {_default_phrase(spec)}",
-            param_id=spec.id,
-        )
-        return
-    if v.problem == "bool":
-        yield ctx.report(
-            "R005",
-            span,
-            f"`{e.value}` is not a BOOLEAN (0/1, FALSE/TRUE) for `{e.key_text}`: "
-            f"{_default_phrase(spec)}",
-            param_id=spec.id,
-        )
+        text = template.format(value=e.value, key=e.key_text, type=spec.type, what=what,
+                               detail=v.detail, max_len=spec.max_len)
+        yield ctx.report(code, span, f"{text}: {_default_phrase(spec)}", param_id=spec.id)
         return
     if v.problem == "symbol":
         names = [s for s, _ in spec.symbols]
