@@ -127,6 +127,141 @@ def lint(
         raise typer.Exit(code=1)
 
 
+class Format(StrEnum):
+    lis = "lis"
+    yaml = "yaml"
+    toml = "toml"
+    json = "json"
+
+
+def _kind_option(kind: str | None) -> str | None:
+    from zero.registry import KINDS, kind_from_name
+
+    if kind is None:
+        return None
+    forced = kind_from_name(kind)
+    if forced is None:
+        names = ", ".join(v[0] for v in KINDS.values())
+        raise _fail(f"unknown list kind {kind!r} (use one of: {names})")
+    return forced
+
+
+@app.command()
+def convert(
+    inputs: Annotated[list[str], typer.Argument(
+        help="Files to convert (list, YAML, TOML or JSON); - reads standard input.")],
+    to: Annotated[Format | None, typer.Option(
+        "--to", help="Output format [default: from -o's suffix; yaml for a list, lis otherwise].")] = None,
+    from_: Annotated[Format | None, typer.Option(
+        "--from", help="Input format [default: from the suffix; lis for standard input].")] = None,
+    output: Annotated[str | None, typer.Option(
+        "-o", "--output", help="Output file; - or nothing writes to standard output.")] = None,
+    out_dir: Annotated[Path | None, typer.Option(
+        "--out-dir", help="Write one file per input here (name.yaml, name.lis, ...).")] = None,
+    force: Annotated[bool, typer.Option(help="Replace existing output files.")] = False,
+    kind: Annotated[str | None, typer.Option(help="List kind instead of detecting it.")] = None,
+    check: Annotated[bool, typer.Option(
+        help="Lint the list a YAML/TOML/JSON input makes and report the findings.")] = True,
+    strict: Annotated[bool, typer.Option(
+        help="Refuse (exit 1, nothing written) when that lint finds an error.")] = False,
+) -> None:
+    """Convert lists to YAML/TOML/JSON and back, keeping values, order, comments and layout."""
+    from zero.convert import (
+        ConvertError,
+        output_path,
+        source_format,
+        target_format,
+        write_atomic,
+    )
+    from zero.convert import (
+        convert as run_convert,
+    )
+    from zero.diagnostics import Severity
+    from zero.lint import ZeroError, read_file
+    from zero.report import render_text
+
+    forced = _kind_option(kind)
+    if len(inputs) > 1 and out_dir is None:
+        raise _fail("several inputs need --out-dir (one output file per input)")
+    if output is not None and out_dir is not None:
+        raise _fail("give either -o/--output or --out-dir, not both")
+    if inputs.count("-") > 1 or ("-" in inputs and out_dir is not None):
+        raise _fail("standard input (-) converts alone, to -o or standard output")
+
+    jobs = []
+    failed = False
+    try:
+        for name in inputs:
+            src_fmt = (from_.value if from_ else "lis") if name == "-" else \
+                source_format(from_.value if from_ else None, name)
+            dst_fmt = target_format(to.value if to else None, output, src_fmt)
+            data = sys.stdin.buffer.read() if name == "-" else read_file(name)
+            try:
+                result = run_convert(data, src_fmt, dst_fmt, name, forced, check)
+            except ConvertError as exc:
+                sys.stderr.write(f"zero: {exc}\n")
+                failed = True
+                continue
+            for note in result.notes:
+                sys.stderr.write(f"zero: note: {name}: {note}\n")
+            shown = [d for d in result.lint.diagnostics if d.severity >= Severity.WARNING] \
+                if result.lint is not None else []
+            if result.lint is not None and shown:
+                from zero.lint import LintResult
+
+                render_text([LintResult(result.lint.path, result.lint.document, result.lint.kind, shown)],
+                            sys.stderr, summary=False)
+                if strict and result.lint.worst is not None and result.lint.worst >= Severity.ERROR:
+                    sys.stderr.write(f"zero: {name}: not converted (--strict): the list has errors\n")
+                    failed = True
+                    continue
+            jobs.append((name, dst_fmt, result.output))
+        if failed:
+            raise typer.Exit(code=1)
+        sources = tuple(Path(n) for n in inputs if n != "-")
+        if out_dir is not None:
+            targets = [output_path(Path(n), f, out_dir) for n, f, _ in jobs]
+            if len(set(targets)) != len(targets):
+                raise ZeroError("two inputs would write the same output name; convert them separately")
+            out_dir.mkdir(parents=True, exist_ok=True)
+            for target, (_, _, data) in zip(targets, jobs, strict=True):
+                write_atomic(target, data, force, sources)
+        elif output is not None and output != "-":
+            write_atomic(Path(output), jobs[0][2], force, sources)
+        else:
+            sys.stdout.buffer.write(jobs[0][2])
+            sys.stdout.buffer.flush()
+    except ZeroError as exc:
+        raise _fail(str(exc)) from None
+
+
+@app.command()
+def schema(
+    kind: Annotated[str | None, typer.Option(
+        help="Only this list kind (zero, axis, channel, ...); all kinds when omitted.")] = None,
+    output: Annotated[str | None, typer.Option("-o", "--output", help="Write to this file.")] = None,
+    force: Annotated[bool, typer.Option(help="Replace an existing output file.")] = False,
+    allow_unknown: Annotated[bool, typer.Option(
+        help="Admit keys the registry does not know (by default they fail, like R001).")] = False,
+) -> None:
+    """Print a JSON Schema of the structured (YAML/TOML/JSON) form for editors."""
+    import json
+
+    from zero.convert import write_atomic
+    from zero.lint import ZeroError
+    from zero.schema import build_schema
+
+    text = json.dumps(build_schema(_registry(), _kind_option(kind), strict=not allow_unknown),
+                      indent=2, ensure_ascii=False) + "\n"
+    if output is None or output == "-":
+        sys.stdout.write(text)
+        return
+    try:
+        write_atomic(Path(output), text.encode("utf-8"), force)
+    except ZeroError as exc:
+        raise _fail(str(exc)) from None
+
+
 @app.command("rule")
 def rule_cmd(
     code: Annotated[str | None, typer.Argument(help="A rule code such as S004.")] = None,

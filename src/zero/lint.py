@@ -117,7 +117,21 @@ def read_file(path: str | Path) -> bytes:
 
 def lint_file(path: str | Path, registry: Registry | None = None,
               options: LintOptions | None = None) -> LintResult:
-    return lint_bytes(read_file(path), str(path), registry, options)
+    """Lint a list file; a YAML/TOML/JSON file is linted as the list it converts to."""
+    from zero.formats import format_of
+
+    fmt = format_of(str(path))
+    if fmt in (None, "lis"):
+        return lint_bytes(read_file(path), str(path), registry, options)
+    from zero.convert import ConvertError, lint_tree, read_tree
+
+    data = read_file(path)
+    try:
+        tree = read_tree(data, fmt, str(path))
+    except ConvertError as exc:
+        raise ZeroError(str(exc)) from None
+    source = data.decode("utf-8", "replace").lstrip("\ufeff")
+    return lint_tree(tree, options, source if fmt in ("yaml", "toml") else None, registry)
 
 
 def collect_files(paths: Iterable[str | Path]) -> list[Path]:

@@ -1,0 +1,770 @@
+"""YAML, TOML and JSON in and out of the structured form (:mod:`zero.structured`).
+
+Writers are our own for the body (PyYAML and tomli-w cannot write comments): a
+streaming emitter for a fixed, simple shape — nested mappings of scalars with
+comment lines before a key and a trailing comment after its value. The ``_zero``
+record is written by PyYAML / tomli-w / json. Tests read every writer's output
+back with ``yaml.safe_load``, ``tomllib`` and ``json`` and compare the data.
+
+Readers are strict:
+
+* YAML is read from PyYAML's event stream (no constructor runs): explicit tags,
+  anchors and aliases are refused at the first one, so an alias bomb never
+  expands; duplicate keys, sequences, nesting deeper than :data:`MAX_NESTING` and
+  several documents are refused with their line. Plain scalars keep the text as
+  written (``0x1F``, ``010``, ``on`` stay what they are).
+* TOML is parsed by ``tomllib``; JSON by ``json`` with duplicate keys refused.
+* Comments are taken from the YAML/TOML text next to each key (by line), or from
+  ``_zero.comments`` in JSON, which has none.
+"""
+
+from __future__ import annotations
+
+import json
+import math
+import re
+from collections.abc import Iterator
+from dataclasses import dataclass, field
+from typing import Any
+
+from zero.structured import (
+    FORMAT_VERSION,
+    META_KEY,
+    ConvertError,
+    Leaf,
+    Scalar,
+    Tree,
+    dfs,
+    is_index,
+    join_path,
+    nest,
+    path_from_segments,
+    structured_path,
+)
+
+FORMATS = ("lis", "yaml", "toml", "json")
+SUFFIXES = {".lis": "lis", ".lst": "lis", ".yaml": "yaml", ".yml": "yaml", ".toml": "toml",
+            ".json": "json"}
+EXTENSION = {"lis": ".lis", "yaml": ".yaml", "toml": ".toml", "json": ".json"}
+MAX_NESTING = 64
+
+_YAML_PLAIN_RE = re.compile(r"[A-Za-z_][A-Za-z0-9_./-]*")
+# Words YAML 1.1 reads as booleans or null; never written plain.
+_YAML_WORDS = frozenset({"y", "yes", "n", "no", "true", "false", "on", "off", "null", "~"})
+_YAML_FLOAT_RE = re.compile(r"-?[0-9]+\.[0-9]+")
+_INDEX_PLAIN_RE = re.compile(r"0|[1-9][0-9]*")
+_TOML_BARE_RE = re.compile(r"[A-Za-z0-9_-]+")
+
+
+def format_of(name: str) -> str | None:
+    """The format a file name implies (``None`` when the suffix says nothing)."""
+    lower = name.lower()
+    for suffix, fmt in SUFFIXES.items():
+        if lower.endswith(suffix):
+            return fmt
+    return None
+
+
+def _q(text: str) -> str:
+    """A double-quoted string valid in YAML, TOML and JSON alike."""
+    return json.dumps(text, ensure_ascii=False)
+
+
+def _emit_items(tree: Tree) -> Iterator[tuple[tuple[str, ...], Leaf]]:
+    """Leaves in nesting order with the key segments to write them under."""
+    root, flat = nest(tree.leaves)
+    for leaf in dfs(root):
+        yield leaf.path, leaf
+    for leaf in flat:
+        yield (leaf.key,), leaf
+
+
+def _comment_suffix(after: str | None) -> str:
+    return "" if after is None else "  # " + after
+
+
+# ------------------------------------------------------------------------- YAML
+
+
+def _yaml_key(seg: str) -> str:
+    if is_index(seg):
+        return seg if _INDEX_PLAIN_RE.fullmatch(seg) else _q(seg)
+    if re.fullmatch(r"[A-Za-z_][A-Za-z0-9_]*", seg) and seg.lower() not in _YAML_WORDS:
+        return seg
+    return _q(seg)
+
+
+def yaml_scalar(value: Scalar) -> str:
+    if isinstance(value, bool):  # pragma: no cover - readers refuse booleans
+        raise TypeError("boolean")
+    if isinstance(value, int):
+        return str(value)
+    if isinstance(value, float):
+        r = repr(value)
+        return r if _YAML_FLOAT_RE.fullmatch(r) else _q(r)
+    if _YAML_PLAIN_RE.fullmatch(value) and value.lower() not in _YAML_WORDS:
+        return value
+    return _q(value)
+
+
+def write_yaml(tree: Tree) -> str:
+    out: list[str] = []
+    open_path: tuple[str, ...] = ()
+    for segs, leaf in _emit_items(tree):
+        parents = segs[:-1]
+        common = 0
+        while common < min(len(open_path), len(parents)) and open_path[common] == parents[common]:
+            common += 1
+        pad = "  " * common
+        out.extend(pad + c if c else "" for c in leaf.before)
+        for depth in range(common, len(parents)):
+            out.append("  " * depth + _yaml_key(parents[depth]) + ":")
+        out.append("  " * len(parents) + _yaml_key(segs[-1]) + ": " + yaml_scalar(leaf.value)
+                   + _comment_suffix(leaf.after))
+        open_path = parents
+    out.extend(tree.tail)
+    text = "\n".join(out) + ("\n" if out else "")
+    import yaml
+
+    meta = yaml.safe_dump({META_KEY: tree.meta}, allow_unicode=True, sort_keys=False,
+                          default_flow_style=False, width=1 << 20)
+    return text + meta
+
+
+# ------------------------------------------------------------------------- TOML
+
+
+def _toml_key(seg: str) -> str:
+    return seg if _TOML_BARE_RE.fullmatch(seg) else _q(seg)
+
+
+def toml_scalar(value: Scalar) -> str:
+    if isinstance(value, bool):  # pragma: no cover - readers refuse booleans
+        raise TypeError("boolean")
+    if isinstance(value, (int, float)):
+        return repr(value) if isinstance(value, float) else str(value)
+    return _q(value)
+
+
+def _dotted_tables(root: dict[str, Any]) -> set[tuple[str, ...]]:
+    """Mappings that have a value after a sub-mapping: written as dotted keys."""
+    out: set[tuple[str, ...]] = set()
+    stack: list[tuple[tuple[str, ...], dict[str, Any]]] = [((), root)]
+    while stack:
+        path, node = stack.pop()
+        seen_table = False
+        for k, v in node.items():
+            if isinstance(v, dict):
+                seen_table = True
+                stack.append(((*path, k), v))
+            elif seen_table:
+                out.add(path)
+    return out
+
+
+def write_toml(tree: Tree) -> str:
+    root, _ = nest(tree.leaves)
+    dotted = _dotted_tables(root)
+    out: list[str] = []
+    table: tuple[str, ...] = ()
+    for segs, leaf in _emit_items(tree):
+        t: tuple[str, ...] = ()
+        if len(segs) > 1:  # flat leaves (one quoted segment) stay in the root table
+            while len(t) < len(segs) - 1 and t not in dotted:
+                t = segs[: len(t) + 1]
+        out.extend(leaf.before)
+        if t != table:
+            out.append("[" + ".".join(_toml_key(s) for s in t) + "]")
+            table = t
+        key = ".".join(_toml_key(s) for s in segs[len(t):])
+        out.append(f"{key} = {toml_scalar(leaf.value)}{_comment_suffix(leaf.after)}")
+    out.extend(tree.tail)
+    text = "\n".join(out) + ("\n" if out else "")
+    import tomli_w
+
+    return text + tomli_w.dumps({META_KEY: tree.meta})
+
+
+# ------------------------------------------------------------------------- JSON
+
+
+def write_json(tree: Tree) -> str:
+    body: dict[str, Any] = {}
+    comments: dict[str, dict[str, Any]] = {}
+    for segs, leaf in _emit_items(tree):
+        node = body
+        for seg in segs[:-1]:
+            node = node.setdefault(seg, {})
+        node[segs[-1]] = leaf.value
+        c: dict[str, Any] = {}
+        if leaf.before:
+            c["before"] = leaf.before
+        if leaf.after is not None:
+            c["after"] = leaf.after
+        if c:
+            comments[leaf.key] = c
+    meta = dict(tree.meta)
+    if comments:
+        meta["comments"] = comments
+    if tree.tail:
+        meta["tail_comments"] = tree.tail
+    body[META_KEY] = meta
+    return json.dumps(body, ensure_ascii=False, indent=2) + "\n"
+
+
+WRITERS = {"yaml": write_yaml, "toml": write_toml, "json": write_json}
+
+
+# ----------------------------------------------------------------- common reading
+
+
+@dataclass(slots=True)
+class _Found:
+    """Comments and position of one leaf, as a text scanner saw them."""
+
+    line: int
+    column: int
+    after: str | None = None
+    before: list[str] = field(default_factory=list)
+
+
+def _leaf(segments: list[str], value: Scalar, native: str, path: str, line: int | None,
+          column: int | None) -> Leaf:
+    where = structured_path(tuple(segments))
+    try:
+        p = path_from_segments(segments, path)
+    except ConvertError as exc:
+        raise ConvertError(f"{where}: {exc.message}", path, line, column) from None
+    if isinstance(value, str) and re.search(r"[\x00-\x1f\x7f\ud800-\udfff\u2028\u2029]", value):
+        raise ConvertError(f"{where}: the value holds a line break or control character; "
+                           "a list value is one line of text", path, line, column)
+    return Leaf(join_path(p), p, value, [], None, line, column, native)
+
+
+def _strip_comment(text: str) -> str | None:
+    """``# text`` after a value → ``text`` (the list comment as written)."""
+    t = text.strip()
+    if not t.startswith("#"):
+        return None
+    t = t[1:]
+    if t.startswith(" "):
+        t = t[1:]
+    return t.rstrip() or None
+
+
+def _finish(leaves: list[Leaf], meta: Any, tail: list[str], path: str) -> Tree:
+    if meta is None:
+        meta = {}
+    if not isinstance(meta, dict):
+        raise ConvertError(f"`{META_KEY}` must be a mapping (zero's record of the list layout)", path)
+    version = meta.get("zero", FORMAT_VERSION)
+    if not isinstance(version, int) or version > FORMAT_VERSION:
+        raise ConvertError(f"`{META_KEY}.zero` is {version!r}: written by a newer zero "
+                           f"(this one reads format {FORMAT_VERSION})", path)
+    seen: dict[str, Leaf] = {}
+    for leaf in leaves:
+        prev = seen.get(leaf.key)
+        if prev is not None:
+            where = f" (first at line {prev.line})" if prev.line else ""
+            raise ConvertError(f"`{leaf.key}` is given twice{where}; a list holds each key once",
+                               path, leaf.line, leaf.column)
+        seen[leaf.key] = leaf
+    _check_types(leaves, meta, path)
+    return Tree(leaves, meta, tail, path)
+
+
+def _check_types(leaves: list[Leaf], meta: dict[str, Any], path: str) -> None:
+    """Refuse a number of the wrong kind that the format made (a float for an integer)."""
+    floats = [leaf for leaf in leaves if leaf.native == "float"]
+    if not floats:
+        return
+    from zero.model import parse_key
+    from zero.registry import INTEGER_TYPES, default_registry, kind_from_name
+
+    registry = default_registry()
+    kind = meta.get("kind") if isinstance(meta.get("kind"), str) else None
+    kind = kind_from_name(kind) if kind else None
+    for leaf in floats:
+        key = parse_key(leaf.key)
+        spec = registry.by_pattern(key.pattern, kind) if key else None
+        if spec is not None and spec.type in INTEGER_TYPES:
+            raise ConvertError(
+                f"{structured_path(leaf.path)}: {leaf.value} is a floating-point number but "
+                f"{spec.id} is {spec.type}; the controller would not take it over — "
+                "write an integer", path, leaf.line, leaf.column)
+
+
+def _walk_mapping(data: dict[str, Any], path: str,
+                  found: dict[tuple[str, ...], _Found] | None) -> tuple[list[Leaf], Any]:
+    """Leaves of parsed TOML/JSON data (iterative, bounded depth)."""
+    leaves: list[Leaf] = []
+    meta: Any = None
+    stack: list[tuple[list[str], Iterator[tuple[str, Any]]]] = [([], iter(data.items()))]
+    while stack:
+        segs, it = stack[-1]
+        for k, v in it:
+            if not segs and k == META_KEY:
+                meta = v
+                continue
+            here = [*segs, k]
+            where = structured_path(tuple(here))
+            f = found.get(tuple(here)) if found else None
+            line = f.line if f else None
+            col = f.column if f else None
+            if isinstance(v, dict):
+                if len(here) >= MAX_NESTING:
+                    raise ConvertError(f"{where}: nested deeper than {MAX_NESTING} levels", path, line)
+                stack.append((here, iter(v.items())))
+                break
+            if isinstance(v, bool):
+                raise ConvertError(f"{where}: a boolean; the controller knows 0/1 or symbols like "
+                                   "\"TRUE\" — write one of those", path, line, col)
+            if isinstance(v, int):
+                leaf = _leaf(here, v, "int", path, line, col)
+            elif isinstance(v, float):
+                if not math.isfinite(v):
+                    raise ConvertError(f"{where}: {v} is no value a list can hold", path, line, col)
+                leaf = _leaf(here, v, "float", path, line, col)
+            elif isinstance(v, str):
+                leaf = _leaf(here, v, "str", path, line, col)
+            elif v is None:
+                raise ConvertError(f"{where}: null has no list form; give a value or remove the key",
+                                   path, line, col)
+            elif isinstance(v, list):
+                raise ConvertError(f"{where}: a list/array is not a parameter value; one key per "
+                                   "element (`name: {0: …, 1: …}`)", path, line, col)
+            else:
+                raise ConvertError(f"{where}: a {type(v).__name__} is not a parameter value",
+                                   path, line, col)
+            if f is not None:
+                leaf.before = f.before
+                leaf.after = f.after
+            leaves.append(leaf)
+        else:
+            stack.pop()
+    return leaves, meta
+
+
+# ------------------------------------------------------------------------- YAML
+
+
+@dataclass(slots=True, eq=False)
+class _YNode:
+    kind: str  # map, seq, scalar
+    line: int  # 0-based start
+    column: int
+    end_line: int = 0
+    end_column: int = 0
+    value: str = ""
+    tag: str = ""  # resolved tag of a plain scalar; "str" for quoted ones
+    items: list[Any] = field(default_factory=list)
+
+
+def _yaml_events_to_nodes(text: str, path: str) -> _YNode | None:
+    import yaml
+    from yaml import events as ev
+
+    loader_cls = getattr(yaml, "CSafeLoader", None) or yaml.SafeLoader
+    loader = loader_cls(text)
+    root: _YNode | None = None
+    stack: list[tuple[_YNode, dict[str, int], list[_YNode | None]]] = []
+    documents = 0
+
+    def refuse(message: str, mark: Any) -> ConvertError:
+        return ConvertError(message, path, mark.line + 1, mark.column + 1)
+
+    def attach(node: _YNode) -> None:
+        nonlocal root
+        if not stack:
+            root = node
+            return
+        parent, keys, pending = stack[-1]
+        if parent.kind == "seq":
+            parent.items.append(node)
+        elif pending[0] is None:
+            if node.kind != "scalar":
+                raise ConvertError("a mapping key must be text", path, node.line + 1, node.column + 1)
+            first = keys.get(node.value)
+            if first is not None:
+                raise ConvertError(f"duplicate key `{node.value}` (first at line {first}); YAML "
+                                   "loaders keep only the last one silently", path, node.line + 1,
+                                   node.column + 1)
+            keys[node.value] = node.line + 1
+            pending[0] = node
+        else:
+            parent.items.append((pending[0], node))
+            pending[0] = None
+
+    try:
+        while True:
+            e = loader.get_event()
+            if e is None:
+                break
+            t = type(e)
+            if t is ev.AliasEvent:
+                raise refuse("aliases (*name) are refused: a parameter list needs none, and they "
+                             "can expand without bound", e.start_mark)
+            if t is ev.DocumentStartEvent:
+                documents += 1
+                if documents > 1:
+                    raise refuse("more than one YAML document; a list is one", e.start_mark)
+                continue
+            if t in (ev.ScalarEvent, ev.MappingStartEvent, ev.SequenceStartEvent):
+                if e.anchor is not None:
+                    raise refuse(f"anchor &{e.anchor} refused: a parameter list needs no anchors "
+                                 "or aliases", e.start_mark)
+                if e.tag is not None and e.tag != "!":
+                    raise refuse(f"tag {e.tag} refused: zero reads plain YAML data only", e.start_mark)
+                m = e.start_mark
+                if t is ev.ScalarEvent:
+                    node = _YNode("scalar", m.line, m.column, e.end_mark.line, e.end_mark.column,
+                                  e.value)
+                    if not e.style:  # None (PyYAML) or "" (libyaml) for plain
+                        node.tag = loader.resolve(yaml.ScalarNode, e.value, e.implicit).rsplit(":", 1)[-1]
+                    else:
+                        node.tag = "str"
+                    attach(node)
+                else:
+                    node = _YNode("map" if t is ev.MappingStartEvent else "seq", m.line, m.column)
+                    attach(node)
+                    if len(stack) >= MAX_NESTING:
+                        raise refuse(f"nested deeper than {MAX_NESTING} levels", m)
+                    stack.append((node, {}, [None]))
+            elif t in (ev.MappingEndEvent, ev.SequenceEndEvent):
+                node = stack.pop()[0]
+                node.end_line, node.end_column = e.end_mark.line, e.end_mark.column
+    except yaml.MarkedYAMLError as exc:
+        mark = exc.problem_mark or exc.context_mark
+        problem = exc.problem or "not valid YAML"
+        raise ConvertError(f"not valid YAML: {problem}", path,
+                           mark.line + 1 if mark else None, mark.column + 1 if mark else None) from None
+    except yaml.YAMLError as exc:
+        raise ConvertError(f"not valid YAML: {exc}", path) from None
+    finally:
+        loader.dispose()
+    return root
+
+
+def _yaml_plain(node: _YNode, path: str) -> Any:
+    """The ``_zero`` record: plain data (iterative)."""
+    def scalar(n: _YNode) -> Any:
+        if n.tag == "int":
+            try:
+                return int(n.value)
+            except ValueError:
+                return n.value
+        if n.tag == "bool":
+            return n.value.lower() in ("true", "yes", "on", "y")
+        if n.tag == "null":
+            return None
+        return n.value
+
+    if node.kind == "scalar":
+        return scalar(node)
+    top: Any = {} if node.kind == "map" else []
+    stack: list[tuple[_YNode, Any]] = [(node, top)]
+    while stack:
+        n, target = stack.pop()
+        pairs = n.items if n.kind == "map" else [(None, x) for x in n.items]
+        for k, v in pairs:
+            if v.kind == "scalar":
+                val = scalar(v)
+            else:
+                val = {} if v.kind == "map" else []
+                stack.append((v, val))
+            if k is not None and isinstance(target, dict):
+                target[k.value] = val
+            elif isinstance(target, list):
+                target.append(val)
+    return top
+
+
+_OPENER_COMMENT_RE = re.compile(r"^\s*[^#\"'\s][^#\"']*:\s+(#.*)$")
+
+
+def _scan_between(lines: list[str], start: int, stop: int, skip: range) -> list[str]:
+    """Comment and blank lines in ``lines[start:stop]`` (0-based), outside ``skip``."""
+    out: list[str] = []
+    for i in range(max(start, 0), min(stop, len(lines))):
+        if i in skip:
+            continue
+        s = lines[i].strip()
+        if not s:
+            out.append("")
+        elif s.startswith("#"):
+            out.append(s)
+        elif s in ("---", "..."):
+            continue
+        else:
+            m = _OPENER_COMMENT_RE.match(lines[i])
+            if m:
+                out.append(m.group(1).strip())
+    return out
+
+
+def read_yaml(text: str, path: str = "-") -> Tree:
+    if re.search(r"\r(?!\n)|[\x85\u2028\u2029]", text):
+        raise ConvertError("line breaks other than LF or CRLF (CR, NEL, U+2028) are not read", path)
+    root = _yaml_events_to_nodes(text, path)
+    if root is None:
+        raise ConvertError("empty YAML document: no parameters", path)
+    if root.kind != "map":
+        raise ConvertError("the top level must be a mapping of keys (np_grp: …), not a "
+                           + ("sequence" if root.kind == "seq" else "single value"),
+                           path, root.line + 1, root.column + 1)
+    leaves: list[Leaf] = []
+    spans: list[tuple[int, int, int, Leaf]] = []
+    meta: Any = None
+    meta_span = range(0)
+    stack: list[tuple[list[str], Iterator[tuple[_YNode, _YNode]]]] = [([], iter(root.items))]
+    while stack:
+        segs, it = stack[-1]
+        for k, v in it:
+            if not segs and k.value == META_KEY:
+                meta = _yaml_plain(v, path)
+                end = v.end_line if v.kind != "scalar" else v.end_line + 1
+                meta_span = range(k.line, max(end, k.line + 1))
+                continue
+            here = [*segs, k.value]
+            if v.kind == "map":
+                stack.append((here, iter(v.items)))
+                break
+            where = structured_path(tuple(here))
+            if v.kind == "seq":
+                raise ConvertError(f"{where}: a sequence is not a parameter value; one key per "
+                                   "element (`name: {0: …, 1: …}`)", path, v.line + 1, v.column + 1)
+            if v.tag == "null":
+                raise ConvertError(f"{where}: no value (YAML reads it as null); give a value, "
+                                   "or \"\" for an empty one", path, k.line + 1, k.column + 1)
+            native = v.tag if v.tag in ("int", "float") else "str"
+            leaf = _leaf(here, v.value, native, path, k.line + 1, v.column + 1)
+            leaves.append(leaf)
+            spans.append((k.line, v.end_line, v.end_column, leaf))
+        else:
+            stack.pop()
+
+    lines = text.split("\n")
+    prev_end = -1
+    for key_line, end_line, end_col, leaf in spans:
+        leaf.before = _scan_between(lines, prev_end + 1, key_line, meta_span)
+        if end_line < len(lines):
+            leaf.after = _strip_comment(lines[end_line][end_col:])
+        prev_end = end_line
+    tail_stop = meta_span.start if meta_span and meta_span.start > prev_end else len(lines)
+    tail = _scan_between(lines, prev_end + 1, tail_stop, meta_span)
+    if tail_stop == len(lines):  # blank lines closing the file are no part of the list
+        while tail and tail[-1] == "":
+            tail.pop()
+    return _finish(leaves, meta, tail, path)
+
+
+# ------------------------------------------------------------------------- TOML
+
+
+def _toml_key_at(s: str, i: int) -> tuple[list[str], int] | None:
+    """Parse a dotted TOML key at ``s[i:]``; return segments and the position after it."""
+    segs: list[str] = []
+    n = len(s)
+    while True:
+        while i < n and s[i] in " \t":
+            i += 1
+        if i < n and s[i] == '"':
+            j = i + 1
+            while j < n and s[j] != '"':
+                j += 2 if s[j] == "\\" else 1
+            if j >= n:
+                return None
+            try:
+                segs.append(json.loads(s[i: j + 1]))
+            except ValueError:
+                return None
+            i = j + 1
+        elif i < n and s[i] == "'":
+            j = s.find("'", i + 1)
+            if j < 0:
+                return None
+            segs.append(s[i + 1: j])
+            i = j + 1
+        else:
+            m = _TOML_BARE_RE.match(s, i)
+            if not m:
+                return None
+            segs.append(m.group())
+            i = m.end()
+        while i < n and s[i] in " \t":
+            i += 1
+        if i < n and s[i] == ".":
+            i += 1
+            continue
+        return segs, i
+
+
+def _toml_value_end(s: str, i: int) -> int | None:
+    """End of a one-line TOML value at ``s[i:]``; ``None`` when it continues on the next line."""
+    n = len(s)
+    if s.startswith('"""', i) or s.startswith("'''", i):
+        q = s[i: i + 3]
+        j = s.find(q, i + 3)
+        return None if j < 0 else j + 3
+    if i < n and s[i] == '"':
+        j = i + 1
+        while j < n and s[j] != '"':
+            j += 2 if s[j] == "\\" else 1
+        return j + 1 if j < n else None
+    if i < n and s[i] == "'":
+        j = s.find("'", i + 1)
+        return None if j < 0 else j + 1
+    if i < n and s[i] in "[{":
+        depth = 0
+        j = i
+        while j < n:
+            c = s[j]
+            if c in "[{":
+                depth += 1
+            elif c in "]}":
+                depth -= 1
+                if depth == 0:
+                    return j + 1
+            elif c in "\"'":
+                end = _toml_value_end(s, j)
+                if end is None:
+                    return None
+                j = end
+                continue
+            elif c == "#":
+                return None
+            j += 1
+        return None
+    j = i
+    while j < n and s[j] not in " \t#":
+        j += 1
+    return j
+
+
+def _toml_scan(text: str) -> tuple[dict[tuple[str, ...], _Found], list[str]]:
+    """Comments and line of every key/value line, by full key path."""
+    found: dict[tuple[str, ...], _Found] = {}
+    lines = text.split("\n")
+    table: tuple[str, ...] = ()
+    pending: list[str] = []
+    tail: list[str] = []
+    in_meta = False
+    open_multiline: str | None = None
+    for number, raw in enumerate(lines, 1):
+        line = raw[:-1] if raw.endswith("\r") else raw
+        if open_multiline is not None:
+            if open_multiline in line:
+                open_multiline = None
+            continue
+        s = line.strip()
+        if not s:
+            pending.append("")
+            continue
+        if s.startswith("#"):
+            pending.append(s)
+            continue
+        if s.startswith("["):
+            inner = 2 if s.startswith("[[") else 1
+            parsed = _toml_key_at(s, inner)
+            if parsed is None:
+                continue
+            table = tuple(parsed[0])
+            if table[:1] == (META_KEY,):
+                if not in_meta:
+                    tail, pending = pending, []
+                in_meta = True
+            else:
+                in_meta = False
+            rest = s[parsed[1] + inner:]
+            c = _strip_comment(rest)
+            if c is not None and not in_meta:
+                pending.append("# " + c)
+            continue
+        if in_meta:
+            continue
+        parsed = _toml_key_at(line, 0)
+        if parsed is None:
+            continue
+        segs, i = parsed
+        while i < len(line) and line[i] in " \t=":
+            i += 1
+        end = _toml_value_end(line, i)
+        key = (*table, *segs)
+        if end is None:
+            q = line[i: i + 3]
+            open_multiline = q if q in ('"""', "'''") else None
+            found[key] = _Found(number, i + 1, None, pending)
+        else:
+            found[key] = _Found(number, i + 1, _strip_comment(line[end:]), pending)
+        pending = []
+        tail = []
+    if not in_meta:
+        tail = pending
+        while tail and tail[-1] == "":
+            tail.pop()
+    return found, tail
+
+
+def read_toml(text: str, path: str = "-") -> Tree:
+    import tomllib
+
+    try:
+        data = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
+        msg = str(exc)
+        m = re.search(r"\(at line (\d+), column (\d+)\)", msg)
+        reason = re.sub(r" ?\(at line.*", "", msg)
+        raise ConvertError(f"not valid TOML: {reason}", path,
+                           int(m.group(1)) if m else None, int(m.group(2)) if m else None) from None
+    except RecursionError:
+        raise ConvertError("not read: nested too deeply", path) from None
+    found, tail = _toml_scan(text)
+    leaves, meta = _walk_mapping(data, path, found)
+    return _finish(leaves, meta, tail, path)
+
+
+# ------------------------------------------------------------------------- JSON
+
+
+def _no_duplicates(pairs: list[tuple[str, Any]]) -> dict[str, Any]:
+    out: dict[str, Any] = {}
+    for k, v in pairs:
+        if k in out:
+            raise ConvertError(f"duplicate key `{k}` in one object; JSON readers keep only the last")
+        out[k] = v
+    return out
+
+
+def read_json(text: str, path: str = "-") -> Tree:
+    try:
+        data = json.loads(text, object_pairs_hook=_no_duplicates)
+    except ConvertError as exc:
+        raise ConvertError(exc.message, path) from None
+    except json.JSONDecodeError as exc:
+        raise ConvertError(f"not valid JSON: {exc.msg}", path, exc.lineno, exc.colno) from None
+    except RecursionError:
+        raise ConvertError("not read: nested too deeply", path) from None
+    if not isinstance(data, dict):
+        raise ConvertError("the top level must be an object of keys, not a "
+                           + type(data).__name__, path)
+    leaves, meta = _walk_mapping(data, path, None)
+    tail: list[str] = []
+    if isinstance(meta, dict):
+        comments = meta.pop("comments", None)
+        raw_tail = meta.pop("tail_comments", None)
+        if isinstance(raw_tail, list):
+            tail = [x for x in raw_tail if isinstance(x, str)]
+        if isinstance(comments, dict):
+            for leaf in leaves:
+                c = comments.get(leaf.key)
+                if isinstance(c, dict):
+                    before = c.get("before")
+                    if isinstance(before, list):
+                        leaf.before = [x for x in before if isinstance(x, str)]
+                    after = c.get("after")
+                    if isinstance(after, str) and after.strip():
+                        leaf.after = after.rstrip()
+    return _finish(leaves, meta, tail, path)
+
+
+READERS = {"yaml": read_yaml, "toml": read_toml, "json": read_json}
