@@ -58,3 +58,95 @@ def test_every_line_is_one_item(data: bytes) -> None:
     doc = tokenize(data)
     for n, item in enumerate(doc.items, 1):
         assert isinstance(item, Entry | Comment | Blank | End | Invalid) and item.line == n
+
+
+# --------------------------------------------------------------- convert round trips
+
+_KEYS = st.one_of(
+    st.builds("np_grp[{}].achse[{}].versch".format, st.integers(0, 96), st.integers(0, 31)),
+    st.builds("np_grp[{}].achse[{}].inaktiv".format, st.integers(0, 96), st.integers(0, 31)),
+    st.sampled_from(["kenngr.swe_pos", "kenngr.achs_mode", "g53_verfuegbar", "default_index",
+                     "lr_param.kv", "a", "a.b"]),
+    st.builds("wz[{}].name".format, st.integers(1, 10**30)),
+    st.builds("getriebe[{}].dynamik.vb_max".format, st.integers(0, 4_000_000_000)),
+)
+_VALUES = st.one_of(
+    st.integers(-(2**31), 2**32 - 1).map(str),
+    st.sampled_from(["-2147483648", "4294967295", "0", "-0", "010", "+7", "0x400001", "0X1f", "1.5",
+                     "1e3", "1.50", "TRUE", "FALSE", "ERROR", "on", "no", "yes", "null", "~",
+                     "PLC_INFO | MOS", "REPORT | REPORT_EXTENDED |PRINT", "P-AXIS-00212.0",
+                     "P-AXIS-00376", '"text with ( # spaces"', '"a:b"', "X_Achse",
+                     "./listen/achsmds1.lis", "20804,20805", "cnc_ve_%s_[%d]_r", "µm", "'q'"]),
+)
+_COMMENTS = st.one_of(
+    st.none(),
+    st.sampled_from(["# hash note", "#", "( P-ZERO-00003 : offset", "( unclosed ( nested)",
+                     "/* 20 */ ( second", "plain words", "( with # and \"quotes\" : colon",
+                     "( Maße in µm", "#x 5"]),
+)
+_GAP = st.sampled_from([" ", "  ", "\t", " \t ", "      "])
+_FULL_LINES = st.sampled_from(["# comment", "#", "#\ttab", "#key 5", "#np_grp[0].achse[0].versch 1",
+                               "", "\t", "   ", "  # indented", "# ä µ €"])
+
+
+@st.composite
+def _lists(draw: st.DrawFn) -> bytes:
+    canonical = draw(st.booleans())
+    lines: list[str] = []
+    for _ in range(draw(st.integers(0, 25))):
+        for _ in range(draw(st.integers(0, 2))):
+            lines.append(draw(_FULL_LINES))
+        key, value, comment = draw(_KEYS), draw(_VALUES), draw(_COMMENTS)
+        if canonical:
+            from zero.structured import canonical_line
+
+            lines.append(canonical_line(key, value, comment, 54, 70))
+        else:
+            line = key + draw(_GAP) + value
+            if comment is not None:
+                line += draw(_GAP) + comment
+            lines.append(line + draw(st.sampled_from(["", " ", "\t"])))
+    lines.extend(draw(st.lists(_FULL_LINES, max_size=2)))
+    end = draw(st.sampled_from(["Ende", "Ende  ", None]))
+    if end is not None:
+        lines.append(end)
+        lines.extend(draw(st.lists(st.sampled_from(["", " "]), max_size=2)))
+    newline = draw(st.sampled_from(["\n", "\r\n"]))
+    text = newline.join(lines) + (newline if lines and draw(st.booleans()) else "")
+    encoding = draw(st.sampled_from(["utf-8", "cp1252"]))
+    return text.encode(encoding)
+
+
+@settings(max_examples=150, deadline=None)
+@given(_lists(), st.sampled_from(["yaml", "toml", "json"]))
+def test_list_to_structured_to_list_is_the_identity(data: bytes, fmt: str) -> None:
+    import json
+    import tomllib
+
+    import yaml
+
+    from zero.convert import convert, read_tree
+    from zero.structured import nest
+
+    structured = convert(data, "lis", fmt, "gen.lis").output
+    assert convert(structured, fmt, "lis", "gen." + fmt, check=False).output == data
+    # the standard loaders read the same data zero holds
+    if fmt == "yaml":
+        loaded = yaml.safe_load(structured)
+    elif fmt == "toml":
+        loaded = tomllib.loads(structured.decode())
+    else:
+        loaded = json.loads(structured)
+    loaded.pop("_zero")
+    root, flat = nest(read_tree(data, "lis", "gen.lis").leaves)
+
+    def plain(node: dict[str, object]) -> dict[str, object]:
+        return {k: plain(v) if isinstance(v, dict) else v.value  # type: ignore[attr-defined]
+                for k, v in node.items()}
+
+    def str_keys(x: object) -> object:
+        return {str(k): str_keys(v) for k, v in x.items()} if isinstance(x, dict) else x
+
+    expected = plain(root)
+    expected.update({leaf.key: leaf.value for leaf in flat})
+    assert str_keys(loaded) == str_keys(expected)

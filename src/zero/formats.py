@@ -71,12 +71,13 @@ def _q(text: str) -> str:
 
 
 def _emit_items(tree: Tree) -> Iterator[tuple[tuple[str, ...], Leaf]]:
-    """Leaves in nesting order with the key segments to write them under."""
+    """Leaves with the key segments to write them under: first the few that cannot
+    nest (under their whole key, in the top-level table), then the nested ones."""
     root, flat = nest(tree.leaves)
-    for leaf in dfs(root):
-        yield leaf.path, leaf
     for leaf in flat:
         yield (leaf.key,), leaf
+    for leaf in dfs(root):
+        yield leaf.path, leaf
 
 
 def _comment_suffix(after: str | None) -> str:

@@ -153,28 +153,25 @@ def nest(leaves: list[Leaf]) -> tuple[dict[str, Any], list[Leaf]]:
     """Nest leaves into mappings; return ``(root, flat)``.
 
     ``root`` maps segment → sub-mapping or :class:`Leaf`, children in first
-    appearance. A leaf whose path collides with another (``a`` is a value and
-    ``a.b`` exists too) cannot nest: it goes to ``flat`` and is written under its
-    whole key at the top level.
+    appearance. A leaf below another leaf's key (``a.b`` when ``a`` holds a value)
+    cannot nest: it goes to ``flat`` and is written under its whole key at the
+    top level, whatever the order of the two.
     """
+    values = {leaf.path for leaf in leaves}
     root: dict[str, Any] = {}
     flat: list[Leaf] = []
     for leaf in leaves:
+        p = leaf.path
+        if any(p[:i] in values for i in range(1, len(p))):
+            flat.append(leaf)
+            continue
         node = root
-        ok = True
-        for seg in leaf.path[:-1]:
+        for seg in p[:-1]:
             nxt = node.get(seg)
             if nxt is None:
                 nxt = node[seg] = {}
-            elif not isinstance(nxt, dict):
-                ok = False
-                break
             node = nxt
-        last = leaf.path[-1]
-        if ok and last not in node:
-            node[last] = leaf
-        else:
-            flat.append(leaf)
+        node[p[-1]] = leaf
     return root, flat
 
 
@@ -192,9 +189,9 @@ def dfs(root: dict[str, Any]) -> Iterator[Leaf]:
 
 
 def nested_order(leaves: list[Leaf]) -> list[Leaf]:
-    """The order in which YAML/TOML/JSON hold the leaves: nested, then the flat ones."""
+    """The order in which YAML/TOML/JSON hold the leaves: the flat ones, then nested."""
     root, flat = nest(leaves)
-    return [*dfs(root), *flat]
+    return [*flat, *dfs(root)]
 
 
 # ------------------------------------------------------------- list → tree
