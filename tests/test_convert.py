@@ -250,7 +250,7 @@ REFUSED_YAML = {
     "duplicate key": ("np_grp:\n  1:\n    achse: {}\n  1:\n    achse: {}\n", "duplicate key", 4),
     "null": ("a:\n  b:\n", "no value", 2),
     "two documents": ("a: 1\n---\nb: 2\n", "more than one", 2),
-    "not yaml": ("a: [1\n", "not valid YAML", None),
+    "not yaml": ("a: 'x\n", "not valid YAML", None),
     "float for integer": ("np_grp:\n  1:\n    achse:\n      0:\n        versch: 1.5\n", "floating", 5),
     "multi-line value": ('a: "x\\ny"\n', "line break", 1),
     "index first": ("0: 1\n", "starts with a name", 1),

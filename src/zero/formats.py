@@ -37,7 +37,6 @@ from zero.structured import (
     dfs,
     is_index,
     join_path,
-    nest,
     path_from_segments,
     structured_path,
 )
@@ -73,7 +72,7 @@ def _q(text: str) -> str:
 def _emit_items(tree: Tree) -> Iterator[tuple[tuple[str, ...], Leaf]]:
     """Leaves with the key segments to write them under: first the few that cannot
     nest (under their whole key, in the top-level table), then the nested ones."""
-    root, flat = nest(tree.leaves)
+    root, flat = tree.nested()
     for leaf in flat:
         yield (leaf.key,), leaf
     for leaf in dfs(root):
@@ -87,7 +86,19 @@ def _comment_suffix(after: str | None) -> str:
 # ------------------------------------------------------------------------- YAML
 
 
+_yaml_key_cache: dict[str, str] = {}
+
+
 def _yaml_key(seg: str) -> str:
+    cached = _yaml_key_cache.get(seg)
+    if cached is None:
+        cached = _yaml_key_uncached(seg)
+        if len(_yaml_key_cache) < 100_000:
+            _yaml_key_cache[seg] = cached
+    return cached
+
+
+def _yaml_key_uncached(seg: str) -> str:
     if is_index(seg):
         return seg if _INDEX_PLAIN_RE.fullmatch(seg) else _q(seg)
     if re.fullmatch(r"[A-Za-z_][A-Za-z0-9_]*", seg) and seg.lower() not in _YAML_WORDS:
@@ -124,12 +135,44 @@ def write_yaml(tree: Tree) -> str:
                    + _comment_suffix(leaf.after))
         open_path = parents
     out.extend(tree.tail)
-    text = "\n".join(out) + ("\n" if out else "")
-    import yaml
+    out.append(META_KEY + ":")
+    out.extend(_yaml_meta(tree.meta))
+    return "\n".join(out) + "\n"
 
-    meta = yaml.safe_dump({META_KEY: tree.meta}, allow_unicode=True, sort_keys=False,
-                          default_flow_style=False, width=1 << 20)
-    return text + meta
+
+def _yaml_meta_scalar(value: Any) -> str:
+    if isinstance(value, bool):
+        return "true" if value else "false"
+    if isinstance(value, int):
+        return str(value)
+    return _q(str(value))
+
+
+def _yaml_meta(meta: dict[str, Any]) -> list[str]:
+    """The ``_zero`` record in block style: scalars, lists and mappings of those (two levels)."""
+    out: list[str] = []
+    for key, value in meta.items():
+        k = _yaml_key(key)
+        if isinstance(value, dict):
+            if not value:
+                out.append(f"  {k}: {{}}")
+                continue
+            out.append(f"  {k}:")
+            for k2, v2 in value.items():
+                if isinstance(v2, list):
+                    out.append(f"    {_q(k2)}: {json.dumps(v2, ensure_ascii=False)}")
+                else:
+                    out.append(f"    {_q(k2)}: {_yaml_meta_scalar(v2)}")
+        elif isinstance(value, list):
+            if not value:
+                out.append(f"  {k}: []")
+                continue
+            out.append(f"  {k}:")
+            out.extend(f"  - {json.dumps(v, ensure_ascii=False)}" if isinstance(v, list)
+                       else f"  - {_yaml_meta_scalar(v)}" for v in value)
+        else:
+            out.append(f"  {k}: {_yaml_meta_scalar(value)}")
+    return out
 
 
 # ------------------------------------------------------------------------- TOML
@@ -164,7 +207,7 @@ def _dotted_tables(root: dict[str, Any]) -> set[tuple[str, ...]]:
 
 
 def write_toml(tree: Tree) -> str:
-    root, _ = nest(tree.leaves)
+    root, _ = tree.nested()
     dotted = _dotted_tables(root)
     out: list[str] = []
     table: tuple[str, ...] = ()
@@ -349,52 +392,59 @@ def _walk_mapping(data: dict[str, Any], path: str,
 # ------------------------------------------------------------------------- YAML
 
 
-@dataclass(slots=True, eq=False)
-class _YNode:
-    kind: str  # map, seq, scalar
-    line: int  # 0-based start
-    column: int
-    end_line: int = 0
-    end_column: int = 0
-    value: str = ""
-    tag: str = ""  # resolved tag of a plain scalar; "str" for quoted ones
-    items: list[Any] = field(default_factory=list)
+class _Frame:
+    """One open mapping or sequence while streaming YAML events."""
+
+    __slots__ = ("container", "is_map", "key", "key_line", "keys", "meta", "segs")
+
+    def __init__(self, is_map: bool, segs: list[str], meta: bool, container: Any = None) -> None:
+        self.is_map = is_map
+        self.segs = segs
+        self.meta = meta
+        self.container = container
+        self.key: str | None = None
+        self.key_line = 0
+        self.keys: dict[str, int] = {}
 
 
-def _yaml_events_to_nodes(text: str, path: str) -> _YNode | None:
+def _meta_scalar(value: str, tag: str) -> Any:
+    if tag == "int":
+        try:
+            return int(value)
+        except ValueError:
+            return value
+    if tag == "bool":
+        return value.lower() in ("true", "yes", "on", "y")
+    if tag == "null":
+        return None
+    return value
+
+
+def _yaml_stream(text: str, path: str) -> tuple[list[tuple[int, int, int, Leaf]], Any, range]:
+    """Stream PyYAML events into leaves; no constructor runs and nothing expands.
+
+    Returns ``(spans, meta, meta_lines)``: per leaf its key line, value end line and
+    column (0-based), the ``_zero`` record, and the lines that record occupies.
+    """
     import yaml
     from yaml import events as ev
 
     loader_cls = getattr(yaml, "CSafeLoader", None) or yaml.SafeLoader
     loader = loader_cls(text)
-    root: _YNode | None = None
-    stack: list[tuple[_YNode, dict[str, int], list[_YNode | None]]] = []
+    resolve = loader.resolve
+    scalar_node = yaml.ScalarNode
+    Scalar_, MapStart, SeqStart = ev.ScalarEvent, ev.MappingStartEvent, ev.SequenceStartEvent
+    MapEnd, SeqEnd, Alias, DocStart = ev.MappingEndEvent, ev.SequenceEndEvent, ev.AliasEvent, \
+        ev.DocumentStartEvent
+    spans: list[tuple[int, int, int, Leaf]] = []
+    stack: list[_Frame] = []
+    meta: Any = None
+    meta_start = meta_end = -1
     documents = 0
+    seen_root = False
 
     def refuse(message: str, mark: Any) -> ConvertError:
         return ConvertError(message, path, mark.line + 1, mark.column + 1)
-
-    def attach(node: _YNode) -> None:
-        nonlocal root
-        if not stack:
-            root = node
-            return
-        parent, keys, pending = stack[-1]
-        if parent.kind == "seq":
-            parent.items.append(node)
-        elif pending[0] is None:
-            if node.kind != "scalar":
-                raise ConvertError("a mapping key must be text", path, node.line + 1, node.column + 1)
-            first = keys.get(node.value)
-            if first is not None:
-                raise ConvertError(f"duplicate key `{node.value}` (first at line {first}); YAML "
-                                   "loaders keep only the last one silently", path, node.line + 1,
-                                   node.column + 1)
-            keys[node.value] = node.line + 1
-            pending[0] = node
-        else:
-            parent.items.append((pending[0], node))
-            pending[0] = None
 
     try:
         while True:
@@ -402,38 +452,100 @@ def _yaml_events_to_nodes(text: str, path: str) -> _YNode | None:
             if e is None:
                 break
             t = type(e)
-            if t is ev.AliasEvent:
+            if t is Scalar_ or t is MapStart or t is SeqStart:
+                if e.anchor is not None:
+                    raise refuse(f"anchor &{e.anchor} refused: a parameter list needs no anchors or "
+                                 "aliases, and aliases can expand without bound", e.start_mark)
+                if e.tag is not None and e.tag != "!":
+                    raise refuse(f"tag {e.tag} refused: zero reads plain YAML data only", e.start_mark)
+                if not stack:
+                    if seen_root:
+                        raise refuse("more than one YAML document; a list is one", e.start_mark)
+                    seen_root = True
+                    if t is not MapStart:
+                        what = "sequence" if t is SeqStart else "single value"
+                        raise refuse(f"the top level must be a mapping of keys (np_grp: …), not a {what}",
+                                     e.start_mark)
+                    stack.append(_Frame(True, [], False))
+                    continue
+                f = stack[-1]
+                if f.is_map and f.key is None:
+                    if t is not Scalar_:
+                        raise refuse("a mapping key must be text", e.start_mark)
+                    key = e.value
+                    first = f.keys.get(key)
+                    if first is not None:
+                        raise refuse(f"duplicate key `{key}` (first at line {first}); YAML loaders "
+                                     "keep only the last one silently", e.start_mark)
+                    line = e.start_mark.line
+                    f.keys[key] = line + 1
+                    f.key = key
+                    f.key_line = line
+                    continue
+                # a value: of the pending key, or an item of a (meta) sequence
+                key = f.key
+                f.key = None
+                if f.meta:
+                    if t is Scalar_:
+                        tag = resolve(scalar_node, e.value, e.implicit).rsplit(":", 1)[-1] \
+                            if not e.style else "str"
+                        value = _meta_scalar(e.value, tag)
+                        if f.is_map:
+                            f.container[key] = value
+                        else:
+                            f.container.append(value)
+                    else:
+                        container: Any = {} if t is MapStart else []
+                        if f.is_map:
+                            f.container[key] = container
+                        else:
+                            f.container.append(container)
+                        if len(stack) >= MAX_NESTING:
+                            raise refuse(f"nested deeper than {MAX_NESTING} levels", e.start_mark)
+                        stack.append(_Frame(t is MapStart, [], True, container))
+                    continue
+                assert key is not None
+                if not f.segs and key == META_KEY:
+                    meta_start = f.key_line
+                    if t is Scalar_:
+                        meta = e.value
+                        meta_end = e.end_mark.line + 1
+                    else:
+                        meta = {} if t is MapStart else []
+                        stack.append(_Frame(t is MapStart, [], True, meta))
+                    continue
+                here = [*f.segs, key]
+                if t is MapStart:
+                    if len(stack) >= MAX_NESTING:
+                        raise refuse(f"nested deeper than {MAX_NESTING} levels", e.start_mark)
+                    stack.append(_Frame(True, here, False))
+                    continue
+                where = structured_path(tuple(here))
+                m = e.start_mark
+                if t is SeqStart:
+                    raise ConvertError(f"{where}: a sequence is not a parameter value; one key per "
+                                       "element (`name: {0: …, 1: …}`)", path, m.line + 1, m.column + 1)
+                if e.style:
+                    native = "str"
+                else:
+                    tag = resolve(scalar_node, e.value, e.implicit).rsplit(":", 1)[-1]
+                    if tag == "null":
+                        raise ConvertError(f"{where}: no value (YAML reads it as null); give a value, "
+                                           "or \"\" for an empty one", path, f.key_line + 1)
+                    native = tag if tag in ("int", "float") else "str"
+                leaf = _leaf(here, e.value, native, path, f.key_line + 1, m.column + 1)
+                spans.append((f.key_line, e.end_mark.line, e.end_mark.column, leaf))
+            elif t is MapEnd or t is SeqEnd:
+                f = stack.pop()
+                if f.meta and meta_end < 0 and stack and not stack[-1].meta:
+                    meta_end = e.end_mark.line + (1 if e.end_mark.column else 0)
+            elif t is Alias:
                 raise refuse("aliases (*name) are refused: a parameter list needs none, and they "
                              "can expand without bound", e.start_mark)
-            if t is ev.DocumentStartEvent:
+            elif t is DocStart:
                 documents += 1
                 if documents > 1:
                     raise refuse("more than one YAML document; a list is one", e.start_mark)
-                continue
-            if t in (ev.ScalarEvent, ev.MappingStartEvent, ev.SequenceStartEvent):
-                if e.anchor is not None:
-                    raise refuse(f"anchor &{e.anchor} refused: a parameter list needs no anchors "
-                                 "or aliases", e.start_mark)
-                if e.tag is not None and e.tag != "!":
-                    raise refuse(f"tag {e.tag} refused: zero reads plain YAML data only", e.start_mark)
-                m = e.start_mark
-                if t is ev.ScalarEvent:
-                    node = _YNode("scalar", m.line, m.column, e.end_mark.line, e.end_mark.column,
-                                  e.value)
-                    if not e.style:  # None (PyYAML) or "" (libyaml) for plain
-                        node.tag = loader.resolve(yaml.ScalarNode, e.value, e.implicit).rsplit(":", 1)[-1]
-                    else:
-                        node.tag = "str"
-                    attach(node)
-                else:
-                    node = _YNode("map" if t is ev.MappingStartEvent else "seq", m.line, m.column)
-                    attach(node)
-                    if len(stack) >= MAX_NESTING:
-                        raise refuse(f"nested deeper than {MAX_NESTING} levels", m)
-                    stack.append((node, {}, [None]))
-            elif t in (ev.MappingEndEvent, ev.SequenceEndEvent):
-                node = stack.pop()[0]
-                node.end_line, node.end_column = e.end_mark.line, e.end_mark.column
     except yaml.MarkedYAMLError as exc:
         mark = exc.problem_mark or exc.context_mark
         problem = exc.problem or "not valid YAML"
@@ -443,41 +555,11 @@ def _yaml_events_to_nodes(text: str, path: str) -> _YNode | None:
         raise ConvertError(f"not valid YAML: {exc}", path) from None
     finally:
         loader.dispose()
-    return root
-
-
-def _yaml_plain(node: _YNode, path: str) -> Any:
-    """The ``_zero`` record: plain data (iterative)."""
-    def scalar(n: _YNode) -> Any:
-        if n.tag == "int":
-            try:
-                return int(n.value)
-            except ValueError:
-                return n.value
-        if n.tag == "bool":
-            return n.value.lower() in ("true", "yes", "on", "y")
-        if n.tag == "null":
-            return None
-        return n.value
-
-    if node.kind == "scalar":
-        return scalar(node)
-    top: Any = {} if node.kind == "map" else []
-    stack: list[tuple[_YNode, Any]] = [(node, top)]
-    while stack:
-        n, target = stack.pop()
-        pairs = n.items if n.kind == "map" else [(None, x) for x in n.items]
-        for k, v in pairs:
-            if v.kind == "scalar":
-                val = scalar(v)
-            else:
-                val = {} if v.kind == "map" else []
-                stack.append((v, val))
-            if k is not None and isinstance(target, dict):
-                target[k.value] = val
-            elif isinstance(target, list):
-                target.append(val)
-    return top
+    if not seen_root:
+        raise ConvertError("empty YAML document: no parameters", path)
+    if meta_start >= 0 and meta_end < 0:
+        meta_end = len(text.split("\n"))
+    return spans, meta, range(meta_start, meta_end) if meta_start >= 0 else range(0)
 
 
 _OPENER_COMMENT_RE = re.compile(r"^\s*[^#\"'\s][^#\"']*:\s+(#.*)$")
@@ -506,57 +588,23 @@ def _scan_between(lines: list[str], start: int, stop: int, skip: range) -> list[
 def read_yaml(text: str, path: str = "-") -> Tree:
     if re.search(r"\r(?!\n)|[\x85\u2028\u2029]", text):
         raise ConvertError("line breaks other than LF or CRLF (CR, NEL, U+2028) are not read", path)
-    root = _yaml_events_to_nodes(text, path)
-    if root is None:
-        raise ConvertError("empty YAML document: no parameters", path)
-    if root.kind != "map":
-        raise ConvertError("the top level must be a mapping of keys (np_grp: …), not a "
-                           + ("sequence" if root.kind == "seq" else "single value"),
-                           path, root.line + 1, root.column + 1)
-    leaves: list[Leaf] = []
-    spans: list[tuple[int, int, int, Leaf]] = []
-    meta: Any = None
-    meta_span = range(0)
-    stack: list[tuple[list[str], Iterator[tuple[_YNode, _YNode]]]] = [([], iter(root.items))]
-    while stack:
-        segs, it = stack[-1]
-        for k, v in it:
-            if not segs and k.value == META_KEY:
-                meta = _yaml_plain(v, path)
-                end = v.end_line if v.kind != "scalar" else v.end_line + 1
-                meta_span = range(k.line, max(end, k.line + 1))
-                continue
-            here = [*segs, k.value]
-            if v.kind == "map":
-                stack.append((here, iter(v.items)))
-                break
-            where = structured_path(tuple(here))
-            if v.kind == "seq":
-                raise ConvertError(f"{where}: a sequence is not a parameter value; one key per "
-                                   "element (`name: {0: …, 1: …}`)", path, v.line + 1, v.column + 1)
-            if v.tag == "null":
-                raise ConvertError(f"{where}: no value (YAML reads it as null); give a value, "
-                                   "or \"\" for an empty one", path, k.line + 1, k.column + 1)
-            native = v.tag if v.tag in ("int", "float") else "str"
-            leaf = _leaf(here, v.value, native, path, k.line + 1, v.column + 1)
-            leaves.append(leaf)
-            spans.append((k.line, v.end_line, v.end_column, leaf))
-        else:
-            stack.pop()
-
+    spans, meta, meta_span = _yaml_stream(text, path)
     lines = text.split("\n")
     prev_end = -1
     for key_line, end_line, end_col, leaf in spans:
-        leaf.before = _scan_between(lines, prev_end + 1, key_line, meta_span)
+        if key_line > prev_end + 1:
+            leaf.before = _scan_between(lines, prev_end + 1, key_line, meta_span)
         if end_line < len(lines):
-            leaf.after = _strip_comment(lines[end_line][end_col:])
+            rest = lines[end_line][end_col:]
+            if "#" in rest:
+                leaf.after = _strip_comment(rest)
         prev_end = end_line
     tail_stop = meta_span.start if meta_span and meta_span.start > prev_end else len(lines)
     tail = _scan_between(lines, prev_end + 1, tail_stop, meta_span)
     if tail_stop == len(lines):  # blank lines closing the file are no part of the list
         while tail and tail[-1] == "":
             tail.pop()
-    return _finish(leaves, meta, tail, path)
+    return _finish([s[3] for s in spans], meta, tail, path)
 
 
 # ------------------------------------------------------------------------- TOML

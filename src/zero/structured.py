@@ -85,13 +85,26 @@ class Tree:
     tail: list[str] = field(default_factory=list)
     path: str = "-"
     notes: list[str] = field(default_factory=list)  # what the conversion could not keep
+    _nested: tuple[dict[str, Any], list[Leaf]] | None = field(default=None, repr=False)
+
+    def nested(self) -> tuple[dict[str, Any], list[Leaf]]:
+        """:func:`nest` of the leaves, computed once."""
+        if self._nested is None:
+            self._nested = nest(self.leaves)
+        return self._nested
 
 
 # --------------------------------------------------------------------------- keys
 
 
+_SPLIT_RE = re.compile(r"[.\[\]]+")
+_PLAIN_KEY_RE = re.compile(r"[A-Za-z_][A-Za-z0-9_]*(?:\[[0-9]+\])*(?:\.[A-Za-z_][A-Za-z0-9_]*(?:\[[0-9]+\])*)*")
+
+
 def split_key(key: str) -> tuple[str, ...] | None:
     """``np_grp[1].achse[0].versch`` → ``("np_grp", "1", "achse", "0", "versch")``."""
+    if _PLAIN_KEY_RE.fullmatch(key):
+        return tuple(x for x in _SPLIT_RE.split(key) if x)
     out: list[str] = []
     for part in key.split("."):
         m = _FRAGMENT_RE.fullmatch(part)
@@ -118,18 +131,23 @@ def is_index(segment: str) -> bool:
     return segment.isascii() and segment.isdigit()
 
 
+_segment_cache: dict[str, tuple[str, ...]] = {}
+_SIMPLE_VALUE_RE = re.compile(r"[A-Za-z0-9_+\-][^\s\"|]*")
+
+
 def path_from_segments(segments: list[str], where: str) -> tuple[str, ...]:
     """Validate the mapping keys on the way to a leaf; a segment may hold a dotted key."""
     out: list[str] = []
     for seg in segments:
-        if is_index(seg):
-            if not out:
-                raise ConvertError(f"`{seg}` at the top: a key starts with a name, not an index", where)
-            out.append(seg)
-            continue
-        parts = split_key(seg)
-        if parts is None or not parts:
-            raise ConvertError(f"`{seg}` is not a key or part of a key (name[index].name...)", where)
+        parts = _segment_cache.get(seg)
+        if parts is None:
+            parts = (seg,) if is_index(seg) else split_key(seg)
+            if parts is None or not parts:
+                raise ConvertError(f"`{seg}` is not a key or part of a key (name[index].name...)", where)
+            if len(_segment_cache) < 100_000:
+                _segment_cache[seg] = parts
+        if not out and is_index(parts[0]):
+            raise ConvertError(f"`{seg}` at the top: a key starts with a name, not an index", where)
         out.extend(parts)
     if len(out) > MAX_DEPTH:
         raise ConvertError(f"key has {len(out)} levels; zero converts keys of up to {MAX_DEPTH}", where)
@@ -157,6 +175,23 @@ def nest(leaves: list[Leaf]) -> tuple[dict[str, Any], list[Leaf]]:
     cannot nest: it goes to ``flat`` and is written under its whole key at the
     top level, whatever the order of the two.
     """
+    root: dict[str, Any] = {}
+    for leaf in leaves:  # fast path: no key lies below another key's value
+        node = root
+        for seg in leaf.path[:-1]:
+            nxt = node.get(seg)
+            if nxt is None:
+                nxt = node[seg] = {}
+            elif not isinstance(nxt, dict):
+                return _nest_with_flat(leaves)
+            node = nxt
+        if leaf.path[-1] in node:
+            return _nest_with_flat(leaves)
+        node[leaf.path[-1]] = leaf
+    return root, []
+
+
+def _nest_with_flat(leaves: list[Leaf]) -> tuple[dict[str, Any], list[Leaf]]:
     values = {leaf.path for leaf in leaves}
     root: dict[str, Any] = {}
     flat: list[Leaf] = []
@@ -186,12 +221,6 @@ def dfs(root: dict[str, Any]) -> Iterator[Leaf]:
             yield child
         else:
             stack.pop()
-
-
-def nested_order(leaves: list[Leaf]) -> list[Leaf]:
-    """The order in which YAML/TOML/JSON hold the leaves: the flat ones, then nested."""
-    root, flat = nest(leaves)
-    return [*flat, *dfs(root)]
 
 
 # ------------------------------------------------------------- list → tree
@@ -350,7 +379,8 @@ def from_document(doc: Document, kind: str | None = None) -> Tree:
             layout[key] = _template(doc, e)
         else:
             layout.pop(key, None)
-    ordered = nested_order(effective)
+    root, flat = nest(effective)
+    ordered = [*flat, *dfs(root)]
     if shadowed or [x.key for x in ordered] != [x.key for x in sequence]:
         meta["order"] = [x.key for x in sequence]
     if shadowed:
@@ -359,7 +389,9 @@ def from_document(doc: Document, kind: str | None = None) -> Tree:
         meta["layout"] = layout
     if before_exact:
         meta["before"] = before_exact
-    return Tree(ordered, meta, tail, doc.path, notes)
+    tree = Tree(ordered, meta, tail, doc.path, notes)
+    tree._nested = (root, flat)
+    return tree
 
 
 # ------------------------------------------------------------- tree → list
@@ -499,6 +531,9 @@ def _verify(line: str, leaf: Leaf, value: str, path: str) -> None:
     if m:
         raise ConvertError(f"{where}: control character U+{ord(m.group()):04X} cannot go into a list line",
                            path, leaf.line, leaf.column)
+    if not leaf.before and _SIMPLE_VALUE_RE.fullmatch(value) and (
+            leaf.after is None or not leaf.after.startswith("|")) and line.startswith(leaf.key):
+        return  # a plain token after a valid key reads back as written: no need to re-scan
     for x in leaf.before:
         if x and not x.startswith("#"):
             raise ConvertError(f"{where}: comment line {x!r} does not start with `#`", path, leaf.line)

@@ -1,0 +1,41 @@
+"""Deterministic workloads shared by the benchmark scripts (no randomness, no files needed)."""
+
+from __future__ import annotations
+
+HEADER = [
+    "# ****************************************",
+    "# zero-offset list (generated for benchmarks)",
+    "# ****************************************",
+    "#",
+]
+
+
+def full_zero_list() -> bytes:
+    """97 groups x 32 axes x (versch, inaktiv) = 6,208 entries (+2), vendor layout, all comment styles."""
+    lines = [*HEADER, "g53_verfuegbar".ljust(54) + "1", "default_index".ljust(54) + "1"]
+    for i in range(97):
+        lines.append(f"# G159 = {i}")
+        for j in range(32):
+            lines.append(f"np_grp[{i}].achse[{j}].versch".ljust(54)
+                         + f"{i * 1000 + j}".ljust(14) + "( P-ZERO-00003 : offset")
+            style = ("# active", "/* 0 */ ( on", "( P-ZERO-00004")[j % 3]
+            lines.append(f"np_grp[{i}].achse[{j}].inaktiv".ljust(54) + "0".ljust(14) + style)
+    lines.append("Ende")
+    return ("\n".join(lines) + "\n").encode()
+
+
+def million_entries(n: int = 1_000_000) -> bytes:
+    """n entries with distinct keys: zero offsets in many groups, axis-like and tool-like keys."""
+    lines = [*HEADER]
+    shapes = (
+        lambda k: (f"np_grp[{k // 64}].achse[{k % 32}].{'versch' if k % 64 < 32 else 'inaktiv'}", str(k)),
+        lambda k: (f"getriebe[{k}].dynamik.vb_max", "0x400001"),
+        lambda k: (f"wz[{k}].kopf.name", "PLC_INFO | MOS"),
+        lambda k: (f"lr_param[{k}].kv", "P-AXIS-00212.0"),
+    )
+    for k in range(n):
+        key, value = shapes[k % 4](k)
+        comment = "  ( P-ZERO-00003 : offset" if k % 10 == 0 else ""
+        lines.append(key.ljust(54) + value + comment)
+    lines.append("Ende")
+    return ("\n".join(lines) + "\n").encode()
