@@ -17,6 +17,7 @@ import typer
 from zero import __version__
 
 if TYPE_CHECKING:
+    from zero.diff import Side
     from zero.registry import Registry
 
 app = typer.Typer(
@@ -233,6 +234,83 @@ def convert(
             sys.stdout.buffer.flush()
     except ZeroError as exc:
         raise _fail(str(exc)) from None
+
+
+def _read_side(name: str, fmt: Format | None, kind: str | None, registry: Registry) -> Side:
+    from zero.convert import ConvertError, source_format
+    from zero.diff import read_side
+    from zero.lint import ZeroError, read_file
+
+    try:
+        src = (fmt.value if fmt else "lis") if name == "-" else source_format(fmt.value if fmt else None, name)
+        data = sys.stdin.buffer.read() if name == "-" else read_file(name)
+        return read_side(data, src, name, registry, kind)
+    except (ZeroError, ConvertError) as exc:
+        raise _fail(str(exc)) from None
+
+
+@app.command()
+def diff(
+    a: Annotated[str, typer.Argument(help="Old side: list, YAML, TOML or JSON (- for stdin).")],
+    b: Annotated[str | None, typer.Argument(help="New side (omit with --defaults).")] = None,
+    defaults: Annotated[bool, typer.Option(
+        "--defaults", help="Compare A with the registry defaults: what this machine changed.")] = False,
+    strict: Annotated[bool, typer.Option(
+        help="Also show default-vs-absent and values written differently but equal.")] = False,
+    comments: Annotated[bool, typer.Option(help="Comment changes count too.")] = False,
+    output_format: Annotated[OutputFormat, typer.Option(
+        "--output-format", help="text (a table) or json (one object per change).")] = OutputFormat.text,
+    from_: Annotated[Format | None, typer.Option("--from", help="Format of both inputs.")] = None,
+    kind: Annotated[str | None, typer.Option(help="List kind instead of detecting it.")] = None,
+) -> None:
+    """Compare two lists by parameter: added, removed, changed, with mm/° deltas.
+
+    Exit 0 when equal, 1 when different, 2 on error (like diff).
+    """
+    import json
+
+    from zero.diff import DiffOptions, diff_defaults, diff_sides
+    from zero.report import render_diff
+
+    forced = _kind_option(kind)
+    registry = _registry()
+    options = DiffOptions(strict=strict, comments=comments)
+    if defaults:
+        if b is not None:
+            raise _fail("--defaults compares one file with the registry; give one file")
+        side = _read_side(a, from_, forced, registry)
+        changes = diff_defaults(side, options, registry)
+        header = f"{a}: {len(changes)} parameters differ from the registry defaults"
+    else:
+        if b is None:
+            raise _fail("give two files to compare (or one with --defaults)")
+        if a == "-" and b == "-":
+            raise _fail("only one side can be standard input")
+        side_a = _read_side(a, from_, forced, registry)
+        side_b = _read_side(b, from_, forced or side_a.kind, registry)
+        changes = diff_sides(side_a, side_b, options, registry)
+        header = f"--- {a}\n+++ {b}"
+    if output_format is OutputFormat.json:
+        sys.stdout.write(json.dumps([c.to_json() for c in changes], indent=2, ensure_ascii=False) + "\n")
+    elif changes:
+        render_diff(changes, header)
+    counted = [c for c in changes if c.kind != "same"]
+    if counted:
+        raise typer.Exit(code=1)
+
+
+@app.command()
+def show(
+    path: Annotated[str, typer.Argument(help="A list, YAML, TOML or JSON file (- for stdin).")],
+    from_: Annotated[Format | None, typer.Option("--from", help="Input format.")] = None,
+    kind: Annotated[str | None, typer.Option(help="List kind instead of detecting it.")] = None,
+) -> None:
+    """Print a list as the controller reads it: one parameter per line, grouped (for git textconv)."""
+    from zero.diff import show_lines
+
+    registry = _registry()
+    side = _read_side(path, from_, _kind_option(kind), registry)
+    sys.stdout.write("\n".join(show_lines(side, registry)) + "\n")
 
 
 @app.command()

@@ -10,12 +10,15 @@ import json
 import os
 import sys
 from collections.abc import Iterable, Sequence
-from typing import TextIO
+from typing import TYPE_CHECKING, TextIO
 
 from zero.diagnostics import Diagnostic, Severity
 from zero.lint import LintResult
 from zero.registry import KINDS, ParamSpec, Registry
 from zero.rules import RULES
+
+if TYPE_CHECKING:
+    from zero.diff import Change
 
 Segment = tuple[str, str]  # (text, rich style)
 _SEVERITY_STYLE = {Severity.ERROR: "bold red", Severity.WARNING: "bold yellow",
@@ -189,3 +192,29 @@ def param_text(spec: ParamSpec, registry: Registry) -> str:
     rows.append(("source", spec.source))
     width = max(len(k) for k, _ in rows)
     return "\n".join(f"{k:<{width}}  {v}" for k, v in rows) + "\n"
+
+
+def render_diff(changes: Sequence[Change], header: str, stream: TextIO | None = None,
+                color: bool | None = None) -> None:
+    """The changes of ``zero diff``: a rich table on a terminal, aligned text otherwise."""
+    from zero.diff import render_plain, rows, summary
+
+    stream = stream or sys.stdout
+    if not (use_color(stream) if color is None else color):
+        stream.write(render_plain(list(changes), header))
+        stream.write(summary(list(changes)) + "\n")
+        return
+    from rich.console import Console
+    from rich.table import Table
+
+    console = Console(file=stream, force_terminal=True, highlight=False, emoji=False, markup=False)
+    console.print(header, style="bold")
+    styles = {"+": "green", "-": "red", "~": "yellow", "=": "dim", "#": "cyan"}
+    for group, cells in rows(changes):
+        table = Table(title=group, title_justify="left", title_style="bold", box=None, pad_edge=False)
+        for name in ("", "key", "ID", "old → new", "delta", ""):
+            table.add_column(name, no_wrap=name in ("key", "ID"))
+        for r in cells:
+            table.add_row(*r, style=styles.get(r[0], ""))
+        console.print(table)
+    console.print(summary(list(changes)), style="bold")

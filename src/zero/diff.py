@@ -1,0 +1,371 @@
+"""``zero diff``: what changed, by parameter, in units an engineer reads.
+
+Both sides are read into :class:`Side` (lists directly; YAML/TOML/JSON through
+the list they convert to), so a list and its YAML compare equal. Values are
+compared as the controller reads them (``0x10`` = ``16``, ``TRUE`` = ``1`` for
+a BOOLEAN); a parameter set to its default on one side and absent on the other
+has the same effective value and is shown only with ``strict``.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Iterable
+from dataclasses import dataclass, field
+from typing import Any
+
+from zero.model import Entry, parse_key
+from zero.registry import ParamSpec, Registry, default_registry
+from zero.rules.base import default_number, read_value
+
+ADDED, REMOVED, CHANGED, SAME, COMMENT = "added", "removed", "changed", "same", "comment"
+
+
+@dataclass(slots=True)
+class Side:
+    """One file as the controller reads it: effective entries by key."""
+
+    path: str
+    kind: str | None
+    entries: dict[str, Entry]
+    comments: dict[str, tuple[str, ...]] = field(default_factory=dict)  # key → comments near it
+
+
+@dataclass(slots=True)
+class Change:
+    key: str
+    param_id: str | None
+    kind: str  # added, removed, changed, same (equal effective value, shown with strict), comment
+    old: str | None
+    new: str | None
+    unit: str | None = None
+    delta: float | int | None = None
+    group: str = ""
+    note: str = ""
+
+    def to_json(self) -> dict[str, Any]:
+        return {"key": self.key, "id": self.param_id, "kind": self.kind, "old": self.old,
+                "new": self.new, "unit": self.unit, "delta": self.delta, "group": self.group,
+                "note": self.note or None}
+
+
+# ----------------------------------------------------------------- reading sides
+
+
+def read_side(data: bytes, fmt: str, path: str, registry: Registry | None = None,
+              kind: str | None = None) -> Side:
+    """Read list/YAML/TOML/JSON bytes as the controller would see them."""
+    from zero.tokenizer import tokenize
+
+    registry = registry or default_registry()
+    if fmt == "lis":
+        doc = tokenize(data, path)
+    else:
+        from zero.convert import read_tree
+        from zero.structured import encode_list, to_list_text
+
+        tree = read_tree(data, fmt, path, kind)
+        doc = tokenize(encode_list(tree, to_list_text(tree).text), path)
+        if kind is None and isinstance(tree.meta.get("kind"), str):
+            kind = tree.meta["kind"]
+    entries: dict[str, Entry] = {}
+    comments: dict[str, tuple[str, ...]] = {}
+    pending: list[str] = []
+    for item in doc.items:
+        t = type(item).__name__
+        if t == "Comment":
+            pending.append(doc.lines[item.line - 1].strip())
+        elif t == "Entry" and isinstance(item, Entry) and not item.after_end:
+            entries[item.key_text] = item  # the later value wins, as on the controller
+            comments[item.key_text] = (*pending, item.comment.strip() if item.comment else "")
+            pending = []
+    if kind is None:
+        kind = registry.detect_kind((e.key.pattern for e in entries.values() if e.key), path)
+    return Side(path, kind, entries, comments)
+
+
+# ----------------------------------------------------------------- values
+
+
+def spec_for(key: str, kind: str | None, registry: Registry) -> ParamSpec | None:
+    k = parse_key(key)
+    if k is None:
+        return None
+    return registry.by_pattern(k.pattern, kind) or registry.alias(k.pattern, kind)
+
+
+def effective(entry: Entry, spec: ParamSpec | None) -> tuple[str, Any]:
+    """The value as the controller reads it, comparable across spellings."""
+    if spec is not None and entry.value_kind is not None:
+        v = read_value(spec, entry)
+        if v.ref is not None:
+            return ("ref", v.ref)
+        if v.problem is None and v.number is not None:
+            return ("num", v.number)
+        if v.problem is None and v.text is not None:
+            return ("text", v.text)
+    from zero.rules.base import parse_int
+
+    if entry.value_kind is not None and entry.value_kind.value in ("int", "hex"):
+        n = parse_int(entry.value)
+        if n is not None:
+            return ("num", n)
+    return ("raw", entry.value)
+
+
+def default_effective(spec: ParamSpec | None) -> tuple[str, Any] | None:
+    if spec is None:
+        return None
+    d = (spec.default or "").strip()
+    if d in ("", "-", "--", "----"):
+        return None
+    if spec.type == "STRING" and not spec.symbols:
+        return ("text", d.strip('"'))
+    n = default_number(spec)
+    return ("num", n) if n is not None else None
+
+
+# ----------------------------------------------------------------- units and groups
+
+ZERO_UNIT = 10_000  # 0.1 µm per mm, 0.0001° per degree
+
+
+def axis_unit(side: Side | None) -> str | None:
+    """mm or ° from the axis type where a list states it (``kenngr.achs_typ``)."""
+    if side is None:
+        return None
+    e = side.entries.get("kenngr.achs_typ")
+    if e is None:
+        return None
+    return {"1": "mm", "2": "°", "4": "°"}.get(e.value.strip())
+
+
+def unit_and_delta(spec: ParamSpec | None, old: tuple[str, Any] | None, new: tuple[str, Any] | None,
+                   length_unit: str | None) -> tuple[str | None, float | int | None]:
+    if spec is None:
+        return None, None
+    unit: str | None = (length_unit or "mm or °") if spec.is_length else (", ".join(spec.units) or None)
+    if old is None or new is None or old[0] != "num" or new[0] != "num":
+        return unit, None
+    raw = new[1] - old[1]
+    if spec.is_length:
+        return unit, round(raw / ZERO_UNIT, 4)
+    return unit, raw
+
+
+def g_code(group: int) -> str:
+    if group == 0:
+        return "G53 (G159=0)"
+    if 1 <= group <= 6:
+        return f"G{53 + group} (G159={group})"
+    return f"G159={group}"
+
+
+_INDEX_RE = re.compile(r"\[([0-9]+)\]")
+
+
+def group_of(key: str, kind: str | None) -> str:
+    """How engineers think of a key: offsets by G code and axis, others by family."""
+    m = re.match(r"(np_grp|pzv_grp)\[([0-9]+)\]\.achse\[[0-9]+\]", key)
+    if m:
+        grp = int(m.group(2)) if len(m.group(2)) < 10 else 10**9
+        return g_code(grp) if m.group(1) == "np_grp" else f"clamp group {grp}"
+    if kind == "ZERO" and key in ("g53_verfuegbar", "default_index"):
+        return "general"
+    first = key.split(".", 1)[0]
+    return first if "." in key else "general"
+
+
+def _sort_key(key: str) -> tuple[Any, ...]:
+    parts = re.split(r"(\[[0-9]+\])", key)
+    return tuple((0, int(p[1:-1]), "") if p.startswith("[") and len(p) < 22 else (1, 0, p)
+                 for p in parts if p)
+
+
+# ----------------------------------------------------------------- the diff
+
+
+@dataclass(slots=True)
+class DiffOptions:
+    strict: bool = False  # also show default vs absent and respelled equal values
+    comments: bool = False  # comment changes count
+
+
+def _comment_text(lines: tuple[str, ...]) -> str:
+    return " | ".join(x for x in lines if x) or "(no comment)"
+
+
+def _text(value: tuple[str, Any] | None, entry: Entry | None) -> str | None:
+    if entry is not None:
+        return entry.value
+    if value is None:
+        return None
+    return str(value[1])
+
+
+def diff_sides(a: Side, b: Side, options: DiffOptions | None = None,
+               registry: Registry | None = None) -> list[Change]:
+    """Changes from side ``a`` to side ``b``, grouped and in key order."""
+    options = options or DiffOptions()
+    registry = registry or default_registry()
+    kind = b.kind or a.kind
+    unit_a, unit_b = axis_unit(a), axis_unit(b)
+    length_unit = unit_b or unit_a
+    out: list[Change] = []
+    for key in sorted(set(a.entries) | set(b.entries), key=_sort_key):
+        ea, eb = a.entries.get(key), b.entries.get(key)
+        spec = spec_for(key, kind, registry)
+        pid = spec.id if spec else None
+        va = effective(ea, spec) if ea is not None else None
+        vb = effective(eb, spec) if eb is not None else None
+        group = group_of(key, kind)
+        if ea is not None and eb is not None:
+            if va == vb:
+                if ea.value != eb.value and options.strict:
+                    out.append(Change(key, pid, SAME, ea.value, eb.value, group=group,
+                                      note="written differently, same value"))
+                elif options.comments and a.comments.get(key) != b.comments.get(key):
+                    out.append(Change(key, pid, COMMENT, _comment_text(a.comments.get(key, ())),
+                                      _comment_text(b.comments.get(key, ())), group=group))
+                continue
+            unit, delta = unit_and_delta(spec, va, vb, length_unit)
+            out.append(Change(key, pid, CHANGED, ea.value, eb.value, unit, delta, group))
+            continue
+        dflt = default_effective(spec)
+        present = va if ea is not None else vb
+        if dflt is not None and present is not None and present == dflt:
+            if options.strict:
+                out.append(Change(key, pid, SAME, _text(va, ea), _text(vb, eb), group=group,
+                                  note="set to its default on one side, absent on the other"))
+            continue
+        if ea is None:
+            unit, delta = unit_and_delta(spec, dflt, vb, length_unit)
+            out.append(Change(key, pid, ADDED, None, eb.value if eb else None, unit, delta, group,
+                              note=f"was the default {spec.default_display}" if dflt and spec else ""))
+        else:
+            unit, delta = unit_and_delta(spec, va, dflt, length_unit)
+            out.append(Change(key, pid, REMOVED, ea.value, None, unit, delta, group,
+                              note=f"now the default {spec.default_display}" if dflt and spec else ""))
+    return _grouped(out)
+
+
+def _grouped(changes: list[Change]) -> list[Change]:
+    return sorted(changes, key=lambda c: (_group_rank(c.group), _sort_key(c.key)))
+
+
+def diff_defaults(side: Side, options: DiffOptions | None = None,
+                  registry: Registry | None = None) -> list[Change]:
+    """The parameters of one file that differ from the registry defaults."""
+    options = options or DiffOptions()
+    registry = registry or default_registry()
+    length_unit = axis_unit(side)
+    out: list[Change] = []
+    for key in sorted(side.entries, key=_sort_key):
+        e = side.entries[key]
+        spec = spec_for(key, side.kind, registry)
+        dflt = default_effective(spec)
+        value = effective(e, spec)
+        group = group_of(key, side.kind)
+        if spec is None:
+            out.append(Change(key, None, CHANGED, None, e.value, group=group,
+                              note="not in the registry"))
+            continue
+        if dflt is None:
+            if options.strict:
+                out.append(Change(key, spec.id, CHANGED, None, e.value, group=group,
+                                  note="no documented default"))
+            continue
+        if value == dflt:
+            continue
+        unit, delta = unit_and_delta(spec, dflt, value, length_unit)
+        out.append(Change(key, spec.id, CHANGED, spec.default_display, e.value, unit, delta, group))
+    return _grouped(out)
+
+
+# ----------------------------------------------------------------- rendering
+
+
+def format_delta(c: Change) -> str:
+    if c.delta is None:
+        return ""
+    if isinstance(c.delta, float) or (c.unit or "").startswith(("mm", "°")):
+        text = f"{c.delta:+.4f}"
+    else:
+        text = f"{c.delta:+d}" if isinstance(c.delta, int) else f"{c.delta:+g}"
+    return f"{text} {c.unit}" if c.unit else text
+
+
+_MARK = {ADDED: "+", REMOVED: "-", CHANGED: "~", SAME: "=", COMMENT: "#"}
+
+
+def rows(changes: Iterable[Change]) -> list[tuple[str, list[tuple[str, ...]]]]:
+    """Changes as (group, rows of cells) for the text and table renderers."""
+    out: list[tuple[str, list[tuple[str, ...]]]] = []
+    for c in changes:
+        if not out or out[-1][0] != c.group:
+            out.append((c.group, []))
+        old = "(absent)" if c.old is None else c.old
+        new = "(absent)" if c.new is None else c.new
+        out[-1][1].append((_MARK[c.kind], c.key, c.param_id or "", f"{old} → {new}",
+                           format_delta(c), c.note))
+    return out
+
+
+def render_plain(changes: list[Change], header: str) -> str:
+    lines = [header]
+    for group, cells in rows(changes):
+        lines.append(f"\n{group}")
+        widths = [max(len(r[i]) for r in cells) for i in range(5)]
+        for r in cells:
+            text = "  ".join(r[i].rjust(widths[i]) if i == 4 else r[i].ljust(widths[i])
+                             for i in range(5)).rstrip()
+            lines.append(f"  {text}" + (f"  ({r[5]})" if r[5] else ""))
+    return "\n".join(lines) + "\n"
+
+
+def summary(changes: list[Change]) -> str:
+    n = {k: sum(1 for c in changes if c.kind == k) for k in _MARK}
+    parts = [f"{n[CHANGED]} changed", f"{n[ADDED]} added", f"{n[REMOVED]} removed"]
+    if n[COMMENT]:
+        parts.append(f"{n[COMMENT]} comments changed")
+    if n[SAME]:
+        parts.append(f"{n[SAME]} same effective value")
+    return ", ".join(parts)
+
+
+def show_lines(side: Side, registry: Registry | None = None) -> list[str]:
+    """A list as one line per parameter, grouped: the view ``git diff`` compares (textconv)."""
+    registry = registry or default_registry()
+    length_unit = axis_unit(side)
+    out: list[str] = [f"# zero: {side.path} ({side.kind or 'unknown kind'}), "
+                      f"{len(side.entries)} parameters as the controller reads them"]
+    current = None
+    for key in sorted(side.entries, key=lambda k: (_group_rank(group_of(k, side.kind)), _sort_key(k))):
+        group = group_of(key, side.kind)
+        if group != current:
+            out.append(f"[{group}]")
+            current = group
+        e = side.entries[key]
+        spec = spec_for(key, side.kind, registry)
+        extra = ""
+        if spec is not None:
+            extra = f"  ({spec.id}"
+            v = effective(e, spec)
+            if spec.is_length and v[0] == "num":
+                extra += f", {v[1] / ZERO_UNIT:.4f} {length_unit or 'mm or °'}"
+            extra += ")"
+        out.append(f"{key} = {e.value}{extra}")
+    return out
+
+
+def _group_rank(group: str) -> tuple[Any, ...]:
+    """General first, then G53, G54..G59, G159=7.., clamp groups, then families by name."""
+    if group == "general":
+        return (0, 0, "")
+    m = re.match(r"G\d+ \(G159=(\d+)\)|G159=(\d+)", group)
+    if m:
+        return (1, int(m.group(1) if m.group(1) is not None else m.group(2)), "")
+    m = re.match(r"clamp group (\d+)", group)
+    if m:
+        return (2, int(m.group(1)), "")
+    return (3, 0, group)

@@ -1,0 +1,162 @@
+"""zero diff: semantic comparison, units, grouping, defaults, formats, git textconv."""
+
+from __future__ import annotations
+
+import json
+import os
+import shlex
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+from typer.testing import CliRunner
+
+from conftest import FIXTURES, golden
+from zero.cli import app
+from zero.convert import convert
+from zero.diff import DiffOptions, diff_defaults, diff_sides, read_side
+
+runner = CliRunner()
+D = FIXTURES / "diff"
+
+
+def side(path: Path, fmt: str = "lis"):  # type: ignore[no-untyped-def]
+    return read_side(path.read_bytes(), fmt, str(path))
+
+
+def test_reordered_and_recommented_lists_do_not_differ() -> None:
+    changes = diff_sides(side(D / "base.lis"), side(D / "reordered.lis"))
+    assert changes == []
+    result = runner.invoke(app, ["diff", str(D / "base.lis"), str(D / "reordered.lis")])
+    assert result.exit_code == 0 and result.output == ""
+
+
+def test_comments_count_when_asked() -> None:
+    changes = diff_sides(side(D / "base.lis"), side(D / "reordered.lis"), DiffOptions(comments=True))
+    assert {c.kind for c in changes} == {"comment"}
+    assert "np_grp[1].achse[1].versch" in {c.key for c in changes}
+    code = runner.invoke(app, ["diff", "--comments", str(D / "base.lis"), str(D / "reordered.lis")]).exit_code
+    assert code == 1
+
+
+def test_changed_offset_added_and_removed_groups_golden(request: pytest.FixtureRequest) -> None:
+    changes = diff_sides(side(D / "base.lis"), side(D / "changed.lis"))
+    actual = [c.to_json() for c in changes]
+    expected = golden(D / "changed.expected.json", actual, request.config.getoption("--update-golden"))
+    assert actual == expected
+    first = changes[0]
+    assert (first.key, first.param_id, first.old, first.new, first.delta, first.unit) == (
+        "np_grp[1].achse[0].versch", "P-ZERO-00003", "100000", "110000", 1.0, "mm or °")
+    assert [c.group for c in changes] == ["G54 (G159=1)", "G55 (G159=2)", "G55 (G159=2)",
+                                          "G159=7", "G159=7", "G159=7"]
+
+
+def test_text_output_golden(request: pytest.FixtureRequest) -> None:
+    result = runner.invoke(app, ["diff", "fixtures/diff/base.lis", "fixtures/diff/changed.lis"],
+                           env={"NO_COLOR": "1"})
+    assert result.exit_code == 1
+    path = D / "changed.expected.txt"
+    if request.config.getoption("--update-golden"):
+        path.write_text(result.output, encoding="utf-8")
+    assert result.output == path.read_text(encoding="utf-8")
+    assert "np_grp[1].achse[0].versch  P-ZERO-00003  100000 → 110000  +1.0000 mm or °" in result.output
+
+
+def test_default_versus_absent_only_with_strict() -> None:
+    a, b = side(D / "base.lis"), side(D / "changed.lis")
+    key = "np_grp[0].achse[2].inaktiv"
+    assert key not in {c.key for c in diff_sides(a, b)}
+    strict = [c for c in diff_sides(a, b, DiffOptions(strict=True)) if c.key == key]
+    assert len(strict) == 1 and strict[0].kind == "same"
+
+
+def test_defaults_shows_what_the_machine_changed() -> None:
+    changes = diff_defaults(side(D / "base.lis"))
+    keys = [c.key for c in changes]
+    assert "np_grp[1].achse[0].versch" in keys
+    assert "np_grp[0].achse[0].versch" not in keys  # 0 is the default
+    assert "np_grp[1].achse[2].inaktiv" not in keys
+    result = runner.invoke(app, ["diff", "--defaults", str(D / "base.lis"), "--output-format", "json"])
+    assert result.exit_code == 1
+    assert {c["key"] for c in json.loads(result.output)} == set(keys)
+
+
+@pytest.mark.parametrize("fmt", ["yaml", "toml", "json"])
+def test_list_and_its_structured_form_do_not_differ(tmp_path: Path, fmt: str) -> None:
+    data = (D / "base.lis").read_bytes()
+    target = tmp_path / f"base.{fmt}"
+    target.write_bytes(convert(data, "lis", fmt, "base.lis").output)
+    result = runner.invoke(app, ["diff", str(D / "base.lis"), str(target)])
+    assert result.exit_code == 0, result.output
+    assert diff_sides(side(D / "base.lis"), side(D / "hand.yaml", "yaml")) == []
+
+
+def test_axis_unit_from_the_axis_type(corpus: Path) -> None:
+    axis = (corpus / "isg-sdk" / "listen" / "achsmds1.lis").read_bytes()
+    changed = axis.replace(b"kenngr.swe_pos                                        15000000",
+                           b"kenngr.swe_pos                                        15010000")
+    assert changed != axis
+    changes = diff_sides(read_side(axis, "lis", "a.lis"), read_side(changed, "lis", "b.lis"))
+    assert [(c.key, c.delta, c.unit) for c in changes] == [("kenngr.swe_pos", 1.0, "mm")]
+    rotary = changed.replace(b"kenngr.achs_typ                                       1",
+                             b"kenngr.achs_typ                                       2")
+    c = [x for x in diff_sides(read_side(axis, "lis", "a.lis"), read_side(rotary, "lis", "b.lis"))
+         if x.key == "kenngr.swe_pos"]
+    assert c[0].unit == "°"
+
+
+def test_errors_exit_2(tmp_path: Path) -> None:
+    assert runner.invoke(app, ["diff", str(D / "base.lis"), str(tmp_path / "nope.lis")]).exit_code == 2
+    bad = tmp_path / "bad.yaml"
+    bad.write_text("a: &x 1\n")
+    assert runner.invoke(app, ["diff", str(D / "base.lis"), str(bad)]).exit_code == 2
+    assert runner.invoke(app, ["diff", str(D / "base.lis")]).exit_code == 2
+    assert runner.invoke(app, ["diff", "--defaults", str(D / "base.lis"), str(D / "base.lis")]).exit_code == 2
+
+
+def test_stdin_side() -> None:
+    data = (D / "changed.lis").read_bytes()
+    result = runner.invoke(app, ["diff", str(D / "base.lis"), "-"], input=data)
+    assert result.exit_code == 1 and "110000" in result.output
+
+
+@pytest.mark.skipif(shutil.which("git") is None, reason="git not installed")
+def test_git_textconv_shows_the_semantic_view(tmp_path: Path) -> None:
+    env = {**os.environ, "GIT_AUTHOR_NAME": "t", "GIT_AUTHOR_EMAIL": "t@example.invalid",
+           "GIT_COMMITTER_NAME": "t", "GIT_COMMITTER_EMAIL": "t@example.invalid",
+           "GIT_CONFIG_GLOBAL": os.devnull, "GIT_CONFIG_NOSYSTEM": "1", "NO_COLOR": "1"}
+
+    def git(*args: str) -> str:
+        return subprocess.run(["git", *args], cwd=tmp_path, env=env, check=True,
+                              capture_output=True, text=True).stdout
+
+    git("init", "-q")
+    git("config", "diff.zero.textconv", f"{shlex.quote(sys.executable)} -m zero show")
+    (tmp_path / ".gitattributes").write_text("*.lis diff=zero\n")
+    target = tmp_path / "nullp.lis"
+    target.write_bytes((D / "base.lis").read_bytes())
+    git("add", ".")
+    git("commit", "-q", "-m", "base")
+    target.write_bytes((D / "changed.lis").read_bytes())
+    git("commit", "-q", "-am", "re-clamped")
+    out = git("diff", "HEAD~1", "HEAD")
+    assert "-np_grp[1].achse[0].versch = 100000  (P-ZERO-00003, 10.0000 mm or °)" in out
+    assert "+np_grp[1].achse[0].versch = 110000  (P-ZERO-00003, 11.0000 mm or °)" in out
+    assert "+[G159=7]" in out
+    assert "# G54: vice" not in out  # comments are not part of the view
+    log = git("log", "-p", "-1")
+    assert "+np_grp[7].achse[3].versch = 900000" in log
+
+
+def test_two_full_zero_lists_one_change() -> None:
+    sys.path.insert(0, str(Path(__file__).resolve().parent.parent / "benchmarks"))
+    from workloads import full_zero_list
+
+    a = full_zero_list()
+    b = a.replace(b"np_grp[50].achse[3].versch                            50003",
+                  b"np_grp[50].achse[3].versch                            60003")
+    assert a != b
+    changes = diff_sides(read_side(a, "lis", "a.lis"), read_side(b, "lis", "b.lis"))
+    assert [(c.key, c.delta) for c in changes] == [("np_grp[50].achse[3].versch", 1.0)]
