@@ -1,3 +1,3 @@
-from zero.cli import main
+from zero.entry import main
 
 main()

@@ -88,44 +88,14 @@ def lint(
         help="List kind instead of detecting it: zero, axis, channel, tool, startup, ...")] = None,
 ) -> None:
     """Check list files and report what the controller will do with them."""
-    from zero.diagnostics import Severity
-    from zero.lint import LintOptions, ZeroError, collect_files, lint_file
-    from zero.registry import KINDS, kind_from_name
-    from zero.report import render_json, render_text
-    from zero.rules import RULES
+    from zero.commands import UsageError, run_lint
 
-    forced = None
-    if kind is not None:
-        forced = kind_from_name(kind)
-        if forced is None:
-            names = ", ".join(v[0] for v in KINDS.values())
-            raise _fail(f"unknown list kind {kind!r} (use one of: {names})")
-
-    def codes(values: list[str] | None) -> tuple[str, ...]:
-        out = tuple(c.strip().upper() for v in values or () for c in v.split(",") if c.strip())
-        for c in out:
-            if not any(code.startswith(c) for code in RULES):
-                raise _fail(f"{c!r} matches no rule code (see `zero rule --all`)")
-        return out
-
-    options = LintOptions(select=codes(select), ignore=codes(ignore), kind=forced)
-    registry = _registry()
     try:
-        files = collect_files(paths)
-        if not files:
-            raise ZeroError("no list files found (looked for *.lis and *.lst)")
-        results = [lint_file(f, registry, options) for f in files]
-    except ZeroError as exc:
+        code = run_lint(paths, output_format.value, strict, select, ignore, kind, state.param_desc)
+    except UsageError as exc:
         raise _fail(str(exc)) from None
-
-    if output_format is OutputFormat.json:
-        render_json(results)
-    else:
-        render_text(results)
-    worst = max((r.worst for r in results if r.worst is not None), default=None)
-    threshold = Severity.WARNING if strict else Severity.ERROR
-    if worst is not None and worst >= threshold:
-        raise typer.Exit(code=1)
+    if code:
+        raise typer.Exit(code=code)
 
 
 class Format(StrEnum):

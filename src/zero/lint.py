@@ -18,6 +18,7 @@ from zero.rules.base import Context, Resolved, read_value
 from zero.tokenizer import tokenize
 
 LIST_SUFFIXES = (".lis", ".lst")
+STRUCTURED_SUFFIXES = {".yaml": "yaml", ".yml": "yaml", ".toml": "toml", ".json": "json"}
 MAX_FILE_BYTES = 256 * 1024 * 1024
 
 
@@ -118,10 +119,8 @@ def read_file(path: str | Path) -> bytes:
 def lint_file(path: str | Path, registry: Registry | None = None,
               options: LintOptions | None = None) -> LintResult:
     """Lint a list file; a YAML/TOML/JSON file is linted as the list it converts to."""
-    from zero.formats import format_of
-
-    fmt = format_of(str(path))
-    if fmt in (None, "lis"):
+    fmt = STRUCTURED_SUFFIXES.get(Path(path).suffix.lower())
+    if fmt is None:
         return lint_bytes(read_file(path), str(path), registry, options)
     from zero.convert import ConvertError, lint_tree, read_tree
 

@@ -8,17 +8,17 @@ parameters the manuals define, with descriptions in our words). Rules read a
 
 from __future__ import annotations
 
-import difflib
 import json
 import tomllib
 from collections import Counter
 from collections.abc import Iterable
 from dataclasses import dataclass, field
-from importlib import resources
 from pathlib import Path
 from typing import Any
 
 from zero.ranges import Range, parse_range
+
+_DATA = Path(__file__).resolve().parent / "data"
 
 # List kinds: the four letters of the ID, a short name and a file-name hint.
 KINDS: dict[str, tuple[str, str]] = {
@@ -176,6 +176,8 @@ class Registry:
     def suggest(self, pattern: str, kind: str | None, n: int = 1) -> list[str]:
         """Known key patterns close to an unknown one (did-you-mean)."""
         pool = [k for (kd, k) in self._by_key if kind is None or kd == kind]
+        import difflib
+
         out = difflib.get_close_matches(pattern, pool, n=n, cutoff=0.75)
         if not out:
             # A missing or extra member level: `kenngr.homing_type` vs `kenngr.homing.homing_type`.
@@ -213,7 +215,7 @@ def _spec_from_row(row: dict[str, Any], index_base: dict[str, int]) -> ParamSpec
 
 
 def _overlay() -> dict[str, Any]:
-    text = resources.files("zero").joinpath("data/seeds.toml").read_text(encoding="utf-8")
+    text = (_DATA / "seeds.toml").read_text(encoding="utf-8")
     return tomllib.loads(text)
 
 
@@ -241,7 +243,7 @@ _default: Registry | None = None
 
 def load_table() -> list[dict[str, Any]]:
     """The committed table rows (generated facts, no vendor texts)."""
-    text = resources.files("zero").joinpath("data/registry.json").read_text(encoding="utf-8")
+    text = (_DATA / "registry.json").read_text(encoding="utf-8")
     data = json.loads(text)
     rows: list[dict[str, Any]] = data["params"]
     return rows
