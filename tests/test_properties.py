@@ -2,7 +2,7 @@
 
 from __future__ import annotations
 
-from hypothesis import given, settings
+from hypothesis import example, given, settings
 from hypothesis import strategies as st
 
 from conftest import lint_text
@@ -150,3 +150,30 @@ def test_list_to_structured_to_list_is_the_identity(data: bytes, fmt: str) -> No
     expected = plain(root)
     expected.update({leaf.key: leaf.value for leaf in flat})
     assert str_keys(loaded) == str_keys(expected)
+
+
+_FAST_PARTS = st.sampled_from([
+    "np_grp[1].achse[2].versch", "kenngr.swe_pos", "a", "Ende", "5abc", "x.0y", " ", "\t", "  ",
+    "1", "-5", "+7", "0x1F", "1.5", "1e3", ".5", "[3]", "]", ".m", "P-AXIS-00212.0", "A|B", "|",
+    "A", "|B", '"q s"', '"', "( c", "/* x */", "# h", "#", "plain", "\xa0", "\x0c", "\r", "µ", "ä",
+])
+
+
+@settings(max_examples=500, deadline=None)
+@given(st.lists(st.lists(_FAST_PARTS, max_size=6).map("".join), max_size=12).map("\n".join))
+@example("Ende 5\na 1\nEnde")
+@example("a .b 1\na [1] 2\na 1 |B\na 1| B\nk \"q s\" c\nk\xa0v 1\nk v\xa0c")
+def test_fast_path_reads_exactly_like_the_careful_scanner(text: str) -> None:
+    from zero.tokenizer import tokenize_text
+
+    def shape(doc):  # type: ignore[no-untyped-def]
+        out = []
+        for item in doc.items:
+            fields = {k: getattr(item, k) for k in getattr(item, "__slots__", ())}
+            if "commented_out" in fields and fields["commented_out"] is not None:
+                co = fields["commented_out"]
+                fields["commented_out"] = {k: getattr(co, k) for k in co.__slots__}
+            out.append((type(item).__name__, fields))
+        return out, doc.problems
+
+    assert shape(tokenize_text(text)) == shape(tokenize_text(text, use_fast=False))

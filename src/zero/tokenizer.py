@@ -43,6 +43,17 @@ _KEY_CONTINUATION_RE = re.compile(
     r"(?:\.[A-Za-z_][A-Za-z0-9_]*(?:\[[0-9]*\]?)*|\[[0-9]*\]?)(?:\.[A-Za-z0-9_]+(?:\[[0-9]+\])*)*|\]"
 )
 _MAX_KEY_JOINS = 8
+# The common line, matched in one go: `KEY VALUE [COMMENT]` where nothing needs the
+# careful scanner (no quotes, flags, key continuations or `Ende`). Whatever this does
+# not match goes to scan_line, which gives the same result for what it does match.
+_FAST_ENTRY_RE = re.compile(
+    r"[ \t]*([A-Za-z_][A-Za-z0-9_]*(?:\[[0-9]+\])*(?:\.[A-Za-z0-9_]+(?:\[[0-9]+\])*)*)"
+    r"[ \t]+([^\s\"|.\[\]][^\s|]*)(?:[ \t]+([^\s|].*)|[ \t]*)\Z", re.DOTALL)
+_KIND_RE = re.compile(
+    r"(?P<int>[+-]?[0-9]+)|(?P<hex>[+-]?0[xX][0-9A-Fa-f]+)|(?P<ref>P-[A-Z]{4}-[0-9]{5}(?:\.[0-9]+)?)"
+    r"|(?P<real>[+-]?(?:[0-9]+\.[0-9]*|\.[0-9]+|[0-9]+(?=[eE]))(?:[eE][+-]?[0-9]+)?)")
+_KIND_OF = {"int": ValueKind.INT, "hex": ValueKind.HEX, "ref": ValueKind.REF, "real": ValueKind.REAL}
+_STYLE_OF = {"#": CommentStyle.HASH, "(": CommentStyle.PAREN}
 # Control characters other than tab; \r only counts when it is not a CRLF ending.
 _CONTROL_RE = re.compile(r"[\x00-\x08\x0b-\x1f\x7f-\x9f\udc80-\udcff]")
 
@@ -219,7 +230,8 @@ def _scan_controls(lines: list[str], problems: list[Problem]) -> None:
                 )
 
 
-def tokenize_text(text: str, path: str = "-", encoding: str = "utf-8", bom: bool = False) -> Document:
+def tokenize_text(text: str, path: str = "-", encoding: str = "utf-8", bom: bool = False,
+                  use_fast: bool = True) -> Document:
     """Tokenize already decoded text."""
     raw_lines = text.split("\n")
     endings = ["\n"] * (len(raw_lines) - 1) + [""]
@@ -238,7 +250,30 @@ def tokenize_text(text: str, path: str = "-", encoding: str = "utf-8", bom: bool
     items: list[Item] = []
     end_line: int | None = None
     after_end_reported = False
+    fast = _FAST_ENTRY_RE.match if use_fast else None
+    kind_match = _KIND_RE.fullmatch
+    append = items.append
     for number, s in enumerate(lines, 1):
+        m = fast(s) if fast is not None else None
+        if m is not None and end_line is None and m.group(1) != END_KEYWORD:
+            key_text, value, comment = m.group(1, 2, 3)
+            ks, ke = m.span(1)
+            vs, ve = m.span(2)
+            km = kind_match(value)
+            kind = _KIND_OF[km.lastgroup] if km is not None and km.lastgroup else ValueKind.WORD
+            entry = Entry(number, key_text, key_text, parse_key(key_text), ks, ke, value, kind, vs, ve)
+            if comment is not None:
+                cs = m.start(3)
+                entry.comment = comment
+                entry.comment_start = cs
+                entry.comment_style = _STYLE_OF.get(comment[0]) or comment_style(comment)
+                if "P-" in comment:
+                    am = _ANNOTATION_RE.search(comment)
+                    if am:
+                        entry.annotation = am.group(1)
+                        entry.annotation_start = cs + am.start(1)
+            append(entry)
+            continue
         item = scan_line(s, number, problems)
         if end_line is not None:
             if type(item) is Entry:
@@ -248,7 +283,7 @@ def tokenize_text(text: str, path: str = "-", encoding: str = "utf-8", bom: bool
                 problems.append(Problem("after-end", number, 0, len(s), str(end_line)))
         elif type(item) is End:
             end_line = number
-        items.append(item)
+        append(item)
 
     if _CONTROL_RE.search(text):
         _scan_controls(lines, problems)
