@@ -39,3 +39,47 @@ def million_entries(n: int = 1_000_000) -> bytes:
         lines.append(key.ljust(54) + value + comment)
     lines.append("Ende")
     return ("\n".join(lines) + "\n").encode()
+
+
+def axis_list(entries: int = 577) -> bytes:
+    """An axis list shaped like the vendor's: header, sections, aligned `( P-AXIS-…` comments,
+    blank lines; keys and values from the registry (defaults), so it lints clean."""
+    from zero.lint import lint_bytes
+    from zero.registry import default_registry
+    from zero.rules.base import default_number
+
+    reg = default_registry()
+    lines = ["# ****************************************", "#", "# Axis Parameter (generated)", "#",
+             "# ****************************************", "#"]
+    count = 0
+    section = ""
+    for spec in sorted(reg.specs.values(), key=lambda s: (s.key or "", s.id)):
+        if spec.kind != "AXIS" or not spec.key or spec.type == "STRING":
+            continue
+        n = default_number(spec)
+        if n is None or isinstance(n, float):
+            continue
+        key = spec.key.replace("[]", "[0]")
+        probe = f"{key} {n}\nEnde\n".encode()
+        if lint_bytes(probe, "achsmds.lis").diagnostics:
+            continue
+        first = key.split(".", 1)[0]
+        if first != section:
+            section = first
+            lines += ["", f"# ---------------------------------------------- {section}"]
+        lines.append(key.ljust(54) + str(n).ljust(15) + f"( {spec.id} : {spec.quantity or 'value'}")
+        count += 1
+        if count == entries:
+            break
+    lines.append("Ende")
+    data = ("\n".join(lines) + "\n").encode()
+    bad = {d.span.line for d in lint_bytes(data, "achsmds.lis").diagnostics}
+    kept = [x for n, x in enumerate(lines, 1) if n not in bad]  # cross-parameter findings
+    return ("\n".join(kept) + "\n").encode()
+
+
+def small_list(i: int) -> bytes:
+    """One of many small files: a clamp-offset list of 3 groups x 3 axes."""
+    lines = ["# clamp offsets", *[f"pzv_grp[{g}].achse[{a}].versatz".ljust(54) + str((i * 7 + g * 3 + a) % 5000)
+                                  for g in range(3) for a in range(3)], "Ende"]
+    return ("\n".join(lines) + "\n").encode()

@@ -295,6 +295,10 @@ def test_billion_laughs_is_refused_before_expansion() -> None:
     ("json", '{"a": "\\ud800"}', "control character"),
     ("json", '{"_zero": {"zero": 99}, "a": 1}', "newer zero"),
     ("json", '{"_zero": [], "a": 1}', "must be a mapping"),
+    ("json", '{"_zero": {"layout": null}, "a": 1}', "does not have the form"),
+    ("json", '{"_zero": {"end": "Ende\\nb 2"}, "a": 1}', "does not have the form"),
+    ("json", '{"_zero": {"colour": 1}, "a": 1}', "not part of zero"),
+    ("yaml", '_zero:\n  value_column: -3\na: 1\n', "does not have the form"),
 ])
 def test_toml_and_json_refusals(fmt: str, text: str, words: str) -> None:
     with pytest.raises(ConvertError) as info:

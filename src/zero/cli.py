@@ -86,12 +86,14 @@ def lint(
         help="Skip these codes or prefixes (repeatable, or comma-separated).")] = None,
     kind: Annotated[str | None, typer.Option(
         help="List kind instead of detecting it: zero, axis, channel, tool, startup, ...")] = None,
+    jobs: Annotated[int | None, typer.Option(
+        "--jobs", "-j", help="Processes for many files [default: all cores; 1 = no parallelism].")] = None,
 ) -> None:
     """Check list files and report what the controller will do with them."""
     from zero.commands import UsageError, run_lint
 
     try:
-        code = run_lint(paths, output_format.value, strict, select, ignore, kind, state.param_desc)
+        code = run_lint(paths, output_format.value, strict, select, ignore, kind, state.param_desc, jobs)
     except UsageError as exc:
         raise _fail(str(exc)) from None
     if code:

@@ -11,7 +11,7 @@ import sys
 from collections.abc import Sequence
 from pathlib import Path
 
-from zero.lint import LintOptions, ZeroError, collect_files, lint_file
+from zero.lint import LintOptions, ZeroError, collect_files, lint_many
 
 OUTPUT_FORMATS = ("text", "json")
 
@@ -44,7 +44,8 @@ def parse_kind(kind: str | None) -> str | None:
 
 def run_lint(paths: Sequence[str | Path], output_format: str = "text", strict: bool = False,
              select: Sequence[str] | None = None, ignore: Sequence[str] | None = None,
-             kind: str | None = None, param_desc: str | Path | None = None) -> int:
+             kind: str | None = None, param_desc: str | Path | None = None,
+             jobs: int | None = None) -> int:
     """Lint files, print the report, return the exit code (0, 1; 2 is raised as UsageError)."""
     from zero.diagnostics import Severity
     from zero.registry import load_registry
@@ -64,7 +65,7 @@ def run_lint(paths: Sequence[str | Path], output_format: str = "text", strict: b
         files = collect_files(paths)
         if not files:
             raise ZeroError("no list files found (looked for *.lis and *.lst)")
-        results = [lint_file(f, registry, options) for f in files]
+        results = lint_many(files, registry, options, jobs)
     except ZeroError as exc:
         raise UsageError(str(exc)) from None
 

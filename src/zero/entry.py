@@ -12,7 +12,7 @@ import os
 import sys
 
 _VALUE_OPTIONS = {"--output-format": "output_format", "--select": "select", "--ignore": "ignore",
-                  "--kind": "kind"}
+                  "--kind": "kind", "--jobs": "jobs", "-j": "jobs"}
 
 
 def parse_lint_args(args: list[str]) -> dict[str, object] | None:
@@ -43,6 +43,10 @@ def parse_lint_args(args: list[str]) -> dict[str, object] | None:
             i += 1
         if field in ("select", "ignore"):
             out[field].append(value)  # type: ignore[attr-defined]
+        elif field == "jobs":
+            if not value.isdigit():
+                return None
+            out[field] = int(value)
         else:
             out[field] = value
     if not out["paths"]:

@@ -305,6 +305,7 @@ def _finish(leaves: list[Leaf], meta: Any, tail: list[str], path: str) -> Tree:
     if not isinstance(version, int) or version > FORMAT_VERSION:
         raise ConvertError(f"`{META_KEY}.zero` is {version!r}: written by a newer zero "
                            f"(this one reads format {FORMAT_VERSION})", path)
+    check_meta(meta, path)
     seen: dict[str, Leaf] = {}
     for leaf in leaves:
         prev = seen.get(leaf.key)
@@ -315,6 +316,42 @@ def _finish(leaves: list[Leaf], meta: Any, tail: list[str], path: str) -> Tree:
         seen[leaf.key] = leaf
     _check_types(leaves, meta, path)
     return Tree(leaves, meta, tail, path)
+
+
+_LINE = "line"  # a string that becomes one list line: no line breaks or control characters
+_META_SHAPES: dict[str, Any] = {
+    "zero": int, "kind": str, "encoding": str, "bom": bool, "newline": str, "final_newline": bool,
+    "value_column": int, "comment_column": int, "end": _LINE, "after_end": [_LINE], "tail": [_LINE],
+    "order": [str], "shadowed": {str: [[_LINE]]}, "layout": {str: _LINE}, "before": {str: [_LINE]},
+}
+_BAD_IN_LINE = re.compile(r"[\x00-\x08\x0a-\x1f\x7f\u2028\u2029\ud800-\udfff]")
+
+
+def _shape_ok(value: Any, shape: Any) -> bool:
+    if shape is _LINE:
+        return isinstance(value, str) and not _BAD_IN_LINE.search(value)
+    if shape is int:
+        return isinstance(value, int) and not isinstance(value, bool) and 0 <= value < 100_000
+    if isinstance(shape, type):
+        return isinstance(value, shape)
+    if isinstance(shape, list):
+        return isinstance(value, list) and all(_shape_ok(v, shape[0]) for v in value)
+    (key_shape, value_shape), = shape.items()
+    return isinstance(value, dict) and all(
+        _shape_ok(k, key_shape) and _shape_ok(v, value_shape) for k, v in value.items())
+
+
+def check_meta(meta: dict[str, Any], path: str) -> None:
+    """The ``_zero`` record has the shape zero writes, or a clear refusal."""
+    for key, value in meta.items():
+        shape = _META_SHAPES.get(key)
+        if shape is None:
+            raise ConvertError(f"`{META_KEY}.{key}` is not part of zero's layout record "
+                               f"(known: {', '.join(_META_SHAPES)})", path)
+        if not _shape_ok(value, shape):
+            raise ConvertError(f"`{META_KEY}.{key}` does not have the form zero writes; "
+                               "restore it or delete it (the list is then written in the canonical "
+                               "layout)", path)
 
 
 def _check_types(leaves: list[Leaf], meta: dict[str, Any], path: str) -> None:

@@ -133,6 +133,8 @@ Check = Callable[[Context], Iterator[Diagnostic]]
 
 
 def parse_int(text: str) -> int | None:
+    if text.isdigit() and text.isascii() and len(text) <= 40:
+        return int(text)
     t = text.strip()
     sign = -1 if t.startswith("-") else 1
     body = t.lstrip("+-")

@@ -7,9 +7,9 @@ from collections.abc import Iterator
 
 from zero.diagnostics import Diagnostic, Edit, Fix, Severity, Span
 from zero.model import Entry, format_key
-from zero.ranges import Bounds, Number, Ref
+from zero.ranges import Bounds, Number, Range, Ref
 from zero.registry import KINDS, ParamSpec
-from zero.rules.base import Context, Resolved, Rule, default_number, rule
+from zero.rules.base import Context, Resolved, Rule, Value, default_number, rule
 
 E, W, INFO = Severity.ERROR, Severity.WARNING, Severity.INFO
 
@@ -183,14 +183,16 @@ def check_keys(ctx: Context) -> Iterator[Diagnostic]:
             continue
         if not key.indices:
             continue
+        dims = spec.dims
         for pos, idx in enumerate(key.indices):
-            if pos >= len(spec.dims):
+            if pos >= len(dims):
                 break
-            size = spec.dims[pos]
+            size = dims[pos]
             base = spec.index_base if pos == 0 else 0
-            member = key.members[pos] if pos < len(key.members) else "?"
-            name = key.pattern.split("[]")[pos].rsplit(".", 1)[-1] or member
             if idx < base or (base == 0 and size > 0 and idx >= size):
+                members = key.members
+                member = members[pos] if pos < len(members) else "?"
+                name = key.pattern.split("[]")[pos].rsplit(".", 1)[-1] or member
                 shown = str(idx) if idx < 10**18 else f"{str(idx)[:6]}…"
                 valid = f"{base}.." if base else f"0..{size - 1}"
                 yield ctx.report(
@@ -236,6 +238,9 @@ def _check_value(ctx: Context, res: Resolved) -> Iterator[Diagnostic]:
     e, spec, v = res.entry, res.spec, res.value
     if e.value_kind is None:
         return
+    if v.problem is None and v.ref is None:  # the common case: a number or text to range-check
+        yield from _check_range(ctx, e, spec, v)
+        return
     span = _value_span(e)
     if v.ref is not None:
         rid, _ = v.ref
@@ -269,14 +274,39 @@ def _check_value(ctx: Context, res: Resolved) -> Iterator[Diagnostic]:
             hint=f"did you mean `{near[0]}`?" if near else None,
         )
         return
+
+
+
+_defaults: dict[int, tuple[ParamSpec, Number | None]] = {}
+_constant: dict[int, tuple[Range, Bounds | None]] = {}
+
+
+def _default_of(spec: ParamSpec) -> Number | None:
+    """default_number(spec), computed once per spec object."""
+    hit = _defaults.get(id(spec))
+    if hit is None or hit[0] is not spec:
+        hit = (spec, default_number(spec))
+        _defaults[id(spec)] = hit
+    return hit[1]
+
+
+def _check_range(ctx: Context, e: Entry, spec: ParamSpec, v: Value) -> Iterator[Diagnostic]:
     if v.number is None:
         return
     rng = ctx.registry.range_of(spec)
     if rng is None:
         return
-    dflt = default_number(spec)
+    hit = _constant.get(id(rng))
+    if hit is None or hit[0] is not rng:  # constant bounds are evaluated once per range
+        const = rng.allowed is None and not rng.refs
+        hit = (rng, rng.evaluate(lambda *_: None) if const else None)
+        _constant[id(rng)] = hit
+    if hit[1] is not None and hit[1].contains(v.number):
+        return
+    dflt = _default_of(spec)
     if dflt is not None and v.number == dflt:
         return  # the default itself is never faulty (some vendor ranges exclude it)
+    span = _value_span(e)
     if rng.allowed is not None:
         if v.number not in rng.allowed:
             allowed = ", ".join(_fmt(a) for a in rng.allowed)
