@@ -123,3 +123,79 @@ def test_cli_on_binary_file(tmp_path: Path) -> None:
     assert result.exit_code in (1, 2)
     assert "Traceback" not in result.output
     json.loads(result.output)
+
+
+# ------------------------------------------------------- structured inputs (convert, lint, diff)
+
+
+def _run_capped(args: list[str], data: bytes, name: str, seconds: float = 60.0,
+                memory_mib: int = 1024) -> subprocess.CompletedProcess[bytes]:
+    """Run the real CLI on ``data`` saved as ``name`` with capped memory and time."""
+    with tempfile.TemporaryDirectory() as tmp:
+        path = Path(tmp) / name
+        path.write_bytes(data)
+        limit = memory_mib * MiB
+
+        def cap() -> None:
+            resource.setrlimit(resource.RLIMIT_AS, (limit, limit))
+
+        t0 = time.perf_counter()
+        proc = subprocess.run([sys.executable, "-m", "zero", *args, str(path)], capture_output=True,
+                              timeout=seconds, preexec_fn=cap, check=False)
+        assert time.perf_counter() - t0 < seconds
+    assert b"Traceback" not in proc.stderr, proc.stderr[-2000:]
+    return proc
+
+
+def _billion_laughs() -> bytes:
+    text = 'a: &a ["lol","lol","lol","lol","lol","lol","lol","lol","lol"]\n'
+    for i in range(1, 10):
+        prev, cur = chr(ord("a") + i - 1), chr(ord("a") + i)
+        text += f"{cur}: &{cur} [" + ",".join([f"*{prev}"] * 9) + "]\n"
+    return text.encode()
+
+
+HOSTILE_STRUCTURED = {
+    "billion-laughs.yaml": (_billion_laughs(), "anchor", 1),
+    "python-tag.yaml": (b"a: !!python/object/apply:os.system ['echo pwned']\n", "tag", 1),
+    "deep.yaml": (b"a: " + b"{b: " * 10_000 + b"1" + b"}" * 10_000 + b"\n", "nested deeper", 1),
+    "deep-sequences.yaml": (b"a: " + b"[" * 10_000 + b"]" * 10_000 + b"\n", "sequence", 1),
+    "deep.toml": (b"a = " + b"[" * 10_000 + b"]" * 10_000 + b"\n", "nested too deeply", None),
+    "deep.json": (b'{"a": ' + b"[" * 10_000 + b"]" * 10_000 + b"}", "nested too deeply", None),
+    "deep-objects.json": (b'{"a": ' + b'{"b": ' * 10_000 + b"1" + b"}" * 10_001, "nested", None),
+    "binary.yaml": (bytes(random.Random(7).randrange(256) for _ in range(100_000)), "", None),
+    "not-utf8.toml": (b"a = 1\nb = \"\xb5m\"\n", "not UTF-8", 2),
+    "duplicate.yaml": (b"np_grp:\n  1: {achse: {0: {versch: 1}}}\n  1: {achse: {0: {versch: 2}}}\n",
+                       "duplicate key", 3),
+}
+
+
+@pytest.mark.parametrize("name", sorted(HOSTILE_STRUCTURED))
+@pytest.mark.parametrize("command", [["convert", "--to", "lis"], ["lint"], ["diff", "--defaults"]])
+def test_hostile_structured_input_is_refused_with_its_location(name: str, command: list[str]) -> None:
+    data, words, line = HOSTILE_STRUCTURED[name]
+    proc = _run_capped(command, data, name, memory_mib=512)
+    assert proc.returncode in (1, 2)
+    err = proc.stderr.decode("utf-8", "replace")
+    assert err.count("\n") <= 3 and err.startswith("zero: ")
+    assert name in err
+    assert words in err
+    if line is not None:
+        assert f"{name}:{line}:" in err
+    assert proc.stdout == b""
+
+
+def test_two_gigabyte_sparse_index_in_yaml_is_cheap() -> None:
+    text = b"np_grp:\n  2000000000:\n    achse:\n      0:\n        versch: 1\n"
+    proc = _run_capped(["convert", "--to", "lis"], text, "sparse.yaml", seconds=30, memory_mib=256)
+    assert proc.returncode == 0
+    assert proc.stdout.startswith(b"np_grp[2000000000].achse[0].versch")
+    lint = _run_capped(["lint"], text, "sparse.yaml", seconds=30, memory_mib=256)
+    assert lint.returncode == 1 and b"R003" in lint.stdout
+
+
+def test_invalid_utf8_inside_keys_is_located() -> None:
+    result = _bounded(b"np_grp[1].ach\xffse[0].versch 5\nkenngr.\xc3\x28x 1\n")
+    assert [(d.code, d.span.line) for d in result.diagnostics] == [("S001", 1), ("S001", 2)]
+    proc = _run_capped(["convert", "--to", "yaml"], b"np_grp[1].ach\xffse[0].versch 5\n", "k.lis")
+    assert proc.returncode == 1 and b"k.lis:1:1: not an entry" in proc.stderr

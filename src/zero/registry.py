@@ -118,6 +118,7 @@ class Registry:
     _kinds_of: dict[str, list[str]] = field(default_factory=dict)
     _ranges: dict[str, Range | None] = field(default_factory=dict)
     aliases: dict[tuple[str, str], str] = field(default_factory=dict)
+    _suggestions: dict[tuple[str, str | None, int], list[str]] = field(default_factory=dict)
 
     def __post_init__(self) -> None:
         for spec in self.specs.values():
@@ -174,7 +175,15 @@ class Registry:
         return sorted(leaders)[0]
 
     def suggest(self, pattern: str, kind: str | None, n: int = 1) -> list[str]:
-        """Known key patterns close to an unknown one (did-you-mean)."""
+        """Known key patterns close to an unknown one (did-you-mean), memoised per pattern."""
+        memo = self._suggestions.get((pattern, kind, n))
+        if memo is None:
+            memo = self._suggest(pattern, kind, n)
+            if len(self._suggestions) < 10_000:
+                self._suggestions[(pattern, kind, n)] = memo
+        return list(memo)
+
+    def _suggest(self, pattern: str, kind: str | None, n: int) -> list[str]:
         pool = [k for (kd, k) in self._by_key if kind is None or kd == kind]
         import difflib
 
