@@ -27,11 +27,14 @@ def check_lint(data: bytes) -> None:
 def check_round_trip(data: bytes) -> None:
     for fmt in ("yaml", "toml", "json"):
         try:
-            out = convert(data, "lis", fmt, "f.lis").output
+            first = convert(data, "lis", fmt, "f.lis")
         except ConvertError:
             return
-        back = convert(out, fmt, "lis", "f." + fmt, check=False).output
-        assert back == data, (fmt, data, back)
+        back = convert(first.output, fmt, "lis", "f." + fmt, check=False).output
+        if any("mixed line endings" in n for n in first.notes):  # said plainly: one style
+            assert back.replace(b"\r\n", b"\n") == data.replace(b"\r\n", b"\n"), (fmt, data, back)
+        else:
+            assert back == data, (fmt, data, back)
 
 
 def check_reader(fmt: str, data: bytes) -> None:

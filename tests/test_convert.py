@@ -363,3 +363,11 @@ def test_write_tree_refuses_unknown_format() -> None:
     tree = read_tree(b"a 1\n", "lis")
     with pytest.raises(ConvertError):
         write_tree(tree, "xml")
+
+
+def test_mixed_line_endings_are_said_plainly() -> None:
+    data = b"k.a 1\r\nk.b 2\nk.c 3\nEnde\n"
+    c = convert(data, "lis", "yaml", "t.lis")
+    assert any("mixed line endings" in n for n in c.notes)
+    back = convert(c.output, "yaml", "lis", "t.yaml", check=False).output
+    assert back == b"k.a 1\nk.b 2\nk.c 3\nEnde\n"

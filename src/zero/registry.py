@@ -60,7 +60,7 @@ def kind_from_name(text: str) -> str | None:
     return _NAME_TO_KIND.get(t.lower())
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(slots=True)
 class ParamSpec:
     """Everything zero knows about one parameter."""
 
