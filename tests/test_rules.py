@@ -37,7 +37,7 @@ def test_passing_fixture(rule_dir: Path) -> None:
 @pytest.mark.parametrize("code", sorted(RULES))
 def test_rule_metadata(code: str) -> None:
     r = RULES[code]
-    assert r.code == code and code[0] in "SRM" and len(code) == 4
+    assert r.code == code and code[0] in "SRMZ" and len(code) == 4
     assert r.summary and "Why it matters on the machine" in r.explanation
     assert "Fix" in r.explanation
 

@@ -13,11 +13,12 @@ from pathlib import Path
 from zero.diagnostics import Diagnostic, Severity
 from zero.model import Document
 from zero.registry import Registry, default_registry
-from zero.rules import CHECKS, RULES
+from zero.rules import CHECKS, RULES, suppress
 from zero.rules.base import Context, Resolved, read_value
 from zero.tokenizer import tokenize
 
 LIST_SUFFIXES = (".lis", ".lst")
+_KNOWN = set(RULES)
 STRUCTURED_SUFFIXES = {".yaml": "yaml", ".yml": "yaml", ".toml": "toml", ".json": "json"}
 MAX_FILE_BYTES = 256 * 1024 * 1024
 
@@ -89,6 +90,7 @@ def lint_document(doc: Document, registry: Registry | None = None,
     ctx = build_context(doc, registry, options.kind, severities)
     found = [d for check in CHECKS for d in check(ctx) if d.code in severities]
     found.sort(key=Diagnostic.sort_key)
+    found = suppress.apply(doc, found, severities, _KNOWN)
     return LintResult(doc.path, doc, ctx.kind, found)
 
 

@@ -335,6 +335,10 @@ def from_document(doc: Document, kind: str | None = None) -> Tree:
         if len(path) > MAX_DEPTH:
             raise ConvertError(f"key has {len(path)} levels; zero converts keys of up to {MAX_DEPTH}",
                                doc.path, item.line, item.key_start + 1)
+        if path[0] == META_KEY:
+            raise ConvertError(f"`{META_KEY}` is the name of zero's layout record in YAML/TOML/JSON; "
+                               "a list key of that name cannot be converted", doc.path, item.line,
+                               item.key_start + 1)
         spec = registry.by_pattern(item.key.pattern, kind) if item.key else None
         value, native = _scalar_from_list(item.value, spec.type if spec else None)
         after = item.comment.rstrip() if item.comment is not None else None

@@ -1,0 +1,190 @@
+"""Z rules: suppressions written in the list's own comment syntax.
+
+* same line: a trailing comment holding ``noqa`` (all codes) or ``noqa: R005, M003``,
+  in any comment style (``# noqa: R005``, ``( noqa: R005 )``, ``/* noqa */``);
+* next entry: a full-line comment ``# zero: ignore[R005]`` (or ``ignore[R005,M003]``);
+* whole file: a full-line comment ``# zero: noqa`` or ``# zero: noqa: R005``.
+
+A reason may follow after `` -- ``. Codes may be prefixes (``R``, ``M00``). A
+directive that suppresses nothing is reported (Z001), a directive zero cannot read
+is reported (Z002): none is ever silently ignored.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass, field
+
+from zero.diagnostics import Diagnostic, Severity, Span
+from zero.model import Comment, Document, Entry
+from zero.rules.base import Rule, rule
+
+W = Severity.WARNING
+
+RULES: dict[str, Rule] = {
+    r.code: r
+    for r in (
+        rule("Z001", "unused-suppression", W, "A suppression that suppresses nothing",
+             """
+What it checks: every `noqa`, `zero: ignore[...]` and `zero: noqa` directive hides at least
+one finding of each code it names.
+
+Why it matters on the machine: a stale suppression hides the next real fault on that line
+(a later value out of range, a key renamed) without anyone deciding so.
+
+Example: `np_grp[1].achse[0].versch 5  # noqa: R005` when the value is in range
+Fix: remove the directive, or narrow it to the codes that still apply.
+"""),
+        rule("Z002", "malformed-suppression", W, "A suppression directive zero cannot read",
+             """
+What it checks: the form of suppression directives: `noqa`, `noqa: CODE[, CODE]`,
+`# zero: ignore[CODE, ...]`, `# zero: noqa[: CODE, ...]`, each code a zero rule code or
+prefix, an optional reason after ` -- `.
+
+Why it matters on the machine: a misspelt directive suppresses nothing, so the finding it
+was meant to hide keeps failing the commit, or worse, someone believes a fault was reviewed.
+
+Example: `# zero: ignore R005` (brackets missing), `# noqa: R5O5`
+Fix: write the directive as shown above (`zero rule Z002`).
+"""),
+    )
+}
+
+_NOQA_RE = re.compile(r"(?<![A-Za-z0-9_])noqa(?![A-Za-z0-9_])(?P<rest>[^)]*)", re.IGNORECASE)
+_ZERO_RE = re.compile(r"^\s*#\s*zero\s*:\s*(?P<body>.*?)\s*$", re.IGNORECASE)
+_CODE_RE = re.compile(r"[A-Z][0-9]{0,3}")
+
+
+@dataclass(slots=True, eq=False)
+class Directive:
+    line: int  # where it is written
+    start: int  # 0-based columns of the directive text
+    end: int
+    codes: tuple[str, ...] | None  # None: every code
+    scope: str  # "line", "next", "file"
+    target: int | None = None  # the line a "line"/"next" directive covers
+    used: set[str] = field(default_factory=set)
+
+    def covers(self, code: str) -> str | None:
+        """The code or prefix of this directive that matches ``code``."""
+        if self.codes is None:
+            return "*"
+        return next((c for c in self.codes if code.startswith(c)), None)
+
+
+def _codes(text: str, known: set[str]) -> tuple[tuple[str, ...] | None, str | None]:
+    """Parse ``CODE, CODE`` (reason after `` -- `` dropped); return codes or an error."""
+    text = text.split("--", 1)[0].strip().rstrip("*/").strip()
+    if not text:
+        return None, None
+    parts = [p.strip() for p in re.split(r"[,\s]+", text) if p.strip()]
+    for p in parts:
+        if not _CODE_RE.fullmatch(p) or not any(k.startswith(p) for k in known):
+            return None, f"`{p}` is not a zero rule code or prefix"
+    return tuple(parts), None
+
+
+def parse_directives(doc: Document, known: set[str]) -> tuple[list[Directive], list[tuple[int, int, int, str]]]:
+    """Directives of a document, and malformed ones as (line, start, end, reason)."""
+    out: list[Directive] = []
+    bad: list[tuple[int, int, int, str]] = []
+    pending_next: list[Directive] = []
+    for item in doc.items:
+        t = type(item)
+        if t is Comment:
+            assert isinstance(item, Comment)
+            text = doc.lines[item.line - 1]
+            m = _ZERO_RE.match(text)
+            if m is None:
+                continue
+            body = m.group("body")
+            start = m.start("body")
+            im = re.fullmatch(r"ignore\s*\[(?P<codes>[^\]]*)\]\s*(?:--.*)?", body, re.IGNORECASE)
+            nm = re.fullmatch(r"noqa\s*(?::(?P<codes>.*))?", body, re.IGNORECASE)
+            if im:
+                codes, err = _codes(im.group("codes"), known)
+                if err or codes is None:
+                    bad.append((item.line, start, len(text), err or "`ignore[...]` names no code"))
+                    continue
+                d = Directive(item.line, start, len(text.rstrip()), codes, "next")
+                out.append(d)
+                pending_next.append(d)
+            elif nm:
+                codes, err = _codes(nm.group("codes") or "", known)
+                if err:
+                    bad.append((item.line, start, len(text), err))
+                    continue
+                out.append(Directive(item.line, start, len(text.rstrip()), codes, "file"))
+            else:
+                bad.append((item.line, start, len(text),
+                            "expected `zero: ignore[CODE, ...]` or `zero: noqa[: CODE, ...]`"))
+        elif t is Entry:
+            assert isinstance(item, Entry)
+            for d in pending_next:
+                d.target = item.line
+            pending_next = []
+            if item.comment is None or "noqa" not in item.comment.lower():
+                continue
+            m = _NOQA_RE.search(item.comment)
+            if m is None:
+                continue
+            rest = m.group("rest")
+            start = item.comment_start + m.start()
+            end = item.comment_start + m.end()
+            if rest.strip().startswith(":"):
+                codes, err = _codes(rest.strip()[1:], known)
+                if err or codes is None:
+                    bad.append((item.line, start, end, err or "`noqa:` names no code"))
+                    continue
+            elif rest.strip() and not rest.strip().startswith(("--", "*/")):
+                bad.append((item.line, start, end, "expected `noqa` or `noqa: CODE, ...`"))
+                continue
+            else:
+                codes = None
+            out.append(Directive(item.line, start, end, codes, "line", item.line))
+    return out, bad
+
+
+def apply(doc: Document, found: list[Diagnostic], severities: dict[str, Severity],
+          known: set[str]) -> list[Diagnostic]:
+    """Drop suppressed findings; add Z001 for unused and Z002 for malformed directives."""
+    directives, bad = parse_directives(doc, known)
+    if not directives and not bad:
+        return found
+    by_line: dict[int, list[Directive]] = {}
+    whole = [d for d in directives if d.scope == "file"]
+    for d in directives:
+        if d.target is not None:
+            by_line.setdefault(d.target, []).append(d)
+    kept: list[Diagnostic] = []
+    for diag in found:
+        hit = False
+        for d in [*by_line.get(diag.span.line, ()), *whole]:
+            c = d.covers(diag.code)
+            if c is not None:
+                d.used.add(c)
+                hit = True
+        if not hit:
+            kept.append(diag)
+    path = doc.path
+    if "Z001" in severities:
+        for d in directives:
+            named = ("*",) if d.codes is None else d.codes
+            unused = [c for c in named if c not in d.used
+                      and (c == "*" or any(k.startswith(c) for k in severities))]
+            if not unused:
+                continue
+            what = "finding" if unused == ["*"] else ", ".join(unused) + " finding"
+            where = {"line": "on this line", "next": f"on line {d.target}" if d.target else
+                     "(no entry follows)", "file": "in this file"}[d.scope]
+            kept.append(Diagnostic("Z001", severities["Z001"],
+                                   f"the suppression hides nothing: no {what} {where}",
+                                   Span.on_line(d.line, d.start, d.end), path,
+                                   hint="remove it, or name only the codes that still apply"))
+    if "Z002" in severities:
+        for line, start, end, reason in bad:
+            kept.append(Diagnostic("Z002", severities["Z002"],
+                                   f"malformed suppression: {reason}; it suppresses nothing",
+                                   Span.on_line(line, start, end), path))
+    kept.sort(key=Diagnostic.sort_key)
+    return kept
