@@ -130,7 +130,8 @@ def _run(*args: str, env: dict[str, str] | None = None) -> subprocess.CompletedP
 def test_subprocess_lint() -> None:
     proc = _run("lint", SEED, env={"NO_COLOR": "1"})
     assert proc.returncode == 1
-    assert "S004 error" in proc.stdout and proc.stderr == ""
+    assert "S004 error" in proc.stdout and "checked" not in proc.stdout
+    assert proc.stderr == "1 file checked (0 clean): 2 errors, 0 warnings, 5 infos\n"
     proc = _run("lint", "--output-format", "json", CLEAN)
     assert proc.returncode == 0 and json.loads(proc.stdout) == []
 

@@ -34,6 +34,16 @@ class OutputFormat(StrEnum):
     json = "json"
 
 
+class LintFormat(StrEnum):
+    text = "text"
+    concise = "concise"
+    json = "json"
+    github = "github"
+    gitlab = "gitlab"
+    junit = "junit"
+    sarif = "sarif"
+
+
 class _State:
     param_desc: Path | None = None
 
@@ -77,8 +87,15 @@ def main_callback(
 @app.command()
 def lint(
     paths: Annotated[list[Path], typer.Argument(help="List files or directories (*.lis, *.lst).")],
-    output_format: Annotated[OutputFormat, typer.Option(
-        "--output-format", help="text (for people) or json (a stable contract).")] = OutputFormat.text,
+    output_format: Annotated[LintFormat, typer.Option(
+        "--output-format", help="text (for people), concise (one line each), json (a stable "
+        "contract), github, gitlab, junit or sarif.")] = LintFormat.text,
+    output_file: Annotated[Path | None, typer.Option(
+        "--output-file", "-o", help="Write the report to this file (atomically) instead of stdout.")] = None,
+    statistics: Annotated[bool, typer.Option(
+        "--statistics", help="Print the number of findings per code to stderr.")] = False,
+    exit_zero: Annotated[bool, typer.Option(
+        "--exit-zero", help="Exit 0 even when there are findings (usage errors still exit 2).")] = False,
     strict: Annotated[bool, typer.Option(help="Exit 1 on warnings too.")] = False,
     select: Annotated[list[str] | None, typer.Option(
         help="Only these codes or prefixes (repeatable, or comma-separated).")] = None,
@@ -93,7 +110,8 @@ def lint(
     from zero.commands import UsageError, run_lint
 
     try:
-        code = run_lint(paths, output_format.value, strict, select, ignore, kind, state.param_desc, jobs)
+        code = run_lint(paths, output_format.value, strict, select, ignore, kind, state.param_desc, jobs,
+                        output_file, statistics, exit_zero)
     except UsageError as exc:
         raise _fail(str(exc)) from None
     if code:

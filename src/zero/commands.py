@@ -13,7 +13,7 @@ from pathlib import Path
 
 from zero.lint import LintOptions, ZeroError, collect_files, lint_many
 
-OUTPUT_FORMATS = ("text", "json")
+OUTPUT_FORMATS = ("text", "concise", "json", "github", "gitlab", "junit", "sarif")
 
 
 class UsageError(Exception):
@@ -45,13 +45,19 @@ def parse_kind(kind: str | None) -> str | None:
 def run_lint(paths: Sequence[str | Path], output_format: str = "text", strict: bool = False,
              select: Sequence[str] | None = None, ignore: Sequence[str] | None = None,
              kind: str | None = None, param_desc: str | Path | None = None,
-             jobs: int | None = None) -> int:
-    """Lint files, print the report, return the exit code (0, 1; 2 is raised as UsageError)."""
+             jobs: int | None = None, output_file: str | Path | None = None,
+             show_statistics: bool = False, exit_zero: bool = False) -> int:
+    """Lint files, print the report, return the exit code (0, 1; 2 is raised as UsageError).
+
+    Findings go to standard output (or ``output_file``); the summary line and the
+    statistics go to standard error, so standard output stays parseable.
+    """
     from zero.diagnostics import Severity
     from zero.registry import load_registry
 
     if output_format not in OUTPUT_FORMATS:
-        raise UsageError(f"unknown output format {output_format!r} (use text or json)")
+        raise UsageError(f"unknown output format {output_format!r} (use one of: "
+                         f"{', '.join(OUTPUT_FORMATS)})")
     options = LintOptions(select=parse_codes(select), ignore=parse_codes(ignore), kind=parse_kind(kind))
     try:
         registry = load_registry(param_desc)
@@ -69,12 +75,31 @@ def run_lint(paths: Sequence[str | Path], output_format: str = "text", strict: b
     except ZeroError as exc:
         raise UsageError(str(exc)) from None
 
-    from zero.report import render_json, render_text
+    import io
 
+    from zero import report
+
+    out = io.StringIO() if output_file is not None else sys.stdout
     if output_format == "json":
-        render_json(results)
+        report.render_json(results, out)
+    elif output_format == "text":
+        report.render_text(results, out, color=False if output_file is not None else None,
+                           summary_stream=sys.stderr)
     else:
-        render_text(results)
+        report.RENDERERS[output_format](results, out)
+    if output_file is not None:
+        from zero.convert import write_atomic
+
+        assert isinstance(out, io.StringIO)
+        try:
+            write_atomic(Path(output_file), out.getvalue().encode("utf-8", "surrogateescape"),
+                         force=True)
+        except ZeroError as exc:
+            raise UsageError(str(exc)) from None
+    if show_statistics:
+        sys.stderr.write(report.statistics(results))
+    if exit_zero:
+        return 0
     worst = max((r.worst for r in results if r.worst is not None), default=None)
     threshold = Severity.WARNING if strict else Severity.ERROR
     return 1 if worst is not None and worst >= threshold else 0

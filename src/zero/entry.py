@@ -12,7 +12,10 @@ import os
 import sys
 
 _VALUE_OPTIONS = {"--output-format": "output_format", "--select": "select", "--ignore": "ignore",
-                  "--kind": "kind", "--jobs": "jobs", "-j": "jobs"}
+                  "--kind": "kind", "--jobs": "jobs", "-j": "jobs", "--output-file": "output_file",
+                  "-o": "output_file"}
+_FLAGS = {"--strict": ("strict", True), "--no-strict": ("strict", False),
+          "--statistics": ("show_statistics", True), "--exit-zero": ("exit_zero", True)}
 
 
 def parse_lint_args(args: list[str]) -> dict[str, object] | None:
@@ -29,8 +32,9 @@ def parse_lint_args(args: list[str]) -> dict[str, object] | None:
         if a == "--":
             only_paths = True
             continue
-        if a in ("--strict", "--no-strict"):
-            out["strict"] = a == "--strict"
+        if a in _FLAGS:
+            name, flag = _FLAGS[a]
+            out[name] = flag
             continue
         name, eq, value = a.partition("=")
         field = _VALUE_OPTIONS.get(name)

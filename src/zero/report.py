@@ -122,7 +122,10 @@ class TextWriter:
 
 
 def render_text(results: Sequence[LintResult], stream: TextIO | None = None,
-                color: bool | None = None, summary: bool = True) -> None:
+                color: bool | None = None, summary: bool = True,
+                summary_stream: TextIO | None = None) -> None:
+    """Findings with their source line; the summary line to ``summary_stream`` (default: the
+    same stream; the CLI sends it to stderr so that standard output holds findings only)."""
     stream = stream or sys.stdout
     writer = TextWriter(stream, use_color(stream) if color is None else color)
     for r in results:
@@ -133,7 +136,117 @@ def render_text(results: Sequence[LintResult], stream: TextIO | None = None,
     if summary:
         worst = max((r.worst for r in results if r.worst is not None), default=None)
         style = _SEVERITY_STYLE[worst] if worst is not None else "bold green"
-        writer.line([(summary_line(results), style)])
+        target = writer
+        if summary_stream is not None and summary_stream is not stream:
+            target = TextWriter(summary_stream, use_color(summary_stream) if color is None else color)
+        target.line([(summary_line(results), style)])
+
+
+def _all(results: Sequence[LintResult]) -> list[Diagnostic]:
+    return [d for r in results for d in r.diagnostics]
+
+
+def render_concise(results: Sequence[LintResult], stream: TextIO) -> None:
+    """One line per finding: ``path:line:col: CODE severity message``."""
+    for d in _all(results):
+        stream.write(f"{d.path}:{d.span.line}:{d.span.column}: {d.code} {d.severity.label} "
+                     f"{_printable(d.message)}\n")
+
+
+def _gh_escape(text: str, prop: bool = False) -> str:
+    text = text.replace("%", "%25").replace("\r", "%0D").replace("\n", "%0A")
+    return text.replace(":", "%3A").replace(",", "%2C") if prop else text
+
+
+def render_github(results: Sequence[LintResult], stream: TextIO) -> None:
+    """GitHub Actions workflow commands: an annotation per finding."""
+    level = {Severity.ERROR: "error", Severity.WARNING: "warning", Severity.INFO: "notice"}
+    for d in _all(results):
+        props = (f"file={_gh_escape(d.path, True)},line={d.span.line},col={d.span.column},"
+                 f"endLine={d.span.end_line},endColumn={d.span.end_column},"
+                 f"title={_gh_escape(f'zero {d.code}', True)}")
+        stream.write(f"::{level[d.severity]} {props}::{_gh_escape(f'{d.code} {d.message}')}\n")
+
+
+def render_gitlab(results: Sequence[LintResult], stream: TextIO) -> None:
+    """GitLab code quality report (a JSON array of issues)."""
+    import hashlib
+
+    severity = {Severity.ERROR: "major", Severity.WARNING: "minor", Severity.INFO: "info"}
+    out = []
+    for d in _all(results):
+        fp = hashlib.sha256(f"{d.path}\0{d.code}\0{d.span.line}\0{d.message}".encode(
+            "utf-8", "surrogateescape")).hexdigest()
+        out.append({"description": f"{d.code} {d.message}", "check_name": d.code, "fingerprint": fp,
+                    "severity": severity[d.severity],
+                    "location": {"path": d.path, "lines": {"begin": d.span.line, "end": d.span.end_line}}})
+    stream.write(json.dumps(out, indent=2) + "\n")
+
+
+def render_junit(results: Sequence[LintResult], stream: TextIO) -> None:
+    """JUnit XML: one test suite per file, one failing test case per finding."""
+    import xml.etree.ElementTree as ET
+
+    total = sum(len(r.diagnostics) for r in results)
+    suites = ET.Element("testsuites", name="zero", tests=str(max(total, len(results))),
+                        failures=str(total))
+    for r in results:
+        suite = ET.SubElement(suites, "testsuite", name=r.path, tests=str(max(len(r.diagnostics), 1)),
+                              failures=str(len(r.diagnostics)))
+        if not r.diagnostics:
+            ET.SubElement(suite, "testcase", name=f"{r.path} clean", classname=r.path)
+        for d in r.diagnostics:
+            case = ET.SubElement(suite, "testcase", name=f"{d.code} line {d.span.line}",
+                                 classname=r.path, file=r.path, line=str(d.span.line))
+            failure = ET.SubElement(case, "failure", message=_printable(d.message), type=d.code)
+            failure.text = (f"{d.path}:{d.span.line}:{d.span.column}: {d.code} {d.severity.label} "
+                            f"{_printable(d.message)}")
+    stream.write(ET.tostring(suites, encoding="unicode", xml_declaration=True) + "\n")
+
+
+def render_sarif(results: Sequence[LintResult], stream: TextIO) -> None:
+    """SARIF 2.1.0: the rules that fired and one result per finding."""
+    from zero import __version__
+
+    level = {Severity.ERROR: "error", Severity.WARNING: "warning", Severity.INFO: "note"}
+    used = sorted({d.code for d in _all(results)})
+    rules = [{"id": c, "name": RULES[c].name, "shortDescription": {"text": RULES[c].summary},
+              "fullDescription": {"text": RULES[c].explanation.strip()},
+              "defaultConfiguration": {"level": level[RULES[c].severity]},
+              "help": {"text": RULES[c].explanation.strip()}} for c in used if c in RULES]
+    index = {c: i for i, c in enumerate(used)}
+    res = []
+    for d in _all(results):
+        item: dict[str, object] = {
+            "ruleId": d.code, "ruleIndex": index[d.code], "level": level[d.severity],
+            "message": {"text": _printable(d.message)},
+            "locations": [{"physicalLocation": {
+                "artifactLocation": {"uri": d.path.replace(os.sep, "/")},
+                "region": {"startLine": d.span.line, "startColumn": d.span.column,
+                           "endLine": d.span.end_line, "endColumn": d.span.end_column}}}],
+        }
+        if d.param_id:
+            item["properties"] = {"parameterId": d.param_id}
+        res.append(item)
+    log = {"$schema": "https://json.schemastore.org/sarif-2.1.0.json", "version": "2.1.0",
+           "runs": [{"tool": {"driver": {"name": "zero", "version": __version__,
+                                         "informationUri": "https://zero.invalid/", "rules": rules}},
+                     "results": res, "columnKind": "unicodeCodePoints"}]}
+    stream.write(json.dumps(log, indent=2) + "\n")
+
+
+def statistics(results: Sequence[LintResult]) -> str:
+    """Counts per code, most frequent first (``--statistics``)."""
+    from collections import Counter
+
+    counts = Counter(d.code for d in _all(results))
+    lines = [f"{n:>7}  {code}  {RULES[code].name if code in RULES else ''}"
+             for code, n in sorted(counts.items(), key=lambda kv: (-kv[1], kv[0]))]
+    return "\n".join(lines) + ("\n" if lines else "")
+
+
+RENDERERS = {"concise": render_concise, "github": render_github, "gitlab": render_gitlab,
+             "junit": render_junit, "sarif": render_sarif}
 
 
 def render_json(results: Sequence[LintResult], stream: TextIO | None = None) -> None:
