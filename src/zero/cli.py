@@ -96,6 +96,10 @@ def lint(
         "--statistics", help="Print the number of findings per code to stderr.")] = False,
     exit_zero: Annotated[bool, typer.Option(
         "--exit-zero", help="Exit 0 even when there are findings (usage errors still exit 2).")] = False,
+    config: Annotated[Path | None, typer.Option(
+        "--config", help="Use this configuration file for every file (zero.toml or pyproject.toml).")] = None,
+    isolated: Annotated[bool, typer.Option(
+        "--isolated", help="Ignore all configuration files.")] = False,
     strict: Annotated[bool, typer.Option(help="Exit 1 on warnings too.")] = False,
     select: Annotated[list[str] | None, typer.Option(
         help="Only these codes or prefixes (repeatable, or comma-separated).")] = None,
@@ -111,7 +115,7 @@ def lint(
 
     try:
         code = run_lint(paths, output_format.value, strict, select, ignore, kind, state.param_desc, jobs,
-                        output_file, statistics, exit_zero)
+                        output_file, statistics, exit_zero, config, isolated)
     except UsageError as exc:
         raise _fail(str(exc)) from None
     if code:
@@ -126,15 +130,12 @@ class Format(StrEnum):
 
 
 def _kind_option(kind: str | None) -> str | None:
-    from zero.registry import KINDS, kind_from_name
+    from zero.commands import UsageError, parse_kind
 
-    if kind is None:
-        return None
-    forced = kind_from_name(kind)
-    if forced is None:
-        names = ", ".join(v[0] for v in KINDS.values())
-        raise _fail(f"unknown list kind {kind!r} (use one of: {names})")
-    return forced
+    try:
+        return parse_kind(kind)
+    except UsageError as exc:
+        raise _fail(str(exc)) from None
 
 
 @app.command()
@@ -328,6 +329,25 @@ def schema(
         write_atomic(Path(output), text.encode("utf-8"), force)
     except ZeroError as exc:
         raise _fail(str(exc)) from None
+
+
+@app.command("config")
+def config_cmd(
+    path: Annotated[Path, typer.Argument(help="A list file or directory whose configuration to show.")] = Path("."),
+    show: Annotated[bool, typer.Option("--show", help="Print the effective configuration.")] = True,
+    config: Annotated[Path | None, typer.Option("--config", help="Use this configuration file.")] = None,
+    isolated: Annotated[bool, typer.Option("--isolated", help="Ignore configuration files.")] = False,
+) -> None:
+    """Show the configuration that applies to PATH ([tool.zero], zero.toml, .zero.toml)."""
+    from zero.config import ConfigFinder
+    from zero.lint import ZeroError
+
+    try:
+        cfg = ConfigFinder(config, isolated).for_path(path)
+    except ZeroError as exc:
+        raise _fail(str(exc)) from None
+    if show:
+        typer.echo(cfg.show(), nl=False)
 
 
 @app.command("rule")

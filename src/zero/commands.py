@@ -10,8 +10,13 @@ from __future__ import annotations
 import sys
 from collections.abc import Sequence
 from pathlib import Path
+from typing import TYPE_CHECKING
 
-from zero.lint import LintOptions, ZeroError, collect_files, lint_many
+from zero.lint import LintOptions, LintResult, ZeroError, collect_files, lint_many
+
+if TYPE_CHECKING:
+    from zero.config import Config
+    from zero.registry import Registry
 
 OUTPUT_FORMATS = ("text", "concise", "json", "github", "gitlab", "junit", "sarif")
 
@@ -46,32 +51,39 @@ def run_lint(paths: Sequence[str | Path], output_format: str = "text", strict: b
              select: Sequence[str] | None = None, ignore: Sequence[str] | None = None,
              kind: str | None = None, param_desc: str | Path | None = None,
              jobs: int | None = None, output_file: str | Path | None = None,
-             show_statistics: bool = False, exit_zero: bool = False) -> int:
+             show_statistics: bool = False, exit_zero: bool = False,
+             config: str | Path | None = None, isolated: bool = False) -> int:
     """Lint files, print the report, return the exit code (0, 1; 2 is raised as UsageError).
 
     Findings go to standard output (or ``output_file``); the summary line and the
     statistics go to standard error, so standard output stays parseable.
     """
     from zero.diagnostics import Severity
-    from zero.registry import load_registry
 
     if output_format not in OUTPUT_FORMATS:
         raise UsageError(f"unknown output format {output_format!r} (use one of: "
                          f"{', '.join(OUTPUT_FORMATS)})")
-    options = LintOptions(select=parse_codes(select), ignore=parse_codes(ignore), kind=parse_kind(kind))
-    try:
-        registry = load_registry(param_desc)
-    except Exception as exc:
-        from zero.paramdesc import ParamDescError
+    from zero.config import ConfigFinder
 
-        if isinstance(exc, ParamDescError):
-            raise UsageError(str(exc)) from None
-        raise
+    cli = LintOptions(select=parse_codes(select), ignore=parse_codes(ignore), kind=parse_kind(kind))
     try:
-        files = collect_files(paths)
-        if not files:
+        finder = ConfigFinder(Path(config) if config else None, isolated)
+        named = [Path(p) for p in paths]
+        files = collect_files(named, include=lambda f: finder.for_path(f).included(f),
+                              exclude=lambda f: finder.for_path(f).excluded(f))
+        if not files and any(p.is_dir() for p in named):
             raise ZeroError("no list files found (looked for *.lis and *.lst)")
-        results = lint_many(files, registry, options, jobs)
+        groups: dict[Path | None, list[Path]] = {}
+        for f in files:  # files sharing a parameter description share a registry
+            groups.setdefault(param_desc_of(finder.for_path(f), param_desc), []).append(f)
+        by_file: dict[Path, LintResult] = {}
+        for desc, members in groups.items():
+            registry = _registry(desc)
+            for f, r in zip(members, lint_many(members, registry,
+                                               lambda f: finder.for_path(f).options_for(f, cli), jobs),
+                            strict=True):
+                by_file[f] = r
+        results = [by_file[f] for f in files]
     except ZeroError as exc:
         raise UsageError(str(exc)) from None
 
@@ -103,6 +115,31 @@ def run_lint(paths: Sequence[str | Path], output_format: str = "text", strict: b
     worst = max((r.worst for r in results if r.worst is not None), default=None)
     threshold = Severity.WARNING if strict else Severity.ERROR
     return 1 if worst is not None and worst >= threshold else 0
+
+
+def param_desc_of(config: Config, given: str | Path | None) -> Path | None:
+    """The command line's --param-desc, else the configuration's."""
+    if given:
+        return Path(given)
+    return config.param_desc
+
+
+_registries: dict[Path | None, Registry] = {}
+
+
+def _registry(desc: Path | None) -> Registry:
+    from zero.registry import load_registry
+
+    if desc not in _registries:
+        try:
+            _registries[desc] = load_registry(desc)
+        except Exception as exc:
+            from zero.paramdesc import ParamDescError
+
+            if isinstance(exc, ParamDescError):
+                raise UsageError(str(exc)) from None
+            raise
+    return _registries[desc]
 
 
 def fail(message: str) -> int:

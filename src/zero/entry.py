@@ -13,9 +13,10 @@ import sys
 
 _VALUE_OPTIONS = {"--output-format": "output_format", "--select": "select", "--ignore": "ignore",
                   "--kind": "kind", "--jobs": "jobs", "-j": "jobs", "--output-file": "output_file",
-                  "-o": "output_file"}
+                  "-o": "output_file", "--config": "config"}
 _FLAGS = {"--strict": ("strict", True), "--no-strict": ("strict", False),
-          "--statistics": ("show_statistics", True), "--exit-zero": ("exit_zero", True)}
+          "--statistics": ("show_statistics", True), "--exit-zero": ("exit_zero", True),
+          "--isolated": ("isolated", True)}
 
 
 def parse_lint_args(args: list[str]) -> dict[str, object] | None:

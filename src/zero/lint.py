@@ -6,7 +6,7 @@ Everything the ``zero lint`` command does is callable from here.
 from __future__ import annotations
 
 import os
-from collections.abc import Iterable, Iterator
+from collections.abc import Callable, Iterable, Iterator
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -32,6 +32,7 @@ class LintOptions:
     select: tuple[str, ...] = ()  # code prefixes; empty = all
     ignore: tuple[str, ...] = ()
     kind: str | None = None  # force the list kind
+    severity: dict[str, Severity] = field(default_factory=dict)  # per-code overrides
 
 
 @dataclass(slots=True)
@@ -56,7 +57,7 @@ def selected_rules(options: LintOptions) -> dict[str, Severity]:
             continue
         if ign > sel:
             continue
-        out[code] = r.severity
+        out[code] = options.severity.get(code, r.severity)
     return out
 
 
@@ -135,19 +136,30 @@ def lint_file(path: str | Path, registry: Registry | None = None,
     return lint_tree(tree, options, source if fmt in ("yaml", "toml") else None, registry)
 
 
-def collect_files(paths: Iterable[str | Path]) -> list[Path]:
-    """Files named explicitly, plus ``*.lis``/``*.lst`` below named directories (sorted)."""
+def collect_files(paths: Iterable[str | Path], include: Callable[[Path], bool] | None = None,
+                  exclude: Callable[[Path], bool] | None = None) -> list[Path]:
+    """Files named explicitly, plus list files below named directories (sorted).
+
+    ``include`` decides which files a directory walk picks up (default: ``*.lis``,
+    ``*.lst``); ``exclude`` drops files and directories, named ones included.
+    """
     out: list[Path] = []
     for raw in paths:
         p = Path(raw)
         if p.is_dir():
             found: list[Path] = []
             for root, dirs, files in os.walk(p):
-                dirs[:] = sorted(d for d in dirs if not d.startswith("."))
-                found.extend(Path(root) / f for f in files if f.lower().endswith(LIST_SUFFIXES))
+                dirs[:] = sorted(d for d in dirs if not d.startswith(".")
+                                 and not (exclude and exclude(Path(root) / d)))
+                for f in files:
+                    path = Path(root) / f
+                    if (include(path) if include else f.lower().endswith(LIST_SUFFIXES)) and \
+                            not (exclude and exclude(path)):
+                        found.append(path)
             out.extend(sorted(found))
         elif p.exists():
-            out.append(p)
+            if not (exclude and exclude(p)):
+                out.append(p)
         else:
             raise ZeroError(f"{raw}: no such file or directory")
     return out
@@ -162,7 +174,8 @@ def lint_paths(paths: Iterable[str | Path], registry: Registry | None = None,
 
 # Below this many files a second process costs more than it saves.
 PARALLEL_MIN_FILES = 64
-_worker_state: tuple[Registry, LintOptions] | None = None
+OptionsFor = Callable[[Path], LintOptions]
+_worker_state: tuple[Registry, OptionsFor] | None = None
 
 
 def _slim(result: LintResult) -> LintResult:
@@ -176,31 +189,34 @@ def _slim(result: LintResult) -> LintResult:
 
 def _lint_in_worker(path: Path) -> LintResult | ZeroError:
     assert _worker_state is not None
+    registry, options_for = _worker_state
     try:
-        return _slim(lint_file(path, *_worker_state))
+        return _slim(lint_file(path, registry, options_for(path)))
     except ZeroError as exc:
         return exc
 
 
-def lint_many(files: list[Path], registry: Registry | None = None, options: LintOptions | None = None,
-              jobs: int | None = None) -> list[LintResult]:
+def lint_many(files: list[Path], registry: Registry | None = None,
+              options: LintOptions | OptionsFor | None = None, jobs: int | None = None) -> list[LintResult]:
     """Lint files, in parallel across ``jobs`` processes (default: all cores) when there are
-    many; results come back in the order of ``files`` whatever the number of processes."""
+    many; results come back in the order of ``files`` whatever the number of processes.
+    ``options`` may be a function giving each file its own options (configuration)."""
     global _worker_state
     registry = registry or default_registry()
-    options = options or LintOptions()
+    fixed = options or LintOptions()
+    options_for: OptionsFor = fixed if callable(fixed) else (lambda _p: fixed)
     cores = os.cpu_count() or 1
     jobs = cores if jobs is None or jobs <= 0 else jobs
     jobs = min(jobs, cores * 4, max(1, len(files) // 16))
     if jobs <= 1 or len(files) < PARALLEL_MIN_FILES:
-        return [lint_file(f, registry, options) for f in files]
+        return [lint_file(f, registry, options_for(f)) for f in files]
     import multiprocessing as mp
 
     try:
         ctx = mp.get_context("fork")
     except ValueError:  # pragma: no cover - platforms without fork lint in one process
-        return [lint_file(f, registry, options) for f in files]
-    _worker_state = (registry, options)
+        return [lint_file(f, registry, options_for(f)) for f in files]
+    _worker_state = (registry, options_for)
     try:
         with ctx.Pool(jobs) as pool:
             out = pool.map(_lint_in_worker, files, chunksize=max(1, len(files) // (jobs * 8)))
