@@ -65,15 +65,15 @@ S004 = "warning"
 def test_closest_configuration_wins(tmp_path: Path) -> None:
     root = machine(tmp_path, 'ignore = ["M003"]\n')
     (root / "lists" / ".zero.toml").write_text('ignore = ["S004"]\n')
-    code, out, _ = lint(str(root / "lists" / "nullp.lis"))
+    _code, out, _ = lint(str(root / "lists" / "nullp.lis"))
     assert "S004" not in out and "M003" in out
-    code, out, _ = lint("--config", str(root / "zero.toml"), str(root / "lists" / "nullp.lis"))
+    _code, out, _ = lint("--config", str(root / "zero.toml"), str(root / "lists" / "nullp.lis"))
     assert "S004" in out and "M003" not in out
 
 
 def test_kind_by_glob(tmp_path: Path) -> None:
     root = machine(tmp_path, '[kind]\n"**/nullp*.lis" = "axis"\n')
-    code, out, _ = lint(str(root / "lists" / "nullp.lis"))
+    _code, out, _ = lint(str(root / "lists" / "nullp.lis"))
     assert "R001" in out  # zero-offset keys are unknown in an axis list
 
 
