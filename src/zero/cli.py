@@ -109,13 +109,18 @@ def lint(
         help="List kind instead of detecting it: zero, axis, channel, tool, startup, ...")] = None,
     jobs: Annotated[int | None, typer.Option(
         "--jobs", "-j", help="Processes for many files [default: all cores; 1 = no parallelism].")] = None,
+    fix: Annotated[bool, typer.Option("--fix", help="Apply safe fixes to the files.")] = False,
+    show_diff: Annotated[bool, typer.Option(
+        "--diff", help="Show the fixes as a unified diff; write nothing.")] = False,
+    unsafe_fixes: Annotated[bool, typer.Option(
+        "--unsafe-fixes", help="Also apply fixes that change what the controller reads.")] = False,
 ) -> None:
     """Check list files and report what the controller will do with them."""
     from zero.commands import UsageError, run_lint
 
     try:
         code = run_lint(paths, output_format.value, strict, select, ignore, kind, state.param_desc, jobs,
-                        output_file, statistics, exit_zero, config, isolated)
+                        output_file, statistics, exit_zero, config, isolated, fix, show_diff, unsafe_fixes)
     except UsageError as exc:
         raise _fail(str(exc)) from None
     if code:
@@ -331,6 +336,26 @@ def schema(
         raise _fail(str(exc)) from None
 
 
+@app.command("format")
+def format_cmd(
+    paths: Annotated[list[Path], typer.Argument(help="List files or directories.")],
+    check: Annotated[bool, typer.Option("--check", help="Only say which files would change (exit 1).")] = False,
+    diff: Annotated[bool, typer.Option("--diff", help="Show the changes as a unified diff; write nothing.")] = False,
+    config: Annotated[Path | None, typer.Option("--config", help="Use this configuration file.")] = None,
+    isolated: Annotated[bool, typer.Option("--isolated", help="Ignore configuration files.")] = False,
+) -> None:
+    """Rewrite lists in canonical layout (aligned values and comments); keys, values, comments
+    and their order stay."""
+    from zero.commands import UsageError, run_format
+
+    try:
+        code = run_format(paths, check, diff, config, isolated)
+    except UsageError as exc:
+        raise _fail(str(exc)) from None
+    if code:
+        raise typer.Exit(code=code)
+
+
 @app.command("config")
 def config_cmd(
     path: Annotated[Path, typer.Argument(help="A list file or directory whose configuration to show.")] = Path("."),
@@ -408,6 +433,9 @@ def main() -> None:
     except KeyboardInterrupt:
         sys.stderr.write("zero: interrupted\n")
         raise SystemExit(130) from None
+    except BrokenPipeError:  # the reader went away (`zero ... | head`): stop quietly
+        os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+        raise SystemExit(141) from None
     except Exception as exc:  # a bug in zero: one line, unless debugging
         if os.environ.get("ZERO_DEBUG"):
             raise

@@ -52,7 +52,8 @@ def run_lint(paths: Sequence[str | Path], output_format: str = "text", strict: b
              kind: str | None = None, param_desc: str | Path | None = None,
              jobs: int | None = None, output_file: str | Path | None = None,
              show_statistics: bool = False, exit_zero: bool = False,
-             config: str | Path | None = None, isolated: bool = False) -> int:
+             config: str | Path | None = None, isolated: bool = False,
+             fix: bool = False, show_diff: bool = False, unsafe_fixes: bool = False) -> int:
     """Lint files, print the report, return the exit code (0, 1; 2 is raised as UsageError).
 
     Findings go to standard output (or ``output_file``); the summary line and the
@@ -84,6 +85,10 @@ def run_lint(paths: Sequence[str | Path], output_format: str = "text", strict: b
                             strict=True):
                 by_file[f] = r
         results = [by_file[f] for f in files]
+        if fix or show_diff:
+            results = [_fix_one(f, r, finder.for_path(f).options_for(f, cli),
+                                _registry(param_desc_of(finder.for_path(f), param_desc)),
+                                fix, unsafe_fixes) for f, r in zip(files, results, strict=True)]
     except ZeroError as exc:
         raise UsageError(str(exc)) from None
 
@@ -115,6 +120,70 @@ def run_lint(paths: Sequence[str | Path], output_format: str = "text", strict: b
     worst = max((r.worst for r in results if r.worst is not None), default=None)
     threshold = Severity.WARNING if strict else Severity.ERROR
     return 1 if worst is not None and worst >= threshold else 0
+
+
+def _fix_one(path: Path, result: LintResult, options: LintOptions, registry: Registry, write: bool,
+             unsafe: bool) -> LintResult:
+    """Fix one list file: write it (``write``) or print the unified diff; return what is left."""
+    from zero.convert import write_atomic
+    from zero.fix import fix_bytes, unified_diff
+    from zero.lint import STRUCTURED_SUFFIXES, read_file
+
+    if path.suffix.lower() in STRUCTURED_SUFFIXES:
+        return result  # findings in YAML/TOML/JSON carry no list edits
+    data = read_file(path)
+    fixed = fix_bytes(data, str(path), registry, options, unsafe)
+    if fixed.fixed == data:
+        return result
+    if write:
+        write_atomic(path, fixed.fixed, force=True)
+        sys.stderr.write(f"zero: {path}: {fixed.applied} fix{'es' if fixed.applied != 1 else ''} applied\n")
+        return fixed.result
+    sys.stdout.write(unified_diff(str(path), data, fixed.fixed, fixed.result.document.encoding))
+    return result
+
+
+def run_format(paths: Sequence[str | Path], check: bool = False, show_diff: bool = False,
+               config: str | Path | None = None, isolated: bool = False) -> int:
+    """``zero format``: rewrite files in canonical layout; with ``check``/``show_diff`` only report.
+
+    Returns 1 when a file is (or, with --check, would be) changed or cannot be formatted.
+    """
+    from zero.config import ConfigFinder
+    from zero.convert import ConvertError, write_atomic
+    from zero.fix import format_bytes, unified_diff
+    from zero.lint import read_file
+    from zero.tokenizer import decode
+
+    try:
+        finder = ConfigFinder(Path(config) if config else None, isolated)
+        files = collect_files([Path(p) for p in paths], include=lambda f: finder.for_path(f).included(f),
+                              exclude=lambda f: finder.for_path(f).excluded(f))
+        changed = failed = 0
+        for f in files:
+            data = read_file(f)
+            try:
+                new = format_bytes(data, str(f))
+            except ConvertError as exc:
+                sys.stderr.write(f"zero: {exc} (not formatted)\n")
+                failed += 1
+                continue
+            if new == data:
+                continue
+            changed += 1
+            if show_diff:
+                sys.stdout.write(unified_diff(str(f), data, new, decode(data)[1]))
+            elif check:
+                sys.stdout.write(f"would reformat {f}\n")
+            else:
+                write_atomic(f, new, force=True)
+    except ZeroError as exc:
+        raise UsageError(str(exc)) from None
+    verb = "would be reformatted" if (check or show_diff) else "reformatted"
+    sys.stderr.write(f"{changed} file{'s' if changed != 1 else ''} {verb}, "
+                     f"{len(files) - changed - failed} unchanged"
+                     + (f", {failed} not formatted" if failed else "") + "\n")
+    return 1 if failed or (changed and (check or show_diff)) else 0
 
 
 def param_desc_of(config: Config, given: str | Path | None) -> Path | None:

@@ -16,7 +16,8 @@ _VALUE_OPTIONS = {"--output-format": "output_format", "--select": "select", "--i
                   "-o": "output_file", "--config": "config"}
 _FLAGS = {"--strict": ("strict", True), "--no-strict": ("strict", False),
           "--statistics": ("show_statistics", True), "--exit-zero": ("exit_zero", True),
-          "--isolated": ("isolated", True)}
+          "--isolated": ("isolated", True), "--fix": ("fix", True), "--diff": ("show_diff", True),
+          "--unsafe-fixes": ("unsafe_fixes", True)}
 
 
 def parse_lint_args(args: list[str]) -> dict[str, object] | None:
@@ -74,12 +75,19 @@ def main() -> None:
             except KeyboardInterrupt:
                 sys.stderr.write("zero: interrupted\n")
                 code = 130
+            except BrokenPipeError:  # the reader went away (`zero lint ... | head`): stop quietly
+                os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+                raise SystemExit(141) from None
             except Exception as exc:  # a bug in zero: one line, unless debugging
                 if os.environ.get("ZERO_DEBUG"):
                     raise
                 code = fail(f"internal error: {type(exc).__name__}: {exc} "
                             "(set ZERO_DEBUG=1 for the traceback)")
-            sys.stdout.flush()
+            try:
+                sys.stdout.flush()
+            except BrokenPipeError:
+                os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
+                code = 141
             raise SystemExit(code)
     from zero.cli import main as typer_main
 
