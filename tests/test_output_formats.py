@@ -103,3 +103,20 @@ def test_output_file_statistics_exit_zero(tmp_path: Path) -> None:
 def test_unknown_format_is_a_usage_error() -> None:
     code, _, err = run("--output-format", "xml", SEED)
     assert code == 2 and "xml" in err
+
+
+def test_stdin_with_a_filename(tmp_path: Path) -> None:
+    data = Path(SEED).read_bytes()
+    p = subprocess.run([sys.executable, "-m", "zero", "lint", "--stdin-filename", "m/nullp.lis",
+                        "--output-format", "concise"], input=data, capture_output=True, cwd=tmp_path,
+                       check=False)
+    assert p.returncode == 1 and p.stdout.startswith(b"m/nullp.lis:19:20: S004")
+    (tmp_path / "zero.toml").write_text('exclude = ["m/**"]\n')
+    p = subprocess.run([sys.executable, "-m", "zero", "lint", "--stdin-filename", "m/nullp.lis"],
+                       input=data, capture_output=True, cwd=tmp_path, check=False)
+    assert p.returncode == 0 and p.stdout == b""
+    p = subprocess.run([sys.executable, "-m", "zero", "lint", "-", "--fix"], input=data,
+                       capture_output=True, cwd=tmp_path, check=False)
+    assert p.stdout == data.replace(b"]. inaktiv", b"].inaktiv") and b"M003" in p.stderr
+    r = runner.invoke(app, ["lint", "--stdin-filename", "x.lis", "--output-format", "json"], input=data)
+    assert r.exit_code == 1 and len(json.loads(r.stdout)) == 7

@@ -86,7 +86,8 @@ def main_callback(
 
 @app.command()
 def lint(
-    paths: Annotated[list[Path], typer.Argument(help="List files or directories (*.lis, *.lst).")],
+    paths: Annotated[list[Path] | None, typer.Argument(
+        help="List files or directories (*.lis, *.lst); - reads standard input.")] = None,
     output_format: Annotated[LintFormat, typer.Option(
         "--output-format", help="text (for people), concise (one line each), json (a stable "
         "contract), github, gitlab, junit or sarif.")] = LintFormat.text,
@@ -114,13 +115,18 @@ def lint(
         "--diff", help="Show the fixes as a unified diff; write nothing.")] = False,
     unsafe_fixes: Annotated[bool, typer.Option(
         "--unsafe-fixes", help="Also apply fixes that change what the controller reads.")] = False,
+    stdin_filename: Annotated[str | None, typer.Option(
+        "--stdin-filename", help="Lint standard input as this file (for editors).")] = None,
 ) -> None:
     """Check list files and report what the controller will do with them."""
     from zero.commands import UsageError, run_lint
 
     try:
-        code = run_lint(paths, output_format.value, strict, select, ignore, kind, state.param_desc, jobs,
-                        output_file, statistics, exit_zero, config, isolated, fix, show_diff, unsafe_fixes)
+        if not paths and stdin_filename is None:
+            raise UsageError("give list files or directories (or - with --stdin-filename)")
+        code = run_lint([str(p) for p in paths or []], output_format.value, strict, select, ignore, kind,
+                        state.param_desc, jobs, output_file, statistics, exit_zero, config, isolated,
+                        fix, show_diff, unsafe_fixes, stdin_filename)
     except UsageError as exc:
         raise _fail(str(exc)) from None
     if code:

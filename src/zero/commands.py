@@ -53,7 +53,8 @@ def run_lint(paths: Sequence[str | Path], output_format: str = "text", strict: b
              jobs: int | None = None, output_file: str | Path | None = None,
              show_statistics: bool = False, exit_zero: bool = False,
              config: str | Path | None = None, isolated: bool = False,
-             fix: bool = False, show_diff: bool = False, unsafe_fixes: bool = False) -> int:
+             fix: bool = False, show_diff: bool = False, unsafe_fixes: bool = False,
+             stdin_filename: str | None = None) -> int:
     """Lint files, print the report, return the exit code (0, 1; 2 is raised as UsageError).
 
     Findings go to standard output (or ``output_file``); the summary line and the
@@ -67,6 +68,9 @@ def run_lint(paths: Sequence[str | Path], output_format: str = "text", strict: b
     from zero.config import ConfigFinder
 
     cli = LintOptions(select=parse_codes(select), ignore=parse_codes(ignore), kind=parse_kind(kind))
+    if list(paths) in ([], ["-"]) and (stdin_filename or list(paths) == ["-"]):
+        return _lint_stdin(stdin_filename or "-", cli, output_format, strict, param_desc, config, isolated,
+                           fix or show_diff, unsafe_fixes, exit_zero)
     try:
         finder = ConfigFinder(Path(config) if config else None, isolated)
         named = [Path(p) for p in paths]
@@ -120,6 +124,48 @@ def run_lint(paths: Sequence[str | Path], output_format: str = "text", strict: b
     worst = max((r.worst for r in results if r.worst is not None), default=None)
     threshold = Severity.WARNING if strict else Severity.ERROR
     return 1 if worst is not None and worst >= threshold else 0
+
+
+def _lint_stdin(name: str, cli: LintOptions, output_format: str, strict: bool,
+                param_desc: str | Path | None, config: str | Path | None, isolated: bool,
+                fix: bool, unsafe: bool, exit_zero: bool) -> int:
+    """Lint standard input as the file ``name`` (its configuration applies). With a fix
+    option the fixed list goes to standard output and the findings to standard error."""
+    from zero import report
+    from zero.config import ConfigFinder
+    from zero.diagnostics import Severity
+    from zero.lint import lint_bytes
+
+    data = sys.stdin.buffer.read()
+    try:
+        cfg = ConfigFinder(Path(config) if config else None, isolated).for_path(Path(name))
+        if name != "-" and cfg.excluded(Path(name)):
+            if fix:
+                sys.stdout.buffer.write(data)
+            return 0
+        options = cfg.options_for(Path(name), cli)
+        registry = _registry(param_desc_of(cfg, param_desc))
+    except ZeroError as exc:
+        raise UsageError(str(exc)) from None
+    if fix:
+        from zero.fix import fix_bytes
+
+        fixed = fix_bytes(data, name, registry, options, unsafe)
+        sys.stdout.buffer.write(fixed.fixed)
+        result = fixed.result
+        stream = sys.stderr
+    else:
+        result = lint_bytes(data, name, registry, options)
+        stream = sys.stdout
+    if output_format == "json":
+        report.render_json([result], stream)
+    elif output_format == "text":
+        report.render_text([result], stream, summary_stream=sys.stderr)
+    else:
+        report.RENDERERS[output_format]([result], stream)
+    if exit_zero or result.worst is None:
+        return 0
+    return 1 if result.worst >= (Severity.WARNING if strict else Severity.ERROR) else 0
 
 
 def _fix_one(path: Path, result: LintResult, options: LintOptions, registry: Registry, write: bool,

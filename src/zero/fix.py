@@ -18,6 +18,7 @@ from zero.registry import Registry
 from zero.tokenizer import tokenize
 
 MAX_PASSES = 8
+COMMENT_OFFSET = 15  # comments start this many columns after the value column
 
 
 def document_bytes(doc: Document, lines: list[str] | None = None) -> bytes:
@@ -94,8 +95,9 @@ def unified_diff(path: str, before: bytes, after: bytes, encoding: str = "utf-8"
 
 def format_bytes(data: bytes, path: str, value_column: int | None = None) -> bytes:
     """The list in canonical layout: values aligned in one column (the vendor's column 55, or
-    after the longest key), one comment column, no trailing whitespace; order, values,
-    comments, encoding and line endings kept. Raises ConvertError for lines it cannot read."""
+    after the longest key), comments 15 columns after it (one space after a longer value), no
+    trailing whitespace; order, values, comments, encoding and line endings kept. Earlier lines
+    of a key set twice stay as written. Raises ConvertError for lines it cannot read."""
     from zero.structured import DEFAULT_VALUE_COLUMN, from_document, to_list_text
 
     doc = tokenize(data, path)
@@ -119,8 +121,7 @@ def format_bytes(data: bytes, path: str, value_column: int | None = None) -> byt
         column = widest + 1
     meta["value_column"] = column
     if any(leaf.after is not None for leaf in tree.leaves):
-        cc = meta.get("comment_column")
-        meta["comment_column"] = cc if isinstance(cc, int) and cc > column else column + 15
+        meta["comment_column"] = column + COMMENT_OFFSET  # the vendor's 55 / 70
     else:
         meta.pop("comment_column", None)
     from zero.structured import encode_list
