@@ -287,13 +287,13 @@ def _leaf(segments: list[str], value: Scalar, native: str, path: str, line: int 
 
 def _strip_comment(text: str) -> str | None:
     """``# text`` after a value → ``text`` (the list comment as written)."""
-    t = text.strip()
+    t = text.strip(" \t")
     if not t.startswith("#"):
         return None
     t = t[1:]
     if t.startswith(" "):
         t = t[1:]
-    return t.rstrip() or None
+    return t.rstrip(" \t") or None
 
 
 def _finish(leaves: list[Leaf], meta: Any, tail: list[str], path: str) -> Tree:
@@ -848,8 +848,8 @@ def read_json(text: str, path: str = "-") -> Tree:
                     if isinstance(before, list):
                         leaf.before = [x for x in before if isinstance(x, str)]
                     after = c.get("after")
-                    if isinstance(after, str) and after.strip():
-                        leaf.after = after.rstrip()
+                    if isinstance(after, str) and after.strip(" \t"):
+                        leaf.after = after.rstrip(" \t")
     return _finish(leaves, meta, tail, path)
 
 

@@ -254,7 +254,7 @@ def _template(doc: Document, e: Entry) -> str:
     head = s[: e.value_start] + "{v}"
     if e.comment is None:
         return head + s[e.value_end:]
-    core = e.comment.rstrip()
+    core = e.comment.rstrip(" \t")
     return head + s[e.value_end: e.comment_start] + "{c}" + e.comment[len(core):]
 
 
@@ -341,7 +341,7 @@ def from_document(doc: Document, kind: str | None = None) -> Tree:
                                item.key_start + 1)
         spec = registry.by_pattern(item.key.pattern, kind) if item.key else None
         value, native = _scalar_from_list(item.value, spec.type if spec else None)
-        after = item.comment.rstrip() if item.comment is not None else None
+        after = item.comment.rstrip(" \t") if item.comment is not None else None
         leaf = Leaf(item.key_text, path, value, [normalized(x) for x in pending], after,
                     item.line, item.value_start + 1, native)
         if any(x != normalized(x) for x in pending):
@@ -543,7 +543,7 @@ def _verify(line: str, leaf: Leaf, value: str, path: str) -> None:
             raise ConvertError(f"{where}: comment line {x!r} does not start with `#`", path, leaf.line)
     got = scan_line(line, 1, [])
     ok = (type(got) is Entry and got.key_text == leaf.key and got.value == value
-          and (got.comment.rstrip() if got.comment is not None else None) == leaf.after)
+          and (got.comment.rstrip(" \t") if got.comment is not None else None) == leaf.after)
     if not ok:
         if value == "" or (any(c in value for c in " \t") and "|" not in value):
             why = "the value is empty or holds whitespace"
