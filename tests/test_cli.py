@@ -147,3 +147,34 @@ def test_subprocess_usage_error_is_one_line() -> None:
     proc = _run("lint", "/nonexistent/file.lis")
     assert proc.returncode == 2
     assert proc.stderr.strip().count("\n") == 0 and "Traceback" not in proc.stderr
+
+
+def test_progress_bar_only_on_a_terminal(tmp_path: Path) -> None:
+    import pty
+
+    for i in range(250):
+        (tmp_path / f"l{i:03d}.lis").write_text(f"np_grp[1].achse[0].versch {i}\nEnde\n")
+    proc = _run("lint", "-j", "1", str(tmp_path))
+    assert "files" not in proc.stderr.replace("250 files checked", "")  # not a terminal: no bar
+    master, slave = pty.openpty()
+    p = subprocess.run([sys.executable, "-m", "zero", "lint", "-j", "1", str(tmp_path)],
+                       stdout=subprocess.DEVNULL, stderr=slave, check=False, env={**os.environ, "NO_COLOR": "1"})
+    os.close(slave)
+    chunks = []
+    while True:
+        try:
+            data = os.read(master, 65536)
+        except OSError:
+            break
+        if not data:
+            break
+        chunks.append(data)
+    os.close(master)
+    err = b"".join(chunks).decode()
+    assert p.returncode == 0
+    assert "250/250 files" in err and "250 files checked" in err
+
+
+def test_shell_completion_script() -> None:
+    proc = _run("--show-completion", "bash")
+    assert proc.returncode == 0 and "_zero_completion" in proc.stdout

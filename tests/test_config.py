@@ -114,3 +114,17 @@ def test_config_show(tmp_path: Path) -> None:
     assert 'ignore = ["M003"]' in result.output and 'R007 = "error"' in result.output
     bad = runner.invoke(app, ["config", "--config", str(root / "nope.toml")])
     assert bad.exit_code == 2
+
+
+def test_directory_walk_respects_gitignore(tmp_path: Path) -> None:
+    import shutil
+
+    if shutil.which("git") is None:
+        pytest.skip("git not installed")
+    root = machine(tmp_path, "")
+    (root / ".gitignore").write_text("lists/old/\n")
+    subprocess.run(["git", "init", "-q"], cwd=root, check=True)
+    _code, out, _ = lint(str(root / "lists"))
+    assert "old" not in out and "lists/nullp.lis" in out
+    _code, out, _ = lint(str(root / "lists" / "old" / "nullp.lis"))  # named: linted
+    assert "old/nullp.lis" in out

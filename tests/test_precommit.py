@@ -39,8 +39,20 @@ def test_hook_fails_on_the_bad_list_and_passes_the_good_one(tmp_path: Path) -> N
     assert both.returncode == 1, both.stdout + both.stderr
     assert "bad.lis:19:20: S004 error whitespace inside the key" in both.stdout
     assert "notes.txt" not in both.stdout
-    run("git", "rm", "-q", "--cached", "bad.lis")
+    # pre-commit names the files explicitly: an exclude in zero's configuration still applies
+    (repo / "zero.toml").write_text('exclude = ["bad.lis"]\n')
+    run("git", "add", ".")
+    excluded = run(PRE_COMMIT, "try-repo", str(ROOT), "zero-lint", "--all-files", "--verbose")
+    assert excluded.returncode == 0, excluded.stdout + excluded.stderr
+    (repo / "zero.toml").unlink()
+    run("git", "rm", "-q", "--cached", "bad.lis", "zero.toml")
     (repo / "bad.lis").unlink()
     good = run(PRE_COMMIT, "try-repo", str(ROOT), "zero-lint", "--all-files", "--verbose")
     assert good.returncode == 0, good.stdout + good.stderr
     assert "Passed" in good.stdout
+    # the format hook rewrites a list that is not in canonical layout, then passes
+    (repo / "good.lis").write_text("g53_verfuegbar 1\nEnde\n")
+    run("git", "add", ".")
+    fmt = run(PRE_COMMIT, "try-repo", str(ROOT), "zero-format", "--all-files")
+    assert fmt.returncode == 1 and "files were modified by this hook" in fmt.stdout
+    assert (repo / "good.lis").read_text() == "g53_verfuegbar".ljust(54) + "1\nEnde\n"

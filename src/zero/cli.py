@@ -23,7 +23,7 @@ if TYPE_CHECKING:
 app = typer.Typer(
     name="zero",
     help="Lint, diff and convert ISG kernel CNC parameter lists.",
-    add_completion=False,
+    add_completion=True,
     no_args_is_help=True,
     pretty_exceptions_enable=False,
 )

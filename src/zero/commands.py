@@ -8,7 +8,7 @@ import); :mod:`zero.cli` calls it from the typer command.
 from __future__ import annotations
 
 import sys
-from collections.abc import Sequence
+from collections.abc import Callable, Sequence
 from pathlib import Path
 from typing import TYPE_CHECKING
 
@@ -82,12 +82,23 @@ def run_lint(paths: Sequence[str | Path], output_format: str = "text", strict: b
         for f in files:  # files sharing a parameter description share a registry
             groups.setdefault(param_desc_of(finder.for_path(f), param_desc), []).append(f)
         by_file: dict[Path, LintResult] = {}
+        progress = _progress_bar(len(files))
+        done = 0
         for desc, members in groups.items():
             registry = _registry(desc)
+
+            def step(n: int, _total: int, base: int = done) -> None:
+                if progress is not None:
+                    progress(base + n, len(files))
+
             for f, r in zip(members, lint_many(members, registry,
-                                               lambda f: finder.for_path(f).options_for(f, cli), jobs),
+                                               lambda f: finder.for_path(f).options_for(f, cli), jobs,
+                                               step if progress is not None else None),
                             strict=True):
                 by_file[f] = r
+            done += len(members)
+        if progress is not None:
+            sys.stderr.write("\r\033[K")
         results = [by_file[f] for f in files]
         if fix or show_diff:
             results = [_fix_one(f, r, finder.for_path(f).options_for(f, cli),
@@ -166,6 +177,23 @@ def _lint_stdin(name: str, cli: LintOptions, output_format: str, strict: bool,
     if exit_zero or result.worst is None:
         return 0
     return 1 if result.worst >= (Severity.WARNING if strict else Severity.ERROR) else 0
+
+
+PROGRESS_MIN_FILES = 200
+
+
+def _progress_bar(total: int) -> Callable[[int, int], None] | None:
+    """A one-line progress bar on stderr, only on a terminal and only for long runs."""
+    if total < PROGRESS_MIN_FILES or not sys.stderr.isatty():
+        return None
+
+    def show(done: int, total: int) -> None:
+        width = 30
+        filled = width * done // max(total, 1)
+        sys.stderr.write(f"\r\033[Kzero: [{'#' * filled}{'.' * (width - filled)}] {done}/{total} files")
+        sys.stderr.flush()
+
+    return show
 
 
 def _fix_one(path: Path, result: LintResult, options: LintOptions, registry: Registry, write: bool,

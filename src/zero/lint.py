@@ -136,17 +136,42 @@ def lint_file(path: str | Path, registry: Registry | None = None,
     return lint_tree(tree, options, source if fmt in ("yaml", "toml") else None, registry)
 
 
+def git_visible(directory: Path) -> set[Path] | None:
+    """Files below ``directory`` that git does not ignore; ``None`` outside a git work tree."""
+    import shutil
+    import subprocess
+
+    if shutil.which("git") is None:
+        return None
+    try:
+        proc = subprocess.run(["git", "-C", str(directory), "ls-files", "-z", "--cached", "--others",
+                               "--exclude-standard", "--full-name", "."], capture_output=True, timeout=60,
+                              check=False)
+        top = subprocess.run(["git", "-C", str(directory), "rev-parse", "--show-toplevel"],
+                             capture_output=True, text=True, timeout=60, check=False)
+    except (OSError, subprocess.SubprocessError):
+        return None
+    if proc.returncode != 0 or top.returncode != 0:
+        return None
+    root = Path(top.stdout.strip())
+    return {(root / os.fsdecode(name)).resolve() for name in proc.stdout.split(b"\0") if name}
+
+
 def collect_files(paths: Iterable[str | Path], include: Callable[[Path], bool] | None = None,
-                  exclude: Callable[[Path], bool] | None = None) -> list[Path]:
+                  exclude: Callable[[Path], bool] | None = None,
+                  respect_gitignore: bool = True) -> list[Path]:
     """Files named explicitly, plus list files below named directories (sorted).
 
     ``include`` decides which files a directory walk picks up (default: ``*.lis``,
-    ``*.lst``); ``exclude`` drops files and directories, named ones included.
+    ``*.lst``); ``exclude`` drops files and directories, named ones included. A
+    directory walk skips what ``.gitignore`` ignores when the directory is in a git
+    work tree (named files are always linted).
     """
     out: list[Path] = []
     for raw in paths:
         p = Path(raw)
         if p.is_dir():
+            visible = git_visible(p) if respect_gitignore else None
             found: list[Path] = []
             for root, dirs, files in os.walk(p):
                 dirs[:] = sorted(d for d in dirs if not d.startswith(".")
@@ -154,7 +179,8 @@ def collect_files(paths: Iterable[str | Path], include: Callable[[Path], bool] |
                 for f in files:
                     path = Path(root) / f
                     if (include(path) if include else f.lower().endswith(LIST_SUFFIXES)) and \
-                            not (exclude and exclude(path)):
+                            not (exclude and exclude(path)) and \
+                            (visible is None or path.resolve() in visible):
                         found.append(path)
             out.extend(sorted(found))
         elif p.exists():
@@ -197,7 +223,8 @@ def _lint_in_worker(path: Path) -> LintResult | ZeroError:
 
 
 def lint_many(files: list[Path], registry: Registry | None = None,
-              options: LintOptions | OptionsFor | None = None, jobs: int | None = None) -> list[LintResult]:
+              options: LintOptions | OptionsFor | None = None, jobs: int | None = None,
+              progress: Callable[[int, int], None] | None = None) -> list[LintResult]:
     """Lint files, in parallel across ``jobs`` processes (default: all cores) when there are
     many; results come back in the order of ``files`` whatever the number of processes.
     ``options`` may be a function giving each file its own options (configuration)."""
@@ -209,7 +236,12 @@ def lint_many(files: list[Path], registry: Registry | None = None,
     jobs = cores if jobs is None or jobs <= 0 else jobs
     jobs = min(jobs, cores * 4, max(1, len(files) // 16))
     if jobs <= 1 or len(files) < PARALLEL_MIN_FILES:
-        return [lint_file(f, registry, options_for(f)) for f in files]
+        serial = []
+        for n, f in enumerate(files, 1):
+            serial.append(lint_file(f, registry, options_for(f)))
+            if progress is not None and (n % 50 == 0 or n == len(files)):
+                progress(n, len(files))
+        return serial
     import multiprocessing as mp
 
     try:
@@ -219,7 +251,12 @@ def lint_many(files: list[Path], registry: Registry | None = None,
     _worker_state = (registry, options_for)
     try:
         with ctx.Pool(jobs) as pool:
-            out = pool.map(_lint_in_worker, files, chunksize=max(1, len(files) // (jobs * 8)))
+            out = []
+            for n, r in enumerate(pool.imap(_lint_in_worker, files,
+                                            chunksize=max(1, min(64, len(files) // (jobs * 8)))), 1):
+                out.append(r)
+                if progress is not None and (n % 50 == 0 or n == len(files)):
+                    progress(n, len(files))
     finally:
         _worker_state = None
     for r in out:
