@@ -177,4 +177,4 @@ def test_progress_bar_only_on_a_terminal(tmp_path: Path) -> None:
 
 def test_shell_completion_script() -> None:
     proc = _run("--show-completion", "bash")
-    assert proc.returncode == 0 and "_zero_completion" in proc.stdout
+    assert proc.returncode == 0 and "zero_completion() {" in proc.stdout
