@@ -11,7 +11,7 @@ from __future__ import annotations
 import json
 import tomllib
 from collections import Counter
-from collections.abc import Iterable
+from collections.abc import Iterable, Iterator, Mapping
 from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
@@ -108,23 +108,61 @@ class ParamSpec:
         return d
 
 
+class SpecTable(Mapping[str, "ParamSpec"]):
+    """ID → :class:`ParamSpec`, each built from its table row on first use.
+
+    A lint of one list touches a few hundred of the 1766 parameters; building only
+    those keeps start-up short. Iterating builds them all.
+    """
+
+    def __init__(self, rows: dict[str, dict[str, Any]], index_base: dict[str, int]) -> None:
+        self._rows = rows
+        self._index_base = index_base
+        self._built: dict[str, ParamSpec] = {}
+
+    def __getitem__(self, param_id: str) -> ParamSpec:
+        spec = self._built.get(param_id)
+        if spec is None:
+            spec = self._built[param_id] = _spec_from_row(self._rows[param_id], self._index_base)
+        return spec
+
+    def __contains__(self, param_id: object) -> bool:
+        return param_id in self._rows
+
+    def __iter__(self) -> Iterator[str]:
+        return iter(self._rows)
+
+    def __len__(self) -> int:
+        return len(self._rows)
+
+    def keys_by_kind(self) -> Iterator[tuple[str, str, str]]:
+        """(id, kind, key) of every parameter that has a key, without building specs."""
+        for pid, row in self._rows.items():
+            if row.get("key"):
+                yield pid, row["kind"], row["key"]
+
+
 @dataclass(slots=True)
 class Registry:
     """Lookup by ID and by concrete key, per list kind."""
 
-    specs: dict[str, ParamSpec]
+    specs: Mapping[str, ParamSpec]
     source: str = "built-in"
-    _by_key: dict[tuple[str, str], ParamSpec] = field(default_factory=dict)
+    _by_key: dict[tuple[str, str], str] = field(default_factory=dict)  # (kind, key) → ID
     _kinds_of: dict[str, list[str]] = field(default_factory=dict)
     _ranges: dict[str, Range | None] = field(default_factory=dict)
     aliases: dict[tuple[str, str], str] = field(default_factory=dict)
     _suggestions: dict[tuple[str, str | None, int], list[str]] = field(default_factory=dict)
 
     def __post_init__(self) -> None:
-        for spec in self.specs.values():
-            if spec.key:
-                self._by_key.setdefault((spec.kind, spec.key), spec)
-                self._kinds_of.setdefault(spec.key, []).append(spec.kind)
+        if isinstance(self.specs, SpecTable):
+            triples: Iterable[tuple[str, str, str]] = self.specs.keys_by_kind()
+        else:
+            triples = ((s.id, s.kind, s.key) for s in self.specs.values() if s.key)
+        for pid, kind, key in triples:
+            if (kind, key) not in self._by_key:
+                self._by_key[(kind, key)] = pid
+            self._kinds_of.setdefault(key, []).append(kind)
 
     def __len__(self) -> int:
         return len(self.specs)
@@ -135,15 +173,17 @@ class Registry:
     def by_pattern(self, pattern: str, kind: str | None) -> ParamSpec | None:
         """The spec for a key pattern (``np_grp[].achse[].versch``) in a list kind."""
         if kind is not None:
-            return self._by_key.get((kind, pattern))
+            pid = self._by_key.get((kind, pattern))
+            return self.specs[pid] if pid is not None else None
         kinds = self._kinds_of.get(pattern)
-        return self._by_key[(kinds[0], pattern)] if kinds else None
+        return self.specs[self._by_key[(kinds[0], pattern)]] if kinds else None
 
     def alias(self, pattern: str, kind: str | None) -> ParamSpec | None:
         """The documented parameter an undocumented spelling stands for, if known."""
         for (k, p), target in self.aliases.items():
             if p == pattern and (kind is None or k == kind):
-                return self._by_key.get((k, target))
+                pid = self._by_key.get((k, target))
+                return self.specs[pid] if pid is not None else None
         return None
 
     def kinds_of(self, pattern: str) -> list[str]:
@@ -239,7 +279,7 @@ def build_registry(rows: list[dict[str, Any]], source: str) -> Registry:
         row.update(extra)
         row.pop("range_note", None) if "range" in extra else None
     index_base = overlay.get("index_base", {})
-    specs = {pid: _spec_from_row(r, index_base) for pid, r in by_id.items()}
+    specs = SpecTable(by_id, index_base)
     aliases = {}
     for name, target in overlay.get("aliases", {}).items():
         kind, _, pattern = name.partition(":")
