@@ -117,16 +117,19 @@ def lint(
         "--unsafe-fixes", help="Also apply fixes that change what the controller reads.")] = False,
     stdin_filename: Annotated[str | None, typer.Option(
         "--stdin-filename", help="Lint standard input as this file (for editors).")] = None,
+    machine: Annotated[Path | None, typer.Option(
+        "--machine", help="Lint every list a start-up list (hochlauf.lis) names, plus the checks "
+        "across them (X rules).")] = None,
 ) -> None:
     """Check list files and report what the controller will do with them."""
     from zero.commands import UsageError, run_lint
 
     try:
-        if not paths and stdin_filename is None:
+        if not paths and stdin_filename is None and machine is None:
             raise UsageError("give list files or directories (or - with --stdin-filename)")
         code = run_lint([str(p) for p in paths or []], output_format.value, strict, select, ignore, kind,
                         state.param_desc, jobs, output_file, statistics, exit_zero, config, isolated,
-                        fix, show_diff, unsafe_fixes, stdin_filename)
+                        fix, show_diff, unsafe_fixes, stdin_filename, machine)
     except UsageError as exc:
         raise _fail(str(exc)) from None
     if code:
@@ -340,6 +343,42 @@ def schema(
         write_atomic(Path(output), text.encode("utf-8"), force)
     except ZeroError as exc:
         raise _fail(str(exc)) from None
+
+
+@app.command()
+def limits(
+    machine: Annotated[Path, typer.Option("--machine", help="The start-up list (hochlauf.lis).")],
+    output_format: Annotated[OutputFormat, typer.Option(
+        "--output-format", help="text (a table) or json.")] = OutputFormat.text,
+    all_groups: Annotated[bool, typer.Option(
+        "--all-groups", help="All 97 groups, not only G53..G59 and the ones the list sets.")] = False,
+    profile: Annotated[str | None, typer.Option(
+        help="Also apply a rule set: ip247 (Siemens S5: offsets and limits within ±99.999999 m).")] = None,
+) -> None:
+    """Soft limits in the programming coordinate system, per work offset (G53..G59, G159=n) and axis."""
+    import json
+
+    from zero.lint import ZeroError
+    from zero.machine import ip247, load_machine, pcs_limits
+    from zero.report import render_limits
+
+    if profile not in (None, "ip247"):
+        raise _fail(f"unknown profile {profile!r} (known: ip247)")
+    try:
+        m = load_machine(machine, _registry())
+    except ZeroError as exc:
+        raise _fail(str(exc)) from None
+    rows = pcs_limits(m, all_groups)
+    violations = ip247(m) if profile == "ip247" else []
+    if output_format is OutputFormat.json:
+        data: dict[str, object] = {"limits": [r.to_json() for r in rows]}
+        if profile:
+            data["violations"] = [{"what": v.what, "value": v.value, "where": v.where} for v in violations]
+        sys.stdout.write(json.dumps(data, indent=2, ensure_ascii=False) + "\n")
+    else:
+        render_limits(rows, violations)
+    if violations:
+        raise typer.Exit(code=1)
 
 
 @app.command("format")

@@ -54,13 +54,12 @@ def run_lint(paths: Sequence[str | Path], output_format: str = "text", strict: b
              show_statistics: bool = False, exit_zero: bool = False,
              config: str | Path | None = None, isolated: bool = False,
              fix: bool = False, show_diff: bool = False, unsafe_fixes: bool = False,
-             stdin_filename: str | None = None) -> int:
+             stdin_filename: str | None = None, machine: str | Path | None = None) -> int:
     """Lint files, print the report, return the exit code (0, 1; 2 is raised as UsageError).
 
     Findings go to standard output (or ``output_file``); the summary line and the
     statistics go to standard error, so standard output stays parseable.
     """
-    from zero.diagnostics import Severity
 
     if output_format not in OUTPUT_FORMATS:
         raise UsageError(f"unknown output format {output_format!r} (use one of: "
@@ -68,6 +67,14 @@ def run_lint(paths: Sequence[str | Path], output_format: str = "text", strict: b
     from zero.config import ConfigFinder
 
     cli = LintOptions(select=parse_codes(select), ignore=parse_codes(ignore), kind=parse_kind(kind))
+    if machine is not None:
+        from zero.machine import lint_machine
+
+        try:
+            results = lint_machine(Path(machine), _registry(Path(param_desc) if param_desc else None), cli)[1]
+        except ZeroError as exc:
+            raise UsageError(str(exc)) from None
+        return _report(results, output_format, output_file, show_statistics, exit_zero, strict)
     if list(paths) in ([], ["-"]) and (stdin_filename or list(paths) == ["-"]):
         return _lint_stdin(stdin_filename or "-", cli, output_format, strict, param_desc, config, isolated,
                            fix or show_diff, unsafe_fixes, exit_zero)
@@ -107,9 +114,16 @@ def run_lint(paths: Sequence[str | Path], output_format: str = "text", strict: b
     except ZeroError as exc:
         raise UsageError(str(exc)) from None
 
+    return _report(results, output_format, output_file, show_statistics, exit_zero, strict)
+
+
+def _report(results: list[LintResult], output_format: str, output_file: str | Path | None,
+            show_statistics: bool, exit_zero: bool, strict: bool) -> int:
+    """Render the results, write them where asked, and give the exit code."""
     import io
 
     from zero import report
+    from zero.diagnostics import Severity
 
     out = io.StringIO() if output_file is not None else sys.stdout
     if output_format == "json":

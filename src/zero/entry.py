@@ -14,7 +14,7 @@ import sys
 _VALUE_OPTIONS = {"--output-format": "output_format", "--select": "select", "--ignore": "ignore",
                   "--kind": "kind", "--jobs": "jobs", "-j": "jobs", "--output-file": "output_file",
                   "-o": "output_file", "--config": "config",
-                  "--stdin-filename": "stdin_filename"}
+                  "--stdin-filename": "stdin_filename", "--machine": "machine"}
 _FLAGS = {"--strict": ("strict", True), "--no-strict": ("strict", False),
           "--statistics": ("show_statistics", True), "--exit-zero": ("exit_zero", True),
           "--isolated": ("isolated", True), "--fix": ("fix", True), "--diff": ("show_diff", True),
@@ -56,7 +56,7 @@ def parse_lint_args(args: list[str]) -> dict[str, object] | None:
             out[field] = int(value)
         else:
             out[field] = value
-    if not out["paths"] and "stdin_filename" not in out:
+    if not out["paths"] and "stdin_filename" not in out and "machine" not in out:
         return None
     return out
 

@@ -19,6 +19,7 @@ from zero.rules import RULES
 
 if TYPE_CHECKING:
     from zero.diff import Change
+    from zero.machine import Ip247Violation, LimitRow
 
 Segment = tuple[str, str]  # (text, rich style)
 _SEVERITY_STYLE = {Severity.ERROR: "bold red", Severity.WARNING: "bold yellow",
@@ -331,3 +332,35 @@ def render_diff(changes: Sequence[Change], header: str, stream: TextIO | None = 
             table.add_row(*r, style=styles.get(r[0], ""))
         console.print(table)
     console.print(summary(list(changes)), style="bold")
+
+
+def render_limits(rows: Sequence[LimitRow], violations: Sequence[Ip247Violation] = (),
+                  stream: TextIO | None = None, color: bool | None = None) -> None:
+    """``zero limits``: a rich table on a terminal, aligned text otherwise."""
+    from zero.machine import ZERO_UNIT, g_code
+
+    stream = stream or sys.stdout
+    head = ("ch", "offset", "axis", "unit", "ACS min", "ACS max", "offset value", "PCS min", "PCS max", "")
+    cells = [(str(r.channel), g_code(r.group), f"{r.axis_index} {r.axis_name}", r.unit,
+              *(f"{v / ZERO_UNIT:.4f}" for v in (r.acs_neg, r.acs_pos, r.offset, r.pcs_neg, r.pcs_pos)),
+              r.note) for r in rows]
+    if use_color(stream) if color is None else color:
+        from rich.console import Console
+        from rich.table import Table
+
+        table = Table(*head, title="soft limits in the programming coordinate system", title_justify="left")
+        for c in cells:
+            table.add_row(*c)
+        console = Console(file=stream, force_terminal=True, highlight=False, emoji=False, markup=False)
+        console.print(table)
+        for v in violations:
+            console.print(f"IP247: {v.what} {v.value / ZERO_UNIT:.4f} mm outside ±99999.999 mm ({v.where})",
+                          style="bold red")
+        return
+    widths = [max(len(head[i]), *(len(c[i]) for c in cells)) if cells else len(head[i]) for i in range(10)]
+    right = {4, 5, 6, 7, 8}
+    for c in [head, *cells]:
+        stream.write("  ".join(c[i].rjust(widths[i]) if i in right else c[i].ljust(widths[i])
+                               for i in range(10)).rstrip() + "\n")
+    for v in violations:
+        stream.write(f"IP247: {v.what} {v.value / ZERO_UNIT:.4f} mm outside ±99999.999 mm ({v.where})\n")

@@ -1,0 +1,86 @@
+"""A machine across its lists: resolution, X rules (golden), zero limits by hand, IP247."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import pytest
+from typer.testing import CliRunner
+
+from conftest import FIXTURES, golden
+from zero.cli import app
+from zero.machine import lint_machine, load_machine, pcs_limits
+from zero.rules import RULES
+
+runner = CliRunner()
+BAD = FIXTURES / "machine" / "listen" / "hochlauf.lis"
+CLEAN = FIXTURES / "machine-clean" / "listen" / "hochlauf.lis"
+
+
+def x_findings(startup: Path) -> list[dict[str, object]]:
+    _, results = lint_machine(startup)
+    return [{"file": Path(d.path).name, "line": d.span.line, "code": d.code, "severity": d.severity.label}
+            for r in results for d in r.diagnostics]
+
+
+def test_fixture_machine_golden(request: pytest.FixtureRequest) -> None:
+    actual = x_findings(BAD)
+    expected = golden(FIXTURES / "machine" / "expected.json", actual, request.config.getoption("--update-golden"))
+    assert actual == expected
+    fired = {f["code"] for f in actual}
+    assert {c for c in RULES if c.startswith("X")} <= fired  # every X rule fails on the fixture
+
+
+def test_clean_machine_has_no_findings() -> None:
+    assert x_findings(CLEAN) == []
+
+
+def test_corpus_start_up_lists_resolve_their_machine(corpus: Path) -> None:
+    listen = corpus / "isg-sdk" / "listen"
+    for startup in (listen / "hochlauf.lis", listen / "SoE" / "hochlauf.lis"):
+        m = load_machine(startup)
+        assert m.missing == [], startup
+        assert len(m.axis_lists) == 4 and len(m.channels) == 1
+        assert [(a.index, a.log_nr, a.name) for a in m.channels[0].axes] == [(0, 1, "X"), (1, 2, "Y"), (2, 3, "Z")]
+        _, results = lint_machine(startup)
+        assert not [d for r in results for d in r.diagnostics if d.code.startswith("X")]
+
+
+def test_pcs_limits_by_hand() -> None:
+    rows = {(r.group, r.axis_name): r for r in pcs_limits(load_machine(CLEAN))}
+    g54_x = rows[(1, "X")]  # X: -1000 .. 1500 mm, G54 offset +10 mm
+    assert (g54_x.pcs_neg, g54_x.pcs_pos) == (-10_000_000 - 100_000, 15_000_000 - 100_000)
+    g54_c = rows[(1, "C")]  # C: -360 .. 360°, offset 90°
+    assert (g54_c.unit, g54_c.pcs_neg, g54_c.pcs_pos) == ("°", -4_500_000, 2_700_000)
+    g55_x = rows[(2, "X")]  # offset -500 mm
+    assert (g55_x.pcs_neg, g55_x.pcs_pos) == (-5_000_000, 20_000_000)
+    g53_x = rows[(0, "X")]  # g53_verfuegbar 1 but no group-0 offset
+    assert (g53_x.offset, g53_x.pcs_neg) == (0, -10_000_000)
+    assert {r.group for r in rows.values()} == set(range(7))
+    masked = {(r.group, r.axis_name): r for r in pcs_limits(load_machine(BAD))}[(3, "Y")]
+    assert masked.masked and masked.offset == 0 and masked.pcs_pos == 5_000_000
+
+
+def test_limits_command_text_json_and_ip247(tmp_path: Path) -> None:
+    r = runner.invoke(app, ["limits", "--machine", str(CLEAN)], env={"NO_COLOR": "1"})
+    assert r.exit_code == 0
+    lines = [line.split() for line in r.stdout.splitlines()]
+    assert ["0", "G54", "0", "X", "mm", "-1000.0000", "1500.0000", "10.0000", "-1010.0000", "1490.0000"] in lines
+    data = json.loads(runner.invoke(app, ["limits", "--machine", str(CLEAN), "--output-format", "json"]).stdout)
+    first = next(x for x in data["limits"] if x["g_code"] == "G54" and x["name"] == "X")
+    assert (first["pcs_neg"], first["pcs_pos"], first["unit"]) == (-1010.0, 1490.0, "mm")
+    assert runner.invoke(app, ["limits", "--machine", str(CLEAN), "--profile", "ip247"]).exit_code == 0
+    bad = runner.invoke(app, ["limits", "--machine", str(BAD), "--profile", "ip247", "--output-format", "json"])
+    assert bad.exit_code == 1
+    violations = json.loads(bad.stdout)["violations"]
+    assert [v["what"] for v in violations] == ["offset G159=9 axis 0"]
+    assert runner.invoke(app, ["limits", "--machine", str(tmp_path / "none.lis")]).exit_code == 2
+
+
+def test_lint_machine_cli() -> None:
+    r = runner.invoke(app, ["lint", "--machine", str(BAD), "--output-format", "json"])
+    assert r.exit_code == 1
+    codes = {d["code"] for d in json.loads(r.stdout)}
+    assert {"X001", "X002", "X003", "X004", "X005", "X006", "X007"} <= codes
+    assert runner.invoke(app, ["lint", "--machine", str(CLEAN)]).exit_code == 0
