@@ -16,7 +16,8 @@ RULE_DIRS = sorted(p for p in (FIXTURES / "rules").iterdir() if p.is_dir())
 def test_every_rule_has_fixtures() -> None:
     assert RULE_DIRS, "no rule fixtures found"
     # X rules need a whole machine: fixtures/machine (failing) and fixtures/machine-clean (tests/test_machine.py)
-    assert {p.name for p in RULE_DIRS} == {c for c in RULES if not c.startswith("X")}
+    # N rules read NC programs: fixtures/programs (tests/test_program.py)
+    assert {p.name for p in RULE_DIRS} == {c for c in RULES if not c.startswith(("X", "N"))}
 
 
 @pytest.mark.parametrize("rule_dir", RULE_DIRS, ids=lambda p: p.name)
@@ -38,7 +39,7 @@ def test_passing_fixture(rule_dir: Path) -> None:
 @pytest.mark.parametrize("code", sorted(RULES))
 def test_rule_metadata(code: str) -> None:
     r = RULES[code]
-    assert r.code == code and code[0] in "SRMZX" and len(code) == 4
+    assert r.code == code and code[0] in "SRMZXN" and len(code) == 4
     assert r.summary and "Why it matters on the machine" in r.explanation
     assert "Fix" in r.explanation
 

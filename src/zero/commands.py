@@ -12,7 +12,7 @@ from collections.abc import Callable, Sequence
 from pathlib import Path
 from typing import TYPE_CHECKING
 
-from zero.lint import LintOptions, LintResult, ZeroError, collect_files, lint_many
+from zero.lint import LintOptions, LintResult, ZeroError, collect_files, lint_many, read_file
 
 if TYPE_CHECKING:
     from zero.config import Config
@@ -68,10 +68,18 @@ def run_lint(paths: Sequence[str | Path], output_format: str = "text", strict: b
 
     cli = LintOptions(select=parse_codes(select), ignore=parse_codes(ignore), kind=parse_kind(kind))
     if machine is not None:
+        from zero.lint import PROGRAM_SUFFIXES, lint_file
         from zero.machine import lint_machine
+        from zero.program import lint_program
 
+        registry = _registry(Path(param_desc) if param_desc else None)
         try:
-            results = lint_machine(Path(machine), _registry(Path(param_desc) if param_desc else None), cli)[1]
+            the_machine, results = lint_machine(Path(machine), registry, cli)
+            for f in collect_files([Path(p) for p in paths]):  # programs and lists named as well
+                if f.suffix.lower() in PROGRAM_SUFFIXES:
+                    results.append(lint_program(read_file(f), str(f), registry, cli, the_machine))
+                else:
+                    results.append(lint_file(f, registry, cli))
         except ZeroError as exc:
             raise UsageError(str(exc)) from None
         return _report(results, output_format, output_file, show_statistics, exit_zero, strict)

@@ -19,6 +19,7 @@ from zero.tokenizer import tokenize
 
 LIST_SUFFIXES = (".lis", ".lst")
 _KNOWN = set(RULES)
+PROGRAM_SUFFIXES = (".nc", ".mpf", ".spf")  # NC programs (zero.program)
 STRUCTURED_SUFFIXES = {".yaml": "yaml", ".yml": "yaml", ".toml": "toml", ".json": "json"}
 MAX_FILE_BYTES = 256 * 1024 * 1024
 
@@ -122,7 +123,12 @@ def read_file(path: str | Path) -> bytes:
 def lint_file(path: str | Path, registry: Registry | None = None,
               options: LintOptions | None = None) -> LintResult:
     """Lint a list file; a YAML/TOML/JSON file is linted as the list it converts to."""
-    fmt = STRUCTURED_SUFFIXES.get(Path(path).suffix.lower())
+    suffix = Path(path).suffix.lower()
+    if suffix in PROGRAM_SUFFIXES:
+        from zero.program import lint_program
+
+        return lint_program(read_file(path), str(path), registry, options)
+    fmt = STRUCTURED_SUFFIXES.get(suffix)
     if fmt is None:
         return lint_bytes(read_file(path), str(path), registry, options)
     from zero.convert import ConvertError, lint_tree, read_tree
