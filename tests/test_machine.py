@@ -84,3 +84,30 @@ def test_lint_machine_cli() -> None:
     codes = {d["code"] for d in json.loads(r.stdout)}
     assert {"X001", "X002", "X003", "X004", "X005", "X006", "X007"} <= codes
     assert runner.invoke(app, ["lint", "--machine", str(CLEAN)]).exit_code == 0
+
+
+def test_machine_from_configuration(tmp_path: Path) -> None:
+    import shutil
+
+    root = tmp_path / "machine"
+    shutil.copytree(FIXTURES / "machine-clean", root)
+    shutil.copy(P_BAD := FIXTURES / "programs" / "bad.nc", root / "part.nc")
+    (root / "zero.toml").write_text('[machine]\nstartup = "listen/hochlauf.lis"\n'
+                                    '"achs_mds[1]" = "listen/achse_c.lis"\n')
+    r = runner.invoke(app, ["lint", str(root / "part.nc"), "--select", "N004", "--output-format", "concise"])
+    assert "N004" in r.stdout  # programs are checked against the configured machine
+    r = runner.invoke(app, ["config", "--show", str(root / "part.nc")])
+    assert 'startup = "' in r.stdout and "achs_mds[1]" in r.stdout
+    import os
+
+    cwd = os.getcwd()
+    try:
+        os.chdir(root)
+        r = runner.invoke(app, ["limits", "--output-format", "json"])
+    finally:
+        os.chdir(cwd)
+    assert r.exit_code == 0, r.output
+    rows = json.loads(r.stdout)["limits"]
+    # the override makes achs_mds[1] the C list: logical axis 2 (Y) has no list any more
+    assert {x["name"] for x in rows} == {"X", "C"}
+    assert P_BAD.exists()

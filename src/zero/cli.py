@@ -347,7 +347,8 @@ def schema(
 
 @app.command()
 def limits(
-    machine: Annotated[Path, typer.Option("--machine", help="The start-up list (hochlauf.lis).")],
+    machine: Annotated[Path | None, typer.Option(
+        "--machine", help="The start-up list (hochlauf.lis) [default: [tool.zero.machine] startup].")] = None,
     output_format: Annotated[OutputFormat, typer.Option(
         "--output-format", help="text (a table) or json.")] = OutputFormat.text,
     all_groups: Annotated[bool, typer.Option(
@@ -358,6 +359,7 @@ def limits(
     """Soft limits in the programming coordinate system, per work offset (G53..G59, G159=n) and axis."""
     import json
 
+    from zero.config import ConfigFinder
     from zero.lint import ZeroError
     from zero.machine import ip247, load_machine, pcs_limits
     from zero.report import render_limits
@@ -365,7 +367,11 @@ def limits(
     if profile not in (None, "ip247"):
         raise _fail(f"unknown profile {profile!r} (known: ip247)")
     try:
-        m = load_machine(machine, _registry())
+        cfg = ConfigFinder().for_path(machine if machine is not None else Path.cwd())
+        startup = machine or cfg.machine
+        if startup is None:
+            raise ZeroError("name the start-up list with --machine (or [tool.zero.machine] startup)")
+        m = load_machine(startup, _registry(), None, cfg.machine_lists)
     except ZeroError as exc:
         raise _fail(str(exc)) from None
     rows = pcs_limits(m, all_groups)

@@ -68,13 +68,15 @@ def run_lint(paths: Sequence[str | Path], output_format: str = "text", strict: b
 
     cli = LintOptions(select=parse_codes(select), ignore=parse_codes(ignore), kind=parse_kind(kind))
     if machine is not None:
+        from zero.config import ConfigFinder
         from zero.lint import PROGRAM_SUFFIXES, lint_file
         from zero.machine import lint_machine
         from zero.program import lint_program
 
         registry = _registry(Path(param_desc) if param_desc else None)
         try:
-            the_machine, results = lint_machine(Path(machine), registry, cli)
+            overrides = ConfigFinder(Path(config) if config else None, isolated).for_path(Path(machine)).machine_lists
+            the_machine, results = lint_machine(Path(machine), registry, cli, overrides)
             for f in collect_files([Path(p) for p in paths]):  # programs and lists named as well
                 if f.suffix.lower() in PROGRAM_SUFFIXES:
                     results.append(lint_program(read_file(f), str(f), registry, cli, the_machine))
@@ -115,6 +117,8 @@ def run_lint(paths: Sequence[str | Path], output_format: str = "text", strict: b
         if progress is not None:
             sys.stderr.write("\r\033[K")
         results = [by_file[f] for f in files]
+        results = [_with_machine(f, r, finder.for_path(f), cli, param_desc) for f, r in zip(files, results,
+                                                                                         strict=True)]
         if fix or show_diff:
             results = [_fix_one(f, r, finder.for_path(f).options_for(f, cli),
                                 _registry(param_desc_of(finder.for_path(f), param_desc)),
@@ -157,6 +161,27 @@ def _report(results: list[LintResult], output_format: str, output_file: str | Pa
     worst = max((r.worst for r in results if r.worst is not None), default=None)
     threshold = Severity.WARNING if strict else Severity.ERROR
     return 1 if worst is not None and worst >= threshold else 0
+
+
+_machines: dict[Path, object] = {}
+
+
+def _with_machine(path: Path, result: LintResult, cfg: Config, cli: LintOptions,
+                  param_desc: str | Path | None) -> LintResult:
+    """An NC program in a project whose configuration names the machine: lint it against it."""
+    from zero.lint import PROGRAM_SUFFIXES
+
+    if cfg.machine is None or path.suffix.lower() not in PROGRAM_SUFFIXES:
+        return result
+    from zero.machine import Machine, load_machine
+    from zero.program import lint_program
+
+    registry = _registry(param_desc_of(cfg, param_desc))
+    m = _machines.get(cfg.machine)
+    if m is None:
+        m = _machines[cfg.machine] = load_machine(cfg.machine, registry, cli, cfg.machine_lists)
+    assert isinstance(m, Machine)
+    return lint_program(read_file(path), str(path), registry, cfg.options_for(path, cli), m)
 
 
 def _lint_stdin(name: str, cli: LintOptions, output_format: str, strict: bool,

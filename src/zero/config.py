@@ -23,6 +23,10 @@ R007 = "error"
 
 [tool.zero.kind]                  # list kind by glob instead of detection
 "**/nullp*.lis" = "zero"
+
+[tool.zero.machine]               # the machine NC programs and `zero limits` refer to
+startup = "listen/hochlauf.lis"
+"achs_mds[0]" = "listen/achse_x_neu.lis"   # override a list the start-up list names
 ```
 """
 
@@ -40,7 +44,7 @@ from zero.lint import LintOptions, ZeroError
 CONFIG_NAMES = ("zero.toml", ".zero.toml", "pyproject.toml")
 DEFAULT_INCLUDE = ("*.lis", "*.lst")
 _KEYS = ("select", "extend-select", "ignore", "per-file-ignores", "severity", "kind", "include",
-         "exclude", "param-desc")
+         "exclude", "param-desc", "machine")
 
 
 class ConfigError(ZeroError):
@@ -83,6 +87,8 @@ class Config:
     include: tuple[str, ...] = DEFAULT_INCLUDE
     exclude: tuple[str, ...] = ()
     param_desc: Path | None = None
+    machine: Path | None = None  # the start-up list of the machine ([tool.zero.machine] startup)
+    machine_lists: dict[str, Path] = field(default_factory=dict)  # start-up key → path override
 
     @property
     def root(self) -> Path:
@@ -138,6 +144,11 @@ class Config:
                  f"exclude = {arr(self.exclude)}"]
         if self.param_desc:
             lines.append(f'param-desc = "{self.param_desc}"')
+        if self.machine or self.machine_lists:
+            lines.append("[tool.zero.machine]")
+            if self.machine:
+                lines.append(f'startup = "{self.machine}"')
+            lines += [f'"{k}" = "{v}"' for k, v in self.machine_lists.items()]
         lines.append("[tool.zero.per-file-ignores]")
         lines += [f'"{g}" = {arr(c)}' for g, c in self.per_file_ignores]
         lines.append("[tool.zero.severity]")
@@ -233,6 +244,18 @@ def parse_config(path: Path, text: str | None = None) -> Config | None:
             if not isinstance(value, str) or not value:
                 raise fail(key, "expected the path of a CncParaDesc.xml")
             cfg.param_desc = (path.parent / value)
+        elif key == "machine":
+            if not isinstance(value, dict):
+                raise fail(key, "expected a table: startup = \"listen/hochlauf.lis\" and list overrides")
+            for mk, mv in value.items():
+                if not isinstance(mv, str) or not mv:
+                    raise fail(mk, "expected a path", ("machine",))
+                if mk == "startup":
+                    cfg.machine = path.parent / mv
+                elif re.fullmatch(r"(achs_mds|sda_mds|nullp_data)\[[0-9]+\]", mk):
+                    cfg.machine_lists[mk] = path.parent / mv
+                else:
+                    raise fail(mk, "expected `startup` or a start-up key such as `achs_mds[0]`", ("machine",))
         elif key == "per-file-ignores":
             if not isinstance(value, dict):
                 raise fail(key, "expected a table of glob = [codes]")

@@ -154,11 +154,11 @@ def unit_and_delta(spec: ParamSpec | None, old: tuple[str, Any] | None, new: tup
 
 
 def g_code(group: int) -> str:
-    if group == 0:
-        return "G53 (G159=0)"
-    if 1 <= group <= 6:
-        return f"G{53 + group} (G159={group})"
-    return f"G159={group}"
+    """``G54 (G159=1)``: the G code that selects a zero-offset group, with its G159 form."""
+    from zero.machine import g_code as short
+
+    code = short(group)
+    return code if code.startswith("G159") else f"{code} (G159={group})"
 
 
 _INDEX_RE = re.compile(r"\[([0-9]+)\]")

@@ -155,8 +155,9 @@ def _read(key: str, path: Path, line: int, registry: Registry, kind: str | None,
 
 
 def load_machine(startup_path: Path, registry: Registry | None = None,
-                 options: LintOptions | None = None) -> Machine:
-    """Read a start-up list and every list it names (lint results included)."""
+                 options: LintOptions | None = None, overrides: dict[str, Path] | None = None) -> Machine:
+    """Read a start-up list and every list it names (lint results included); ``overrides``
+    (start-up key → path, from ``[tool.zero.machine]``) replace what the start-up list names."""
     registry = registry or default_registry()
     startup = _read("start-up list", startup_path, 0, registry, "STUP", options)
     machine = Machine(startup)
@@ -169,7 +170,8 @@ def load_machine(startup_path: Path, registry: Registry | None = None,
             named.setdefault(first, []).append((e.key.indices[0], e.value, e.line))
 
     def load(key: str, raw: str, line: int, kind: str) -> ListFile | None:
-        path = resolve(startup_path, raw)
+        override = (overrides or {}).get(key)
+        path = override if override is not None and override.is_file() else resolve(startup_path, raw)
         if path is None:
             machine.missing.append(Missing(key, raw, line))
             return None
@@ -233,6 +235,7 @@ class LimitRow:
 
 
 def g_code(group: int) -> str:
+    """The G code that selects zero-offset group ``group``: G53, G54..G59, else G159=n."""
     if group == 0:
         return "G53"
     if 1 <= group <= 6:
@@ -299,7 +302,8 @@ def ip247(machine: Machine) -> list[Ip247Violation]:
 
 
 def lint_machine(startup_path: Path, registry: Registry | None = None,
-                 options: LintOptions | None = None) -> tuple[Machine, list[LintResult]]:
+                 options: LintOptions | None = None,
+                 overrides: dict[str, Path] | None = None) -> tuple[Machine, list[LintResult]]:
     """Every list of the machine with its own findings, plus the X findings on the file they
     concern (the start-up list, a channel list, a zero-offset list or an axis list)."""
     from zero.diagnostics import Diagnostic
@@ -307,7 +311,7 @@ def lint_machine(startup_path: Path, registry: Registry | None = None,
 
     registry = registry or default_registry()
     opts = options or LintOptions()
-    machine = load_machine(startup_path, registry, opts)
+    machine = load_machine(startup_path, registry, opts, overrides)
     results: dict[str, LintResult] = {}
     for lf in machine.lists:
         results.setdefault(str(lf.path), lf.result)
