@@ -103,10 +103,12 @@ class Config:
     def _matches(self, globs: tuple[str, ...], file: Path) -> bool:
         """A glob with a `/` matches the path relative to the configuration's directory,
         one without matches the file name."""
-        rel = self.relative(file)
+        rel: str | None = None
         for g in globs:
             if "/" in g:
-                if rel is not None and glob_to_regex(g).match(rel):
+                if rel is None:
+                    rel = self.relative(file) or "\0"
+                if glob_to_regex(g).match(rel):
                     return True
             elif glob_to_regex(g).match(file.name):
                 return True
@@ -296,16 +298,25 @@ class ConfigFinder:
                 raise ConfigError(f"{explicit}: has no [tool.zero] table")
             self.explicit = cfg
         self._by_dir: dict[Path, Config] = {}
+        self._by_name: dict[str, Config] = {}  # the directory as written → its configuration
+        self._default = Config()
 
     def for_path(self, file: Path) -> Config:
         if self.isolated:
-            return Config()
+            return self._default
         if self.explicit is not None:
             return self.explicit
+        key = str(file.parent)
+        hit = self._by_name.get(key)
+        if hit is None:
+            hit = self._by_name[key] = self._lookup(file)
+        return hit
+
+    def _lookup(self, file: Path) -> Config:
         start = file.resolve().parent if not file.is_dir() else file.resolve()
         walked: list[Path] = []
         d: Path | None = start
-        found = Config()
+        found = self._default
         while d is not None:
             hit = self._by_dir.get(d)
             if hit is not None:

@@ -48,8 +48,19 @@ class LintResult:
         return max((d.severity for d in self.diagnostics), default=None)
 
 
+_selected: dict[tuple[object, ...], dict[str, Severity]] = {}
+
+
 def selected_rules(options: LintOptions) -> dict[str, Severity]:
-    """Code → severity of every rule the options enable (longest prefix wins)."""
+    """Code → severity of every rule the options enable (longest prefix wins); memoised."""
+    key = (options.select, options.ignore, tuple(sorted(options.severity.items())))
+    hit = _selected.get(key)
+    if hit is None:
+        hit = _selected[key] = _selected_rules(options)
+    return hit
+
+
+def _selected_rules(options: LintOptions) -> dict[str, Severity]:
     out: dict[str, Severity] = {}
     for code, r in RULES.items():
         sel = max((len(p) for p in options.select if code.startswith(p)), default=-1)
@@ -142,8 +153,9 @@ def lint_file(path: str | Path, registry: Registry | None = None,
     return lint_tree(tree, options, source if fmt in ("yaml", "toml") else None, registry)
 
 
-def git_visible(directory: Path) -> set[Path] | None:
-    """Files below ``directory`` that git does not ignore; ``None`` outside a git work tree."""
+def git_visible(directory: Path) -> set[str] | None:
+    """Files below ``directory`` that git does not ignore, as paths relative to it
+    (``os.sep``-separated); ``None`` outside a git work tree or without git."""
     import shutil
     import subprocess
 
@@ -151,16 +163,12 @@ def git_visible(directory: Path) -> set[Path] | None:
         return None
     try:
         proc = subprocess.run(["git", "-C", str(directory), "ls-files", "-z", "--cached", "--others",
-                               "--exclude-standard", "--full-name", "."], capture_output=True, timeout=60,
-                              check=False)
-        top = subprocess.run(["git", "-C", str(directory), "rev-parse", "--show-toplevel"],
-                             capture_output=True, text=True, timeout=60, check=False)
+                               "--exclude-standard", "."], capture_output=True, timeout=60, check=False)
     except (OSError, subprocess.SubprocessError):
         return None
-    if proc.returncode != 0 or top.returncode != 0:
+    if proc.returncode != 0:
         return None
-    root = Path(top.stdout.strip())
-    return {(root / os.fsdecode(name)).resolve() for name in proc.stdout.split(b"\0") if name}
+    return {os.path.normpath(os.fsdecode(name)) for name in proc.stdout.split(b"\0") if name}
 
 
 def collect_files(paths: Iterable[str | Path], include: Callable[[Path], bool] | None = None,
@@ -182,11 +190,13 @@ def collect_files(paths: Iterable[str | Path], include: Callable[[Path], bool] |
             for root, dirs, files in os.walk(p):
                 dirs[:] = sorted(d for d in dirs if not d.startswith(".")
                                  and not (exclude and exclude(Path(root) / d)))
+                rel_root = os.path.relpath(root, p)
                 for f in files:
+                    if visible is not None and os.path.normpath(os.path.join(rel_root, f)) not in visible:
+                        continue
                     path = Path(root) / f
                     if (include(path) if include else f.lower().endswith(LIST_SUFFIXES)) and \
-                            not (exclude and exclude(path)) and \
-                            (visible is None or path.resolve() in visible):
+                            not (exclude and exclude(path)):
                         found.append(path)
             out.extend(sorted(found))
         elif p.exists():
