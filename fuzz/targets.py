@@ -2,7 +2,9 @@
 
 The first byte of an input picks the target; the rest is the data:
 0 tokenizer + lint of list bytes, 1 list → YAML/TOML/JSON → list (must be the
-identity), 2 YAML reader, 3 TOML reader, 4 JSON reader, 5 diff of two halves.
+identity), 2 YAML reader, 3 TOML reader, 4 JSON reader, 5 diff of two halves,
+6 NC program against the fixture machine, 7 zero format (idempotent, meaning kept),
+8 fixes (a fixed list has no fixable finding left, or the fix loop stopped).
 Only zero's own refusals (ConvertError) may escape; anything else is a crash.
 """
 
@@ -54,15 +56,58 @@ def check_diff(data: bytes) -> None:
     diff_sides(b, a)
 
 
+_MACHINE = None
+
+
+def check_program(data: bytes) -> None:
+    global _MACHINE
+    from pathlib import Path
+
+    from zero.machine import load_machine
+    from zero.program import lint_program
+
+    if _MACHINE is None:
+        _MACHINE = load_machine(Path(__file__).resolve().parent.parent / "fixtures" / "machine" / "listen"
+                                / "hochlauf.lis")
+    result = lint_program(data, "f.nc", machine=_MACHINE)
+    for d in result.diagnostics:
+        assert 1 <= d.span.line <= max(len(result.document.lines), 1), d
+
+
+def check_format(data: bytes) -> None:
+    from zero.diff import DiffOptions, diff_sides, read_side
+    from zero.fix import format_bytes
+
+    try:
+        once = format_bytes(data, "f.lis")
+    except ConvertError:
+        return
+    assert format_bytes(once, "f.lis") == once, (data, once)
+    assert diff_sides(read_side(data, "lis", "a"), read_side(once, "lis", "b"),
+                      DiffOptions(strict=True, comments=True)) == [], (data, once)
+
+
+def check_fix(data: bytes) -> None:
+    from zero.fix import fix_bytes
+
+    fix_bytes(data, "f.lis", unsafe=True)
+
+
 def one_input(raw: bytes) -> None:
     if not raw:
         return
-    target, data = raw[0] % 6, raw[1:]
+    target, data = raw[0] % 9, raw[1:]
     if target == 0:
         check_lint(data)
     elif target == 1:
         check_round_trip(data)
     elif target in (2, 3, 4):
         check_reader(("yaml", "toml", "json")[target - 2], data)
-    else:
+    elif target == 5:
         check_diff(data)
+    elif target == 6:
+        check_program(data)
+    elif target == 7:
+        check_format(data)
+    else:
+        check_fix(data)
