@@ -120,3 +120,14 @@ def test_stdin_with_a_filename(tmp_path: Path) -> None:
     assert p.stdout == data.replace(b"]. inaktiv", b"].inaktiv") and b"M003" in p.stderr
     r = runner.invoke(app, ["lint", "--stdin-filename", "x.lis", "--output-format", "json"], input=data)
     assert r.exit_code == 1 and len(json.loads(r.stdout)) == 7
+
+
+def test_sarif_validates_against_the_sarif_2_1_0_model() -> None:
+    sarif_pydantic = pytest.importorskip("sarif_pydantic", reason="pip install -e '.[test]'")
+    _, out, _ = run("--output-format", "sarif", SEED, CLEAN)
+    log = sarif_pydantic.Sarif.model_validate(json.loads(out))
+    assert log.version == "2.1.0" and len(log.runs[0].results) == 7
+    broken = json.loads(out)
+    broken["runs"][0]["results"][0]["level"] = "fatal"  # not a SARIF level: the model refuses it
+    with pytest.raises(ValueError):
+        sarif_pydantic.Sarif.model_validate(broken)
