@@ -11,22 +11,13 @@ import sys
 import time
 from pathlib import Path
 
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+
+from workloads import full_zero_list
+
 from zero.lint import lint_bytes
 from zero.registry import default_registry
 from zero.tokenizer import tokenize
-
-
-def full_zero_list() -> bytes:
-    """97 groups x 32 axes x (versch, inaktiv) = 6,208 entries, vendor layout."""
-    lines = ["# generated", "g53_verfuegbar                                        1",
-             "default_index                                         1"]
-    for i in range(97):
-        lines.append(f"# G159 = {i}")
-        for j in range(32):
-            lines.append(f"np_grp[{i}].achse[{j}].versch".ljust(54) + f"{i * 1000 + j}   ( P-ZERO-00003 : offset")
-            lines.append(f"np_grp[{i}].achse[{j}].inaktiv".ljust(54) + "0   # active")
-    lines.append("Ende")
-    return ("\n".join(lines) + "\n").encode()
 
 
 def best(fn, repeat: int = 5) -> float:  # type: ignore[no-untyped-def]
