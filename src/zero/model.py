@@ -9,6 +9,7 @@ from __future__ import annotations
 
 import enum
 import re
+import sys
 from dataclasses import dataclass, field
 
 # An index with more digits than this is not converted to an int: it is clamped
@@ -63,19 +64,23 @@ class Key:
 _key_cache: dict[str, Key | None] = {}
 
 
-def parse_key(text: str) -> Key | None:
-    """Parse a key; ``None`` when it is not of the form ``name[n].name...``."""
+def parse_key(text: str, trusted: bool = False) -> Key | None:
+    """Parse a key; ``None`` when it is not of the form ``name[n].name...``.
+
+    ``trusted``: the caller has matched the key form already (the tokenizer's fast path).
+    Patterns are interned: a million keys share a handful of pattern strings.
+    """
     cached = _key_cache.get(text)
     if cached is not None or text in _key_cache:
         return cached
     key: Key | None = None
-    if _KEY_RE.fullmatch(text):
+    if trusted or _KEY_RE.fullmatch(text):
         if "[" in text:
             digits = _INDEX_RE.findall(text)
             indices = tuple(
                 int(d) if len(d) <= MAX_INDEX_DIGITS else HUGE_INDEX for d in digits
             )
-            key = Key(text, _INDEX_RE.sub("[]", text), indices)
+            key = Key(text, sys.intern(_INDEX_RE.sub("[]", text)), indices)
         else:
             key = Key(text, text, ())
     if len(_key_cache) < 200_000 and len(text) < 512:

@@ -261,7 +261,7 @@ def tokenize_text(text: str, path: str = "-", encoding: str = "utf-8", bom: bool
             vs, ve = m.span(2)
             km = kind_match(value)
             kind = _KIND_OF[km.lastgroup] if km is not None and km.lastgroup else ValueKind.WORD
-            entry = Entry(number, key_text, key_text, parse_key(key_text), ks, ke, value, kind, vs, ve)
+            entry = Entry(number, key_text, key_text, parse_key(key_text, True), ks, ke, value, kind, vs, ve)
             if comment is not None:
                 cs = m.start(3)
                 entry.comment = comment
