@@ -74,7 +74,11 @@ def test_limits_command_text_json_and_ip247(tmp_path: Path) -> None:
     bad = runner.invoke(app, ["limits", "--machine", str(BAD), "--profile", "ip247", "--output-format", "json"])
     assert bad.exit_code == 1
     violations = json.loads(bad.stdout)["violations"]
-    assert [v["what"] for v in violations] == ["offset G159=9 axis 0"]
+    # X: soft limits -1000 / +1500 mm, tool 2 offset 99,000 mm on X → 100,500 / -100,000 mm
+    assert [(v["what"], v["value"]) for v in violations] == [
+        ("positive soft limit of X plus tool 2", 1_005_000_000),
+        ("negative soft limit of X plus tool 2", -1_000_000_000),
+        ("offset G159=9 axis 0", 2_140_000_000)]
     assert runner.invoke(app, ["limits", "--machine", str(tmp_path / "none.lis")]).exit_code == 2
 
 

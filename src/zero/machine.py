@@ -85,6 +85,7 @@ class Channel:
     lists: ListFile | None  # the channel list
     zero: ListFile | None  # the zero-offset list
     axes: list[ChannelAxis] = field(default_factory=list)
+    tools: ListFile | None = None  # the tool list (werkz_data[c])
 
 
 @dataclass(slots=True)
@@ -105,7 +106,7 @@ class Machine:
     def lists(self) -> list[ListFile]:
         out = [self.startup, *self.axis_lists]
         for ch in self.channels:
-            out.extend(x for x in (ch.lists, ch.zero) if x is not None)
+            out.extend(x for x in (ch.lists, ch.zero, ch.tools) if x is not None)
         return out
 
     def axes(self) -> dict[int, Axis]:
@@ -166,7 +167,7 @@ def load_machine(startup_path: Path, registry: Registry | None = None,
         if e.key is None or not e.key.indices:
             continue
         first = e.key.pattern
-        if first in ("achs_mds[]", "sda_mds[]", "nullp_data[]"):
+        if first in ("achs_mds[]", "sda_mds[]", "nullp_data[]", "werkz_data[]"):
             named.setdefault(first, []).append((e.key.indices[0], e.value, e.line))
 
     def load(key: str, raw: str, line: int, kind: str) -> ListFile | None:
@@ -183,10 +184,13 @@ def load_machine(startup_path: Path, registry: Registry | None = None,
             machine.axis_lists.append(lf)
     sda = {i: (raw, line) for i, raw, line in named.get("sda_mds[]", [])}
     zero = {i: (raw, line) for i, raw, line in named.get("nullp_data[]", [])}
+    tools = {i: (raw, line) for i, raw, line in named.get("werkz_data[]", [])}
     for c in sorted(set(sda) | set(zero)):
         ch_list = load(f"sda_mds[{c}]", *sda[c], "CHAN") if c in sda else None
         zero_list = load(f"nullp_data[{c}]", *zero[c], "ZERO") if c in zero else None
         ch = Channel(c, ch_list, zero_list)
+        if c in tools:
+            ch.tools = load(f"werkz_data[{c}]", *tools[c], "TOOL")
         if ch_list is not None:
             count = ch_list.number(CH_COUNT, (0,))
             present = {ix[1] for ix in ch_list.ctx.by_id.get(CH_LOG_NR, {}) if len(ix) == 2 and ix[0] == 0}
@@ -283,9 +287,36 @@ class Ip247Violation:
     where: str
 
 
+TOOL_LENGTH, TOOL_AXIS_OFFSET = "P-TOOL-00003", "P-TOOL-00006"
+TOOL_LENGTH_AXIS = 2  # the tool length acts along the third channel axis (Z in G17)
+
+
 def ip247(machine: Machine) -> list[Ip247Violation]:
-    """The Siemens S5 IP247 rule: offsets and soft limits inside ±99.999999 m."""
+    """The Siemens S5 IP247 rule: offsets, soft limits, and soft limits plus each tool's offset
+    on that axis (``wz[t].ax_versatz[j]``, plus the length on the third channel axis) inside
+    ±99.999999 m."""
     out: list[Ip247Violation] = []
+    axes = machine.axes()
+    for ch in machine.channels:
+        if ch.tools is None:
+            continue
+        ctx = ch.tools.ctx
+        numbers = {t[0] for t in (*ctx.by_id.get(TOOL_LENGTH, {}), *ctx.by_id.get(TOOL_AXIS_OFFSET, {})) if t}
+        for tool in sorted(numbers):
+            for ca in ch.axes:
+                ax = axes.get(ca.log_nr)
+                if ax is None:
+                    continue
+                off = ch.tools.number(TOOL_AXIS_OFFSET, (tool, ca.index)) or 0
+                if ca.index == TOOL_LENGTH_AXIS:
+                    off += ch.tools.number(TOOL_LENGTH, (tool,)) or 0
+                if not off:
+                    continue
+                for what, limit in (("positive soft limit", ax.swe_pos), ("negative soft limit", ax.swe_neg)):
+                    total = limit + abs(off) if limit >= 0 else limit - abs(off)
+                    if abs(total) > IP247_LIMIT:
+                        out.append(Ip247Violation(f"{what} of {ca.name} plus tool {tool}", total,
+                                                  f"{ch.tools.path} (offset {off / ZERO_UNIT:.4f} mm)"))
     for ax in machine.axes().values():
         for what, v in (("negative soft limit", ax.swe_neg), ("positive soft limit", ax.swe_pos)):
             if abs(v) > IP247_LIMIT:
