@@ -42,6 +42,7 @@ _ITEM_RE = re.compile(
     r'|(?P<axnr>AXNR)\s*=\s*(?P<axnrv>[^\s\]]+)'
     r'|(?P<pid>P-AXIS-[0-9]{5})(?:\.(?P<pidx>[0-9]+))?\s*=\s*(?P<pval>[^\s\]]+)'
     r'|(?P<axparam>AXPARAM)\s*=?\s*"(?P<axparamv>[^"]*)"'
+    r'|(?P<axparamvar>AXPARAM)\s*=?\s*(?P<axparamvarv>V\.[A-Za-z0-9_.\[\]]+)'
     r'|(?P<wait>WAIT)\b'
     r'|(?P<other>\S+))', re.IGNORECASE)
 
@@ -134,6 +135,8 @@ def parse_machine_data(text: str, line: int, start: int, registry: Registry) -> 
         elif im.group("axparam"):
             md.writes.append(("AXPARAM", im.group("axparamv"), a, b))
             md.problems.extend((msg, a, b) for msg in _check_axparam(im.group("axparamv"), registry))
+        elif im.group("axparamvar"):  # a string variable: its content is known only at run time
+            md.writes.append(("AXPARAM", im.group("axparamvarv"), a, b))
         elif im.group("wait"):
             md.wait = True
         else:
