@@ -291,8 +291,11 @@ def _default_of(spec: ParamSpec) -> Number | None:
 
 
 def _check_range(ctx: Context, e: Entry, spec: ParamSpec, v: Value) -> Iterator[Diagnostic]:
-    if v.number is None:
+    if v.number is None or (spec.range_text is None):
         return
+    dflt = _default_of(spec)
+    if dflt is not None and v.number == dflt:
+        return  # the default itself is never faulty (some vendor ranges exclude it); no parse needed
     rng = ctx.registry.range_of(spec)
     if rng is None:
         return
@@ -303,9 +306,6 @@ def _check_range(ctx: Context, e: Entry, spec: ParamSpec, v: Value) -> Iterator[
         _constant[id(rng)] = hit
     if hit[1] is not None and hit[1].contains(v.number):
         return
-    dflt = _default_of(spec)
-    if dflt is not None and v.number == dflt:
-        return  # the default itself is never faulty (some vendor ranges exclude it)
     span = _value_span(e)
     if rng.allowed is not None:
         if v.number not in rng.allowed:
