@@ -33,6 +33,7 @@ startup = "listen/hochlauf.lis"
 from __future__ import annotations
 
 import functools
+import os
 import re
 from dataclasses import dataclass, field
 from pathlib import Path
@@ -306,7 +307,7 @@ class ConfigFinder:
             return self._default
         if self.explicit is not None:
             return self.explicit
-        key = str(file.parent)
+        key = os.path.dirname(str(file))
         hit = self._by_name.get(key)
         if hit is None:
             hit = self._by_name[key] = self._lookup(file)

@@ -198,7 +198,7 @@ def collect_files(paths: Iterable[str | Path], include: Callable[[Path], bool] |
                     if (include(path) if include else f.lower().endswith(LIST_SUFFIXES)) and \
                             not (exclude and exclude(path)):
                         found.append(path)
-            out.extend(sorted(found))
+            out.extend(sorted(found, key=str))
         elif p.exists():
             if not (exclude and exclude(p)):
                 out.append(p)
