@@ -15,7 +15,7 @@ from dataclasses import dataclass, field
 from typing import Any
 
 from zero.model import Entry, parse_key
-from zero.registry import ParamSpec, Registry, default_registry
+from zero.registry import LENGTH_UNIT, ParamSpec, Registry, default_registry
 from zero.rules.base import default_number, read_value
 
 ADDED, REMOVED, CHANGED, SAME, COMMENT = "added", "removed", "changed", "same", "comment"
@@ -127,7 +127,7 @@ def default_effective(spec: ParamSpec | None) -> tuple[str, Any] | None:
 
 # ----------------------------------------------------------------- units and groups
 
-ZERO_UNIT = 10_000  # 0.1 µm per mm, 0.0001° per degree
+ZERO_UNIT = LENGTH_UNIT
 
 
 def axis_unit(side: Side | None) -> str | None:

@@ -279,7 +279,7 @@ def _leaf(segments: list[str], value: Scalar, native: str, path: str, line: int 
         p = path_from_segments(segments, path)
     except ConvertError as exc:
         raise ConvertError(f"{where}: {exc.message}", path, line, column) from None
-    if isinstance(value, str) and re.search(r"[\x00-\x08\x0a-\x1f\x7f\ud800-\udfff\u2028\u2029]", value):
+    if isinstance(value, str) and _BAD_IN_LINE.search(value):
         raise ConvertError(f"{where}: the value holds a line break or control character; "
                            "a list value is one line of text", path, line, column)
     return Leaf(join_path(p), p, value, [], None, line, column, native)

@@ -22,7 +22,7 @@ from pathlib import Path
 from zero.lint import LintOptions, LintResult, build_context, lint_bytes, read_file, selected_rules
 from zero.model import Entry
 from zero.ranges import Number
-from zero.registry import Registry, default_registry
+from zero.registry import LENGTH_UNIT, Registry, default_registry
 from zero.rules.base import Context
 
 SWE_NEG, SWE_POS = "P-AXIS-00177", "P-AXIS-00178"
@@ -207,7 +207,7 @@ def load_machine(startup_path: Path, registry: Registry | None = None,
 
 # ----------------------------------------------------------------- PCS limits
 
-ZERO_UNIT = 10_000  # 0.1 µm per mm, 0.0001° per degree
+ZERO_UNIT = LENGTH_UNIT
 IP247_LIMIT = 999_999_990  # ±99.999999 m in 0.1 µm (Siemens S5 IP247)
 
 

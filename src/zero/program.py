@@ -24,13 +24,13 @@ from typing import TYPE_CHECKING
 from zero.diagnostics import Diagnostic, Severity, Span
 from zero.lint import LintOptions, LintResult, selected_rules
 from zero.model import Document
-from zero.registry import Registry, default_registry
+from zero.registry import LENGTH_UNIT, Registry, default_registry
 from zero.tokenizer import decode
 
 if TYPE_CHECKING:
     from zero.machine import Axis, Machine
 
-MM = 10_000  # program millimetres (or degrees) in list units (0.1 µm / 0.0001°)
+MM = LENGTH_UNIT  # program millimetres (or degrees) in list units
 SWE_NEG, SWE_POS = "P-AXIS-00177", "P-AXIS-00178"
 RANGE_CHECK = "P-CHAN-00498"
 

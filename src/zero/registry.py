@@ -19,6 +19,8 @@ from typing import Any
 from zero.ranges import Range, parse_range
 
 _DATA = Path(__file__).resolve().parent / "data"
+# Lengths and angles in the lists are in 0.1 µm and 0.0001°: this many per mm or degree.
+LENGTH_UNIT = 10_000
 
 # List kinds: the four letters of the ID, a short name and a file-name hint.
 KINDS: dict[str, tuple[str, str]] = {

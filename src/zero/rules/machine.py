@@ -11,12 +11,13 @@ from typing import TYPE_CHECKING
 
 from zero.diagnostics import Diagnostic, Severity, Span
 from zero.ranges import TYPE_LIMITS
+from zero.registry import LENGTH_UNIT as ZERO_UNIT
 from zero.rules.base import Rule, rule
 
 if TYPE_CHECKING:
     from zero.machine import Machine
 
-OFFSET, ZERO_UNIT = "P-ZERO-00003", 10_000
+OFFSET = "P-ZERO-00003"
 
 E, W = Severity.ERROR, Severity.WARNING
 
