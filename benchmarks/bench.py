@@ -58,29 +58,35 @@ def _step(name: str, step: str) -> Callable[[], Any]:
     """The function one benchmark row times (prepared outside the timing)."""
     data = _data(name)
     if step == "tokenize":
-        from zero.tokenizer import tokenize
+        from zero.lists.tokenizer import tokenize
 
         return lambda: tokenize(data)
     if step == "lint":
-        from zero.lint import lint_bytes
-        from zero.registry import default_registry
+        from zero.catalog.registry import load_registry
+        from zero.engine.lint import lint_bytes
 
-        default_registry()
-        return lambda: lint_bytes(data, "bench.lis")
+        registry = load_registry()
+        return lambda: lint_bytes(data, registry, "bench.lis")
     if step.startswith("convert"):
-        from zero.convert import convert
+        from zero.catalog.registry import load_registry
+        from zero.engine.convert import convert
 
+        registry = load_registry()
         fmt = step.split()[-1]
-        return lambda: convert(data, "lis", fmt, "bench.lis")
+        return lambda: convert(data, "lis", fmt, registry, "bench.lis")
     if step == "diff":
+        from zero.catalog.registry import load_registry
         from zero.diff import diff_sides, read_side
 
+        registry = load_registry()
         other = _changed(data)
-        return lambda: diff_sides(read_side(data, "lis", "a.lis"), read_side(other, "lis", "b.lis"))
-    from zero.convert import convert
+        return lambda: diff_sides(read_side(data, "lis", "a.lis", registry), read_side(other, "lis", "b.lis", registry),
+                                  registry)
+    from zero.catalog.registry import load_registry
+    from zero.engine.convert import convert
 
     fmt = step.split()[-1]
-    text = convert(data, "lis", fmt, "bench.lis").output.decode("utf-8")
+    text = convert(data, "lis", fmt, load_registry(), "bench.lis").output.decode("utf-8")
     if fmt == "toml":
         import tomllib
 
@@ -145,9 +151,11 @@ def main() -> None:
     quick = "--quick" in sys.argv
     names = ["zero", "axis"] + ([] if quick else ["million"])
     print(f"{'workload':<19}{'step':<24}{'ms':>11}{'entries/s':>13}{'MB/s':>8}{'peak MiB':>9}  vs anchor")
-    from zero.convert import convert
-    from zero.tokenizer import tokenize
+    from zero.catalog.registry import load_registry
+    from zero.engine.convert import convert
+    from zero.lists.tokenizer import tokenize
 
+    registry = load_registry()
     for name in names:
         data = _data(name)
         entries = len(tokenize(data).entries)
@@ -157,7 +165,7 @@ def main() -> None:
         for fmt in ("toml", "yaml", "json"):
             sec, peak = measure(name, f"anchor load {fmt}", repeat)
             anchors[fmt] = sec
-            size = len(convert(data, "lis", fmt, "b.lis").output)
+            size = len(convert(data, "lis", fmt, registry, "b.lis").output)
             row(label, f"anchor: load {fmt}", sec, entries, size, peak)
         for step in ("tokenize", "lint", "convert yaml", "convert toml", "convert json", "diff"):
             sec, peak = measure(name, step, repeat)

@@ -26,20 +26,20 @@ FORMATS = ("yaml", "toml", "json")
 
 def _measure(job: tuple[str, str, str, int], queue: Any) -> None:
     workload, fmt, direction, repeat = job
-    from zero.convert import convert
-    from zero.registry import default_registry
+    from zero.catalog.registry import load_registry
+    from zero.engine.convert import convert
 
-    default_registry()
+    registry = load_registry()
     data = full_zero_list() if workload == "zero" else million_entries()
     if direction != "to":
-        data = convert(data, "lis", fmt, "w.lis").output
+        data = convert(data, "lis", fmt, registry, "w.lis").output
     best = float("inf")
     for _ in range(repeat):
         t0 = time.perf_counter()
         if direction == "to":
-            convert(data, "lis", fmt, "w.lis")
+            convert(data, "lis", fmt, registry, "w.lis")
         elif direction == "from":
-            convert(data, fmt, "lis", "w." + fmt, check=False)
+            convert(data, fmt, "lis", registry, "w." + fmt, check=False)
         else:  # the standard loader parsing the same text: an anchor, not zero
             text = data.decode("utf-8")
             if fmt == "yaml":

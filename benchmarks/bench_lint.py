@@ -15,9 +15,9 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 
 from workloads import full_zero_list
 
-from zero.lint import lint_bytes
-from zero.registry import default_registry
-from zero.tokenizer import tokenize
+from zero.catalog.registry import load_registry
+from zero.engine.lint import lint_bytes
+from zero.lists.tokenizer import tokenize
 
 
 def best(fn, repeat: int = 5) -> float:  # type: ignore[no-untyped-def]
@@ -30,7 +30,7 @@ def best(fn, repeat: int = 5) -> float:  # type: ignore[no-untyped-def]
 
 
 def main() -> None:
-    default_registry()
+    registry = load_registry()
     zero = full_zero_list()
     body = zero.replace(b"Ende\n", b"")
     big = body * 161 + b"Ende\n"  # ~1M entries (keys repeat: the later value wins)
@@ -38,7 +38,7 @@ def main() -> None:
     for name, data in (("zero list 6,208 entries", zero), ("1M entries", big)):
         n = len(tokenize(data).entries)
         t_tok = best(lambda d=data: tokenize(d), 3 if len(data) > 1e6 else 5)
-        t_lint = best(lambda d=data: lint_bytes(d), 1 if len(data) > 1e6 else 5)
+        t_lint = best(lambda d=data: lint_bytes(d, registry), 1 if len(data) > 1e6 else 5)
         mb = len(data) / 1e6
         rows.append((name, n, t_tok, n / t_tok, mb / t_tok, t_lint, n / t_lint))
     print(f"{'workload':<26}{'entries':>10}{'tokenize s':>12}{'entries/s':>12}{'MB/s':>8}"

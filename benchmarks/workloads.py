@@ -44,11 +44,11 @@ def million_entries(n: int = 1_000_000) -> bytes:
 def axis_list(entries: int = 577) -> bytes:
     """An axis list shaped like the vendor's: header, sections, aligned `( P-AXIS-…` comments,
     blank lines; keys and values from the registry (defaults), so it lints clean."""
-    from zero.lint import lint_bytes
-    from zero.registry import default_registry
-    from zero.rules.base import default_number
+    from zero.catalog.registry import load_registry
+    from zero.catalog.values import default_number
+    from zero.engine.lint import lint_bytes
 
-    reg = default_registry()
+    reg = load_registry()
     lines = ["# ****************************************", "#", "# Axis Parameter (generated)", "#",
              "# ****************************************", "#"]
     count = 0
@@ -61,7 +61,7 @@ def axis_list(entries: int = 577) -> bytes:
             continue
         key = spec.key.replace("[]", "[0]")
         probe = f"{key} {n}\nEnde\n".encode()
-        if lint_bytes(probe, "achsmds.lis").diagnostics:
+        if lint_bytes(probe, reg, "achsmds.lis").diagnostics:
             continue
         first = key.split(".", 1)[0]
         if first != section:
@@ -73,7 +73,7 @@ def axis_list(entries: int = 577) -> bytes:
             break
     lines.append("Ende")
     data = ("\n".join(lines) + "\n").encode()
-    bad = {d.span.line for d in lint_bytes(data, "achsmds.lis").diagnostics}
+    bad = {d.span.line for d in lint_bytes(data, reg, "achsmds.lis").diagnostics}
     kept = [x for n, x in enumerate(lines, 1) if n not in bad]  # cross-parameter findings
     return ("\n".join(kept) + "\n").encode()
 

@@ -5,22 +5,29 @@ The first byte of an input picks the target; the rest is the data:
 identity), 2 YAML reader, 3 TOML reader, 4 JSON reader, 5 diff of two halves,
 6 NC program against the fixture machine, 7 zero format (idempotent, meaning kept),
 8 fixes (a fixed list has no fixable finding left, or the fix loop stopped).
-Only zero's own refusals (ConvertError) may escape; anything else is a crash.
+Only zero's own refusals (ZeroError) may escape; anything else is a crash.
 """
 
 from __future__ import annotations
 
-from zero.convert import convert, read_tree
-from zero.diff import diff_sides, read_side
-from zero.lint import lint_bytes
-from zero.registry import default_registry
-from zero.structured import ConvertError
+from pathlib import Path
 
-default_registry()
+from zero.catalog.registry import load_registry
+from zero.diff import DiffOptions, diff_sides, read_side
+from zero.engine.convert import convert
+from zero.engine.fixes import fix_bytes
+from zero.engine.formatting import format_bytes
+from zero.engine.lint import lint_bytes, lint_program
+from zero.errors import ZeroError
+from zero.machine.model import Machine, load_machine
+from zero.structured.formats import read_tree
+
+REGISTRY = load_registry()
+MACHINE_STARTUP = Path(__file__).resolve().parent.parent / "fixtures" / "machine" / "listen" / "hochlauf.lis"
 
 
 def check_lint(data: bytes) -> None:
-    result = lint_bytes(data, "f.lis")
+    result = lint_bytes(data, REGISTRY, "f.lis")
     n = len(result.document.lines)
     for d in result.diagnostics:
         assert 1 <= d.span.line <= max(n, 1) + 1, d
@@ -29,10 +36,10 @@ def check_lint(data: bytes) -> None:
 def check_round_trip(data: bytes) -> None:
     for fmt in ("yaml", "toml", "json"):
         try:
-            first = convert(data, "lis", fmt, "f.lis")
-        except ConvertError:
+            first = convert(data, "lis", fmt, REGISTRY, "f.lis")
+        except ZeroError:
             return
-        back = convert(first.output, fmt, "lis", "f." + fmt, check=False).output
+        back = convert(first.output, fmt, "lis", REGISTRY, "f." + fmt, check=False).output
         if any("mixed line endings" in n for n in first.notes):  # said plainly: one style
             assert back.replace(b"\r\n", b"\n") == data.replace(b"\r\n", b"\n"), (fmt, data, back)
         else:
@@ -41,56 +48,44 @@ def check_round_trip(data: bytes) -> None:
 
 def check_reader(fmt: str, data: bytes) -> None:
     try:
-        read_tree(data, fmt, "f." + fmt)
-        convert(data, fmt, "lis", "f." + fmt)
+        read_tree(data, fmt, REGISTRY, "f." + fmt)
+        convert(data, fmt, "lis", REGISTRY, "f." + fmt)
         for other in ("yaml", "toml", "json"):
-            convert(data, fmt, other, "f." + fmt, check=False)
-    except ConvertError:
+            convert(data, fmt, other, REGISTRY, "f." + fmt, check=False)
+    except ZeroError:
         pass
 
 
 def check_diff(data: bytes) -> None:
     half = len(data) // 2
-    a, b = read_side(data[:half], "lis", "a"), read_side(data[half:], "lis", "b")
-    diff_sides(a, b)
-    diff_sides(b, a)
+    a, b = read_side(data[:half], "lis", "a", REGISTRY), read_side(data[half:], "lis", "b", REGISTRY)
+    diff_sides(a, b, REGISTRY)
+    diff_sides(b, a, REGISTRY)
 
 
-_MACHINE = None
+_machine: list[Machine] = []
 
 
 def check_program(data: bytes) -> None:
-    global _MACHINE
-    from pathlib import Path
-
-    from zero.machine import load_machine
-    from zero.program import lint_program
-
-    if _MACHINE is None:
-        _MACHINE = load_machine(Path(__file__).resolve().parent.parent / "fixtures" / "machine" / "listen"
-                                / "hochlauf.lis")
-    result = lint_program(data, "f.nc", machine=_MACHINE)
+    if not _machine:
+        _machine.append(load_machine(MACHINE_STARTUP, REGISTRY))
+    result = lint_program(data, REGISTRY, "f.nc", machine=_machine[0])
     for d in result.diagnostics:
         assert 1 <= d.span.line <= max(len(result.document.lines), 1), d
 
 
 def check_format(data: bytes) -> None:
-    from zero.diff import DiffOptions, diff_sides, read_side
-    from zero.fix import format_bytes
-
     try:
-        once = format_bytes(data, "f.lis")
-    except ConvertError:
+        once = format_bytes(data, "f.lis", REGISTRY)
+    except ZeroError:
         return
-    assert format_bytes(once, "f.lis") == once, (data, once)
-    assert diff_sides(read_side(data, "lis", "a"), read_side(once, "lis", "b"),
+    assert format_bytes(once, "f.lis", REGISTRY) == once, (data, once)
+    assert diff_sides(read_side(data, "lis", "a", REGISTRY), read_side(once, "lis", "b", REGISTRY), REGISTRY,
                       DiffOptions(strict=True, comments=True)) == [], (data, once)
 
 
 def check_fix(data: bytes) -> None:
-    from zero.fix import fix_bytes
-
-    fix_bytes(data, "f.lis", unsafe=True)
+    fix_bytes(data, "f.lis", REGISTRY, unsafe=True)
 
 
 def one_input(raw: bytes) -> None:

@@ -1,17 +1,38 @@
-"""Shared test helpers: the corpus location and small lint shortcuts."""
+"""Shared test helpers: the corpus location, the built-in registry and small lint shortcuts.
+
+The tree under tests/ mirrors the packages of src/zero (tests/lists, tests/catalog, ...);
+cross-cutting suites stay at the top. The directories have no ``__init__.py``: pytest's
+default (prepend) import mode puts each test directory on ``sys.path``, so test file
+basenames are unique across the tree and ``from conftest import ...`` works everywhere.
+"""
 
 from __future__ import annotations
 
+import functools
 import json
 import os
 from pathlib import Path
 
 import pytest
+from hypothesis import strategies as st
 
-from zero.lint import LintOptions, LintResult, lint_bytes
+from zero.catalog.registry import Registry, load_registry
+from zero.engine.lint import LintOptions, LintResult, lint_bytes
 
 ROOT = Path(__file__).resolve().parent.parent
 FIXTURES = ROOT / "fixtures"
+
+
+@functools.cache
+def builtin_registry() -> Registry:
+    """The built-in registry, loaded once per process (for helpers outside fixtures)."""
+    return load_registry()
+
+
+@pytest.fixture(scope="session")
+def registry() -> Registry:
+    """The built-in registry, shared by the whole session."""
+    return builtin_registry()
 
 
 def corpus_dir() -> Path:
@@ -33,7 +54,7 @@ def corpus() -> Path:
 
 def lint_text(text: str | bytes, path: str = "t.lis", **options: object) -> LintResult:
     data = text.encode("utf-8") if isinstance(text, str) else text
-    return lint_bytes(data, path, options=LintOptions(**options))  # type: ignore[arg-type]
+    return lint_bytes(data, builtin_registry(), path, options=LintOptions(**options))  # type: ignore[arg-type]
 
 
 def codes(result: LintResult) -> list[str]:
@@ -55,3 +76,62 @@ def golden(path: Path, actual: object, update: bool) -> object:
     if update:
         path.write_text(json.dumps(actual, indent=1, ensure_ascii=False) + "\n", encoding="utf-8")
     return json.loads(path.read_text(encoding="utf-8"))
+
+
+# --------------------------------------------------------------- generated list files
+# (hypothesis strategy shared by tests/test_properties.py and tests/engine/test_fix.py)
+
+_KEYS = st.one_of(
+    st.builds("np_grp[{}].achse[{}].versch".format, st.integers(0, 96), st.integers(0, 31)),
+    st.builds("np_grp[{}].achse[{}].inaktiv".format, st.integers(0, 96), st.integers(0, 31)),
+    st.sampled_from(["kenngr.swe_pos", "kenngr.achs_mode", "g53_verfuegbar", "default_index",
+                     "lr_param.kv", "a", "a.b"]),
+    st.builds("wz[{}].name".format, st.integers(1, 10**30)),
+    st.builds("getriebe[{}].dynamik.vb_max".format, st.integers(0, 4_000_000_000)),
+)
+_VALUES = st.one_of(
+    st.integers(-(2**31), 2**32 - 1).map(str),
+    st.sampled_from(["-2147483648", "4294967295", "0", "-0", "010", "+7", "0x400001", "0X1f", "1.5",
+                     "1e3", "1.50", "TRUE", "FALSE", "ERROR", "on", "no", "yes", "null", "~",
+                     "PLC_INFO | MOS", "REPORT | REPORT_EXTENDED |PRINT", "P-AXIS-00212.0",
+                     "P-AXIS-00376", '"text with ( # spaces"', '"a:b"', "X_Achse",
+                     "./listen/achsmds1.lis", "20804,20805", "cnc_ve_%s_[%d]_r", "µm", "'q'"]),
+)
+_COMMENTS = st.one_of(
+    st.none(),
+    st.sampled_from(["# hash note", "#", "( P-ZERO-00003 : offset", "( unclosed ( nested)",
+                     "/* 20 */ ( second", "plain words", "( with # and \"quotes\" : colon",
+                     "( Maße in µm", "#x 5"]),
+)
+_GAP = st.sampled_from([" ", "  ", "\t", " \t ", "      "])
+_FULL_LINES = st.sampled_from(["# comment", "#", "#\ttab", "#key 5", "#np_grp[0].achse[0].versch 1",
+                               "", "\t", "   ", "  # indented", "# ä µ €"])
+
+
+@st.composite
+def generated_lists(draw: st.DrawFn) -> bytes:
+    """Whole list files: entries, comments, blanks, Ende, both line endings, two encodings."""
+    canonical = draw(st.booleans())
+    lines: list[str] = []
+    for _ in range(draw(st.integers(0, 25))):
+        for _ in range(draw(st.integers(0, 2))):
+            lines.append(draw(_FULL_LINES))
+        key, value, comment = draw(_KEYS), draw(_VALUES), draw(_COMMENTS)
+        if canonical:
+            from zero.structured.tree import canonical_line
+
+            lines.append(canonical_line(key, value, comment, 54, 70))
+        else:
+            line = key + draw(_GAP) + value
+            if comment is not None:
+                line += draw(_GAP) + comment
+            lines.append(line + draw(st.sampled_from(["", " ", "\t"])))
+    lines.extend(draw(st.lists(_FULL_LINES, max_size=2)))
+    end = draw(st.sampled_from(["Ende", "Ende  ", None]))
+    if end is not None:
+        lines.append(end)
+        lines.extend(draw(st.lists(st.sampled_from(["", " "]), max_size=2)))
+    newline = draw(st.sampled_from(["\n", "\r\n"]))
+    text = newline.join(lines) + (newline if lines and draw(st.booleans()) else "")
+    encoding = draw(st.sampled_from(["utf-8", "cp1252"]))
+    return text.encode(encoding)

@@ -13,36 +13,37 @@ from pathlib import Path
 import pytest
 from typer.testing import CliRunner
 
-from conftest import FIXTURES, golden
-from zero.cli import app
-from zero.convert import convert
+from conftest import FIXTURES, ROOT, builtin_registry, golden
+from zero.catalog.registry import Registry
+from zero.cli.app import app
 from zero.diff import DiffOptions, diff_defaults, diff_sides, read_side
+from zero.engine.convert import convert
 
 runner = CliRunner()
 D = FIXTURES / "diff"
 
 
 def side(path: Path, fmt: str = "lis"):  # type: ignore[no-untyped-def]
-    return read_side(path.read_bytes(), fmt, str(path))
+    return read_side(path.read_bytes(), fmt, str(path), builtin_registry())
 
 
-def test_reordered_and_recommented_lists_do_not_differ() -> None:
-    changes = diff_sides(side(D / "base.lis"), side(D / "reordered.lis"))
+def test_reordered_and_recommented_lists_do_not_differ(registry: Registry) -> None:
+    changes = diff_sides(side(D / "base.lis"), side(D / "reordered.lis"), registry)
     assert changes == []
     result = runner.invoke(app, ["diff", str(D / "base.lis"), str(D / "reordered.lis")])
     assert result.exit_code == 0 and result.output == ""
 
 
-def test_comments_count_when_asked() -> None:
-    changes = diff_sides(side(D / "base.lis"), side(D / "reordered.lis"), DiffOptions(comments=True))
+def test_comments_count_when_asked(registry: Registry) -> None:
+    changes = diff_sides(side(D / "base.lis"), side(D / "reordered.lis"), registry, DiffOptions(comments=True))
     assert {c.kind for c in changes} == {"comment"}
     assert "np_grp[1].achse[1].versch" in {c.key for c in changes}
     code = runner.invoke(app, ["diff", "--comments", str(D / "base.lis"), str(D / "reordered.lis")]).exit_code
     assert code == 1
 
 
-def test_changed_offset_added_and_removed_groups_golden(request: pytest.FixtureRequest) -> None:
-    changes = diff_sides(side(D / "base.lis"), side(D / "changed.lis"))
+def test_changed_offset_added_and_removed_groups_golden(registry: Registry, request: pytest.FixtureRequest) -> None:
+    changes = diff_sides(side(D / "base.lis"), side(D / "changed.lis"), registry)
     actual = [c.to_json() for c in changes]
     expected = golden(D / "changed.expected.json", actual, request.config.getoption("--update-golden"))
     assert actual == expected
@@ -64,16 +65,16 @@ def test_text_output_golden(request: pytest.FixtureRequest) -> None:
     assert "np_grp[1].achse[0].versch  P-ZERO-00003  100000 → 110000  +1.0000 mm or °" in result.output
 
 
-def test_default_versus_absent_only_with_strict() -> None:
+def test_default_versus_absent_only_with_strict(registry: Registry) -> None:
     a, b = side(D / "base.lis"), side(D / "changed.lis")
     key = "np_grp[0].achse[2].inaktiv"
-    assert key not in {c.key for c in diff_sides(a, b)}
-    strict = [c for c in diff_sides(a, b, DiffOptions(strict=True)) if c.key == key]
+    assert key not in {c.key for c in diff_sides(a, b, registry)}
+    strict = [c for c in diff_sides(a, b, registry, DiffOptions(strict=True)) if c.key == key]
     assert len(strict) == 1 and strict[0].kind == "same"
 
 
-def test_defaults_shows_what_the_machine_changed() -> None:
-    changes = diff_defaults(side(D / "base.lis"))
+def test_defaults_shows_what_the_machine_changed(registry: Registry) -> None:
+    changes = diff_defaults(side(D / "base.lis"), registry)
     keys = [c.key for c in changes]
     assert "np_grp[1].achse[0].versch" in keys
     assert "np_grp[0].achse[0].versch" not in keys  # 0 is the default
@@ -84,25 +85,27 @@ def test_defaults_shows_what_the_machine_changed() -> None:
 
 
 @pytest.mark.parametrize("fmt", ["yaml", "toml", "json"])
-def test_list_and_its_structured_form_do_not_differ(tmp_path: Path, fmt: str) -> None:
+def test_list_and_its_structured_form_do_not_differ(registry: Registry, tmp_path: Path, fmt: str) -> None:
     data = (D / "base.lis").read_bytes()
     target = tmp_path / f"base.{fmt}"
-    target.write_bytes(convert(data, "lis", fmt, "base.lis").output)
+    target.write_bytes(convert(data, "lis", fmt, registry, "base.lis").output)
     result = runner.invoke(app, ["diff", str(D / "base.lis"), str(target)])
     assert result.exit_code == 0, result.output
-    assert diff_sides(side(D / "base.lis"), side(D / "hand.yaml", "yaml")) == []
+    assert diff_sides(side(D / "base.lis"), side(D / "hand.yaml", "yaml"), registry) == []
 
 
-def test_axis_unit_from_the_axis_type(corpus: Path) -> None:
+def test_axis_unit_from_the_axis_type(registry: Registry, corpus: Path) -> None:
     axis = (corpus / "isg-sdk" / "listen" / "achsmds1.lis").read_bytes()
     changed = axis.replace(b"kenngr.swe_pos                                        15000000",
                            b"kenngr.swe_pos                                        15010000")
     assert changed != axis
-    changes = diff_sides(read_side(axis, "lis", "a.lis"), read_side(changed, "lis", "b.lis"))
+    changes = diff_sides(read_side(axis, "lis", "a.lis", registry), read_side(changed, "lis", "b.lis", registry),
+                         registry)
     assert [(c.key, c.delta, c.unit) for c in changes] == [("kenngr.swe_pos", 1.0, "mm")]
     rotary = changed.replace(b"kenngr.achs_typ                                       1",
                              b"kenngr.achs_typ                                       2")
-    c = [x for x in diff_sides(read_side(axis, "lis", "a.lis"), read_side(rotary, "lis", "b.lis"))
+    c = [x for x in diff_sides(read_side(axis, "lis", "a.lis", registry), read_side(rotary, "lis", "b.lis", registry),
+                               registry)
          if x.key == "kenngr.swe_pos"]
     assert c[0].unit == "°"
 
@@ -122,6 +125,7 @@ def test_stdin_side() -> None:
     assert result.exit_code == 1 and "110000" in result.output
 
 
+@pytest.mark.slow
 @pytest.mark.skipif(shutil.which("git") is None, reason="git not installed")
 def test_git_textconv_shows_the_semantic_view(tmp_path: Path) -> None:
     env = {**os.environ, "GIT_AUTHOR_NAME": "t", "GIT_AUTHOR_EMAIL": "t@example.invalid",
@@ -150,13 +154,13 @@ def test_git_textconv_shows_the_semantic_view(tmp_path: Path) -> None:
     assert "+np_grp[7].achse[3].versch = 900000" in log
 
 
-def test_two_full_zero_lists_one_change() -> None:
-    sys.path.insert(0, str(Path(__file__).resolve().parent.parent / "benchmarks"))
+def test_two_full_zero_lists_one_change(registry: Registry) -> None:
+    sys.path.insert(0, str(ROOT / "benchmarks"))
     from workloads import full_zero_list
 
     a = full_zero_list()
     b = a.replace(b"np_grp[50].achse[3].versch                            50003",
                   b"np_grp[50].achse[3].versch                            60003")
     assert a != b
-    changes = diff_sides(read_side(a, "lis", "a.lis"), read_side(b, "lis", "b.lis"))
+    changes = diff_sides(read_side(a, "lis", "a.lis", registry), read_side(b, "lis", "b.lis", registry), registry)
     assert [(c.key, c.delta) for c in changes] == [("np_grp[50].achse[3].versch", 1.0)]

@@ -16,9 +16,9 @@ import pytest
 from typer.testing import CliRunner
 
 from conftest import lint_text
-from zero.cli import app
-from zero.lint import LintResult
-from zero.report import render_text
+from zero.cli.app import app
+from zero.engine.lint import LintResult
+from zero.output.text import render_text
 
 MiB = 1024 * 1024
 
@@ -56,6 +56,7 @@ def _bounded(data: bytes, seconds: float = 60.0, memory_mib: int = 1024) -> Lint
     return result
 
 
+@pytest.mark.slow
 def test_random_binary() -> None:
     rng = random.Random(1234)
     data = bytes(rng.randrange(256) for _ in range(200_000))
@@ -63,6 +64,7 @@ def test_random_binary() -> None:
     assert result.diagnostics  # something is reported
 
 
+@pytest.mark.slow
 def test_nul_bytes_everywhere() -> None:
     result = _bounded(b"\x00" * 100_000 + b"\nk\x00 1\n")
     assert "S008" in {d.code for d in result.diagnostics}
@@ -73,6 +75,7 @@ def test_utf16_file() -> None:
     assert "S008" in {d.code for d in result.diagnostics}
 
 
+@pytest.mark.slow
 def test_ten_megabyte_line() -> None:
     line = b"np_grp[1].achse[0].versch 5 ( " + b"x" * (10 * MiB) + b"\n"
     result = _bounded(line, memory_mib=768)
@@ -90,6 +93,7 @@ def test_huge_indices(digits: int) -> None:
     assert [d.code for d in result.diagnostics] == ["R003"]
 
 
+@pytest.mark.slow
 def test_huge_values() -> None:
     result = _bounded(f"g53_verfuegbar {'9' * 5000}\n".encode())
     assert [d.code for d in result.diagnostics] == ["R005"]
@@ -103,12 +107,14 @@ def test_twenty_thousand_nested_members() -> None:
     assert [d.code for d in result.diagnostics] == ["R001", "R001"]
 
 
+@pytest.mark.slow
 def test_unterminated_quote_and_empty_file() -> None:
     assert [d.code for d in _bounded(b'kopf.log_achs_name "abc\n').diagnostics] == ["S003"]
     assert _bounded(b"").diagnostics == []
     assert _bounded(b"\n\n\n").diagnostics == []
 
 
+@pytest.mark.slow
 def test_many_lines() -> None:
     data = b"".join(b"np_grp[%d].achse[%d].versch %d\n" % (i % 97, i % 32, i) for i in range(100_000))
     result = _bounded(data)
@@ -170,6 +176,7 @@ HOSTILE_STRUCTURED = {
 }
 
 
+@pytest.mark.slow
 @pytest.mark.parametrize("name", sorted(HOSTILE_STRUCTURED))
 @pytest.mark.parametrize("command", [["convert", "--to", "lis"], ["lint"], ["diff", "--defaults"]])
 def test_hostile_structured_input_is_refused_with_its_location(name: str, command: list[str]) -> None:
@@ -185,6 +192,7 @@ def test_hostile_structured_input_is_refused_with_its_location(name: str, comman
     assert proc.stdout == b""
 
 
+@pytest.mark.slow
 def test_two_gigabyte_sparse_index_in_yaml_is_cheap() -> None:
     text = b"np_grp:\n  2000000000:\n    achse:\n      0:\n        versch: 1\n"
     proc = _run_capped(["convert", "--to", "lis"], text, "sparse.yaml", seconds=30, memory_mib=256)
@@ -194,6 +202,7 @@ def test_two_gigabyte_sparse_index_in_yaml_is_cheap() -> None:
     assert lint.returncode == 1 and b"R003" in lint.stdout
 
 
+@pytest.mark.slow
 def test_invalid_utf8_inside_keys_is_located() -> None:
     result = _bounded(b"np_grp[1].ach\xffse[0].versch 5\nkenngr.\xc3\x28x 1\n")
     assert [(d.code, d.span.line) for d in result.diagnostics] == [("S001", 1), ("S001", 2)]

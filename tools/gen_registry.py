@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Regenerate ``src/zero/data/registry.json`` from a ``CncParaDesc.xml``.
+"""Regenerate ``src/zero/catalog/data/registry.json`` from a ``CncParaDesc.xml``.
 
 Usage: python tools/gen_registry.py [PATH/TO/CncParaDesc.xml]
 
@@ -17,10 +17,10 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT / "src"))
 
-from zero.paramdesc import read_param_desc  # noqa: E402
+from zero.catalog.paramdesc import read_param_desc  # noqa: E402
 
 DEFAULT_XML = ROOT.parent / "shared" / "corpus" / "isg-sdk" / "meta-data" / "CncParaDesc.xml"
-OUT = ROOT / "src" / "zero" / "data" / "registry.json"
+OUT = ROOT / "src" / "zero" / "catalog" / "data" / "registry.json"
 
 
 def compact(row: dict[str, object]) -> dict[str, object]:

@@ -1,3 +1,3 @@
-from zero.entry import main
+from zero.cli.lean import main
 
 main()

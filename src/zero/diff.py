@@ -10,13 +10,16 @@ has the same effective value and is shown only with ``strict``.
 from __future__ import annotations
 
 import re
-from collections.abc import Iterable
 from dataclasses import dataclass, field
 from typing import Any
 
-from zero.model import Entry, parse_key
-from zero.registry import LENGTH_UNIT, ParamSpec, Registry, default_registry
-from zero.rules.base import default_number, read_value
+from zero.catalog.ids import AXIS_UNITS, g_code_with_index, in_units
+from zero.catalog.registry import NO_DEFAULT, ParamSpec, Registry
+from zero.catalog.values import default_number, parse_int, read_value
+from zero.lists.model import Comment, Entry, parse_key
+from zero.lists.tokenizer import tokenize
+from zero.structured.formats import read_tree
+from zero.structured.tree import encode_list, to_list_text
 
 ADDED, REMOVED, CHANGED, SAME, COMMENT = "added", "removed", "changed", "same", "comment"
 
@@ -52,19 +55,12 @@ class Change:
 # ----------------------------------------------------------------- reading sides
 
 
-def read_side(data: bytes, fmt: str, path: str, registry: Registry | None = None,
-              kind: str | None = None) -> Side:
+def read_side(data: bytes, fmt: str, path: str, registry: Registry, kind: str | None = None) -> Side:
     """Read list/YAML/TOML/JSON bytes as the controller would see them."""
-    from zero.tokenizer import tokenize
-
-    registry = registry or default_registry()
     if fmt == "lis":
         doc = tokenize(data, path)
     else:
-        from zero.convert import read_tree
-        from zero.structured import encode_list, to_list_text
-
-        tree = read_tree(data, fmt, path, kind)
+        tree = read_tree(data, fmt, registry, path, kind)
         doc = tokenize(encode_list(tree, to_list_text(tree).text), path)
         if kind is None and isinstance(tree.meta.get("kind"), str):
             kind = tree.meta["kind"]
@@ -72,10 +68,9 @@ def read_side(data: bytes, fmt: str, path: str, registry: Registry | None = None
     comments: dict[str, tuple[str, ...]] = {}
     pending: list[str] = []
     for item in doc.items:
-        t = type(item).__name__
-        if t == "Comment":
+        if type(item) is Comment:
             pending.append(doc.lines[item.line - 1].strip())
-        elif t == "Entry" and isinstance(item, Entry) and not item.after_end:
+        elif type(item) is Entry and not item.after_end:
             entries[item.key_text] = item  # the later value wins, as on the controller
             comments[item.key_text] = (*pending, item.comment.strip() if item.comment else "")
             pending = []
@@ -104,8 +99,6 @@ def effective(entry: Entry, spec: ParamSpec | None) -> tuple[str, Any]:
             return ("num", v.number)
         if v.problem is None and v.text is not None:
             return ("text", v.text)
-    from zero.rules.base import parse_int
-
     if entry.value_kind is not None and entry.value_kind.value in ("int", "hex"):
         n = parse_int(entry.value)
         if n is not None:
@@ -117,7 +110,7 @@ def default_effective(spec: ParamSpec | None) -> tuple[str, Any] | None:
     if spec is None:
         return None
     d = (spec.default or "").strip()
-    if d in ("", "-", "--", "----"):
+    if d in NO_DEFAULT:
         return None
     if spec.type == "STRING" and not spec.symbols:
         return ("text", d.strip('"'))
@@ -127,7 +120,7 @@ def default_effective(spec: ParamSpec | None) -> tuple[str, Any] | None:
 
 # ----------------------------------------------------------------- units and groups
 
-ZERO_UNIT = LENGTH_UNIT
+_UNIT_OF_TYPE = {str(axis_type): unit for axis_type, unit in AXIS_UNITS.items()}
 
 
 def axis_unit(side: Side | None) -> str | None:
@@ -137,7 +130,7 @@ def axis_unit(side: Side | None) -> str | None:
     e = side.entries.get("kenngr.achs_typ")
     if e is None:
         return None
-    return {"1": "mm", "2": "°", "4": "°"}.get(e.value.strip())
+    return _UNIT_OF_TYPE.get(e.value.strip())
 
 
 def unit_and_delta(spec: ParamSpec | None, old: tuple[str, Any] | None, new: tuple[str, Any] | None,
@@ -149,16 +142,8 @@ def unit_and_delta(spec: ParamSpec | None, old: tuple[str, Any] | None, new: tup
         return unit, None
     raw = new[1] - old[1]
     if spec.is_length:
-        return unit, round(raw / ZERO_UNIT, 4)
+        return unit, round(in_units(raw), 4)
     return unit, raw
-
-
-def g_code(group: int) -> str:
-    """``G54 (G159=1)``: the G code that selects a zero-offset group, with its G159 form."""
-    from zero.machine import g_code as short
-
-    code = short(group)
-    return code if code.startswith("G159") else f"{code} (G159={group})"
 
 
 _INDEX_RE = re.compile(r"\[([0-9]+)\]")
@@ -169,7 +154,7 @@ def group_of(key: str, kind: str | None) -> str:
     m = re.match(r"(np_grp|pzv_grp)\[([0-9]+)\]\.achse\[[0-9]+\]", key)
     if m:
         grp = int(m.group(2)) if len(m.group(2)) < 10 else 10**9
-        return g_code(grp) if m.group(1) == "np_grp" else f"clamp group {grp}"
+        return g_code_with_index(grp) if m.group(1) == "np_grp" else f"clamp group {grp}"
     if kind == "ZERO" and key in ("g53_verfuegbar", "default_index"):
         return "general"
     first = key.split(".", 1)[0]
@@ -203,11 +188,9 @@ def _text(value: tuple[str, Any] | None, entry: Entry | None) -> str | None:
     return str(value[1])
 
 
-def diff_sides(a: Side, b: Side, options: DiffOptions | None = None,
-               registry: Registry | None = None) -> list[Change]:
+def diff_sides(a: Side, b: Side, registry: Registry, options: DiffOptions | None = None) -> list[Change]:
     """Changes from side ``a`` to side ``b``, grouped and in key order."""
     options = options or DiffOptions()
-    registry = registry or default_registry()
     kind = b.kind or a.kind
     unit_a, unit_b = axis_unit(a), axis_unit(b)
     length_unit = unit_b or unit_a
@@ -253,11 +236,9 @@ def _grouped(changes: list[Change]) -> list[Change]:
     return sorted(changes, key=lambda c: (_group_rank(c.group), _sort_key(c.key)))
 
 
-def diff_defaults(side: Side, options: DiffOptions | None = None,
-                  registry: Registry | None = None) -> list[Change]:
+def diff_defaults(side: Side, registry: Registry, options: DiffOptions | None = None) -> list[Change]:
     """The parameters of one file that differ from the registry defaults."""
     options = options or DiffOptions()
-    registry = registry or default_registry()
     length_unit = axis_unit(side)
     out: list[Change] = []
     for key in sorted(side.entries, key=_sort_key):
@@ -282,60 +263,8 @@ def diff_defaults(side: Side, options: DiffOptions | None = None,
     return _grouped(out)
 
 
-# ----------------------------------------------------------------- rendering
-
-
-def format_delta(c: Change) -> str:
-    if c.delta is None:
-        return ""
-    if isinstance(c.delta, float) or (c.unit or "").startswith(("mm", "°")):
-        text = f"{c.delta:+.4f}"
-    else:
-        text = f"{c.delta:+d}" if isinstance(c.delta, int) else f"{c.delta:+g}"
-    return f"{text} {c.unit}" if c.unit else text
-
-
-_MARK = {ADDED: "+", REMOVED: "-", CHANGED: "~", SAME: "=", COMMENT: "#"}
-
-
-def rows(changes: Iterable[Change]) -> list[tuple[str, list[tuple[str, ...]]]]:
-    """Changes as (group, rows of cells) for the text and table renderers."""
-    out: list[tuple[str, list[tuple[str, ...]]]] = []
-    for c in changes:
-        if not out or out[-1][0] != c.group:
-            out.append((c.group, []))
-        old = "(absent)" if c.old is None else c.old
-        new = "(absent)" if c.new is None else c.new
-        out[-1][1].append((_MARK[c.kind], c.key, c.param_id or "", f"{old} → {new}",
-                           format_delta(c), c.note))
-    return out
-
-
-def render_plain(changes: list[Change], header: str) -> str:
-    lines = [header]
-    for group, cells in rows(changes):
-        lines.append(f"\n{group}")
-        widths = [max(len(r[i]) for r in cells) for i in range(5)]
-        for r in cells:
-            text = "  ".join(r[i].rjust(widths[i]) if i == 4 else r[i].ljust(widths[i])
-                             for i in range(5)).rstrip()
-            lines.append(f"  {text}" + (f"  ({r[5]})" if r[5] else ""))
-    return "\n".join(lines) + "\n"
-
-
-def summary(changes: list[Change]) -> str:
-    n = {k: sum(1 for c in changes if c.kind == k) for k in _MARK}
-    parts = [f"{n[CHANGED]} changed", f"{n[ADDED]} added", f"{n[REMOVED]} removed"]
-    if n[COMMENT]:
-        parts.append(f"{n[COMMENT]} comments changed")
-    if n[SAME]:
-        parts.append(f"{n[SAME]} same effective value")
-    return ", ".join(parts)
-
-
-def show_lines(side: Side, registry: Registry | None = None) -> list[str]:
+def show_lines(side: Side, registry: Registry) -> list[str]:
     """A list as one line per parameter, grouped: the view ``git diff`` compares (textconv)."""
-    registry = registry or default_registry()
     length_unit = axis_unit(side)
     out: list[str] = [f"# zero: {side.path} ({side.kind or 'unknown kind'}), "
                       f"{len(side.entries)} parameters as the controller reads them"]
@@ -352,7 +281,7 @@ def show_lines(side: Side, registry: Registry | None = None) -> list[str]:
             extra = f"  ({spec.id}"
             v = effective(e, spec)
             if spec.is_length and v[0] == "num":
-                extra += f", {v[1] / ZERO_UNIT:.4f} {length_unit or 'mm or °'}"
+                extra += f", {in_units(v[1]):.4f} {length_unit or 'mm or °'}"
             extra += ")"
         out.append(f"{key} = {e.value}{extra}")
     return out

@@ -1,20 +1,25 @@
 """Every rule zero has, by code, and the checks that implement them.
 
-Code families: S syntax, R registry, M meaning within one list, Z suppression directives
-(applied after the checks by :mod:`zero.rules.suppress`), X across the lists of one machine
-(:mod:`zero.rules.machine`, run by ``zero lint --machine``), N NC programs
-(:mod:`zero.program`). A code is never reused.
+One module per family, each rule's metadata beside the check that reports it:
+S syntax (:mod:`~zero.rules.syntax`), R registry (:mod:`~zero.rules.registry`),
+M meaning within one list (:mod:`~zero.rules.meaning`), Z suppression directives
+(:mod:`~zero.rules.suppress`, applied after the checks), X across the lists of one
+machine (:mod:`~zero.rules.machine`, ``zero lint --machine``), N NC programs
+(:mod:`~zero.rules.program`). A code is never reused.
 """
 
 from __future__ import annotations
 
-from zero.rules import machine, meaning, params, program, suppress, syntax
-from zero.rules.base import Check, Context, Rule
+from zero.rules import machine, meaning, program, registry, suppress, syntax
+from zero.rules.base import Context, Family, MachineContext, ProgramContext, Rule, run_checks
+from zero.rules.lists import check_document
 
-RULES: dict[str, Rule] = {**syntax.RULES, **params.RULES, **meaning.RULES, **suppress.RULES,
-                          **machine.RULES, **program.RULES}
-CHECKS: tuple[Check, ...] = (*syntax.CHECKS, *params.CHECKS, *meaning.CHECKS)
-FAMILIES = {"S": "syntax", "R": "registry", "M": "meaning", "Z": "suppressions",
-            "X": "machine (across lists, `zero lint --machine`)", "N": "NC programs"}
+_FAMILIES: tuple[Family[Context] | Family[MachineContext] | Family[ProgramContext], ...] = (
+    syntax.FAMILY, registry.FAMILY, meaning.FAMILY, suppress.FAMILY, machine.FAMILY, program.FAMILY)
+RULES: dict[str, Rule] = {code: f.rules[code] for f in _FAMILIES for code in sorted(f.rules)}
+FAMILIES = {f.letter: f.title for f in _FAMILIES}
+MACHINE_CHECKS = machine.FAMILY.checks
+PROGRAM_CHECKS = program.FAMILY.checks
 
-__all__ = ["CHECKS", "FAMILIES", "RULES", "Context", "Rule"]
+__all__ = ["FAMILIES", "MACHINE_CHECKS", "PROGRAM_CHECKS", "RULES", "Context", "MachineContext",
+           "ProgramContext", "Rule", "check_document", "run_checks"]

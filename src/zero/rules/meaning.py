@@ -4,25 +4,48 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
-from zero.diagnostics import Diagnostic, Severity, Span
-from zero.ranges import TYPE_LIMITS, Number
-from zero.rules.base import Context, Resolved, Rule, rule
-
-E, W, INFO = Severity.ERROR, Severity.WARNING, Severity.INFO
-
-SWE_NEG, SWE_POS, SWE_TOL = "P-AXIS-00177", "P-AXIS-00178", "P-AXIS-00179"
-SWE_BEHAVIOUR, SWE_CHECK = "P-AXIS-00554", "P-AXIS-00705"
-OFFSET_NEG, OFFSET_POS = "P-AXIS-00137", "P-AXIS-00138"
-AXIS_TYPE = "P-AXIS-00018"
-G53_AVAILABLE, DEFAULT_INDEX, OFFSET, INACTIVE = (
-    "P-ZERO-00001", "P-ZERO-00002", "P-ZERO-00003", "P-ZERO-00004",
+from zero.catalog.ids import (
+    AXIS_TYPE,
+    DEFAULT_INDEX,
+    G53_AVAILABLE,
+    INACTIVE,
+    OFFSET,
+    OFFSET_NEG,
+    OFFSET_POS,
+    ROTARY_TYPES,
+    SWE_BEHAVIOUR,
+    SWE_CHECK,
+    SWE_NEG,
+    SWE_POS,
+    SWE_TOL,
+    g_code,
+    length_text,
 )
+from zero.catalog.ranges import TYPE_LIMITS
+from zero.catalog.values import Resolved
+from zero.diagnostics import Diagnostic, Span
+from zero.rules.base import INFO, Context, E, Family, W
 
-RULES: dict[str, Rule] = {
-    r.code: r
-    for r in (
-        rule("M001", "soft-limits-inverted", E, "The negative soft limit is not below the positive one",
-             """
+FAMILY: Family[Context] = Family("M", "meaning", "list")
+
+
+def _rotary(ctx: Context) -> bool | None:
+    res = ctx.value_of(AXIS_TYPE)
+    if res is None or res.value.number is None:
+        return None if ctx.kind != "AXIS" else False
+    return int(res.value.number) in ROTARY_TYPES
+
+
+def _span(res: Resolved) -> Span:
+    e = res.entry
+    return Span.on_line(e.line, e.value_start, e.value_end)
+
+
+# ------------------------------------------------------- soft limits: M001, M005..M008
+
+SOFT_LIMITS_INVERTED = FAMILY.rule(
+    "M001", "soft-limits-inverted", E, "The negative soft limit is not below the positive one",
+    """
 What it checks: `kenngr.swe_neg` < `kenngr.swe_pos` (P-AXIS-00177 < P-AXIS-00178), with
 the default for whichever of the two the list does not set.
 
@@ -32,57 +55,30 @@ limits that no longer protect it.
 
 Example: `kenngr.swe_neg 5000000` with `kenngr.swe_pos -5000000`
 Fix: swap or correct the values.
-"""),
-        rule("M002", "g53-offset-no-effect", W, "Offsets in group 0 while G53 cancels all offsets",
-             """
-What it checks: non-zero `np_grp[0].achse[j].versch` while `g53_verfuegbar` is 0 or absent.
-
-Why it matters on the machine: with `g53_verfuegbar` 0, G53 (G159=0) deselects every zero
-offset; the values of group 0 are never applied. Someone expecting G53 to shift the axis
-will cut in the wrong place.
-
-Fix: set `g53_verfuegbar 1` if group 0 is meant as a full offset set, or clear the values.
-"""),
-        rule("M003", "masked-offset", INFO, "A non-zero offset masked by `inaktiv 1`",
-             """
-What it checks: `np_grp[i].achse[j].versch` ≠ 0 while `np_grp[i].achse[j].inaktiv` is 1.
-
-Why it matters on the machine: the offset is not applied when the group is selected.
-That can be intended (the ZERO manual's own example masks offsets), so this is
-information: make sure it is.
-
-Fix: set `inaktiv 0` to apply the offset, or set the offset to 0.
-"""),
-        rule("M004", "default-index-empty", W, "`default_index` selects a group the list does not fill",
-             """
-What it checks: `default_index` n > 0 while the list has no `np_grp[n]` entry.
-
-Why it matters on the machine: group n is active after every program start (instead of
-G53); with no data in the list it holds whatever the controller has, usually zeros —
-probably not the offsets the engineer meant to activate.
-
-Fix: point `default_index` at the intended group, or add its offsets.
-"""),
-        rule("M005", "soft-limit-check-off", W, "Soft-limit monitoring switched off (`swe_check 0`)",
-             """
+""")
+SOFT_LIMIT_CHECK_OFF = FAMILY.rule(
+    "M005", "soft-limit-check-off", W, "Soft-limit monitoring switched off (`swe_check 0`)",
+    """
 What it checks: `kenngr.swe_check` (P-AXIS-00705) set to 0.
 
 Why it matters on the machine: 0 switches soft-limit monitoring off whatever the axis
 type and mode; the axis can travel into its hardware limits or into the machine.
 
 Fix: use -1 (monitoring by axis type, the default) or 1.
-"""),
-        rule("M006", "soft-limit-warning-only", W, "Overrunning a soft limit only warns (`swe_behaviour WARNING`)",
-             """
+""")
+SOFT_LIMIT_WARNING_ONLY = FAMILY.rule(
+    "M006", "soft-limit-warning-only", W, "Overrunning a soft limit only warns (`swe_behaviour WARNING`)",
+    """
 What it checks: `kenngr.swe_behaviour` (P-AXIS-00554) set to WARNING.
 
 Why it matters on the machine: path planning and the position controller then only warn
 when a soft limit is overrun; the movement is not stopped by the monitoring.
 
 Fix: use ERROR (default) or ERROR_LR.
-"""),
-        rule("M007", "manual-offset-check-off", W, "Both manual-mode offset limits 0: monitoring off",
-             """
+""")
+MANUAL_OFFSET_CHECK_OFF = FAMILY.rule(
+    "M007", "manual-offset-check-off", W, "Both manual-mode offset limits 0: monitoring off",
+    """
 What it checks: `handbetrieb.offsetgrenze_neg` and `handbetrieb.offsetgrenze_pos`
 (P-AXIS-00137/00138) both 0.
 
@@ -90,9 +86,10 @@ Why it matters on the machine: with both at 0 the manual-mode offset monitoring 
 for an axis that is not homed these limits are the only range limit in manual mode.
 
 Fix: set real limits (defaults ±100 mm).
-"""),
-        rule("M008", "soft-limit-tolerance-overflow", W, "Soft limit plus tolerance leaves the SGN32 range",
-             """
+""")
+SOFT_LIMIT_TOLERANCE_OVERFLOW = FAMILY.rule(
+    "M008", "soft-limit-tolerance-overflow", W, "Soft limit plus tolerance leaves the SGN32 range",
+    """
 What it checks: `swe_pos + swe_toleranz` above MAX(SGN32), or `swe_neg - swe_toleranz`
 below MIN(SGN32).
 
@@ -101,32 +98,11 @@ by the tolerance; a sum that does not fit the position type makes that monitorin
 meaningless or wraps around.
 
 Fix: reduce the tolerance or move the limit inward.
-"""),
-    )
-}
+""")
 
 
-def length_text(value: Number, rotary: bool | None = None) -> str:
-    """0.1 µm / 0.0001° units as mm or degrees (both when the axis type is unknown)."""
-    scaled = value / 10000
-    shown = f"{scaled:.4f}".rstrip("0").rstrip(".")
-    if rotary is None:
-        return f"{shown} mm (or °)"
-    return f"{shown} °" if rotary else f"{shown} mm"
-
-
-def _rotary(ctx: Context) -> bool | None:
-    res = ctx.value_of(AXIS_TYPE)
-    if res is None or res.value.number is None:
-        return None if ctx.kind != "AXIS" else False
-    return int(res.value.number) in (2,)
-
-
-def _span(res: Resolved) -> Span:
-    e = res.entry
-    return Span.on_line(e.line, e.value_start, e.value_end)
-
-
+@FAMILY.check(SOFT_LIMITS_INVERTED, SOFT_LIMIT_CHECK_OFF, SOFT_LIMIT_WARNING_ONLY, MANUAL_OFFSET_CHECK_OFF,
+              SOFT_LIMIT_TOLERANCE_OVERFLOW)
 def check_soft_limits(ctx: Context) -> Iterator[Diagnostic]:
     """M001, M005, M006, M007, M008."""
     neg, pos = ctx.value_of(SWE_NEG), ctx.value_of(SWE_POS)
@@ -183,6 +159,44 @@ def check_soft_limits(ctx: Context) -> Iterator[Diagnostic]:
         )
 
 
+# ------------------------------------------------------- zero offsets: M002, M003, M004
+
+G53_OFFSET_NO_EFFECT = FAMILY.rule(
+    "M002", "g53-offset-no-effect", W, "Offsets in group 0 while G53 cancels all offsets",
+    """
+What it checks: non-zero `np_grp[0].achse[j].versch` while `g53_verfuegbar` is 0 or absent.
+
+Why it matters on the machine: with `g53_verfuegbar` 0, G53 (G159=0) deselects every zero
+offset; the values of group 0 are never applied. Someone expecting G53 to shift the axis
+will cut in the wrong place.
+
+Fix: set `g53_verfuegbar 1` if group 0 is meant as a full offset set, or clear the values.
+""")
+MASKED_OFFSET = FAMILY.rule(
+    "M003", "masked-offset", INFO, "A non-zero offset masked by `inaktiv 1`",
+    """
+What it checks: `np_grp[i].achse[j].versch` ≠ 0 while `np_grp[i].achse[j].inaktiv` is 1.
+
+Why it matters on the machine: the offset is not applied when the group is selected.
+That can be intended (the ZERO manual's own example masks offsets), so this is
+information: make sure it is.
+
+Fix: set `inaktiv 0` to apply the offset, or set the offset to 0.
+""")
+DEFAULT_INDEX_EMPTY = FAMILY.rule(
+    "M004", "default-index-empty", W, "`default_index` selects a group the list does not fill",
+    """
+What it checks: `default_index` n > 0 while the list has no `np_grp[n]` entry.
+
+Why it matters on the machine: group n is active after every program start (instead of
+G53); with no data in the list it holds whatever the controller has, usually zeros —
+probably not the offsets the engineer meant to activate.
+
+Fix: point `default_index` at the intended group, or add its offsets.
+""")
+
+
+@FAMILY.check(G53_OFFSET_NO_EFFECT, MASKED_OFFSET, DEFAULT_INDEX_EMPTY)
 def check_zero_offsets(ctx: Context) -> Iterator[Diagnostic]:
     """M002, M003, M004."""
     offsets = ctx.by_id.get(OFFSET, {})
@@ -214,13 +228,10 @@ def check_zero_offsets(ctx: Context) -> Iterator[Diagnostic]:
         has = any(i[:1] == (group,) for slot in (OFFSET, INACTIVE)
                   for i in ctx.by_id.get(slot, {}))
         if not has:
-            gcode = f"G{53 + group}" if group <= 6 else f"G159={group}"
+            gcode = g_code(group)
             yield ctx.report(
                 "M004", _span(default),
                 f"`default_index {group}` activates group {group} ({gcode}) after every program "
                 "start, but this list has no entry for that group",
                 param_id=DEFAULT_INDEX,
             )
-
-
-CHECKS = (check_soft_limits, check_zero_offsets)

@@ -7,7 +7,8 @@
 
 A reason may follow after `` -- ``. Codes may be prefixes (``R``, ``M00``). A
 directive that suppresses nothing is reported (Z001), a directive zero cannot read
-is reported (Z002): none is ever silently ignored.
+is reported (Z002): none is ever silently ignored. The engine applies them to the
+findings of the other rules (:func:`apply`), so these rules have no check of their own.
 """
 
 from __future__ import annotations
@@ -16,16 +17,14 @@ import re
 from dataclasses import dataclass, field
 
 from zero.diagnostics import Diagnostic, Severity, Span
-from zero.model import Comment, Document, Entry
-from zero.rules.base import Rule, rule
+from zero.lists.model import Comment, Document, Entry
+from zero.rules.base import Context, Family, W
 
-W = Severity.WARNING
+FAMILY: Family[Context] = Family("Z", "suppressions", "suppression")
 
-RULES: dict[str, Rule] = {
-    r.code: r
-    for r in (
-        rule("Z001", "unused-suppression", W, "A suppression that suppresses nothing",
-             """
+UNUSED_SUPPRESSION = FAMILY.rule(
+    "Z001", "unused-suppression", W, "A suppression that suppresses nothing",
+    """
 What it checks: every `noqa`, `zero: ignore[...]` and `zero: noqa` directive hides at least
 one finding of each code it names.
 
@@ -34,9 +33,10 @@ Why it matters on the machine: a stale suppression hides the next real fault on 
 
 Example: `np_grp[1].achse[0].versch 5  # noqa: R005` when the value is in range
 Fix: remove the directive, or narrow it to the codes that still apply.
-"""),
-        rule("Z002", "malformed-suppression", W, "A suppression directive zero cannot read",
-             """
+""")
+MALFORMED_SUPPRESSION = FAMILY.rule(
+    "Z002", "malformed-suppression", W, "A suppression directive zero cannot read",
+    """
 What it checks: the form of suppression directives: `noqa`, `noqa: CODE[, CODE]`,
 `# zero: ignore[CODE, ...]`, `# zero: noqa[: CODE, ...]`, each code a zero rule code or
 prefix, an optional reason after ` -- `.
@@ -46,9 +46,7 @@ was meant to hide keeps failing the commit, or worse, someone believes a fault w
 
 Example: `# zero: ignore R005` (brackets missing), `# noqa: R5O5`
 Fix: write the directive as shown above (`zero rule Z002`).
-"""),
-    )
-}
+""")
 
 _NOQA_RE = re.compile(r"(?<![A-Za-z0-9_])noqa(?![A-Za-z0-9_])(?P<rest>[^)]*)", re.IGNORECASE)
 _ZERO_RE = re.compile(r"^\s*#\s*zero\s*:\s*(?P<body>.*?)\s*$", re.IGNORECASE)

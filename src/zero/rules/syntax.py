@@ -1,20 +1,22 @@
-"""S rules: how the controller reads a line, before any parameter meaning."""
+"""S rules: how the controller reads a line, before any parameter meaning.
+
+The tokenizer records what it sees (:class:`~zero.lists.model.Problem`); the check
+below gives each kind of problem its rule and its message.
+"""
 
 from __future__ import annotations
 
 from collections.abc import Callable, Iterator
 
-from zero.diagnostics import Diagnostic, Edit, Fix, Severity, Span
-from zero.model import CommentStyle, Problem, ValueKind
-from zero.rules.base import Context, Rule, rule
+from zero.diagnostics import Diagnostic, Edit, Fix, Span
+from zero.lists.model import CommentStyle, Problem, ValueKind
+from zero.rules.base import INFO, Context, E, Family, W
 
-E, W, INFO = Severity.ERROR, Severity.WARNING, Severity.INFO
+FAMILY: Family[Context] = Family("S", "syntax", "list")
 
-RULES: dict[str, Rule] = {
-    r.code: r
-    for r in (
-        rule("S001", "malformed-line", E, "A line that is neither an entry, a comment nor blank",
-             """
+MALFORMED_LINE = FAMILY.rule(
+    "S001", "malformed-line", E, "A line that is neither an entry, a comment nor blank",
+    """
 What it checks: the first word of a line must be a key made of members and indices
 (`name[n].name`); a line like `*****` or `np_grp[1.achse` is not.
 
@@ -23,9 +25,10 @@ parameter and does not take it over; whatever it was meant to set keeps its defa
 
 Example: `*****  decorative line`
 Fix: turn it into a comment (`# *****`) or correct the key.
-"""),
-        rule("S002", "missing-value", E, "A key without a value",
-             """
+""")
+MISSING_VALUE = FAMILY.rule(
+    "S002", "missing-value", E, "A key without a value",
+    """
 What it checks: every entry needs a value after its key.
 
 Why it matters on the machine: the entry sets nothing; the parameter keeps its
@@ -33,9 +36,10 @@ default value at start-up, which is rarely what the engineer who wrote the key m
 
 Example: `kenngr.swe_pos`
 Fix: write the value (`kenngr.swe_pos 15000000`) or delete the line.
-"""),
-        rule("S003", "unterminated-quote", E, "A quoted string value without its closing quote",
-             """
+""")
+UNTERMINATED_QUOTE = FAMILY.rule(
+    "S003", "unterminated-quote", E, "A quoted string value without its closing quote",
+    """
 What it checks: a value that starts with `"` must end with `"` on the same line.
 
 Why it matters on the machine: the controller cannot tell where the string ends; the
@@ -43,9 +47,10 @@ entry is faulty and the parameter falls back to its default.
 
 Example: `example[0].name "STRING_WITH_COMMENT( # /*`
 Fix: close the quote: `example[0].name "STRING_WITH_COMMENT( # /*)"`.
-"""),
-        rule("S004", "key-whitespace", E, "Whitespace inside a key",
-             """
+""")
+KEY_WHITESPACE = FAMILY.rule(
+    "S004", "key-whitespace", E, "Whitespace inside a key",
+    """
 What it checks: a key is one word; `np_grp[0].achse[1]. inaktiv 0` (from the ZERO
 manual's own example) has a blank after the dot.
 
@@ -57,9 +62,10 @@ other checks, so that one slip gives one finding.
 
 Example: `np_grp[0].achse[1]. inaktiv 0`
 Fix: remove the blank (safe fix): `np_grp[0].achse[1].inaktiv 0`.
-"""),
-        rule("S005", "hash-no-space", W, "`#` not followed by a space",
-             """
+""")
+HASH_NO_SPACE = FAMILY.rule(
+    "S005", "hash-no-space", W, "`#` not followed by a space",
+    """
 What it checks: a full-line comment is `#` followed by a space (a lone `#` or `#`
 and a tab are accepted too). Vendor lists comment out parameters as `#key value`.
 
@@ -70,21 +76,10 @@ but the warning hides real ones.
 
 Example: `#m_default_outp_ax_name[0]   X`
 Fix: insert a space after `#` (safe fix): `# m_default_outp_ax_name[0]   X`.
-"""),
-        rule("S006", "string-comment", W, "A comment after a string value that does not start with `(`",
-             """
-What it checks: after a value of a STRING parameter only `(` starts a comment; a
-blank, `#` or `/*` does not (the manual's rule). Numeric values may be followed by
-any comment.
-
-Why it matters on the machine: the controller may take the words after the string as
-part of the value, or reject the entry and use the default.
-
-Example: `kopf.log_achs_name  X_Achse  # main axis`
-Fix: start the comment with `(`: `kopf.log_achs_name  X_Achse  ( main axis`.
-"""),
-        rule("S007", "undecodable", E, "Bytes that are not valid in the file's encoding",
-             """
+""")
+UNDECODABLE = FAMILY.rule(
+    "S007", "undecodable", E, "Bytes that are not valid in the file's encoding",
+    """
 What it checks: a list is UTF-8 (with or without BOM) or Windows-1252/Latin-1 as a
 whole. A byte that is invalid UTF-8 in a file that also holds UTF-8 text means the
 file mixes encodings (typically an editor saved a Latin-1 `µ` into a UTF-8 file).
@@ -94,9 +89,10 @@ controller reads something other than what the engineer sees in the editor.
 
 Example: a UTF-8 file with `ä` in one comment and byte 0xB5 in another.
 Fix: re-save the file in one encoding.
-"""),
-        rule("S008", "nul-byte", E, "A NUL byte in the file",
-             """
+""")
+NUL_BYTE = FAMILY.rule(
+    "S008", "nul-byte", E, "A NUL byte in the file",
+    """
 What it checks: byte 0x00 anywhere in a list.
 
 Why it matters on the machine: the controller reads lines as C strings; a NUL ends
@@ -104,9 +100,10 @@ the line early, so the rest of it (often the value) is lost. Files with NUL byte
 usually corrupt copies or UTF-16 files.
 
 Fix: remove the NUL bytes, or convert a UTF-16 file to UTF-8.
-"""),
-        rule("S009", "after-end", W, "Entries after the `Ende` line",
-             """
+""")
+AFTER_END = FAMILY.rule(
+    "S009", "after-end", W, "Entries after the `Ende` line",
+    """
 What it checks: nothing but comments and blank lines may follow the `Ende` line.
 
 Why it matters on the machine: the controller stops reading at `Ende`; every entry
@@ -114,9 +111,10 @@ after it is silently ignored, however important.
 
 Example: `Ende` followed by `kenngr.swe_pos 15000000`
 Fix: move the entries above `Ende`.
-"""),
-        rule("S010", "control-character", W, "A control character in a line",
-             """
+""")
+CONTROL_CHARACTER = FAMILY.rule(
+    "S010", "control-character", W, "A control character in a line",
+    """
 What it checks: characters below 0x20 other than tab, and DEL; a carriage return
 that is not part of a CRLF line ending.
 
@@ -124,18 +122,17 @@ Why it matters on the machine: invisible in most editors, but part of the key or
 value the controller reads, which then matches nothing.
 
 Fix: delete the character.
-"""),
-        rule("S011", "mixed-line-endings", INFO, "LF and CRLF line endings in one file",
-             """
+""")
+MIXED_LINE_ENDINGS = FAMILY.rule(
+    "S011", "mixed-line-endings", INFO, "LF and CRLF line endings in one file",
+    """
 What it checks: whether a file uses one kind of line ending throughout.
 
 Why it matters on the machine: the controller reads both, but mixed endings are a
 sign of a list assembled from several sources, and they make diffs noisy.
 
 Fix: convert the file to one line ending (zero keeps what it finds when it rewrites).
-"""),
-    )
-}
+""")
 
 _MESSAGES: dict[str, tuple[str, Callable[[Problem], str]]] = {
     "malformed-line": (
@@ -184,6 +181,8 @@ def _short(text: str, limit: int = 60) -> str:
     return text if len(text) <= limit else text[: limit - 1] + "…"
 
 
+@FAMILY.check(MALFORMED_LINE, MISSING_VALUE, UNTERMINATED_QUOTE, KEY_WHITESPACE, HASH_NO_SPACE,
+              UNDECODABLE, NUL_BYTE, AFTER_END, CONTROL_CHARACTER, MIXED_LINE_ENDINGS)
 def check_problems(ctx: Context) -> Iterator[Diagnostic]:
     """Findings for the faults the tokenizer recorded."""
     for p in ctx.doc.problems:
@@ -213,6 +212,22 @@ def _hash_no_space(ctx: Context, p: Problem) -> Diagnostic:
     return ctx.report("S005", span, msg, fix=fix, hint=fix.title)
 
 
+STRING_COMMENT = FAMILY.rule(
+    "S006", "string-comment", W, "A comment after a string value that does not start with `(`",
+    """
+What it checks: after a value of a STRING parameter only `(` starts a comment; a
+blank, `#` or `/*` does not (the manual's rule). Numeric values may be followed by
+any comment.
+
+Why it matters on the machine: the controller may take the words after the string as
+part of the value, or reject the entry and use the default.
+
+Example: `kopf.log_achs_name  X_Achse  # main axis`
+Fix: start the comment with `(`: `kopf.log_achs_name  X_Achse  ( main axis`.
+""")
+
+
+@FAMILY.check(STRING_COMMENT)
 def check_string_comments(ctx: Context) -> Iterator[Diagnostic]:
     """S006: after a STRING value only `(` opens a comment."""
     for res in ctx.resolved:
@@ -238,6 +253,3 @@ def check_string_comments(ctx: Context) -> Iterator[Diagnostic]:
             fix=fix,
             hint=fix.title,
         )
-
-
-CHECKS = (check_problems, check_string_comments)

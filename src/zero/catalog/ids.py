@@ -1,0 +1,81 @@
+"""Well-known parameter IDs, units and G codes: the one place where code names them.
+
+Rules and the machine model read most parameters generically through the registry;
+the few they reason about by meaning (soft limits, axis numbers, zero offsets) are
+named here once. Lengths and angles in the lists are integers in 0.1 µm and
+0.0001°: :data:`LENGTH_UNIT` of them make one millimetre or one degree.
+"""
+
+from __future__ import annotations
+
+Number = int | float
+
+# Lengths and angles: this many list units per mm or degree.
+LENGTH_UNIT = 10_000
+FULL_TURN = 360 * LENGTH_UNIT  # one revolution of a rotary axis, in 0.0001°
+
+# Axis list (P-AXIS-…)
+AXIS_NR = "P-AXIS-00016"  # kopf.achs_nr: the logical axis number
+AXIS_TYPE = "P-AXIS-00018"  # kenngr.achs_typ: 1 linear, 2 rotary, 4 spindle
+AXIS_NAME = "P-AXIS-00297"  # kopf.log_achs_name
+OFFSET_NEG, OFFSET_POS = "P-AXIS-00137", "P-AXIS-00138"  # manual-mode offset limits
+SWE_NEG, SWE_POS, SWE_TOL = "P-AXIS-00177", "P-AXIS-00178", "P-AXIS-00179"  # soft limits, tolerance
+SWE_BEHAVIOUR = "P-AXIS-00554"  # kenngr.swe_behaviour
+SWE_CHECK = "P-AXIS-00705"  # kenngr.swe_check
+SOFT_LIMITS = (SWE_NEG, SWE_POS)
+ROTARY_TYPES = (2, 4)  # kenngr.achs_typ of a rotary axis and of a spindle
+AXIS_UNITS = {1: "mm", 2: "°", 4: "°"}  # kenngr.achs_typ → the unit of its lengths
+
+# Channel list (P-CHAN-…)
+CH_COUNT = "P-CHAN-00003"  # gruppe[0].achs_anzahl
+CH_NAME = "P-CHAN-00006"  # gruppe[0].achse[j].bezeichnung
+CH_LOG_NR = "P-CHAN-00035"  # gruppe[0].achse[j].log_achs_nr
+RANGE_CHECK_PROG_LIMITS = "P-CHAN-00498"  # range_check_prog_soft_limits
+
+# Zero-offset list (P-ZERO-…)
+G53_AVAILABLE = "P-ZERO-00001"  # g53_verfuegbar
+DEFAULT_INDEX = "P-ZERO-00002"  # default_index
+OFFSET = "P-ZERO-00003"  # np_grp[i].achse[j].versch
+INACTIVE = "P-ZERO-00004"  # np_grp[i].achse[j].inaktiv
+
+# Tool list (P-TOOL-…)
+TOOL_LENGTH = "P-TOOL-00003"  # wz[t].laenge
+TOOL_AXIS_OFFSET = "P-TOOL-00006"  # wz[t].ax_versatz[j]
+TOOL_LENGTH_AXIS = 2  # the tool length acts along the third channel axis (Z in G17)
+
+# Siemens S5 IP247: positions within ±99.999999 m, in 0.1 µm.
+IP247_LIMIT = 999_999_990
+
+
+def in_units(value: Number) -> float:
+    """A length or angle in list units as mm or degrees."""
+    return value / LENGTH_UNIT
+
+
+def fixed(value: Number, unit: str = "") -> str:
+    """A length or angle with four decimals: ``-1000.0000 mm``."""
+    text = f"{value / LENGTH_UNIT:.4f}"
+    return f"{text} {unit}" if unit else text
+
+
+def length_text(value: Number, rotary: bool | None = None) -> str:
+    """A length or angle, trailing zeros dropped (both units when the axis type is unknown)."""
+    shown = f"{value / LENGTH_UNIT:.4f}".rstrip("0").rstrip(".")
+    if rotary is None:
+        return f"{shown} mm (or °)"
+    return f"{shown} °" if rotary else f"{shown} mm"
+
+
+def g_code(group: int) -> str:
+    """The G code that selects zero-offset group ``group``: G53, G54..G59, else G159=n."""
+    if group == 0:
+        return "G53"
+    if 1 <= group <= 6:
+        return f"G{53 + group}"
+    return f"G159={group}"
+
+
+def g_code_with_index(group: int) -> str:
+    """The G code with its G159 form where they differ: ``G54 (G159=1)``, ``G159=7``."""
+    code = g_code(group)
+    return code if code.startswith("G159") else f"{code} (G159={group})"

@@ -1,0 +1,98 @@
+"""Read the vendor's machine-readable parameter description (``CncParaDesc.xml``).
+
+Produces plain rows (dicts) of facts: ID, list kind, key pattern, type,
+default, range, array sizes, symbols, units, restart flag. The committed
+registry table (``data/registry.json``) is generated from these rows by
+``tools/gen_registry.py``; ``zero --param-desc PATH`` builds the same rows from
+a user's own file at run time, and then also carries the vendor's English
+descriptions (``with_text=True``), which are never committed to this project.
+"""
+
+from __future__ import annotations
+
+import xml.etree.ElementTree as ET
+from pathlib import Path
+from typing import Any
+
+from zero.catalog.ranges import parse_range
+from zero.errors import ZeroError
+
+_NS = "{https://www.isg-stuttgart.de/kernel/CncParaDesc}"
+
+
+def _text(el: ET.Element | None, lang: str = "en") -> str | None:
+    if el is None:
+        return None
+    texts = el.findall(f"{_NS}Text")
+    for t in texts:
+        if t.get("Language") == lang and t.text:
+            return t.text.strip()
+    return texts[0].text.strip() if texts and texts[0].text else None
+
+
+def _find(p: ET.Element, tag: str) -> str | None:
+    v = p.findtext(f"{_NS}{tag}")
+    return v.strip() if v is not None else None
+
+
+def read_param_desc(path: str | Path, *, with_text: bool = False) -> list[dict[str, Any]]:
+    """Parse the XML into registry rows; :class:`~zero.errors.ZeroError` on bad input."""
+    try:
+        root = ET.parse(path).getroot()
+    except (OSError, ET.ParseError) as exc:
+        raise ZeroError(f"cannot read parameter description {path}: {exc}") from None
+    if root.tag != f"{_NS}Parameters":
+        raise ZeroError(f"not a CncParaDesc file (root element {root.tag!r})", str(path))
+
+    units: dict[str, str] = {}
+    for u in root.findall(f"{_NS}Unit"):
+        uid = _find(u, "Id")
+        ascii_text = None
+        for t in u.findall(f"{_NS}TextASCII"):
+            if t.get("Language") == "en":
+                ascii_text = t.text
+        if uid:
+            units[uid] = (ascii_text or uid).strip()
+
+    rows: list[dict[str, Any]] = []
+    for p in root.findall(f"{_NS}Parameter"):
+        pid = _find(p, "Id")
+        if not pid or not pid.startswith("P-") or len(pid) != 12:
+            continue
+        typ = _find(p, "Type") or "STRING"
+        range_text = _text(p.find(f"{_NS}Range"))
+        parsed = parse_range(range_text, pid) if range_text else None
+        dims = [int(a.text or 0) for a in p.findall(f"{_NS}MaxNumber/{_NS}ArrayIndex")]
+        symbols = []
+        for s in p.findall(f"{_NS}SymbolValues/{_NS}SymbolValue"):
+            name = _find(s, "Name")
+            value = _find(s, "Value")
+            if name:
+                symbols.append([name, int(value) if value not in (None, "") else None])
+        max_len = _find(p, "MaxStringLength")
+        row: dict[str, Any] = {
+            "id": pid,
+            "kind": pid[2:6],
+            "key": _find(p, "Name") or None,
+            "type": typ,
+            "default": _find(p, "DefaultValue"),
+            "range": range_text if parsed is not None else None,
+            "dims": dims,
+            "symbols": symbols,
+            "units": [units.get(u.text or "", u.text or "") for u in p.findall(f"{_NS}Units/{_NS}Unit")],
+            "quantity": _find(p, "Quantity"),
+            "max_len": int(max_len) if max_len else None,
+            "restart": _find(p, "ChangeRequiresRestart") == "true",
+            "source": "CncParaDesc.xml",
+        }
+        if with_text:
+            row["vendor_text"] = _text(p.find(f"{_NS}ShortDescription"))
+            row["vendor_long"] = _text(p.find(f"{_NS}LongDescription"))
+            if parsed is None and range_text:
+                row["range_note"] = range_text
+        elif parsed is None and range_text:
+            row["range_prose"] = True
+        rows.append(row)
+    if not rows:
+        raise ZeroError("no parameters found", str(path))
+    return rows

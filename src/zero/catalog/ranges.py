@@ -1,0 +1,371 @@
+"""Formal value ranges of the parameter description, parsed once and evaluated.
+
+The vendor writes ranges as text. Many are formal and can be checked::
+
+    MIN(SGN32) < versch < MAX(SGN32)
+    P-AXIS-00177 < swe_pos < MAX(SGN32)
+    1 ≤ a_emergency ≤ 2*P-AXIS-00008
+    0x00000001 - 0x10000000
+    0 ... 96 (number of zero offset groups: 97, application-specific)
+    0/1
+    -1 … MAX(SGN16)
+    MAX(UNS32) ≥ eigenfrequenz_n ≥ 1
+
+The rest is prose, which :func:`parse_range` rejects (returns ``None``) so the
+registry keeps it as text. References to other parameters (``P-AXIS-00008``)
+are resolved at evaluation time through a callback, which the linter answers
+from the other values of the same list (or the referenced parameter's default).
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Callable
+from dataclasses import dataclass
+
+TYPE_LIMITS: dict[str, tuple[float, float]] = {
+    "BOOLEAN": (0, 1),
+    "CHAR": (-128, 255),
+    "SGN08": (-(2**7), 2**7 - 1),
+    "UNS08": (0, 2**8 - 1),
+    "SGN16": (-(2**15), 2**15 - 1),
+    "UNS16": (0, 2**16 - 1),
+    "SGN32": (-(2**31), 2**31 - 1),
+    "UNS32": (0, 2**32 - 1),
+    "SGN64": (-(2**63), 2**63 - 1),
+    "UNS64": (0, 2**64 - 1),
+    "ADDRESS": (0, 2**64 - 1),
+    "REAL64": (-1.7976931348623157e308, 1.7976931348623157e308),
+}
+
+Number = int | float
+# resolve(param_id, element_index_or_None) -> the value, or None when unknown
+Resolver = Callable[[str, "int | None"], "Number | None"]
+
+
+@dataclass(frozen=True, slots=True)
+class Num:
+    value: Number
+
+    def eval(self, resolve: Resolver) -> Number | None:
+        return self.value
+
+    def __str__(self) -> str:
+        return str(self.value)
+
+
+@dataclass(frozen=True, slots=True)
+class Limit:
+    """``MIN(TYPE)`` or ``MAX(TYPE)``."""
+
+    which: str
+    type: str
+
+    def eval(self, resolve: Resolver) -> Number | None:
+        lim = TYPE_LIMITS.get(self.type)
+        if lim is None:
+            return None
+        return lim[0] if self.which == "MIN" else lim[1]
+
+    def __str__(self) -> str:
+        return f"{self.which}({self.type})"
+
+
+@dataclass(frozen=True, slots=True)
+class Ref:
+    """Another parameter's value: ``P-AXIS-00008`` or ``P-AXIS-00209.1``."""
+
+    id: str
+    index: int | None = None
+
+    def eval(self, resolve: Resolver) -> Number | None:
+        return resolve(self.id, self.index)
+
+    def __str__(self) -> str:
+        return self.id if self.index is None else f"{self.id}.{self.index}"
+
+
+@dataclass(frozen=True, slots=True)
+class BinOp:
+    op: str
+    left: Expr
+    right: Expr
+
+    def eval(self, resolve: Resolver) -> Number | None:
+        a = self.left.eval(resolve)
+        b = self.right.eval(resolve)
+        if a is None or b is None:
+            return None
+        if self.op == "*":
+            return a * b
+        if self.op == "+":
+            return a + b
+        return a - b
+
+    def __str__(self) -> str:
+        return f"{self.left}{self.op}{self.right}"
+
+
+@dataclass(frozen=True, slots=True)
+class Neg:
+    operand: Expr
+
+    def eval(self, resolve: Resolver) -> Number | None:
+        v = self.operand.eval(resolve)
+        return None if v is None else -v
+
+    def __str__(self) -> str:
+        return f"-{self.operand}"
+
+
+Expr = Num | Limit | Ref | BinOp | Neg
+
+
+@dataclass(frozen=True, slots=True)
+class Bounds:
+    """Evaluated limits: ``None`` where a side is open or could not be resolved."""
+
+    low: Number | None
+    low_strict: bool
+    high: Number | None
+    high_strict: bool
+
+    def contains(self, x: Number) -> bool:
+        if self.low is not None and (x <= self.low if self.low_strict else x < self.low):
+            return False
+        return not (
+            self.high is not None and (x >= self.high if self.high_strict else x > self.high)
+        )
+
+
+@dataclass(frozen=True, slots=True)
+class Range:
+    """A parsed range: bounds, or an explicit set of allowed values."""
+
+    low: Expr | None = None
+    low_strict: bool = False
+    high: Expr | None = None
+    high_strict: bool = False
+    allowed: tuple[Number, ...] | None = None
+
+    @property
+    def refs(self) -> list[Ref]:
+        out: list[Ref] = []
+
+        def walk(e: Expr | None) -> None:
+            if isinstance(e, Ref):
+                out.append(e)
+            elif isinstance(e, BinOp):
+                walk(e.left)
+                walk(e.right)
+            elif isinstance(e, Neg):
+                walk(e.operand)
+
+        walk(self.low)
+        walk(self.high)
+        return out
+
+    def evaluate(self, resolve: Resolver) -> Bounds:
+        low = self.low.eval(resolve) if self.low is not None else None
+        high = self.high.eval(resolve) if self.high is not None else None
+        return Bounds(low, self.low_strict, high, self.high_strict)
+
+    def __str__(self) -> str:
+        if self.allowed is not None:
+            return ", ".join(str(a) for a in self.allowed)
+        left = f"{self.low} {'<' if self.low_strict else '≤'} " if self.low is not None else ""
+        right = f" {'<' if self.high_strict else '≤'} {self.high}" if self.high is not None else ""
+        return f"{left}x{right}"
+
+
+_TOKEN_RE = re.compile(
+    r"""\s*(?:
+      (?P<limit>(?:MIN|MAX)\s*\(\s*[A-Z0-9]+\s*\))
+    | (?P<ref>P-[A-Z]{4}-[0-9]{5}(?:\.[0-9]+)?)
+    | (?P<num>0[xX][0-9A-Fa-f]+|[0-9]+(?:\.[0-9]+)?(?:[eE][+-]?[0-9]+)?)
+    | (?P<ident>[A-Za-z_][A-Za-z0-9_.\[\]]*)
+    | (?P<op><=|>=|≤|≥|<|>|…|\.\.\.|\*|\+|-|/|,)
+    )""",
+    re.VERBOSE,
+)
+_UNIT_RE = re.compile(r"°|%")
+_CMP = {"<": ("<", True), "≤": ("<", False), "<=": ("<", False),
+        ">": (">", True), "≥": (">", False), ">=": (">", False)}
+
+
+def _tokenize(text: str) -> list[tuple[str, str]] | None:
+    text = _UNIT_RE.sub("", text).strip()
+    # A note in parentheses after the formal part: `0 ... 96 (number of groups: 97)`.
+    cut = re.sub(r"(?:MIN|MAX)\s*\(\s*[A-Z0-9]+\s*\)", lambda m: "#" * len(m.group()), text)
+    if "(" in cut:
+        text = text[: cut.index("(")].rstrip()
+    tokens: list[tuple[str, str]] = []
+    pos = 0
+    while pos < len(text):
+        m = _TOKEN_RE.match(text, pos)
+        if m is None or m.end() == pos:
+            if text[pos:].strip() == "":
+                break
+            return None
+        kind = m.lastgroup
+        assert kind is not None
+        tokens.append((kind, m.group(kind)))
+        pos = m.end()
+    return tokens
+
+
+class _Parser:
+    def __init__(self, tokens: list[tuple[str, str]], own_id: str) -> None:
+        self.tokens = tokens
+        self.pos = 0
+        self.own_id = own_id
+
+    def peek(self) -> tuple[str, str] | None:
+        return self.tokens[self.pos] if self.pos < len(self.tokens) else None
+
+    def take(self) -> tuple[str, str]:
+        tok = self.tokens[self.pos]
+        self.pos += 1
+        return tok
+
+    def expr(self) -> Expr | str | None:
+        """Sum of products; returns ``"x"`` for the variable, ``None`` on error."""
+        # Binary minus is not arithmetic here: `1 - 12` is a span, see parse_range.
+        return self._chain(self.term, "+")
+
+    def term(self) -> Expr | str | None:
+        return self._chain(self.atom, "*")
+
+    def _chain(self, operand: Callable[[], Expr | str | None], op: str) -> Expr | str | None:
+        """``operand (op operand)*``, left-associative; the variable may not take part."""
+        left = operand()
+        while left is not None and self.peek() == ("op", op):
+            self.take()
+            right = operand()
+            if right is None or isinstance(left, str) or isinstance(right, str):
+                return None
+            left = BinOp(op, left, right)
+        return left
+
+    def atom(self) -> Expr | str | None:
+        t = self.peek()
+        if t is None:
+            return None
+        kind, text = t
+        if kind == "op" and text == "-":
+            self.take()
+            inner = self.atom()
+            if inner is None or isinstance(inner, str):
+                return None
+            if isinstance(inner, Num):
+                return Num(-inner.value)
+            return Neg(inner)
+        self.take()
+        if kind == "num":
+            if text.lower().startswith("0x"):
+                return Num(int(text, 16))
+            if "." in text or "e" in text.lower():
+                value = float(text)
+                return Num(int(value) if value.is_integer() else value)
+            return Num(int(text))
+        if kind == "limit":
+            which = text[:3]
+            typ = text[text.index("(") + 1 : text.index(")")].strip()
+            return Limit(which, typ) if typ in TYPE_LIMITS else None
+        if kind == "ref":
+            if text == self.own_id:
+                return "x"
+            if "." in text:
+                ident, idx = text.split(".")
+                return Ref(ident, int(idx))
+            return Ref(text)
+        if kind == "ident":
+            return "x"
+        return None
+
+
+def parse_range(text: str | None, own_id: str = "") -> Range | None:
+    """Parse a formal range; ``None`` for prose or anything not understood."""
+    if not text:
+        return None
+    tokens = _tokenize(text.replace("\r", " ").replace("\n", " "))
+    if not tokens:
+        return None
+    ops = [t for t in tokens if t[0] == "op"]
+    # An explicit set: `0/1`, `-1, 0, 1`.
+    if any(t[1] in ("/", ",") for t in ops):
+        values: list[Number] = []
+        sign = 1
+        for kind, tok in tokens:
+            if kind == "op" and tok == "-":
+                sign = -1
+            elif kind == "num":
+                values.append(sign * (int(tok, 16) if tok.lower().startswith("0x") else int(tok))
+                              if "." not in tok else sign * float(tok))
+                sign = 1
+            elif not (kind == "op" and tok in ("/", ",")):
+                return None
+        return Range(allowed=tuple(values)) if len(values) >= 2 else None
+
+    # The variable is the one identifier (or the parameter's own ID); a second,
+    # different identifier (`swe_neg < pos_refpkt < swe_pos`) is prose to us.
+    if len({t for k, t in tokens if k == "ident"}) > 1:
+        return None
+    p = _Parser(tokens, own_id)
+    if tokens[0][0] == "op" and tokens[0][1] in _CMP:
+        first: Expr | str | None = "x"  # `> 0`: the variable is implied
+    else:
+        first = p.expr()
+    if first is None:
+        return None
+    terms: list[Expr | str] = [first]
+    cmps: list[str] = []
+    span_op = False
+    while (t := p.peek()) is not None:
+        if t[0] != "op":
+            return None
+        op = t[1]
+        if op in _CMP:
+            cmps.append(op)
+        elif op in ("…", "...", "-") and not span_op and len(terms) == 1:
+            span_op = True
+            cmps.append("..")
+        else:
+            return None
+        p.take()
+        nxt = p.expr()
+        if nxt is None:
+            return None
+        terms.append(nxt)
+
+    if span_op:
+        if len(terms) != 2 or any(isinstance(x, str) for x in terms):
+            return None
+        lo, hi = terms
+        assert not isinstance(lo, str) and not isinstance(hi, str)
+        return Range(low=lo, high=hi)
+    if "x" not in terms:
+        return None
+    low: Expr | None = None
+    high: Expr | None = None
+    low_strict = high_strict = False
+    for i, op in enumerate(cmps):
+        a, b = terms[i], terms[i + 1]
+        direction, strict = _CMP[op]
+        if a == "x" and not isinstance(b, str):
+            bound, upper = b, direction == "<"
+        elif b == "x" and not isinstance(a, str):
+            bound, upper = a, direction == ">"
+        else:
+            continue
+        if upper:
+            if high is not None:
+                return None  # two upper bounds: a garbled range
+            high, high_strict = bound, strict
+        else:
+            if low is not None:
+                return None
+            low, low_strict = bound, strict
+    if low is None and high is None:
+        return None
+    return Range(low, low_strict, high, high_strict)

@@ -1,0 +1,312 @@
+"""The parameter registry: one table of facts keyed by parameter ID.
+
+The table is data (``data/registry.json``, generated from the vendor's
+``CncParaDesc.xml`` by ``tools/gen_registry.py``) plus ``data/seeds.toml`` (the
+parameters the manuals define, with descriptions in our words). Rules read a
+:class:`ParamSpec` generically; adding a parameter never means adding code.
+
+A :class:`Registry` is data that callers pass in: :func:`load_registry` builds one
+(the built-in table, or a user's ``CncParaDesc.xml``); nothing below the command
+line keeps a process-wide registry.
+"""
+
+from __future__ import annotations
+
+import json
+import tomllib
+from collections import Counter
+from collections.abc import Iterable, Iterator, Mapping
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+from zero.catalog.ranges import Range, parse_range
+
+_DATA = Path(__file__).resolve().parent / "data"
+NO_DEFAULT = ("", "-", "--", "----")  # how the catalogue writes "no default documented"
+BUILTIN_SOURCE = "built-in (CncParaDesc.xml facts + seeds)"
+
+# List kinds: the four letters of the ID, a short name and a file-name hint.
+KINDS: dict[str, tuple[str, str]] = {
+    "AXIS": ("axis", "axis parameter list"),
+    "CHAN": ("channel", "channel parameter list"),
+    "ZERO": ("zero", "zero-offset list"),
+    "TOOL": ("tool", "tool list"),
+    "COMP": ("compensation", "axis compensation list"),
+    "CLMP": ("clamp", "clamping-position offset list"),
+    "MANU": ("manual", "manual-mode list"),
+    "EXTV": ("extvar", "external variables list"),
+    "STUP": ("startup", "start-up list"),
+    "RTCF": ("rtconf", "real-time configuration list"),
+    "SECO": ("sercos", "SERCOS list"),
+    "HWCF": ("hardware", "hardware configuration list"),
+    "VOLC": ("volcomp", "volumetric compensation list"),
+    "CMLD": ("cmld", "CMLD list"),
+}
+_NAME_TO_KIND = {name: code for code, (name, _) in KINDS.items()}
+# File-name fragments used only to break a tie in content detection.
+_FILE_HINTS = (
+    ("nullp", "ZERO"), ("achskw", "COMP"), ("achs", "AXIS"), ("mds", "AXIS"),
+    ("sda", "CHAN"), ("werkz", "TOOL"), ("tool", "TOOL"), ("hand", "MANU"),
+    ("hochlauf", "STUP"), ("startup", "STUP"), ("rtconf", "RTCF"), ("ext_var", "EXTV"),
+    ("pzv", "CLMP"), ("zero", "ZERO"),
+)
+
+INTEGER_TYPES = frozenset(
+    {"BOOLEAN", "SGN08", "UNS08", "SGN16", "UNS16", "SGN32", "UNS32", "SGN64", "UNS64",
+     "ADDRESS", "CHAR"}
+)
+
+
+def kind_from_name(text: str) -> str | None:
+    """``"zero"`` or ``"ZERO"`` → ``"ZERO"``; ``None`` when unknown."""
+    t = text.strip()
+    if t.upper() in KINDS:
+        return t.upper()
+    return _NAME_TO_KIND.get(t.lower())
+
+
+@dataclass(slots=True)
+class ParamSpec:
+    """Everything zero knows about one parameter."""
+
+    id: str
+    kind: str
+    key: str | None
+    type: str
+    default: str | None = None
+    range_text: str | None = None
+    range_note: str | None = None
+    dims: tuple[int, ...] = ()
+    symbols: tuple[tuple[str, int | None], ...] = ()
+    units: tuple[str, ...] = ()
+    quantity: str | None = None
+    max_len: int | None = None
+    restart: bool = False
+    description: str | None = None
+    source: str = "CncParaDesc.xml"
+    index_base: int = 0
+
+    @property
+    def symbol_names(self) -> frozenset[str]:
+        return frozenset(s for s, _ in self.symbols)
+
+    def symbol_value(self, name: str) -> int | None:
+        for s, v in self.symbols:
+            if s == name:
+                return v
+        return None
+
+    @property
+    def is_length(self) -> bool:
+        """Lengths/angles in 0.1 µm / 0.0001° (the zero-offset and soft-limit units)."""
+        return "0.1um" in self.units
+
+    @property
+    def default_display(self) -> str:
+        """The default as the controller would write it, e.g. ``0`` for ``FALSE``."""
+        d = (self.default or "").strip()
+        if d in NO_DEFAULT:
+            return "(none documented)"
+        v = self.symbol_value(d)
+        if v is not None and self.type != "STRING":
+            return f"{v} ({d})"
+        return d
+
+
+class SpecTable(Mapping[str, "ParamSpec"]):
+    """ID → :class:`ParamSpec`, each built from its table row on first use.
+
+    A lint of one list touches a few hundred of the 1766 parameters; building only
+    those keeps start-up short. Iterating builds them all.
+    """
+
+    def __init__(self, rows: dict[str, dict[str, Any]], index_base: dict[str, int]) -> None:
+        self._rows = rows
+        self._index_base = index_base
+        self._built: dict[str, ParamSpec] = {}
+
+    def __getitem__(self, param_id: str) -> ParamSpec:
+        spec = self._built.get(param_id)
+        if spec is None:
+            spec = self._built[param_id] = _spec_from_row(self._rows[param_id], self._index_base)
+        return spec
+
+    def __contains__(self, param_id: object) -> bool:
+        return param_id in self._rows
+
+    def __iter__(self) -> Iterator[str]:
+        return iter(self._rows)
+
+    def __len__(self) -> int:
+        return len(self._rows)
+
+    def keys_by_kind(self) -> Iterator[tuple[str, str, str]]:
+        """(id, kind, key) of every parameter that has a key, without building specs."""
+        for pid, row in self._rows.items():
+            if row.get("key"):
+                yield pid, row["kind"], row["key"]
+
+
+@dataclass(slots=True)
+class Registry:
+    """Lookup by ID and by concrete key, per list kind."""
+
+    specs: Mapping[str, ParamSpec]
+    source: str = "built-in"
+    _by_key: dict[tuple[str, str], str] = field(default_factory=dict)  # (kind, key) → ID
+    _kinds_of: dict[str, list[str]] = field(default_factory=dict)
+    _ranges: dict[str, Range | None] = field(default_factory=dict)
+    aliases: dict[tuple[str, str], str] = field(default_factory=dict)
+    _suggestions: dict[tuple[str, str | None, int], list[str]] = field(default_factory=dict)
+
+    def __post_init__(self) -> None:
+        if isinstance(self.specs, SpecTable):
+            triples: Iterable[tuple[str, str, str]] = self.specs.keys_by_kind()
+        else:
+            triples = ((s.id, s.kind, s.key) for s in self.specs.values() if s.key)
+        for pid, kind, key in triples:
+            if (kind, key) not in self._by_key:
+                self._by_key[(kind, key)] = pid
+            self._kinds_of.setdefault(key, []).append(kind)
+
+    def __len__(self) -> int:
+        return len(self.specs)
+
+    def get(self, param_id: str) -> ParamSpec | None:
+        return self.specs.get(param_id)
+
+    def by_pattern(self, pattern: str, kind: str | None) -> ParamSpec | None:
+        """The spec for a key pattern (``np_grp[].achse[].versch``) in a list kind."""
+        if kind is not None:
+            pid = self._by_key.get((kind, pattern))
+            return self.specs[pid] if pid is not None else None
+        kinds = self._kinds_of.get(pattern)
+        return self.specs[self._by_key[(kinds[0], pattern)]] if kinds else None
+
+    def alias(self, pattern: str, kind: str | None) -> ParamSpec | None:
+        """The documented parameter an undocumented spelling stands for, if known."""
+        for (k, p), target in self.aliases.items():
+            if p == pattern and (kind is None or k == kind):
+                pid = self._by_key.get((k, target))
+                return self.specs[pid] if pid is not None else None
+        return None
+
+    def kinds_of(self, pattern: str) -> list[str]:
+        return self._kinds_of.get(pattern, [])
+
+    def range_of(self, spec: ParamSpec) -> Range | None:
+        """The parsed formal range of a spec (parsed once, cached)."""
+        try:
+            return self._ranges[spec.id]
+        except KeyError:
+            rng = parse_range(spec.range_text, spec.id) if spec.range_text else None
+            self._ranges[spec.id] = rng
+            return rng
+
+    def detect_kind(self, patterns: Iterable[str], path: str = "") -> str | None:
+        """The list kind whose keys match most of ``patterns``; file name breaks ties."""
+        votes: Counter[str] = Counter()
+        for p in patterns:
+            for k in self._kinds_of.get(p, ()):
+                votes[k] += 1
+        name = Path(path).name.lower()
+        hint = next((k for frag, k in _FILE_HINTS if frag in name), None)
+        if not votes:
+            return hint
+        best = max(votes.values())
+        leaders = [k for k, v in votes.items() if v == best]
+        if hint in leaders:
+            return hint
+        return sorted(leaders)[0]
+
+    def suggest(self, pattern: str, kind: str | None, n: int = 1) -> list[str]:
+        """Known key patterns close to an unknown one (did-you-mean), memoised per pattern."""
+        memo = self._suggestions.get((pattern, kind, n))
+        if memo is None:
+            memo = self._suggest(pattern, kind, n)
+            if len(self._suggestions) < 10_000:
+                self._suggestions[(pattern, kind, n)] = memo
+        return list(memo)
+
+    def _suggest(self, pattern: str, kind: str | None, n: int) -> list[str]:
+        pool = [k for (kd, k) in self._by_key if kind is None or kd == kind]
+        import difflib  # start-up: only when a key is unknown
+
+        out = difflib.get_close_matches(pattern, pool, n=n, cutoff=0.75)
+        if not out:
+            # A missing or extra member level: `kenngr.homing_type` vs `kenngr.homing.homing_type`.
+            last = pattern.rsplit(".", 1)[-1]
+            first = pattern.split(".", 1)[0]
+            cands = [k for k in pool if k.rsplit(".", 1)[-1] == last and k.split(".", 1)[0] == first]
+            out = sorted(cands, key=len)[:n]
+        return out
+
+
+def _spec_from_row(row: dict[str, Any], index_base: dict[str, int]) -> ParamSpec:
+    key = row.get("key")
+    base = 0
+    if key:
+        first = key.split("[", 1)[0].split(".", 1)[0]
+        base = index_base.get(f"{row['kind']}:{first}", 0)
+    return ParamSpec(
+        id=row["id"],
+        kind=row["kind"],
+        key=key,
+        type=row.get("type", "STRING"),
+        default=row.get("default"),
+        range_text=row.get("range"),
+        range_note=row.get("range_note"),
+        dims=tuple(row.get("dims", ())),
+        symbols=tuple((s[0], s[1]) for s in row.get("symbols", ())),
+        units=tuple(row.get("units", ())),
+        quantity=row.get("quantity"),
+        max_len=row.get("max_len"),
+        restart=bool(row.get("restart", False)),
+        description=row.get("description") or row.get("vendor_text"),
+        source=row.get("source", "CncParaDesc.xml"),
+        index_base=base,
+    )
+
+
+def _overlay() -> dict[str, Any]:
+    text = (_DATA / "seeds.toml").read_text(encoding="utf-8")
+    return tomllib.loads(text)
+
+
+def build_registry(rows: list[dict[str, Any]], source: str) -> Registry:
+    """Combine table rows with the seed overlay into a :class:`Registry`."""
+    overlay = _overlay()
+    by_id = {r["id"]: dict(r) for r in rows}
+    for pid, extra in overlay.get("params", {}).items():
+        row = by_id.setdefault(pid, {"id": pid, "kind": pid[2:6], "type": "STRING"})
+        if "description" in extra and row.get("vendor_text"):
+            row["vendor_text"] = None
+        row.update(extra)
+        row.pop("range_note", None) if "range" in extra else None
+    index_base = overlay.get("index_base", {})
+    specs = SpecTable(by_id, index_base)
+    aliases = {}
+    for name, target in overlay.get("aliases", {}).items():
+        kind, _, pattern = name.partition(":")
+        aliases[(kind, pattern)] = target
+    return Registry(specs, source, aliases=aliases)
+
+
+def load_table() -> list[dict[str, Any]]:
+    """The committed table rows (generated facts, no vendor texts)."""
+    text = (_DATA / "registry.json").read_text(encoding="utf-8")
+    data = json.loads(text)
+    rows: list[dict[str, Any]] = data["params"]
+    return rows
+
+
+def load_registry(param_desc: str | Path | None = None) -> Registry:
+    """A new registry: the built-in table, or one built from a user's ``CncParaDesc.xml``
+    (:class:`~zero.errors.ZeroError` when that file cannot be read)."""
+    if param_desc is None:
+        return build_registry(load_table(), BUILTIN_SOURCE)
+    from zero.catalog.paramdesc import read_param_desc  # start-up: XML parsing only when asked
+
+    rows = read_param_desc(param_desc, with_text=True)
+    return build_registry(rows, str(param_desc))

@@ -1,0 +1,237 @@
+"""Values as the controller reads them: one entry for its parameter, and a whole list.
+
+:func:`read_value` interprets an entry's text for its parameter's type, symbols and
+length, and says why the controller would reject it (``Value.problem``).
+:class:`ListValues` binds the entries of one list to their parameters and answers
+"which value does the controller use for this parameter": the list's (the later entry
+wins), else the default, following parameter references. The rules, the machine model
+and ``zero diff`` all read values through this module.
+"""
+
+from __future__ import annotations
+
+from dataclasses import dataclass, field
+from typing import TypeVar
+
+from zero.catalog.ranges import TYPE_LIMITS, Number
+from zero.catalog.registry import INTEGER_TYPES, NO_DEFAULT, ParamSpec, Registry
+from zero.lists.model import Document, Entry, ValueKind
+
+__all__ = ["NO_DEFAULT", "ListValues", "Resolved", "Value", "default_number", "parse_int", "read_value"]
+
+
+@dataclass(slots=True)
+class Value:
+    """An entry's value as the controller reads it for its parameter."""
+
+    number: Number | None = None  # the numeric value, when there is one
+    text: str | None = None  # the string value (quotes removed), for STRING
+    ref: tuple[str, int | None] | None = None  # a parameter reference
+    problem: str | None = None  # "type", "overflow", "symbol", "bool", "length": why it is rejected
+    detail: str = ""
+
+
+@dataclass(slots=True)
+class Resolved:
+    """An entry bound to its parameter."""
+
+    entry: Entry
+    spec: ParamSpec
+    value: Value
+    via_alias: bool = False
+
+
+def parse_int(text: str) -> int | None:
+    """A decimal or hexadecimal integer as the controller reads it; ``None`` if it is none."""
+    if text.isdigit() and text.isascii() and len(text) <= 40:
+        return int(text)
+    t = text.strip()
+    sign = -1 if t.startswith("-") else 1
+    body = t.lstrip("+-")
+    try:
+        if body.lower().startswith("0x"):
+            return sign * int(body, 16)
+        if len(body) > 40:
+            return sign * 10**40  # beyond every type: reported as too large
+        return sign * int(body)
+    except ValueError:
+        return None
+
+
+def default_number(spec: ParamSpec, values: ListValues | None = None, depth: int = 0) -> Number | None:
+    """The default as a number (symbols mapped; references followed through ``values``)."""
+    d = (spec.default or "").strip()
+    if not d:
+        return None
+    v = spec.symbol_value(d)
+    if v is not None:
+        return v
+    if d in ("TRUE", "FALSE") and spec.type == "BOOLEAN":
+        return 1 if d == "TRUE" else 0
+    n = parse_int(d)
+    if n is not None:
+        return n
+    if values is not None and d.startswith("P-") and len(d) >= 12:
+        rid, _, ridx = d.partition(".")
+        return values.number_of(rid, (int(ridx),) if ridx.isdigit() else (), depth + 1)
+    try:
+        return float(d)
+    except ValueError:
+        return None
+
+
+def _symbol_number(spec: ParamSpec, word: str) -> tuple[bool, int | None]:
+    """Is ``word`` an allowed symbol (or its number)? And its numeric value."""
+    for name, val in spec.symbols:
+        if name == word:
+            return True, val
+    n = parse_int(word)
+    if n is not None and any(val == n for _, val in spec.symbols):
+        return True, n
+    return False, None
+
+
+def _symbols(spec: ParamSpec, parts: list[str], boolean: bool) -> Value | int | None:
+    """The OR of symbolic parts, or the :class:`Value` that rejects the first bad one."""
+    total: int | None = 0
+    for part in parts:
+        ok, val = _symbol_number(spec, part)
+        if not ok and boolean and part in ("TRUE", "FALSE"):
+            ok, val = True, int(part == "TRUE")
+        if not ok:
+            return Value(problem="bool" if boolean else "symbol", detail=part)
+        total = None if val is None or total is None else total | val
+    return total
+
+
+def read_value(spec: ParamSpec, entry: Entry) -> Value:
+    """Interpret an entry's value for its parameter's type, symbols and length."""
+    kind = entry.value_kind
+    raw = entry.value
+    t = spec.type
+    if kind is ValueKind.REF:
+        rid, _, ridx = raw.partition(".")
+        return Value(ref=(rid, int(ridx) if ridx else None))
+
+    if t == "STRING":
+        if kind is ValueKind.QUOTED:
+            text = raw[1:-1] if len(raw) >= 2 and raw.endswith('"') else raw[1:]
+            text = text.rstrip(" ")
+        else:
+            text = raw
+        if spec.symbols and kind is not ValueKind.QUOTED:
+            parts = [p.strip() for p in text.split("|")] if kind is ValueKind.FLAGS else [text]
+            got = _symbols(spec, parts, False)
+            if isinstance(got, Value):
+                got.text = text
+                return got
+            return Value(number=got, text=text)
+        if spec.max_len is not None and len(text) > spec.max_len:
+            return Value(text=text, problem="length", detail=str(len(text)))
+        return Value(text=text)
+
+    if t in INTEGER_TYPES:
+        if kind in (ValueKind.INT, ValueKind.HEX):
+            n = parse_int(raw)
+            assert n is not None
+            lo, hi = TYPE_LIMITS.get(t, (None, None))
+            if t == "BOOLEAN" and n not in (0, 1):
+                return Value(number=n, problem="bool")
+            if lo is not None and hi is not None and not lo <= n <= hi:
+                return Value(number=n, problem="overflow")
+            return Value(number=n)
+        if kind in (ValueKind.WORD, ValueKind.FLAGS) and (spec.symbols or t == "BOOLEAN"):
+            parts = [p.strip() for p in raw.split("|")] if kind is ValueKind.FLAGS else [raw]
+            got = _symbols(spec, parts, t == "BOOLEAN")
+            return got if isinstance(got, Value) else Value(number=got)
+        return Value(problem="type", detail="integer")
+
+    if t == "REAL64":
+        if kind in (ValueKind.INT, ValueKind.HEX):
+            return Value(number=parse_int(raw))
+        if kind is ValueKind.REAL:
+            try:
+                return Value(number=float(raw))
+            except ValueError:
+                return Value(problem="type", detail="number")
+        if spec.symbols and kind is ValueKind.WORD:
+            ok, val = _symbol_number(spec, raw)
+            return Value(number=val) if ok else Value(problem="symbol", detail=raw)
+        return Value(problem="type", detail="number")
+
+    return Value(text=raw)  # STRUCT and anything undocumented: not checked
+
+
+_V = TypeVar("_V", bound="ListValues")
+
+
+@dataclass(slots=True)
+class ListValues:
+    """The entries of one list bound to their parameters, and the values the controller uses."""
+
+    doc: Document
+    registry: Registry
+    kind: str | None
+    entries: list[Entry] = field(default_factory=list)
+    resolved: list[Resolved] = field(default_factory=list)
+    # param ID -> indices -> the entry that wins (the last one)
+    by_id: dict[str, dict[tuple[int, ...], Resolved]] = field(default_factory=dict)
+
+    @classmethod
+    def of(cls: type[_V], doc: Document, registry: Registry, kind: str | None = None) -> _V:
+        """Bind a document's entries (before ``Ende``); ``kind`` detected when ``None``."""
+        entries = doc.entries
+        if kind is None:
+            kind = registry.detect_kind((e.key.pattern for e in entries if e.key), doc.path)
+        out = cls(doc, registry, kind, entries)
+        for e in entries:
+            if e.key is None:
+                continue
+            via_alias = False
+            spec = registry.by_pattern(e.key.pattern, kind)
+            if spec is None:
+                spec = registry.alias(e.key.pattern, kind)
+                via_alias = spec is not None
+            if spec is None or e.value_kind is None:
+                continue
+            res = Resolved(e, spec, read_value(spec, e), via_alias)
+            out.resolved.append(res)
+            out.by_id.setdefault(spec.id, {})[e.key.indices] = res
+        return out
+
+    def value_of(self, param_id: str, indices: tuple[int, ...] = ()) -> Resolved | None:
+        """The entry that sets ``param_id[indices]`` (the later one wins), if any."""
+        slot = self.by_id.get(param_id)
+        if not slot:
+            return None
+        return slot.get(indices)
+
+    def number_of(self, param_id: str, indices: tuple[int, ...] = (), _depth: int = 0) -> Number | None:
+        """The numeric value the controller will use: the list's, else the default."""
+        spec = self.registry.get(param_id)
+        if spec is None or _depth > 6:
+            return None
+        indices = indices[: len(spec.dims)] if spec.dims else ()
+        if spec.dims and len(indices) < len(spec.dims):
+            indices = indices + (0,) * (len(spec.dims) - len(indices))
+        res = self.value_of(param_id, indices)
+        if res is not None and res.value.problem is None:
+            if res.value.number is not None:
+                return res.value.number
+            if res.value.ref is not None:
+                rid, ridx = res.value.ref
+                return self.number_of(rid, (ridx,) if ridx is not None else (), _depth + 1)
+            return None
+        return default_number(spec, self, _depth)
+
+    def text_of(self, param_id: str, indices: tuple[int, ...] = ()) -> str | None:
+        """The text the controller uses: the list's value (unquoted), else the default."""
+        res = self.value_of(param_id, indices)
+        if res is not None:
+            return res.value.text if res.value.text is not None else res.entry.value
+        spec = self.registry.get(param_id)
+        return spec.default if spec is not None else None
+
+    def entry_of(self, param_id: str, indices: tuple[int, ...] = ()) -> Entry | None:
+        res = self.value_of(param_id, indices)
+        return res.entry if res is not None else None

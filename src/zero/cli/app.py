@@ -1,0 +1,410 @@
+"""The typer command line: one function per command, each a few lines over the engine.
+
+Exit codes come from :mod:`zero.cli.exits`; every command body runs under its guard,
+so a :class:`~zero.errors.ZeroError` is one line on stderr and exit 2, never a traceback.
+``zero lint``'s parameters are generated from the option table in :mod:`zero.cli.options`.
+"""
+
+from __future__ import annotations
+
+import inspect
+import json
+import sys
+from collections.abc import Callable
+from enum import StrEnum
+from pathlib import Path
+from typing import Annotated, Any
+
+import typer
+
+from zero import __version__
+from zero.catalog.registry import Registry, kind_from_name
+from zero.cli import exits
+from zero.cli.options import LINT_OPTIONS, PATHS_HELP, Option
+from zero.cli.run import REGISTRIES, echo, read_stdin, render_lint
+from zero.cli.run import lint as run_lint_command
+from zero.diff import SAME, DiffOptions, show_lines
+from zero.engine.commands import load_side, parse_kind, run_diff, run_format, run_limits
+from zero.engine.config import ConfigFinder
+from zero.engine.convert import check_convert_options, convert_inputs, write_outputs
+from zero.errors import ZeroError
+from zero.files import write_atomic
+from zero.lists.model import parse_key
+from zero.output.docs import param_text, rule_text, rules_overview
+from zero.output.tables import render_diff, render_limits
+from zero.output.text import render_text
+from zero.rules import RULES
+from zero.structured.schema import build_schema
+
+app = typer.Typer(
+    name="zero",
+    help="Lint, diff and convert ISG kernel CNC parameter lists.",
+    add_completion=True,
+    no_args_is_help=True,
+    pretty_exceptions_enable=False,
+)
+
+
+class OutputFormat(StrEnum):
+    text = "text"
+    json = "json"
+
+
+class Format(StrEnum):
+    lis = "lis"
+    yaml = "yaml"
+    toml = "toml"
+    json = "json"
+
+
+class _State:
+    param_desc: Path | None = None
+
+
+state = _State()
+
+
+def _registry() -> Registry:
+    return REGISTRIES(state.param_desc)
+
+
+def _run(command: Callable[[], int]) -> None:
+    """Run a command body under the guard; exit with its code when it is not 0."""
+    code = exits.guard(command)
+    if code:
+        raise typer.Exit(code=code)
+
+
+def _version(value: bool) -> None:
+    if value:
+        typer.echo(f"zero {__version__}")
+        raise typer.Exit()
+
+
+@app.callback()
+def main_callback(
+    version: Annotated[bool, typer.Option("--version", callback=_version, is_eager=True,
+                                          help="Show the version and exit.")] = False,
+    param_desc: Annotated[Path | None, typer.Option(
+        "--param-desc", help="Use this CncParaDesc.xml instead of the built-in table.",
+        envvar="ZERO_PARAM_DESC")] = None,
+) -> None:
+    """zero: lint ISG kernel CNC parameter lists before the machine boots."""
+    state.param_desc = param_desc
+
+
+# ------------------------------------------------------------------------------ lint
+
+
+def _typer_parameter(option: Option) -> inspect.Parameter:
+    """One ``zero lint`` option from the table as a typer parameter."""
+    names = [f"{option.flags[0]}/{option.negative}"] if option.negative else list(option.flags)
+    extra: dict[str, Any] = {}
+    annotation: Any
+    default = option.default
+    if option.kind == "flag":
+        annotation = bool
+    elif option.kind == "multi":
+        annotation = list[str] | None
+    elif option.choices:
+        choices: Any = StrEnum  # the functional form: one enum per option with choices
+        annotation = choices(option.dest.title().replace("_", ""), [(c, c) for c in option.choices])
+        default = annotation(default)
+    elif option.type is int:
+        annotation = int | None
+        extra["min"] = option.minimum
+    else:
+        annotation = option.type | None
+    marker = typer.Option(*names, help=option.help, **extra)
+    return inspect.Parameter(option.dest, inspect.Parameter.KEYWORD_ONLY,
+                             annotation=Annotated[annotation, marker], default=default)
+
+
+def _lint(**params: Any) -> None:
+    """Check list files and report what the controller will do with them."""
+    params["paths"] = params.get("paths") or []
+    params["select"] = params.get("select") or []
+    params["ignore"] = params.get("ignore") or []
+    params = {k: v.value if isinstance(v, StrEnum) else v for k, v in params.items()}
+    _run(lambda: run_lint_command(param_desc=state.param_desc, **params))
+
+
+_paths = inspect.Parameter("paths", inspect.Parameter.POSITIONAL_OR_KEYWORD, default=None,
+                           annotation=Annotated[list[Path] | None, typer.Argument(help=PATHS_HELP)])
+_lint.__signature__ = inspect.Signature(  # type: ignore[attr-defined]
+    [_paths, *(_typer_parameter(o) for o in LINT_OPTIONS)])
+_lint.__annotations__ = {p.name: p.annotation for p in _lint.__signature__.parameters.values()}  # type: ignore[attr-defined]
+app.command("lint")(_lint)
+
+
+# --------------------------------------------------------------------------- convert
+
+
+@app.command()
+def convert(
+    inputs: Annotated[list[str], typer.Argument(
+        help="Files to convert (list, YAML, TOML or JSON); - reads standard input.")],
+    to: Annotated[Format | None, typer.Option(
+        "--to", help="Output format [default: from -o's suffix; yaml for a list, lis otherwise].")] = None,
+    from_: Annotated[Format | None, typer.Option(
+        "--from", help="Input format [default: from the suffix; lis for standard input].")] = None,
+    output: Annotated[str | None, typer.Option(
+        "-o", "--output", help="Output file; - or nothing writes to standard output.")] = None,
+    out_dir: Annotated[Path | None, typer.Option(
+        "--out-dir", help="Write one file per input here (name.yaml, name.lis, ...).")] = None,
+    force: Annotated[bool, typer.Option(help="Replace existing output files.")] = False,
+    kind: Annotated[str | None, typer.Option(help="List kind instead of detecting it.")] = None,
+    check: Annotated[bool, typer.Option(
+        help="Lint the list a YAML/TOML/JSON input makes and report the findings.")] = True,
+    strict: Annotated[bool, typer.Option(
+        help="Refuse (exit 1, nothing written) when that lint finds an error.")] = False,
+) -> None:
+    """Convert lists to YAML/TOML/JSON and back, keeping values, order, comments and layout."""
+
+    def body() -> int:
+        forced = parse_kind(kind)
+        check_convert_options(inputs, output, out_dir)
+        items = convert_inputs(inputs, _registry(), read_stdin, src=from_.value if from_ else None,
+                               to=to.value if to else None, output=output, kind=forced, check=check,
+                               strict=strict)
+        for item in items:
+            if item.error is not None and item.findings is None:
+                sys.stderr.write(f"zero: {item.error}\n")
+                continue
+            for note in item.notes:
+                sys.stderr.write(f"zero: note: {item.name}: {note}\n")
+            if item.findings is not None:
+                render_text([item.findings], sys.stderr, summary=False)
+            if item.error is not None:
+                sys.stderr.write(f"zero: {item.error}\n")
+        if any(item.failed for item in items):
+            return exits.FINDINGS
+        data = write_outputs(items, output, out_dir, force)
+        if data is not None:
+            echo().out_bytes(data)
+        return exits.OK
+
+    _run(body)
+
+
+# ------------------------------------------------------------------------ diff, show
+
+
+@app.command()
+def diff(
+    a: Annotated[str, typer.Argument(help="Old side: list, YAML, TOML or JSON (- for stdin).")],
+    b: Annotated[str | None, typer.Argument(help="New side (omit with --defaults).")] = None,
+    defaults: Annotated[bool, typer.Option(
+        "--defaults", help="Compare A with the registry defaults: what this machine changed.")] = False,
+    strict: Annotated[bool, typer.Option(
+        help="Also show default-vs-absent and values written differently but equal.")] = False,
+    comments: Annotated[bool, typer.Option(help="Comment changes count too.")] = False,
+    output_format: Annotated[OutputFormat, typer.Option(
+        "--output-format", help="text (a table) or json (one object per change).")] = OutputFormat.text,
+    from_: Annotated[Format | None, typer.Option("--from", help="Format of both inputs.")] = None,
+    kind: Annotated[str | None, typer.Option(help="List kind instead of detecting it.")] = None,
+) -> None:
+    """Compare two lists by parameter: added, removed, changed, with mm/° deltas.
+
+    Exit 0 when equal, 1 when different, 2 on error (like diff).
+    """
+
+    def body() -> int:
+        forced = parse_kind(kind)
+        run = run_diff(a, b, _registry(), read_stdin, defaults=defaults,
+                       options=DiffOptions(strict=strict, comments=comments),
+                       fmt=from_.value if from_ else None, kind=forced)
+        if output_format is OutputFormat.json:
+            sys.stdout.write(json.dumps([c.to_json() for c in run.changes], indent=2, ensure_ascii=False) + "\n")
+        elif run.changes:
+            render_diff(run.changes, run.header)
+        return exits.found(any(c.kind != SAME for c in run.changes))
+
+    _run(body)
+
+
+@app.command()
+def show(
+    path: Annotated[str, typer.Argument(help="A list, YAML, TOML or JSON file (- for stdin).")],
+    from_: Annotated[Format | None, typer.Option("--from", help="Input format.")] = None,
+    kind: Annotated[str | None, typer.Option(help="List kind instead of detecting it.")] = None,
+) -> None:
+    """Print a list as the controller reads it: one parameter per line, grouped (for git textconv)."""
+
+    def body() -> int:
+        registry = _registry()
+        side = load_side(path, from_.value if from_ else None, parse_kind(kind), registry, read_stdin)
+        sys.stdout.write("\n".join(show_lines(side, registry)) + "\n")
+        return exits.OK
+
+    _run(body)
+
+
+# ---------------------------------------------------------------------------- schema
+
+
+@app.command()
+def schema(
+    kind: Annotated[str | None, typer.Option(
+        help="Only this list kind (zero, axis, channel, ...); all kinds when omitted.")] = None,
+    output: Annotated[str | None, typer.Option("-o", "--output", help="Write to this file.")] = None,
+    force: Annotated[bool, typer.Option(help="Replace an existing output file.")] = False,
+    allow_unknown: Annotated[bool, typer.Option(
+        help="Admit keys the registry does not know (by default they fail, like R001).")] = False,
+) -> None:
+    """Print a JSON Schema of the structured (YAML/TOML/JSON) form for editors."""
+
+    def body() -> int:
+        text = json.dumps(build_schema(_registry(), parse_kind(kind), strict=not allow_unknown),
+                          indent=2, ensure_ascii=False) + "\n"
+        if output is None or output == "-":
+            sys.stdout.write(text)
+        else:
+            write_atomic(Path(output), text.encode("utf-8"), force)
+        return exits.OK
+
+    _run(body)
+
+
+# ---------------------------------------------------------------------------- limits
+
+
+@app.command()
+def limits(
+    machine: Annotated[Path | None, typer.Option(
+        "--machine", help="The start-up list (hochlauf.lis) [default: [tool.zero.machine] startup].")] = None,
+    output_format: Annotated[OutputFormat, typer.Option(
+        "--output-format", help="text (a table) or json.")] = OutputFormat.text,
+    all_groups: Annotated[bool, typer.Option(
+        "--all-groups", help="All 97 groups, not only G53..G59 and the ones the list sets.")] = False,
+    profile: Annotated[str | None, typer.Option(
+        help="Also apply a rule set: ip247 (Siemens S5: offsets and limits within ±99.999999 m).")] = None,
+) -> None:
+    """Soft limits in the programming coordinate system, per work offset (G53..G59, G159=n) and axis."""
+
+    def body() -> int:
+        run = run_limits(machine, REGISTRIES, all_groups, profile, state.param_desc)
+        if output_format is OutputFormat.json:
+            data: dict[str, object] = {"limits": [r.to_json() for r in run.rows]}
+            if profile:
+                data["violations"] = [{"what": v.what, "value": v.value, "where": v.where} for v in run.violations]
+            sys.stdout.write(json.dumps(data, indent=2, ensure_ascii=False) + "\n")
+        else:
+            render_limits(run.rows, run.violations)
+        return exits.found(bool(run.violations))
+
+    _run(body)
+
+
+# ---------------------------------------------------------------------------- format
+
+
+@app.command("format")
+def format_cmd(
+    paths: Annotated[list[Path], typer.Argument(help="List files or directories.")],
+    check: Annotated[bool, typer.Option("--check", help="Only say which files would change (exit 1).")] = False,
+    diff: Annotated[bool, typer.Option("--diff", help="Show the changes as a unified diff; write nothing.")] = False,
+    config: Annotated[Path | None, typer.Option("--config", help="Use this configuration file.")] = None,
+    isolated: Annotated[bool, typer.Option("--isolated", help="Ignore configuration files.")] = False,
+) -> None:
+    """Rewrite lists in canonical layout (aligned values and comments); keys, values, comments
+    and their order stay."""
+
+    def body() -> int:
+        run = run_format(paths, REGISTRIES, echo(), check, diff, config, isolated, state.param_desc)
+        verb = "would be reformatted" if (check or diff) else "reformatted"
+        sys.stderr.write(f"{run.changed} file{'s' if run.changed != 1 else ''} {verb}, "
+                         f"{run.files - run.changed - run.failed} unchanged"
+                         + (f", {run.failed} not formatted" if run.failed else "") + "\n")
+        return exits.found(bool(run.failed or (run.changed and (check or diff))))
+
+    _run(body)
+
+
+# ------------------------------------------------------------------ config, rule, param
+
+
+@app.command("config")
+def config_cmd(
+    path: Annotated[Path, typer.Argument(help="A list file or directory whose configuration to show.")] = Path("."),
+    show: Annotated[bool, typer.Option("--show", help="Print the effective configuration.")] = True,
+    config: Annotated[Path | None, typer.Option("--config", help="Use this configuration file.")] = None,
+    isolated: Annotated[bool, typer.Option("--isolated", help="Ignore configuration files.")] = False,
+) -> None:
+    """Show the configuration that applies to PATH ([tool.zero], zero.toml, .zero.toml)."""
+
+    def body() -> int:
+        cfg = ConfigFinder(config, isolated).for_path(path)
+        if show:
+            sys.stdout.write(cfg.show())
+        return exits.OK
+
+    _run(body)
+
+
+@app.command("rule")
+def rule_cmd(
+    code: Annotated[str | None, typer.Argument(help="A rule code such as S004.")] = None,
+    all_: Annotated[bool, typer.Option("--all", help="Explain every rule.")] = False,
+) -> None:
+    """Explain a rule: what it checks, why it matters on the machine, and the fix."""
+
+    def body() -> int:
+        if all_:
+            sys.stdout.write("\n".join(rule_text(c) for c in RULES) + "\n")
+        elif code is None:
+            sys.stdout.write(rules_overview())
+        elif code.upper() not in RULES:
+            raise ZeroError(f"unknown rule {code!r} (see `zero rule` for the list)")
+        else:
+            sys.stdout.write(rule_text(code.upper()))
+        return exits.OK
+
+    _run(body)
+
+
+@app.command()
+def param(
+    name: Annotated[str, typer.Argument(help="A parameter ID (P-AXIS-00178) or key (kenngr.swe_pos).")],
+    kind: Annotated[str | None, typer.Option(help="List kind, where a key exists in several.")] = None,
+) -> None:
+    """Show what zero knows about a parameter: type, range, default, unit, meaning."""
+
+    def body() -> int:
+        registry = _registry()
+        spec = registry.get(name.strip().upper()) if name.upper().startswith("P-") else None
+        indices: tuple[int, ...] = ()
+        if spec is None:
+            key = parse_key(name.strip())
+            if key is not None:
+                forced = kind_from_name(kind) if kind else None
+                spec = registry.by_pattern(key.pattern, forced) or registry.alias(key.pattern, forced)
+                indices = key.indices
+        if spec is None:
+            near = registry.suggest(name.strip(), None)
+            hint = f" (did you mean {near[0]}?)" if near else ""
+            raise ZeroError(f"unknown parameter {name!r}{hint}")
+        text = param_text(spec, registry)
+        if indices:
+            text = f"{'element':<7}  {name.strip()}\n" + text
+        sys.stdout.write(text)
+        return exits.OK
+
+    _run(body)
+
+
+def main() -> None:
+    """Console-script entry point for everything but the lean ``zero lint``."""
+    code = exits.guard(lambda: _standalone(app))
+    raise SystemExit(code)
+
+
+def _standalone(application: typer.Typer) -> int:
+    try:
+        application(standalone_mode=True)
+    except SystemExit as exc:
+        return exc.code if isinstance(exc.code, int) else (0 if exc.code is None else 1)
+    return exits.OK
+
+
+__all__ = ["app", "main", "render_lint"]

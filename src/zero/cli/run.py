@@ -1,0 +1,104 @@
+"""The command bodies that both command lines share (no typer, no rich at import).
+
+:func:`lint` is ``zero lint`` from parsed options to an exit code: it asks the engine
+(:func:`zero.engine.commands.run_lint`), renders with :mod:`zero.output`, and takes
+its exit code from :mod:`zero.cli.exits`. :data:`REGISTRIES` loads each parameter
+description once per process and hands the registry down.
+"""
+
+from __future__ import annotations
+
+import io
+import sys
+from collections.abc import Sequence
+from pathlib import Path
+from typing import TextIO
+
+from zero.catalog.registry import Registry, load_registry
+from zero.cli import exits
+from zero.cli.options import OUTPUT_FORMATS
+from zero.engine.commands import Echo, LintRequest, run_lint
+from zero.engine.lint import LintResult
+from zero.errors import ZeroError
+from zero.files import write_atomic
+from zero.output.text import ProgressBar, render_text, statistics
+
+
+class RegistryCache:
+    """Parameter description path (``None``: built-in) → its registry, loaded once."""
+
+    def __init__(self) -> None:
+        self._loaded: dict[Path | None, Registry] = {}
+
+    def __call__(self, desc: Path | None) -> Registry:
+        registry = self._loaded.get(desc)
+        if registry is None:
+            registry = self._loaded[desc] = load_registry(desc)
+        return registry
+
+
+REGISTRIES = RegistryCache()
+
+
+def _write_out(text: str) -> None:
+    sys.stdout.write(text)
+
+
+def _write_err(text: str) -> None:
+    sys.stderr.write(text)
+
+
+def _write_bytes(data: bytes) -> None:
+    sys.stdout.buffer.write(data)
+    sys.stdout.buffer.flush()
+
+
+def echo() -> Echo:
+    """A command's streamed text to this process's standard output and error."""
+    return Echo(out=_write_out, err=_write_err, out_bytes=_write_bytes)
+
+
+def read_stdin() -> bytes:
+    return sys.stdin.buffer.read()
+
+
+def render_lint(results: Sequence[LintResult], output_format: str, stream: TextIO,
+                color: bool | None = None) -> None:
+    """The findings in one of the output formats; the text summary goes to stderr."""
+    if output_format == "text":
+        render_text(results, stream, color=color, summary_stream=sys.stderr)
+    else:
+        from zero.output.formats import RENDERERS  # start-up: only for machine-readable reports
+
+        RENDERERS[output_format](results, stream)
+
+
+def lint(paths: Sequence[str | Path] = (), output_format: str = "text", output_file: str | Path | None = None,
+         show_statistics: bool = False, exit_zero: bool = False, config: str | Path | None = None,
+         isolated: bool = False, strict: bool = False, select: Sequence[str] = (), ignore: Sequence[str] = (),
+         kind: str | None = None, jobs: int | None = None, fix: bool = False, show_diff: bool = False,
+         unsafe_fixes: bool = False, stdin_filename: str | None = None, machine: str | Path | None = None,
+         param_desc: str | Path | None = None) -> int:
+    """``zero lint``: report what the controller will do with the files; the exit code."""
+    if output_format not in OUTPUT_FORMATS:
+        raise ZeroError(f"unknown output format {output_format!r} (use one of: {', '.join(OUTPUT_FORMATS)})")
+    if not paths and stdin_filename is None and machine is None:
+        raise ZeroError("give list files or directories (or - with --stdin-filename)")
+    request = LintRequest([str(p) for p in paths], tuple(select), tuple(ignore), kind, param_desc, jobs,
+                          config, isolated, fix, show_diff, unsafe_fixes, stdin_filename, machine)
+    bar = ProgressBar()
+    try:
+        run = run_lint(request, REGISTRIES, echo(), read_stdin, bar.start)
+    finally:
+        bar.finish()
+    if not run.report:
+        return exits.OK
+    if output_file is not None:
+        buffer = io.StringIO()
+        render_lint(run.results, output_format, buffer, color=False)
+        write_atomic(Path(output_file), buffer.getvalue().encode("utf-8", "surrogateescape"), force=True)
+    else:
+        render_lint(run.results, output_format, sys.stderr if run.findings_to_stderr else sys.stdout)
+    if show_statistics:
+        sys.stderr.write(statistics(run.results))
+    return exits.lint_exit(run.results, strict, exit_zero)

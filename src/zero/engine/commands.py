@@ -1,0 +1,321 @@
+"""The commands as library functions: everything a command does except printing.
+
+Each function takes what the user asked for and returns what the command found; the
+command line renders it (:mod:`zero.output`) and turns it into an exit code
+(:mod:`zero.cli.exits`). Registries are passed in through ``registries`` (parameter
+description path → registry), which the caller keeps; text a command streams while it
+works (a patch, "3 fixes applied") goes through an :class:`Echo`.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from zero.catalog.registry import KINDS, Registry, kind_from_name
+from zero.diff import Change, DiffOptions, Side, diff_defaults, diff_sides, read_side
+from zero.engine.config import Config, ConfigFinder
+from zero.engine.convert import source_format
+from zero.engine.discovery import collect_files
+from zero.engine.fixes import fix_bytes, unified_diff
+from zero.engine.formatting import format_bytes
+from zero.engine.lint import (
+    PROGRAM_SUFFIXES,
+    STRUCTURED_SUFFIXES,
+    LintOptions,
+    LintResult,
+    lint_bytes,
+    lint_file,
+    lint_machine,
+    lint_program,
+)
+from zero.engine.parallel import lint_many
+from zero.errors import ZeroError
+from zero.files import read_file, write_atomic
+from zero.lists.encoding import decode
+from zero.machine.limits import Ip247Violation, LimitRow, ip247, pcs_limits
+from zero.machine.model import Machine, load_machine
+from zero.rules import RULES
+
+Registries = Callable[[Path | None], Registry]
+Progress = Callable[[int, int], None]
+
+
+@dataclass(slots=True)
+class Echo:
+    """Where a command's streamed text goes (standard output and error on the command line)."""
+
+    out: Callable[[str], None]
+    err: Callable[[str], None]
+    out_bytes: Callable[[bytes], None]
+
+
+def parse_codes(values: Sequence[str] | None) -> tuple[str, ...]:
+    """Rule codes or prefixes, repeatable or comma-separated; each must match a rule."""
+    out = tuple(c.strip().upper() for v in values or () for c in v.split(",") if c.strip())
+    for c in out:
+        if not any(code.startswith(c) for code in RULES):
+            raise ZeroError(f"{c!r} matches no rule code (see `zero rule --all`)")
+    return out
+
+
+def parse_kind(kind: str | None) -> str | None:
+    """A list kind by name or letters (``zero``, ``ZERO``); ``None`` detects it."""
+    if kind is None:
+        return None
+    forced = kind_from_name(kind)
+    if forced is None:
+        names = ", ".join(v[0] for v in KINDS.values())
+        raise ZeroError(f"unknown list kind {kind!r} (use one of: {names})")
+    return forced
+
+
+def param_desc_of(config: Config, given: str | Path | None) -> Path | None:
+    """The command line's --param-desc, else the configuration's."""
+    if given:
+        return Path(given)
+    return config.param_desc
+
+
+# ------------------------------------------------------------------------------ lint
+
+
+@dataclass(slots=True)
+class LintRequest:
+    """What ``zero lint`` was asked to do (option names as on the command line)."""
+
+    paths: Sequence[str] = ()
+    select: Sequence[str] = ()
+    ignore: Sequence[str] = ()
+    kind: str | None = None
+    param_desc: str | Path | None = None
+    jobs: int | None = None
+    config: str | Path | None = None
+    isolated: bool = False
+    fix: bool = False
+    show_diff: bool = False
+    unsafe_fixes: bool = False
+    stdin_filename: str | None = None
+    machine: str | Path | None = None
+
+    @property
+    def reads_stdin(self) -> bool:
+        paths = list(self.paths)
+        return paths in ([], ["-"]) and (self.stdin_filename is not None or paths == ["-"])
+
+
+@dataclass(slots=True)
+class LintRun:
+    results: list[LintResult] = field(default_factory=list)
+    report: bool = True  # False: nothing to report (standard input excluded by the configuration)
+    findings_to_stderr: bool = False  # the fixed list went to standard output
+
+
+def run_lint(request: LintRequest, registries: Registries, echo: Echo,
+             read_stdin: Callable[[], bytes], progress: Callable[[int], Progress | None] | None = None) -> LintRun:
+    """``zero lint``: lint files, a machine or standard input; apply or show fixes."""
+    cli = LintOptions(select=parse_codes(request.select), ignore=parse_codes(request.ignore),
+                      kind=parse_kind(request.kind))
+    finder = ConfigFinder(Path(request.config) if request.config else None, request.isolated)
+    if request.machine is not None:
+        return LintRun(_lint_machine(request, Path(request.machine), cli, finder, registries))
+    if request.reads_stdin:
+        return _lint_stdin(request, cli, finder, registries, echo, read_stdin())
+    named = [Path(p) for p in request.paths]
+    files = collect_files(named, include=lambda f: finder.for_path(f).included(f),
+                          exclude=lambda f: finder.for_path(f).excluded(f))
+    if not files and any(p.is_dir() for p in named):
+        raise ZeroError("no list files found (looked for *.lis and *.lst)")
+    groups: dict[Path | None, list[Path]] = {}
+    for f in files:  # files sharing a parameter description share a registry
+        groups.setdefault(param_desc_of(finder.for_path(f), request.param_desc), []).append(f)
+    by_file: dict[Path, LintResult] = {}
+    bar = progress(len(files)) if progress is not None else None
+    done = 0
+    for desc, members in groups.items():
+        def step(n: int, total: int, base: int = done) -> None:
+            if bar is not None:
+                bar(base + n, len(files))
+
+        for f, r in zip(members, lint_many(members, registries(desc),
+                                           lambda f: finder.for_path(f).options_for(f, cli), request.jobs,
+                                           step if bar is not None else None), strict=True):
+            by_file[f] = r
+        done += len(members)
+    machines: dict[Path, Machine] = {}
+    results = [_with_machine(f, by_file[f], finder.for_path(f), cli, request.param_desc, registries, machines)
+               for f in files]
+    if request.fix or request.show_diff:
+        results = [_fix_one(f, r, finder.for_path(f).options_for(f, cli),
+                            registries(param_desc_of(finder.for_path(f), request.param_desc)),
+                            request.fix, request.unsafe_fixes, echo) for f, r in zip(files, results, strict=True)]
+    return LintRun(results)
+
+
+def _lint_machine(request: LintRequest, startup: Path, cli: LintOptions, finder: ConfigFinder,
+                  registries: Registries) -> list[LintResult]:
+    """``--machine``: every list of the machine and the X rules, plus the files named."""
+    registry = registries(Path(request.param_desc) if request.param_desc else None)
+    overrides = finder.for_path(startup).machine_lists
+    machine, results = lint_machine(startup, registry, cli, overrides)
+    for f in collect_files([Path(p) for p in request.paths]):  # programs and lists named as well
+        if f.suffix.lower() in PROGRAM_SUFFIXES:
+            results.append(lint_program(read_file(f), registry, str(f), cli, machine))
+        else:
+            results.append(lint_file(f, registry, cli))
+    return results
+
+
+def _with_machine(path: Path, result: LintResult, cfg: Config, cli: LintOptions, param_desc: str | Path | None,
+                  registries: Registries, machines: dict[Path, Machine]) -> LintResult:
+    """An NC program in a project whose configuration names the machine: lint it against it."""
+    if cfg.machine is None or path.suffix.lower() not in PROGRAM_SUFFIXES:
+        return result
+    registry = registries(param_desc_of(cfg, param_desc))
+    m = machines.get(cfg.machine)
+    if m is None:
+        m = machines[cfg.machine] = load_machine(cfg.machine, registry, cli.kind, cfg.machine_lists)
+    return lint_program(read_file(path), registry, str(path), cfg.options_for(path, cli), m)
+
+
+def _lint_stdin(request: LintRequest, cli: LintOptions, finder: ConfigFinder, registries: Registries,
+                echo: Echo, data: bytes) -> LintRun:
+    """Standard input as the file ``--stdin-filename`` (its configuration applies). With a fix
+    option the fixed list goes to standard output and the findings to standard error."""
+    name = request.stdin_filename or "-"
+    fix = request.fix or request.show_diff
+    cfg = finder.for_path(Path(name))
+    if name != "-" and cfg.excluded(Path(name)):
+        if fix:
+            echo.out_bytes(data)
+        return LintRun(report=False)
+    options = cfg.options_for(Path(name), cli)
+    registry = registries(param_desc_of(cfg, request.param_desc))
+    if fix:
+        fixed = fix_bytes(data, name, registry, options, request.unsafe_fixes)
+        echo.out_bytes(fixed.fixed)
+        return LintRun([fixed.result], findings_to_stderr=True)
+    return LintRun([lint_bytes(data, registry, name, options)])
+
+
+def _fix_one(path: Path, result: LintResult, options: LintOptions, registry: Registry, write: bool,
+             unsafe: bool, echo: Echo) -> LintResult:
+    """Fix one list file: write it (``write``) or show the unified diff; return what is left."""
+    if path.suffix.lower() in STRUCTURED_SUFFIXES:
+        return result  # findings in YAML/TOML/JSON carry no list edits
+    data = read_file(path)
+    fixed = fix_bytes(data, str(path), registry, options, unsafe)
+    if fixed.fixed == data:
+        return result
+    if write:
+        write_atomic(path, fixed.fixed, force=True)
+        echo.err(f"zero: {path}: {fixed.applied} fix{'es' if fixed.applied != 1 else ''} applied\n")
+        return fixed.result
+    echo.out(unified_diff(str(path), data, fixed.fixed, fixed.result.document.encoding))
+    return result
+
+
+# ---------------------------------------------------------------------------- format
+
+
+@dataclass(slots=True)
+class FormatRun:
+    files: int = 0
+    changed: int = 0
+    failed: int = 0
+
+
+def run_format(paths: Sequence[str | Path], registries: Registries, echo: Echo, check: bool = False,
+               show_diff: bool = False, config: str | Path | None = None, isolated: bool = False,
+               param_desc: str | Path | None = None) -> FormatRun:
+    """``zero format``: rewrite files in canonical layout; with ``check``/``show_diff`` only report."""
+    finder = ConfigFinder(Path(config) if config else None, isolated)
+    files = collect_files([Path(p) for p in paths], include=lambda f: finder.for_path(f).included(f),
+                          exclude=lambda f: finder.for_path(f).excluded(f))
+    run = FormatRun(len(files))
+    for f in files:
+        data = read_file(f)
+        registry = registries(param_desc_of(finder.for_path(f), param_desc))
+        try:
+            new = format_bytes(data, str(f), registry)
+        except ZeroError as exc:
+            echo.err(f"zero: {exc} (not formatted)\n")
+            run.failed += 1
+            continue
+        if new == data:
+            continue
+        run.changed += 1
+        if show_diff:
+            echo.out(unified_diff(str(f), data, new, decode(data)[1]))
+        elif check:
+            echo.out(f"would reformat {f}\n")
+        else:
+            write_atomic(f, new, force=True)
+    return run
+
+
+# ------------------------------------------------------------------------ diff, show
+
+
+def load_side(name: str, fmt: str | None, kind: str | None, registry: Registry,
+              read_stdin: Callable[[], bytes]) -> Side:
+    """One side of ``zero diff`` (or ``zero show``): a file in any format, or standard input."""
+    src = source_format(fmt, name)
+    data = read_stdin() if name == "-" else read_file(name)
+    return read_side(data, src, name, registry, kind)
+
+
+@dataclass(slots=True)
+class DiffRun:
+    changes: list[Change]
+    header: str
+
+
+def run_diff(a: str, b: str | None, registry: Registry, read_stdin: Callable[[], bytes], *,
+             defaults: bool = False, options: DiffOptions | None = None, fmt: str | None = None,
+             kind: str | None = None) -> DiffRun:
+    """``zero diff A B`` or ``zero diff --defaults A``."""
+    options = options or DiffOptions()
+    if defaults:
+        if b is not None:
+            raise ZeroError("--defaults compares one file with the registry; give one file")
+        side = load_side(a, fmt, kind, registry, read_stdin)
+        changes = diff_defaults(side, registry, options)
+        return DiffRun(changes, f"{a}: {len(changes)} parameters differ from the registry defaults")
+    if b is None:
+        raise ZeroError("give two files to compare (or one with --defaults)")
+    if a == "-" and b == "-":
+        raise ZeroError("only one side can be standard input")
+    side_a = load_side(a, fmt, kind, registry, read_stdin)
+    side_b = load_side(b, fmt, kind or side_a.kind, registry, read_stdin)
+    return DiffRun(diff_sides(side_a, side_b, registry, options), f"--- {a}\n+++ {b}")
+
+
+# ---------------------------------------------------------------------------- limits
+
+
+@dataclass(slots=True)
+class LimitsRun:
+    rows: list[LimitRow]
+    violations: list[Ip247Violation] = field(default_factory=list)
+
+
+PROFILES = ("ip247",)
+
+
+def run_limits(machine: Path | None, registries: Registries, all_groups: bool = False,
+               profile: str | None = None, param_desc: str | Path | None = None) -> LimitsRun:
+    """``zero limits``: PCS soft limits of the machine (the configuration's when not named)."""
+    if profile not in (None, *PROFILES):
+        raise ZeroError(f"unknown profile {profile!r} (known: {', '.join(PROFILES)})")
+    cfg = ConfigFinder().for_path(machine if machine is not None else Path.cwd())
+    startup = machine or cfg.machine
+    if startup is None:
+        raise ZeroError("name the start-up list with --machine (or [tool.zero.machine] startup)")
+    m = load_machine(startup, registries(Path(param_desc) if param_desc else None), None, cfg.machine_lists)
+    return LimitsRun(pcs_limits(m, all_groups), ip247(m) if profile == "ip247" else [])
+
+
+__all__ = ["DiffRun", "Echo", "FormatRun", "LimitsRun", "LintRequest", "LintRun", "load_side", "param_desc_of",
+           "parse_codes", "parse_kind", "run_diff", "run_format", "run_limits", "run_lint"]

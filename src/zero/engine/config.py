@@ -1,0 +1,328 @@
+"""Project configuration: ``[tool.zero]`` in ``pyproject.toml``, or ``zero.toml`` / ``.zero.toml``.
+
+The file closest to a linted file wins (no merging), found by walking up from the
+file's directory; ``--config PATH`` names one for every file and ``--isolated``
+ignores them all. Globs are relative to the configuration file's directory
+(``**/`` for any depth). Unknown keys and bad values are errors naming the file,
+line and key.
+
+```toml
+[tool.zero]
+select = ["S", "R", "M"]          # codes or prefixes; default: all
+extend-select = ["Z"]
+ignore = ["M003"]
+exclude = ["old/**"]              # never linted, even when named on the command line
+include = ["*.lis", "*.lst"]      # what a directory walk picks up
+param-desc = "vendor/CncParaDesc.xml"
+
+[tool.zero.per-file-ignores]
+"machines/**/nullp*.lis" = ["M003"]
+
+[tool.zero.severity]              # override a rule's default severity
+R007 = "error"
+
+[tool.zero.kind]                  # list kind by glob instead of detection
+"**/nullp*.lis" = "zero"
+
+[tool.zero.machine]               # the machine NC programs and `zero limits` refer to
+startup = "listen/hochlauf.lis"
+"achs_mds[0]" = "listen/achse_x_neu.lis"   # override a list the start-up list names
+```
+"""
+
+from __future__ import annotations
+
+import difflib
+import functools
+import os
+import re
+from dataclasses import dataclass, field
+from pathlib import Path
+from typing import Any
+
+from zero.catalog.registry import kind_from_name
+from zero.diagnostics import Severity
+from zero.engine.lint import LintOptions
+from zero.errors import ZeroError
+from zero.rules import RULES
+from zero.structured.toml import scan_toml
+
+CONFIG_NAMES = ("zero.toml", ".zero.toml", "pyproject.toml")
+DEFAULT_INCLUDE = ("*.lis", "*.lst")
+_KEYS = ("select", "extend-select", "ignore", "per-file-ignores", "severity", "kind", "include",
+         "exclude", "param-desc", "machine")
+
+
+@functools.lru_cache(maxsize=512)
+def glob_to_regex(pattern: str) -> re.Pattern[str]:
+    """A path glob (``**/`` any depth, ``*`` within a name, ``?``) as an anchored regex."""
+    out = []
+    i = 0
+    while i < len(pattern):
+        if pattern.startswith("**/", i):
+            out.append("(?:.*/)?")
+            i += 3
+        elif pattern.startswith("**", i):
+            out.append(".*")
+            i += 2
+        elif pattern[i] == "*":
+            out.append("[^/]*")
+            i += 1
+        elif pattern[i] == "?":
+            out.append("[^/]")
+            i += 1
+        else:
+            out.append(re.escape(pattern[i]))
+            i += 1
+    return re.compile("".join(out) + r"\Z")
+
+
+@dataclass(slots=True)
+class Config:
+    path: Path | None = None  # the file it came from; None: defaults
+    select: tuple[str, ...] = ()
+    extend_select: tuple[str, ...] = ()
+    ignore: tuple[str, ...] = ()
+    per_file_ignores: tuple[tuple[str, tuple[str, ...]], ...] = ()
+    severity: dict[str, Severity] = field(default_factory=dict)
+    kind: tuple[tuple[str, str], ...] = ()
+    include: tuple[str, ...] = DEFAULT_INCLUDE
+    exclude: tuple[str, ...] = ()
+    param_desc: Path | None = None
+    machine: Path | None = None  # the start-up list of the machine ([tool.zero.machine] startup)
+    machine_lists: dict[str, Path] = field(default_factory=dict)  # start-up key → path override
+
+    @property
+    def root(self) -> Path:
+        return self.path.parent if self.path is not None else Path.cwd()
+
+    def relative(self, file: Path) -> str | None:
+        try:
+            return file.resolve().relative_to(self.root.resolve()).as_posix()
+        except ValueError:
+            return None
+
+    def _matches(self, globs: tuple[str, ...], file: Path) -> bool:
+        """A glob with a `/` matches the path relative to the configuration's directory,
+        one without matches the file name."""
+        rel: str | None = None
+        for g in globs:
+            if "/" in g:
+                if rel is None:
+                    rel = self.relative(file) or "\0"
+                if glob_to_regex(g).match(rel):
+                    return True
+            elif glob_to_regex(g).match(file.name):
+                return True
+        return False
+
+    def excluded(self, file: Path) -> bool:
+        return bool(self.exclude) and self._matches(self.exclude, file)
+
+    def included(self, file: Path) -> bool:
+        return self._matches(self.include, file)
+
+    def options_for(self, file: Path, cli: LintOptions) -> LintOptions:
+        """The lint options for one file: the command line over this configuration."""
+        select = cli.select or self.select
+        if select and self.extend_select:
+            select = (*select, *self.extend_select)
+        ignore = (*self.ignore, *cli.ignore)
+        for glob, codes in self.per_file_ignores:
+            if self._matches((glob,), file):
+                ignore = (*ignore, *codes)
+        kind = cli.kind
+        if kind is None:
+            kind = next((k for glob, k in self.kind if self._matches((glob,), file)), None)
+        return LintOptions(select=select, ignore=ignore, kind=kind,
+                           severity={**self.severity, **cli.severity})
+
+    def show(self) -> str:
+        """The effective configuration as TOML (``zero config --show``)."""
+        def arr(xs: tuple[str, ...]) -> str:
+            return "[" + ", ".join(f'"{x}"' for x in xs) + "]"
+
+        lines = [f"# from {self.path}" if self.path else "# no configuration file: defaults",
+                 "[tool.zero]", f"select = {arr(self.select)}", f"extend-select = {arr(self.extend_select)}",
+                 f"ignore = {arr(self.ignore)}", f"include = {arr(self.include)}",
+                 f"exclude = {arr(self.exclude)}"]
+        if self.param_desc:
+            lines.append(f'param-desc = "{self.param_desc}"')
+        if self.machine or self.machine_lists:
+            lines.append("[tool.zero.machine]")
+            if self.machine:
+                lines.append(f'startup = "{self.machine}"')
+            lines += [f'"{k}" = "{v}"' for k, v in self.machine_lists.items()]
+        lines.append("[tool.zero.per-file-ignores]")
+        lines += [f'"{g}" = {arr(c)}' for g, c in self.per_file_ignores]
+        lines.append("[tool.zero.severity]")
+        lines += [f'{c} = "{s.label}"' for c, s in sorted(self.severity.items())]
+        lines.append("[tool.zero.kind]")
+        lines += [f'"{g}" = "{k}"' for g, k in self.kind]
+        return "\n".join(lines) + "\n"
+
+
+def _line_of(text: str, table: tuple[str, ...], key: str | None) -> int | None:
+    """Best effort: the line of ``key`` in ``table`` (or of the table header)."""
+    found, _ = scan_toml(text)
+    if key is not None:
+        hit = found.get((*table, key))
+        if hit is not None:
+            return hit.line
+    header = re.compile(r"^\s*\[\s*" + r"\s*\.\s*".join(re.escape(t) for t in table) + r"\s*\]")
+    for n, line in enumerate(text.splitlines(), 1):
+        if header.match(line):
+            return n
+    return None
+
+
+def parse_config(path: Path, text: str | None = None) -> Config | None:
+    """Read one configuration file; ``None`` for a pyproject.toml without ``[tool.zero]``."""
+    import tomllib  # start-up: only when a configuration file exists
+
+    if text is None:
+        try:
+            text = path.read_text(encoding="utf-8")
+        except OSError as exc:
+            raise ZeroError(f"cannot read the configuration: {exc.strerror or exc}", str(path)) from None
+        except UnicodeDecodeError:
+            raise ZeroError("the configuration is not UTF-8", str(path)) from None
+    try:
+        data = tomllib.loads(text)
+    except tomllib.TOMLDecodeError as exc:
+        raise ZeroError(f"not valid TOML: {exc}", str(path)) from None
+    table: tuple[str, ...] = ()
+    if path.name == "pyproject.toml":
+        tool = data.get("tool", {})
+        if not isinstance(tool, dict) or "zero" not in tool:
+            return None
+        data = tool["zero"]
+        table = ("tool", "zero")
+    if not isinstance(data, dict):
+        raise ZeroError("[tool.zero] must be a table", str(path))
+
+    def fail(key: str | None, message: str, sub: tuple[str, ...] = ()) -> ZeroError:
+        line = _line_of(text or "", (*table, *sub), key)
+        name = ".".join((*table, *sub, key) if key else (*table, *sub)) or "(top level)"
+        return ZeroError(f"{name}: {message}", str(path), line)
+
+    def codes(key: str, value: Any, sub: tuple[str, ...] = ()) -> tuple[str, ...]:
+        if not isinstance(value, list) or not all(isinstance(v, str) for v in value):
+            raise fail(key, "expected a list of rule codes, e.g. [\"R005\", \"M\"]", sub)
+        out = tuple(v.strip().upper() for v in value)
+        for c in out:
+            if not any(code.startswith(c) for code in RULES):
+                raise fail(key, f"{c!r} matches no rule code (see `zero rule`)", sub)
+        return out
+
+    def globs(key: str, value: Any) -> tuple[str, ...]:
+        if not isinstance(value, list) or not all(isinstance(v, str) and v for v in value):
+            raise fail(key, "expected a list of glob patterns, e.g. [\"old/**\"]")
+        return tuple(value)
+
+    cfg = Config(path=path)
+    for key, value in data.items():
+        if key not in _KEYS:
+            near = difflib.get_close_matches(key.replace("_", "-"), _KEYS, n=1, cutoff=0.6)
+            hint = f" (did you mean `{near[0]}`?)" if near else ""
+            raise fail(key, f"unknown key{hint}; known: {', '.join(_KEYS)}")
+        if key == "select":
+            cfg.select = codes(key, value)
+        elif key == "extend-select":
+            cfg.extend_select = codes(key, value)
+        elif key == "ignore":
+            cfg.ignore = codes(key, value)
+        elif key == "include":
+            cfg.include = globs(key, value)
+        elif key == "exclude":
+            cfg.exclude = globs(key, value)
+        elif key == "param-desc":
+            if not isinstance(value, str) or not value:
+                raise fail(key, "expected the path of a CncParaDesc.xml")
+            cfg.param_desc = (path.parent / value)
+        elif key == "machine":
+            if not isinstance(value, dict):
+                raise fail(key, "expected a table: startup = \"listen/hochlauf.lis\" and list overrides")
+            for mk, mv in value.items():
+                if not isinstance(mv, str) or not mv:
+                    raise fail(mk, "expected a path", ("machine",))
+                if mk == "startup":
+                    cfg.machine = path.parent / mv
+                elif re.fullmatch(r"(achs_mds|sda_mds|nullp_data)\[[0-9]+\]", mk):
+                    cfg.machine_lists[mk] = path.parent / mv
+                else:
+                    raise fail(mk, "expected `startup` or a start-up key such as `achs_mds[0]`", ("machine",))
+        elif key == "per-file-ignores":
+            if not isinstance(value, dict):
+                raise fail(key, "expected a table of glob = [codes]")
+            cfg.per_file_ignores = tuple((g, codes(g, v, ("per-file-ignores",))) for g, v in value.items())
+        elif key == "severity":
+            if not isinstance(value, dict):
+                raise fail(key, "expected a table of CODE = \"error\" | \"warning\" | \"info\"")
+            for code, sev in value.items():
+                if code.upper() not in RULES:
+                    raise fail(code, f"{code!r} is not a rule code", ("severity",))
+                try:
+                    cfg.severity[code.upper()] = Severity.parse(sev if isinstance(sev, str) else "")
+                except ValueError:
+                    raise fail(code, f"{sev!r} is not a severity (error, warning or info)",
+                               ("severity",)) from None
+        elif key == "kind":
+            if not isinstance(value, dict):
+                raise fail(key, "expected a table of glob = kind")
+            pairs = []
+            for glob, name in value.items():
+                k = kind_from_name(name) if isinstance(name, str) else None
+                if k is None:
+                    raise fail(glob, f"{name!r} is not a list kind (zero, axis, channel, ...)", ("kind",))
+                pairs.append((glob, k))
+            cfg.kind = tuple(pairs)
+    return cfg
+
+
+class ConfigFinder:
+    """Finds (and caches) the configuration that applies to each file."""
+
+    def __init__(self, explicit: Path | None = None, isolated: bool = False) -> None:
+        self.isolated = isolated
+        self.explicit: Config | None = None
+        if explicit is not None and not isolated:
+            cfg = parse_config(explicit)
+            if cfg is None:
+                raise ZeroError("has no [tool.zero] table", str(explicit))
+            self.explicit = cfg
+        self._by_dir: dict[Path, Config] = {}
+        self._by_name: dict[str, Config] = {}  # the directory as written → its configuration
+        self._default = Config()
+
+    def for_path(self, file: Path) -> Config:
+        if self.isolated:
+            return self._default
+        if self.explicit is not None:
+            return self.explicit
+        key = os.path.dirname(str(file))
+        hit = self._by_name.get(key)
+        if hit is None:
+            hit = self._by_name[key] = self._lookup(file)
+        return hit
+
+    def _lookup(self, file: Path) -> Config:
+        start = file.resolve().parent if not file.is_dir() else file.resolve()
+        walked: list[Path] = []
+        d: Path | None = start
+        found = self._default
+        while d is not None:
+            hit = self._by_dir.get(d)
+            if hit is not None:
+                found = hit
+                break
+            walked.append(d)
+            cfg = next((c for c in (parse_config(d / n) for n in CONFIG_NAMES if (d / n).is_file())
+                        if c is not None), None)
+            if cfg is not None:
+                found = cfg
+                break
+            d = d.parent if d.parent != d else None
+        for w in walked:
+            self._by_dir[w] = found
+        return found

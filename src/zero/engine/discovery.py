@@ -1,0 +1,66 @@
+"""Finding the files to lint: names given on the command line, and list files below
+named directories, without what ``.gitignore`` ignores.
+"""
+
+from __future__ import annotations
+
+import os
+from collections.abc import Callable, Iterable
+from pathlib import Path
+
+from zero.engine.lint import LIST_SUFFIXES
+from zero.errors import ZeroError
+
+
+def git_visible(directory: Path) -> set[str] | None:
+    """Files below ``directory`` that git does not ignore, as paths relative to it
+    (``os.sep``-separated); ``None`` outside a git work tree or without git."""
+    import shutil  # start-up: only when a directory is walked
+    import subprocess  # start-up: as above
+
+    if shutil.which("git") is None:
+        return None
+    try:
+        proc = subprocess.run(["git", "-C", str(directory), "ls-files", "-z", "--cached", "--others",
+                               "--exclude-standard", "."], capture_output=True, timeout=60, check=False)
+    except (OSError, subprocess.SubprocessError):
+        return None
+    if proc.returncode != 0:
+        return None
+    return {os.path.normpath(os.fsdecode(name)) for name in proc.stdout.split(b"\0") if name}
+
+
+def collect_files(paths: Iterable[str | Path], include: Callable[[Path], bool] | None = None,
+                  exclude: Callable[[Path], bool] | None = None,
+                  respect_gitignore: bool = True) -> list[Path]:
+    """Files named explicitly, plus list files below named directories (sorted).
+
+    ``include`` decides which files a directory walk picks up (default: ``*.lis``,
+    ``*.lst``); ``exclude`` drops files and directories, named ones included. A
+    directory walk skips what ``.gitignore`` ignores when the directory is in a git
+    work tree (named files are always linted).
+    """
+    out: list[Path] = []
+    for raw in paths:
+        p = Path(raw)
+        if p.is_dir():
+            visible = git_visible(p) if respect_gitignore else None
+            found: list[Path] = []
+            for root, dirs, files in os.walk(p):
+                dirs[:] = sorted(d for d in dirs if not d.startswith(".")
+                                 and not (exclude and exclude(Path(root) / d)))
+                rel_root = os.path.relpath(root, p)
+                for f in files:
+                    if visible is not None and os.path.normpath(os.path.join(rel_root, f)) not in visible:
+                        continue
+                    path = Path(root) / f
+                    if (include(path) if include else f.lower().endswith(LIST_SUFFIXES)) and \
+                            not (exclude and exclude(path)):
+                        found.append(path)
+            out.extend(sorted(found, key=str))
+        elif p.exists():
+            if not (exclude and exclude(p)):
+                out.append(p)
+        else:
+            raise ZeroError("no such file or directory", str(raw))
+    return out

@@ -1,0 +1,47 @@
+"""``zero format``: a list in canonical layout, meaning kept.
+
+Values aligned in one column, comments in another, no trailing whitespace; keys,
+values, comments and their order stay, and so do the encoding and line endings.
+"""
+
+from __future__ import annotations
+
+from zero.catalog.registry import Registry
+from zero.lists.tokenizer import tokenize
+from zero.structured.tree import DEFAULT_VALUE_COLUMN, encode_list, from_document, to_list_text
+
+COMMENT_OFFSET = 15  # comments start this many columns after the value column
+
+
+def format_bytes(data: bytes, path: str, registry: Registry, value_column: int | None = None) -> bytes:
+    """The list in canonical layout: values aligned in one column (the vendor's column 55, or
+    after the longest key), comments 15 columns after it (one space after a longer value), no
+    trailing whitespace; order, values, comments, encoding and line endings kept. Earlier lines
+    of a key set twice stay as written. :class:`~zero.errors.ZeroError` for lines it cannot
+    read (the registry only tells which values are numbers)."""
+    doc = tokenize(data, path)
+    tree = from_document(doc, registry)
+    meta = tree.meta
+    # A key written with whitespace inside means something else to the controller (S004):
+    # format keeps such a line as it is; `zero lint --fix` joins the key.
+    layout = meta.pop("layout", {})
+    kept = {k: t for k, t in layout.items() if any(c in t.partition("{v}")[0].strip() for c in " \t")}
+    if kept:
+        meta["layout"] = kept
+    for key in ("before", "tail"):
+        meta.pop(key, None)
+    if isinstance(meta.get("end"), str) and meta["end"]:
+        meta["end"] = meta["end"].strip()
+    if isinstance(meta.get("after_end"), list):
+        meta["after_end"] = [x.rstrip() for x in meta["after_end"]]
+    widest = max((len(leaf.key) for leaf in tree.leaves), default=0)
+    column = value_column if value_column is not None else DEFAULT_VALUE_COLUMN
+    if widest >= column:
+        column = widest + 1
+    meta["value_column"] = column
+    if any(leaf.after is not None for leaf in tree.leaves):
+        meta["comment_column"] = column + COMMENT_OFFSET  # the vendor's 55 / 70
+    else:
+        meta.pop("comment_column", None)
+    text = to_list_text(tree).text
+    return encode_list(tree, text)

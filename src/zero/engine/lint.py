@@ -1,0 +1,189 @@
+"""Lint orchestration: which rules run, over what, with which registry.
+
+Everything ``zero lint`` does to one input is callable here: a list (bytes or a
+document), a YAML/TOML/JSON file (linted as the list it converts to, findings located
+in the structured file), an NC program (with the machine it runs on, when known), and a
+whole machine (every list its start-up list names, plus the X rules across them).
+:func:`lint_file` picks the right one by the file's suffix. The registry is always
+passed in.
+"""
+
+from __future__ import annotations
+
+import re
+from dataclasses import dataclass, field, replace
+from pathlib import Path
+
+from zero.catalog.registry import Registry, kind_from_name
+from zero.diagnostics import Diagnostic, Severity, Span
+from zero.errors import ZeroError
+from zero.files import read_file
+from zero.lists.model import Document
+from zero.lists.tokenizer import tokenize
+from zero.machine.model import Machine, load_machine
+from zero.nc.program import read_program
+from zero.rules import (
+    MACHINE_CHECKS,
+    PROGRAM_CHECKS,
+    RULES,
+    MachineContext,
+    ProgramContext,
+    check_document,
+    run_checks,
+)
+from zero.structured.formats import read_tree
+from zero.structured.tree import Tree, encode_list, structured_path, to_list_text
+
+LIST_SUFFIXES = (".lis", ".lst")
+PROGRAM_SUFFIXES = (".nc", ".mpf", ".spf")  # NC programs (zero.nc)
+STRUCTURED_SUFFIXES = {".yaml": "yaml", ".yml": "yaml", ".toml": "toml", ".json": "json"}
+
+
+@dataclass(slots=True)
+class LintOptions:
+    select: tuple[str, ...] = ()  # code prefixes; empty = all
+    ignore: tuple[str, ...] = ()
+    kind: str | None = None  # force the list kind
+    severity: dict[str, Severity] = field(default_factory=dict)  # per-code overrides
+
+
+@dataclass(slots=True)
+class LintResult:
+    path: str
+    document: Document
+    kind: str | None
+    diagnostics: list[Diagnostic] = field(default_factory=list)
+
+    @property
+    def worst(self) -> Severity | None:
+        return max((d.severity for d in self.diagnostics), default=None)
+
+
+_selected: dict[tuple[object, ...], dict[str, Severity]] = {}
+
+
+def selected_rules(options: LintOptions) -> dict[str, Severity]:
+    """Code → severity of every rule the options enable (longest prefix wins); memoised."""
+    key = (options.select, options.ignore, tuple(sorted(options.severity.items())))
+    hit = _selected.get(key)
+    if hit is None:
+        hit = _selected[key] = _selected_rules(options)
+    return hit
+
+
+def _selected_rules(options: LintOptions) -> dict[str, Severity]:
+    out: dict[str, Severity] = {}
+    for code, r in RULES.items():
+        sel = max((len(p) for p in options.select if code.startswith(p)), default=-1)
+        ign = max((len(p) for p in options.ignore if code.startswith(p)), default=-1)
+        if options.select and sel < 0:
+            continue
+        if ign > sel:
+            continue
+        out[code] = options.severity.get(code, r.severity)
+    return out
+
+
+def lint_document(doc: Document, registry: Registry, options: LintOptions | None = None) -> LintResult:
+    options = options or LintOptions()
+    ctx, found = check_document(doc, registry, options.kind, selected_rules(options))
+    return LintResult(doc.path, doc, ctx.kind, found)
+
+
+def lint_bytes(data: bytes, registry: Registry, path: str = "-",
+               options: LintOptions | None = None) -> LintResult:
+    return lint_document(tokenize(data, path), registry, options)
+
+
+def lint_tree(tree: Tree, registry: Registry, options: LintOptions | None = None,
+              source: str | None = None) -> LintResult:
+    """Lint the list a tree makes; findings point at the structured file where known."""
+    written = to_list_text(tree)
+    data = encode_list(tree, written.text)
+    doc = tokenize(data, tree.path)
+    opts = options or LintOptions()
+    kind = tree.meta.get("kind") if isinstance(tree.meta.get("kind"), str) else None
+    if opts.kind is None and kind:
+        opts = replace(opts, kind=kind_from_name(kind))
+    result = lint_document(doc, registry, opts)
+    lines = source.split("\n") if source is not None else []
+    shown = Document(tree.path, "utf-8", [x.rstrip("\r") for x in lines], [], [])
+
+    def relocate(m: re.Match[str]) -> str:
+        other = written.lines_of.get(int(m.group(1)))
+        if other is None:
+            return m.group(0)
+        at = f"line {other.line}" if other.line else "the entry"
+        return f"{at} (`{structured_path(other.path)}`)"
+
+    out = []
+    for d in result.diagnostics:
+        leaf = written.lines_of.get(d.span.line)
+        if leaf is None:
+            span = Span(1, 1, 1, 1)
+            message = f"(list line {d.span.line}) {d.message}"
+        else:
+            line = leaf.line or 1
+            col = leaf.column or 1
+            span = Span(line, col, line, col + len(str(leaf.value)))
+            message = f"{structured_path(leaf.path)}: " + re.sub(r"\bline (\d+)", relocate, d.message)
+        out.append(replace(d, span=span, message=message, fix=None))
+    out.sort(key=lambda d: d.sort_key())
+    return LintResult(tree.path, shown, result.kind, out)
+
+
+def lint_structured(data: bytes, fmt: str, registry: Registry, path: str = "-",
+                    options: LintOptions | None = None) -> LintResult:
+    """Lint YAML/TOML/JSON bytes as the list they convert to."""
+    tree = read_tree(data, fmt, registry, path)
+    source = data.decode("utf-8", "replace").lstrip("\ufeff")
+    return lint_tree(tree, registry, options, source if fmt in ("yaml", "toml") else None)
+
+
+def lint_program(data: bytes, registry: Registry, path: str = "-", options: LintOptions | None = None,
+                 machine: Machine | None = None) -> LintResult:
+    """Findings N001–N004 for one NC program (N003/N004 need the machine)."""
+    program = read_program(data, path, registry)
+    ctx = ProgramContext(program, registry, machine, selected_rules(options or LintOptions()), path)
+    found = run_checks(PROGRAM_CHECKS, ctx)
+    found.sort(key=Diagnostic.sort_key)
+    return LintResult(path, program.doc, "PROGRAM", found)
+
+
+def lint_file(path: str | Path, registry: Registry, options: LintOptions | None = None) -> LintResult:
+    """Lint a list file; a YAML/TOML/JSON file as the list it converts to; an NC program."""
+    suffix = Path(path).suffix.lower()
+    data = read_file(path)
+    if suffix in PROGRAM_SUFFIXES:
+        return lint_program(data, registry, str(path), options)
+    fmt = STRUCTURED_SUFFIXES.get(suffix)
+    if fmt is None:
+        return lint_bytes(data, registry, str(path), options)
+    return lint_structured(data, fmt, registry, str(path), options)
+
+
+def lint_machine(startup_path: Path, registry: Registry, options: LintOptions | None = None,
+                 overrides: dict[str, Path] | None = None) -> tuple[Machine, list[LintResult]]:
+    """Every list of the machine with its own findings, plus the X findings on the file they
+    concern (the start-up list, a channel list, a zero-offset list or an axis list)."""
+    opts = options or LintOptions()
+    machine = load_machine(startup_path, registry, opts.kind, overrides)
+    severities = selected_rules(opts)
+    results: dict[str, LintResult] = {}
+    for lf in machine.lists:
+        if str(lf.path) not in results:
+            kind = lf.values.kind
+            results[str(lf.path)] = lint_document(lf.values.doc, registry,
+                                                  replace(opts, kind=kind) if kind else opts)
+    for d in run_checks(MACHINE_CHECKS, MachineContext(machine, registry, severities)):
+        r = results.get(d.path)
+        if r is not None:
+            r.diagnostics.append(d)
+    for r in results.values():
+        r.diagnostics.sort(key=Diagnostic.sort_key)
+    return machine, list(results.values())
+
+
+__all__ = ["LIST_SUFFIXES", "PROGRAM_SUFFIXES", "STRUCTURED_SUFFIXES", "LintOptions", "LintResult",
+           "ZeroError", "lint_bytes", "lint_document", "lint_file", "lint_machine", "lint_program",
+           "lint_structured", "lint_tree", "selected_rules"]

@@ -1,0 +1,200 @@
+"""The parsed form of a list file: keys, entries, comments and the document.
+
+Everything here is plain data produced by :mod:`zero.lists.tokenizer`. Column offsets
+stored on items are 0-based character offsets into the decoded line; spans for
+findings are made from them with :meth:`zero.diagnostics.Span.on_line`.
+"""
+
+from __future__ import annotations
+
+import enum
+import re
+import sys
+from dataclasses import dataclass, field
+
+# An index with more digits than this is not converted to an int: it is clamped
+# to HUGE_INDEX, which lies beyond every array size, and reported as such.
+MAX_INDEX_DIGITS = 18
+HUGE_INDEX = 10**MAX_INDEX_DIGITS
+
+_KEY_RE = re.compile(r"[A-Za-z0-9_]+(?:\[[0-9]+\])*(?:\.[A-Za-z0-9_]+(?:\[[0-9]+\])*)*")
+_INDEX_RE = re.compile(r"\[([0-9]+)\]")
+
+
+class ValueKind(enum.Enum):
+    """What a value looks like, before the registry says what it should be."""
+
+    INT = "int"  # -12, +7, 0
+    HEX = "hex"  # 0x400001
+    REAL = "real"  # 1.5, 1e-6
+    REF = "ref"  # P-AXIS-00212.0: the value of another parameter
+    FLAGS = "flags"  # PLC_INFO | MOS
+    WORD = "word"  # ABSOLUT, X_Achse, ./listen/achsmds1.lis, 20804,20805
+    QUOTED = "quoted"  # "text with ( # spaces"
+
+
+class CommentStyle(enum.Enum):
+    HASH = "#"
+    PAREN = "("
+    BLOCK = "/*"
+    TEXT = "text"  # plain words after a value
+
+
+@dataclass(frozen=True, slots=True)
+class Key:
+    """A parameter key such as ``np_grp[5].achse[2].versch``.
+
+    ``pattern`` has the indices removed (``np_grp[].achse[].versch``), which is
+    how the registry spells keys; ``indices`` holds them in order.
+    """
+
+    text: str
+    pattern: str
+    indices: tuple[int, ...]
+
+    @property
+    def members(self) -> list[str]:
+        return self.pattern.replace("[]", "").split(".")
+
+    @property
+    def huge_index(self) -> bool:
+        return any(i >= HUGE_INDEX for i in self.indices)
+
+
+_key_cache: dict[str, Key | None] = {}
+
+
+def parse_key(text: str, trusted: bool = False) -> Key | None:
+    """Parse a key; ``None`` when it is not of the form ``name[n].name...``.
+
+    ``trusted``: the caller has matched the key form already (the tokenizer's fast path).
+    Patterns are interned: a million keys share a handful of pattern strings.
+    """
+    cached = _key_cache.get(text)
+    if cached is not None or text in _key_cache:
+        return cached
+    key: Key | None = None
+    if trusted or _KEY_RE.fullmatch(text):
+        if "[" in text:
+            digits = _INDEX_RE.findall(text)
+            indices = tuple(
+                int(d) if len(d) <= MAX_INDEX_DIGITS else HUGE_INDEX for d in digits
+            )
+            key = Key(text, sys.intern(_INDEX_RE.sub("[]", text)), indices)
+        else:
+            key = Key(text, text, ())
+    if len(_key_cache) < 200_000 and len(text) < 512:
+        _key_cache[text] = key
+    return key
+
+
+def format_key(pattern: str, indices: tuple[int, ...] | list[int]) -> str:
+    """Fill the ``[]`` slots of a pattern with indices: the inverse of ``parse_key``."""
+    parts = pattern.split("[]")
+    out = [parts[0]]
+    for i, rest in enumerate(parts[1:]):
+        out.append(f"[{indices[i]}]" if i < len(indices) else "[]")
+        out.append(rest)
+    return "".join(out)
+
+
+@dataclass(slots=True, eq=False)
+class Entry:
+    """``KEY VALUE [COMMENT]`` on one line.
+
+    Offsets are 0-based into ``Document.lines[line - 1]``. ``key_text`` is the
+    key as the engineer meant it (whitespace inside removed); ``key_raw`` is the
+    text as written, which differs when the key had whitespace inside.
+    """
+
+    line: int
+    key_raw: str
+    key_text: str
+    key: Key | None
+    key_start: int
+    key_end: int
+    value: str
+    value_kind: ValueKind | None
+    value_start: int
+    value_end: int
+    comment: str | None = None
+    comment_start: int = -1
+    comment_style: CommentStyle | None = None
+    annotation: str | None = None
+    annotation_start: int = -1
+    after_end: bool = False
+
+
+@dataclass(slots=True, eq=False)
+class Comment:
+    """A full-line comment. ``commented_out`` holds a ``#key value`` entry."""
+
+    line: int
+    text: str
+    commented_out: Entry | None = None
+
+
+@dataclass(slots=True, eq=False)
+class Blank:
+    line: int
+
+
+@dataclass(slots=True, eq=False)
+class End:
+    """The ``Ende`` line: the controller stops reading here."""
+
+    line: int
+    start: int
+
+
+@dataclass(slots=True, eq=False)
+class Invalid:
+    """A line that is no entry, comment or blank line."""
+
+    line: int
+    text: str
+
+
+Item = Entry | Comment | Blank | End | Invalid
+
+
+@dataclass(frozen=True, slots=True)
+class Problem:
+    """A fault the tokenizer saw, named by ``kind``; :mod:`zero.rules` gives it a code."""
+
+    kind: str
+    line: int
+    start: int
+    end: int
+    detail: str = ""
+
+
+@dataclass(slots=True, eq=False)
+class Document:
+    """A whole list file as read: its lines, items, encoding and line endings."""
+
+    path: str
+    encoding: str
+    lines: list[str]
+    endings: list[str]
+    items: list[Item]
+    problems: list[Problem] = field(default_factory=list)
+    bom: bool = False
+    end_line: int | None = None
+
+    @property
+    def entries(self) -> list[Entry]:
+        """The entries the controller reads (before ``Ende``)."""
+        return [i for i in self.items if type(i) is Entry and not i.after_end]
+
+    @property
+    def newline(self) -> str:
+        """The dominant line ending ("\\n" when the file has none)."""
+        crlf = sum(1 for e in self.endings if e == "\r\n")
+        lf = sum(1 for e in self.endings if e == "\n")
+        return "\r\n" if crlf > lf else "\n"
+
+    def line_text(self, line: int) -> str:
+        if 1 <= line <= len(self.lines):
+            return self.lines[line - 1]
+        return ""

@@ -1,0 +1,277 @@
+"""Read a list file exactly: bytes in, a :class:`~zero.lists.model.Document` out.
+
+The scanner is hand-written and works one line at a time:
+
+1. Decode the bytes (:mod:`zero.lists.encoding`), remembering the encoding.
+2. Split on ``\\n`` only; a ``\\r`` before it is the CRLF ending of that line.
+3. Classify each line: blank, full-line comment, ``Ende``, entry, or invalid.
+
+It never raises on any input: every fault becomes a :class:`~zero.lists.model.Problem`
+with its location, which :mod:`zero.rules.syntax` turns into a finding.
+"""
+
+from __future__ import annotations
+
+import re
+
+from zero.lists.encoding import decode
+from zero.lists.model import (
+    Blank,
+    Comment,
+    CommentStyle,
+    Document,
+    End,
+    Entry,
+    Invalid,
+    Item,
+    Problem,
+    ValueKind,
+    parse_key,
+)
+
+END_KEYWORD = "Ende"
+_WS = " \t"
+
+_INT_RE = re.compile(r"[+-]?[0-9]+")
+_HEX_RE = re.compile(r"[+-]?0[xX][0-9A-Fa-f]+")
+_REAL_RE = re.compile(r"[+-]?(?:[0-9]+\.[0-9]*|\.[0-9]+|[0-9]+(?=[eE]))(?:[eE][+-]?[0-9]+)?")
+_REF_RE = re.compile(r"P-[A-Z]{4}-[0-9]{5}(?:\.[0-9]+)?")
+_ANNOTATION_RE = re.compile(r"\(\s*(P-[A-Z]{4}-[0-9]{5})")
+# A token that continues a key after whitespace: `.member`, `[n]` or a lone `]`.
+_KEY_CONTINUATION_RE = re.compile(
+    r"(?:\.[A-Za-z_][A-Za-z0-9_]*(?:\[[0-9]*\]?)*|\[[0-9]*\]?)(?:\.[A-Za-z0-9_]+(?:\[[0-9]+\])*)*|\]"
+)
+_MAX_KEY_JOINS = 8
+# The common line, matched in one go: `KEY VALUE [COMMENT]` where nothing needs the
+# careful scanner (no quotes, flags, key continuations or `Ende`). Whatever this does
+# not match goes to scan_line, which gives the same result for what it does match.
+_FAST_ENTRY_RE = re.compile(
+    r"[ \t]*([A-Za-z_][A-Za-z0-9_]*(?:\[[0-9]+\])*(?:\.[A-Za-z0-9_]+(?:\[[0-9]+\])*)*)"
+    r"[ \t]+([^\s\"|.\[\]][^\s|]*)(?:[ \t]+([^\s|].*)|[ \t]*)\Z", re.DOTALL)
+_KIND_RE = re.compile(
+    r"(?P<int>[+-]?[0-9]+)|(?P<hex>[+-]?0[xX][0-9A-Fa-f]+)|(?P<ref>P-[A-Z]{4}-[0-9]{5}(?:\.[0-9]+)?)"
+    r"|(?P<real>[+-]?(?:[0-9]+\.[0-9]*|\.[0-9]+|[0-9]+(?=[eE]))(?:[eE][+-]?[0-9]+)?)")
+_KIND_OF = {"int": ValueKind.INT, "hex": ValueKind.HEX, "ref": ValueKind.REF, "real": ValueKind.REAL}
+_STYLE_OF = {"#": CommentStyle.HASH, "(": CommentStyle.PAREN}
+# Control characters other than tab; \r only counts when it is not a CRLF ending.
+_CONTROL_RE = re.compile(r"[\x00-\x08\x0b-\x1f\x7f-\x9f\udc80-\udcff]")
+
+
+def classify_value(value: str) -> ValueKind:
+    """The lexical kind of an unquoted value."""
+    if _INT_RE.fullmatch(value):
+        return ValueKind.INT
+    if _HEX_RE.fullmatch(value):
+        return ValueKind.HEX
+    if _REF_RE.fullmatch(value):
+        return ValueKind.REF
+    if "|" in value:
+        return ValueKind.FLAGS
+    if _REAL_RE.fullmatch(value):
+        return ValueKind.REAL
+    return ValueKind.WORD
+
+
+def comment_style(comment: str) -> CommentStyle:
+    if comment.startswith("#"):
+        return CommentStyle.HASH
+    if comment.startswith("("):
+        return CommentStyle.PAREN
+    if comment.startswith("/*"):
+        return CommentStyle.BLOCK
+    return CommentStyle.TEXT
+
+
+def _skip_ws(s: str, i: int, n: int) -> int:
+    while i < n and s[i] in _WS:
+        i += 1
+    return i
+
+
+def _skip_token(s: str, i: int, n: int) -> int:
+    while i < n and s[i] not in _WS:
+        i += 1
+    return i
+
+
+def scan_entry(s: str, start: int, line: int, problems: list[Problem] | None) -> Item:
+    """Scan ``KEY VALUE [COMMENT]`` starting at ``start`` of line text ``s``."""
+    n = len(s)
+    key_end = _skip_token(s, start, n)
+    key_text = s[start:key_end]
+    # Whitespace inside a key (`np_grp[0].achse[1]. inaktiv`): join the pieces so
+    # the entry keeps its meaning, and report the gap.
+    gaps: list[tuple[int, int]] = []
+    while len(gaps) < _MAX_KEY_JOINS:
+        nxt = _skip_ws(s, key_end, n)
+        if nxt >= n or nxt == key_end:
+            break
+        nxt_end = _skip_token(s, nxt, n)
+        token = s[nxt:nxt_end]
+        if key_text[-1] in ".[" or _KEY_CONTINUATION_RE.fullmatch(token):
+            gaps.append((key_end, nxt))
+            key_text += token
+            key_end = nxt_end
+        else:
+            break
+    key = parse_key(key_text)
+    if key is None:
+        if problems is not None:
+            problems.append(Problem("malformed-line", line, start, key_end, key_text))
+        return Invalid(line, s)
+    if gaps and problems is not None:
+        problems.append(Problem("key-whitespace", line, gaps[0][0], gaps[-1][1], key_text))
+
+    if key_text == END_KEYWORD and not gaps:
+        return End(line, start)
+
+    vs = _skip_ws(s, key_end, n)
+    if vs >= n:
+        if problems is not None:
+            problems.append(Problem("missing-value", line, start, key_end, key_text))
+        return Entry(line, s[start:key_end], key_text, key, start, key_end, "", None, vs, vs)
+
+    if s[vs] == '"':
+        close = s.find('"', vs + 1)
+        if close < 0:
+            if problems is not None:
+                problems.append(Problem("unterminated-quote", line, vs, n, key_text))
+            return Entry(
+                line, s[start:key_end], key_text, key, start, key_end,
+                s[vs:n], ValueKind.QUOTED, vs, n,
+            )
+        ve = close + 1
+        kind = ValueKind.QUOTED
+    else:
+        ve = _skip_token(s, vs, n)
+        # Flag combinations continue across spaces: `REPORT | REPORT_EXTENDED |PRINT`.
+        while True:
+            nxt = _skip_ws(s, ve, n)
+            if nxt >= n:
+                break
+            if s[ve - 1] == "|" or s[nxt] == "|":
+                ve = _skip_token(s, nxt, n)
+            else:
+                break
+        kind = classify_value(s[vs:ve])
+
+    entry = Entry(
+        line, s[start:key_end], key_text, key, start, key_end, s[vs:ve], kind, vs, ve
+    )
+    cs = _skip_ws(s, ve, n)
+    if cs < n:
+        comment = s[cs:]
+        entry.comment = comment
+        entry.comment_start = cs
+        entry.comment_style = comment_style(comment)
+        if "P-" in comment:
+            m = _ANNOTATION_RE.search(comment)
+            if m:
+                entry.annotation = m.group(1)
+                entry.annotation_start = cs + m.start(1)
+    return entry
+
+
+def scan_line(s: str, line: int, problems: list[Problem]) -> Item:
+    """Classify one line (without its line ending)."""
+    n = len(s)
+    i = _skip_ws(s, 0, n)
+    if i >= n or not s.strip():
+        return Blank(line)
+    if s[i] == "#":
+        if i + 1 >= n or s[i + 1] in _WS:
+            return Comment(line, s)
+        inner = scan_entry(s, i + 1, line, None)
+        commented = inner if type(inner) is Entry and inner.value else None
+        problems.append(
+            Problem("hash-no-space", line, i, i + 1, "entry" if commented is not None else "")
+        )
+        return Comment(line, s, commented)
+    return scan_entry(s, i, line, problems)
+
+
+def _scan_controls(lines: list[str], problems: list[Problem]) -> None:
+    for number, s in enumerate(lines, 1):
+        for m in _CONTROL_RE.finditer(s):
+            ch = m.group()
+            code = ord(ch)
+            if code == 0:
+                problems.append(Problem("nul-byte", number, m.start(), m.end()))
+            elif 0xDC80 <= code <= 0xDCFF:
+                problems.append(
+                    Problem("undecodable", number, m.start(), m.end(), f"0x{code - 0xDC00:02X}")
+                )
+            else:
+                problems.append(
+                    Problem("control-char", number, m.start(), m.end(), f"U+{code:04X}")
+                )
+
+
+def tokenize_text(text: str, path: str = "-", encoding: str = "utf-8", bom: bool = False,
+                  use_fast: bool = True) -> Document:
+    """Tokenize already decoded text."""
+    raw_lines = text.split("\n")
+    endings = ["\n"] * (len(raw_lines) - 1) + [""]
+    if raw_lines and raw_lines[-1] == "":
+        raw_lines.pop()
+        endings.pop()
+    lines: list[str] = []
+    for idx, s in enumerate(raw_lines):
+        if s.endswith("\r") and endings[idx] == "\n":
+            lines.append(s[:-1])
+            endings[idx] = "\r\n"
+        else:
+            lines.append(s)
+
+    problems: list[Problem] = []
+    items: list[Item] = []
+    end_line: int | None = None
+    after_end_reported = False
+    fast = _FAST_ENTRY_RE.match if use_fast else None
+    kind_match = _KIND_RE.fullmatch
+    append = items.append
+    for number, s in enumerate(lines, 1):
+        m = fast(s) if fast is not None else None
+        if m is not None and end_line is None and m.group(1) != END_KEYWORD:
+            key_text, value, comment = m.group(1, 2, 3)
+            ks, ke = m.span(1)
+            vs, ve = m.span(2)
+            km = kind_match(value)
+            kind = _KIND_OF[km.lastgroup] if km is not None and km.lastgroup else ValueKind.WORD
+            entry = Entry(number, key_text, key_text, parse_key(key_text, True), ks, ke, value, kind, vs, ve)
+            if comment is not None:
+                cs = m.start(3)
+                entry.comment = comment
+                entry.comment_start = cs
+                entry.comment_style = _STYLE_OF.get(comment[0]) or comment_style(comment)
+                if "P-" in comment:
+                    am = _ANNOTATION_RE.search(comment)
+                    if am:
+                        entry.annotation = am.group(1)
+                        entry.annotation_start = cs + am.start(1)
+            append(entry)
+            continue
+        item = scan_line(s, number, problems)
+        if end_line is not None:
+            if type(item) is Entry:
+                item.after_end = True
+            if type(item) in (Entry, Invalid, End) and not after_end_reported:
+                after_end_reported = True
+                problems.append(Problem("after-end", number, 0, len(s), str(end_line)))
+        elif type(item) is End:
+            end_line = number
+        append(item)
+
+    if _CONTROL_RE.search(text):
+        _scan_controls(lines, problems)
+    if "\r\n" in endings and "\n" in endings:
+        first = endings.index("\n" if endings[0] == "\r\n" else "\r\n")
+        problems.append(Problem("mixed-endings", first + 1, len(lines[first]), len(lines[first])))
+    problems.sort(key=lambda p: (p.line, p.start))
+    return Document(path, encoding, lines, endings, items, problems, bom, end_line)
+
+
+def tokenize(data: bytes, path: str = "-") -> Document:
+    """Tokenize the bytes of a list file. Never raises."""
+    text, encoding, bom = decode(data)
+    return tokenize_text(text, path, encoding, bom)

@@ -1,0 +1,1 @@
+"""NC programs: ``program`` reads the constructs the N rules check (``#MACHINE DATA``, G98/G99)."""

@@ -1,0 +1,117 @@
+"""Reports for machines: JSON (zero's stable contract), concise lines, GitHub annotations,
+GitLab code quality, JUnit XML and SARIF 2.1.0.
+"""
+
+from __future__ import annotations
+
+import hashlib
+import json
+import os
+from collections.abc import Callable, Sequence
+from typing import TextIO
+
+from zero import __version__
+from zero.diagnostics import Diagnostic, Severity
+from zero.engine.lint import LintResult
+from zero.output.text import printable
+from zero.rules import RULES
+
+
+def _all(results: Sequence[LintResult]) -> list[Diagnostic]:
+    return [d for r in results for d in r.diagnostics]
+
+
+def render_json(results: Sequence[LintResult], stream: TextIO) -> None:
+    """The JSON contract of ``--output-format json``: one object per finding."""
+    data = [d.to_json() for r in results for d in r.diagnostics]
+    stream.write(json.dumps(data, indent=2) + "\n")
+
+
+def render_concise(results: Sequence[LintResult], stream: TextIO) -> None:
+    """One line per finding: ``path:line:col: CODE severity message``."""
+    for d in _all(results):
+        stream.write(f"{d.path}:{d.span.line}:{d.span.column}: {d.code} {d.severity.label} "
+                     f"{printable(d.message)}\n")
+
+
+def _gh_escape(text: str, prop: bool = False) -> str:
+    text = text.replace("%", "%25").replace("\r", "%0D").replace("\n", "%0A")
+    return text.replace(":", "%3A").replace(",", "%2C") if prop else text
+
+
+def render_github(results: Sequence[LintResult], stream: TextIO) -> None:
+    """GitHub Actions workflow commands: an annotation per finding."""
+    level = {Severity.ERROR: "error", Severity.WARNING: "warning", Severity.INFO: "notice"}
+    for d in _all(results):
+        props = (f"file={_gh_escape(d.path, True)},line={d.span.line},col={d.span.column},"
+                 f"endLine={d.span.end_line},endColumn={d.span.end_column},"
+                 f"title={_gh_escape(f'zero {d.code}', True)}")
+        stream.write(f"::{level[d.severity]} {props}::{_gh_escape(f'{d.code} {d.message}')}\n")
+
+
+def render_gitlab(results: Sequence[LintResult], stream: TextIO) -> None:
+    """GitLab code quality report (a JSON array of issues)."""
+    severity = {Severity.ERROR: "major", Severity.WARNING: "minor", Severity.INFO: "info"}
+    out = []
+    for d in _all(results):
+        fp = hashlib.sha256(f"{d.path}\0{d.code}\0{d.span.line}\0{d.message}".encode(
+            "utf-8", "surrogateescape")).hexdigest()
+        out.append({"description": f"{d.code} {d.message}", "check_name": d.code, "fingerprint": fp,
+                    "severity": severity[d.severity],
+                    "location": {"path": d.path, "lines": {"begin": d.span.line, "end": d.span.end_line}}})
+    stream.write(json.dumps(out, indent=2) + "\n")
+
+
+def render_junit(results: Sequence[LintResult], stream: TextIO) -> None:
+    """JUnit XML: one test suite per file, one failing test case per finding."""
+    import xml.etree.ElementTree as ET  # start-up: only for JUnit output
+
+    total = sum(len(r.diagnostics) for r in results)
+    suites = ET.Element("testsuites", name="zero", tests=str(max(total, len(results))),
+                        failures=str(total))
+    for r in results:
+        suite = ET.SubElement(suites, "testsuite", name=r.path, tests=str(max(len(r.diagnostics), 1)),
+                              failures=str(len(r.diagnostics)))
+        if not r.diagnostics:
+            ET.SubElement(suite, "testcase", name=f"{r.path} clean", classname=r.path)
+        for d in r.diagnostics:
+            case = ET.SubElement(suite, "testcase", name=f"{d.code} line {d.span.line}",
+                                 classname=r.path, file=r.path, line=str(d.span.line))
+            failure = ET.SubElement(case, "failure", message=printable(d.message), type=d.code)
+            failure.text = (f"{d.path}:{d.span.line}:{d.span.column}: {d.code} {d.severity.label} "
+                            f"{printable(d.message)}")
+    stream.write(ET.tostring(suites, encoding="unicode", xml_declaration=True) + "\n")
+
+
+def render_sarif(results: Sequence[LintResult], stream: TextIO) -> None:
+    """SARIF 2.1.0: the rules that fired and one result per finding."""
+    level = {Severity.ERROR: "error", Severity.WARNING: "warning", Severity.INFO: "note"}
+    used = sorted({d.code for d in _all(results)})
+    rules = [{"id": c, "name": RULES[c].name, "shortDescription": {"text": RULES[c].summary},
+              "fullDescription": {"text": RULES[c].explanation.strip()},
+              "defaultConfiguration": {"level": level[RULES[c].severity]},
+              "help": {"text": RULES[c].explanation.strip()}} for c in used if c in RULES]
+    index = {c: i for i, c in enumerate(used)}
+    res = []
+    for d in _all(results):
+        item: dict[str, object] = {
+            "ruleId": d.code, "ruleIndex": index[d.code], "level": level[d.severity],
+            "message": {"text": printable(d.message)},
+            "locations": [{"physicalLocation": {
+                "artifactLocation": {"uri": d.path.replace(os.sep, "/")},
+                "region": {"startLine": d.span.line, "startColumn": d.span.column,
+                           "endLine": d.span.end_line, "endColumn": d.span.end_column}}}],
+        }
+        if d.param_id:
+            item["properties"] = {"parameterId": d.param_id}
+        res.append(item)
+    log = {"$schema": "https://json.schemastore.org/sarif-2.1.0.json", "version": "2.1.0",
+           "runs": [{"tool": {"driver": {"name": "zero", "version": __version__,
+                                         "informationUri": "https://zero.invalid/", "rules": rules}},
+                     "results": res, "columnKind": "unicodeCodePoints"}]}
+    stream.write(json.dumps(log, indent=2) + "\n")
+
+
+RENDERERS: dict[str, Callable[[Sequence[LintResult], TextIO], None]] = {
+    "json": render_json, "concise": render_concise, "github": render_github, "gitlab": render_gitlab,
+    "junit": render_junit, "sarif": render_sarif}

@@ -1,0 +1,119 @@
+"""Tables: the changes of ``zero diff`` and the soft limits of ``zero limits``, as a rich
+table on a terminal and as aligned plain text otherwise.
+"""
+
+from __future__ import annotations
+
+import sys
+from collections.abc import Iterable, Sequence
+from typing import TextIO
+
+from zero.catalog.ids import fixed, g_code
+from zero.diff import ADDED, CHANGED, COMMENT, REMOVED, SAME, Change
+from zero.machine.limits import Ip247Violation, LimitRow
+from zero.output.text import use_color
+
+
+def format_delta(c: Change) -> str:
+    if c.delta is None:
+        return ""
+    if isinstance(c.delta, float) or (c.unit or "").startswith(("mm", "°")):
+        text = f"{c.delta:+.4f}"
+    else:
+        text = f"{c.delta:+d}" if isinstance(c.delta, int) else f"{c.delta:+g}"
+    return f"{text} {c.unit}" if c.unit else text
+
+
+_MARK = {ADDED: "+", REMOVED: "-", CHANGED: "~", SAME: "=", COMMENT: "#"}
+
+
+def rows(changes: Iterable[Change]) -> list[tuple[str, list[tuple[str, ...]]]]:
+    """Changes as (group, rows of cells) for the text and table renderers."""
+    out: list[tuple[str, list[tuple[str, ...]]]] = []
+    for c in changes:
+        if not out or out[-1][0] != c.group:
+            out.append((c.group, []))
+        old = "(absent)" if c.old is None else c.old
+        new = "(absent)" if c.new is None else c.new
+        out[-1][1].append((_MARK[c.kind], c.key, c.param_id or "", f"{old} → {new}",
+                           format_delta(c), c.note))
+    return out
+
+
+def render_plain(changes: list[Change], header: str) -> str:
+    lines = [header]
+    for group, cells in rows(changes):
+        lines.append(f"\n{group}")
+        widths = [max(len(r[i]) for r in cells) for i in range(5)]
+        for r in cells:
+            text = "  ".join(r[i].rjust(widths[i]) if i == 4 else r[i].ljust(widths[i])
+                             for i in range(5)).rstrip()
+            lines.append(f"  {text}" + (f"  ({r[5]})" if r[5] else ""))
+    return "\n".join(lines) + "\n"
+
+
+def summary(changes: list[Change]) -> str:
+    n = {k: sum(1 for c in changes if c.kind == k) for k in _MARK}
+    parts = [f"{n[CHANGED]} changed", f"{n[ADDED]} added", f"{n[REMOVED]} removed"]
+    if n[COMMENT]:
+        parts.append(f"{n[COMMENT]} comments changed")
+    if n[SAME]:
+        parts.append(f"{n[SAME]} same effective value")
+    return ", ".join(parts)
+
+
+def render_diff(changes: Sequence[Change], header: str, stream: TextIO | None = None,
+                color: bool | None = None) -> None:
+    """The changes of ``zero diff``: a rich table on a terminal, aligned text otherwise."""
+    stream = stream or sys.stdout
+    if not (use_color(stream) if color is None else color):
+        stream.write(render_plain(list(changes), header))
+        stream.write(summary(list(changes)) + "\n")
+        return
+    from rich.console import Console  # start-up: rich only on a terminal
+    from rich.table import Table  # start-up: as above
+
+    console = Console(file=stream, force_terminal=True, highlight=False, emoji=False, markup=False)
+    console.print(header, style="bold")
+    styles = {"+": "green", "-": "red", "~": "yellow", "=": "dim", "#": "cyan"}
+    for group, cells in rows(changes):
+        table = Table(title=group, title_justify="left", title_style="bold", box=None, pad_edge=False)
+        for name in ("", "key", "ID", "old → new", "delta", ""):
+            table.add_column(name, no_wrap=name in ("key", "ID"))
+        for r in cells:
+            table.add_row(*r, style=styles.get(r[0], ""))
+        console.print(table)
+    console.print(summary(list(changes)), style="bold")
+
+
+def _ip247_line(v: Ip247Violation) -> str:
+    return f"IP247: {v.what} {fixed(v.value, 'mm')} outside ±99999.999 mm ({v.where})"
+
+
+def render_limits(rows: Sequence[LimitRow], violations: Sequence[Ip247Violation] = (),
+                  stream: TextIO | None = None, color: bool | None = None) -> None:
+    """``zero limits``: a rich table on a terminal, aligned text otherwise."""
+    stream = stream or sys.stdout
+    head = ("ch", "offset", "axis", "unit", "ACS min", "ACS max", "offset value", "PCS min", "PCS max", "")
+    cells = [(str(r.channel), g_code(r.group), f"{r.axis_index} {r.axis_name}", r.unit,
+              *(fixed(v) for v in (r.acs_neg, r.acs_pos, r.offset, r.pcs_neg, r.pcs_pos)),
+              r.note) for r in rows]
+    if use_color(stream) if color is None else color:
+        from rich.console import Console  # start-up: rich only on a terminal
+        from rich.table import Table  # start-up: as above
+
+        table = Table(*head, title="soft limits in the programming coordinate system", title_justify="left")
+        for c in cells:
+            table.add_row(*c)
+        console = Console(file=stream, force_terminal=True, highlight=False, emoji=False, markup=False)
+        console.print(table)
+        for v in violations:
+            console.print(_ip247_line(v), style="bold red")
+        return
+    widths = [max(len(head[i]), *(len(c[i]) for c in cells)) if cells else len(head[i]) for i in range(10)]
+    right = {4, 5, 6, 7, 8}
+    for c in [head, *cells]:
+        stream.write("  ".join(c[i].rjust(widths[i]) if i in right else c[i].ljust(widths[i])
+                               for i in range(10)).rstrip() + "\n")
+    for v in violations:
+        stream.write(_ip247_line(v) + "\n")

@@ -1,0 +1,172 @@
+"""The report for people: ruff-like findings with their source line, coloured with rich
+on a terminal (rich is imported only then, so the pre-commit path stays lean), the
+summary line, ``--statistics`` and the progress bar.
+"""
+
+from __future__ import annotations
+
+import os
+import sys
+from collections import Counter
+from collections.abc import Iterable, Sequence
+from typing import TextIO
+
+from zero.diagnostics import Diagnostic, Severity
+from zero.engine.lint import LintResult
+from zero.rules import RULES
+
+Segment = tuple[str, str]  # (text, rich style)
+_SEVERITY_STYLE = {Severity.ERROR: "bold red", Severity.WARNING: "bold yellow",
+                   Severity.INFO: "bold blue"}
+_SOURCE_WINDOW = 120
+
+
+def use_color(stream: TextIO) -> bool:
+    """Colour only on a terminal, and never with NO_COLOR set."""
+    if os.environ.get("NO_COLOR"):
+        return False
+    if os.environ.get("FORCE_COLOR"):
+        return True
+    isatty = getattr(stream, "isatty", None)
+    return bool(isatty and isatty())
+
+
+def _window(text: str, start: int, end: int) -> tuple[str, int, int]:
+    """Cut a long source line around the span; return text and new offsets."""
+    text = text.replace("\t", " ")
+    if len(text) <= _SOURCE_WINDOW:
+        return text, start, end
+    left = max(0, min(start - 20, len(text) - _SOURCE_WINDOW))
+    cut = text[left : left + _SOURCE_WINDOW]
+    prefix = "…" if left > 0 else ""
+    suffix = "…" if left + _SOURCE_WINDOW < len(text) else ""
+    shift = len(prefix) - left
+    return prefix + cut + suffix, start + shift, min(end + shift, len(prefix) + len(cut))
+
+
+def printable(text: str) -> str:
+    """Make control characters and stray bytes visible."""
+    return "".join(
+        ch if ch == "\t" or (" " <= ch < "\x7f") or (ord(ch) > 0x9F and not 0xD800 <= ord(ch) <= 0xDFFF)
+        else "\ufffd"
+        for ch in text
+    )
+
+
+def diagnostic_lines(d: Diagnostic, source: str | None) -> list[list[Segment]]:
+    head: list[Segment] = [
+        (f"{d.path}:{d.span.line}:{d.span.column}: ", "bold"),
+        (d.code, _SEVERITY_STYLE[d.severity]),
+        (f" {d.severity.label} ", _SEVERITY_STYLE[d.severity]),
+        (printable(d.message), ""),
+    ]
+    out = [head]
+    if source is not None:
+        start = d.span.column - 1
+        end = d.span.end_column - 1 if d.span.end_line == d.span.line else len(source)
+        text, s, e = _window(source, start, max(end, start))
+        text = printable(text)
+        num = str(d.span.line)
+        pad = " " * len(num)
+        out.append([(f" {pad} |", "blue")])
+        out.append([(f" {num} | ", "blue"), (text, "")])
+        out.append([(f" {pad} | ", "blue"), (" " * max(s, 0) + "^" * max(e - s, 1),
+                                              _SEVERITY_STYLE[d.severity])])
+    if d.hint:
+        out.append([(f" {' ' * len(str(d.span.line))} = ", "blue"), ("hint: ", "bold"), (d.hint, "")])
+    out.append([("", "")])
+    return out
+
+
+def summary_line(results: Sequence[LintResult]) -> str:
+    counts = {s: 0 for s in Severity}
+    for r in results:
+        for d in r.diagnostics:
+            counts[d.severity] += 1
+    files = len(results)
+    clean = sum(1 for r in results if not r.diagnostics)
+
+    def n(count: int, word: str) -> str:
+        return f"{count} {word}{'' if count == 1 else 's'}"
+
+    return (
+        f"{n(files, 'file')} checked ({clean} clean): {n(counts[Severity.ERROR], 'error')}, "
+        f"{n(counts[Severity.WARNING], 'warning')}, {n(counts[Severity.INFO], 'info')}"
+    )
+
+
+class TextWriter:
+    """Writes segment lines plain, or through rich when colour is on."""
+
+    def __init__(self, stream: TextIO, color: bool) -> None:
+        self.stream = stream
+        self.console = None
+        if color:
+            from rich.console import Console  # start-up: rich only when colour is on
+
+            self.console = Console(file=stream, force_terminal=True, highlight=False,
+                                   soft_wrap=True, emoji=False, markup=False)
+
+    def line(self, segments: Iterable[Segment]) -> None:
+        if self.console is None:
+            self.stream.write("".join(t for t, _ in segments) + "\n")
+            return
+        from rich.text import Text  # start-up: rich only when colour is on
+
+        self.console.print(Text.assemble(*[(t, s) if s else t for t, s in segments]))
+
+
+def render_text(results: Sequence[LintResult], stream: TextIO | None = None,
+                color: bool | None = None, summary: bool = True,
+                summary_stream: TextIO | None = None) -> None:
+    """Findings with their source line; the summary line to ``summary_stream`` (default: the
+    same stream; the CLI sends it to stderr so that standard output holds findings only)."""
+    stream = stream or sys.stdout
+    writer = TextWriter(stream, use_color(stream) if color is None else color)
+    for r in results:
+        for d in r.diagnostics:
+            src = r.document.line_text(d.span.line) if d.span.line <= len(r.document.lines) else None
+            for segs in diagnostic_lines(d, src):
+                writer.line(segs)
+    if summary:
+        worst = max((r.worst for r in results if r.worst is not None), default=None)
+        style = _SEVERITY_STYLE[worst] if worst is not None else "bold green"
+        target = writer
+        if summary_stream is not None and summary_stream is not stream:
+            target = TextWriter(summary_stream, use_color(summary_stream) if color is None else color)
+        target.line([(summary_line(results), style)])
+
+
+def statistics(results: Sequence[LintResult]) -> str:
+    """Counts per code, most frequent first (``--statistics``)."""
+    counts = Counter(d.code for r in results for d in r.diagnostics)
+    lines = [f"{n:>7}  {code}  {RULES[code].name if code in RULES else ''}"
+             for code, n in sorted(counts.items(), key=lambda kv: (-kv[1], kv[0]))]
+    return "\n".join(lines) + ("\n" if lines else "")
+
+
+PROGRESS_MIN_FILES = 200
+
+
+class ProgressBar:
+    """A one-line progress bar on stderr, only on a terminal and only for long runs."""
+
+    def __init__(self, stream: TextIO | None = None) -> None:
+        self.stream = stream or sys.stderr
+        self.shown = False
+
+    def start(self, total: int) -> ProgressBar | None:
+        if total < PROGRESS_MIN_FILES or not self.stream.isatty():
+            return None
+        self.shown = True
+        return self
+
+    def __call__(self, done: int, total: int) -> None:
+        width = 30
+        filled = width * done // max(total, 1)
+        self.stream.write(f"\r\033[Kzero: [{'#' * filled}{'.' * (width - filled)}] {done}/{total} files")
+        self.stream.flush()
+
+    def finish(self) -> None:
+        if self.shown:
+            self.stream.write("\r\033[K")

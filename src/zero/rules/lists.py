@@ -1,0 +1,25 @@
+"""The list families together: one list checked by every selected S, R and M rule, then
+the suppressions written in it applied (Z). The engine lints a list through
+:func:`check_document`; the N rules lint the key and value of an ``AXPARAM`` the same way.
+"""
+
+from __future__ import annotations
+
+from zero.catalog.registry import Registry
+from zero.diagnostics import Diagnostic, Severity
+from zero.lists.model import Document
+from zero.rules import meaning, registry, suppress, syntax
+from zero.rules.base import Check, Context, declared_codes, run_checks
+
+FAMILIES = (syntax.FAMILY, registry.FAMILY, meaning.FAMILY)
+CHECKS: list[Check[Context]] = [c for family in FAMILIES for c in family.checks]
+
+
+def check_document(doc: Document, registry: Registry, kind: str | None,
+                   severities: dict[str, Severity]) -> tuple[Context, list[Diagnostic]]:
+    """The list's context (kind detected when ``None``) and its findings, sorted, suppressions applied."""
+    ctx = Context.of(doc, registry, kind)
+    ctx.severities = severities
+    found = run_checks(CHECKS, ctx)
+    found.sort(key=Diagnostic.sort_key)
+    return ctx, suppress.apply(doc, found, severities, declared_codes())

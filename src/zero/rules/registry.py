@@ -1,0 +1,444 @@
+"""R rules: each entry against the registry — key, index, type, range, references."""
+
+from __future__ import annotations
+
+import difflib
+from collections.abc import Iterator
+
+from zero.catalog.ids import SOFT_LIMITS
+from zero.catalog.ranges import Bounds, Number, Range, Ref
+from zero.catalog.registry import KINDS, ParamSpec
+from zero.catalog.values import Resolved, Value, default_number
+from zero.diagnostics import Diagnostic, Edit, Fix, Span
+from zero.lists.model import Entry, format_key
+from zero.rules.base import Context, E, Family, W
+
+FAMILY: Family[Context] = Family("R", "registry", "list")
+
+# ------------------------------------------------------------------ keys: R001, R002, R003
+
+UNKNOWN_KEY = FAMILY.rule(
+    "R001", "unknown-key", E, "A key the parameter description does not know",
+    """
+What it checks: every key (with its indices removed) must be a parameter of the list's
+kind in the registry. zero says which list a key belongs to when it is valid elsewhere,
+and proposes the closest known key.
+
+Why it matters on the machine: unknown entries are not taken over; the parameter the
+engineer meant keeps its default, and the start-up shows only a warning.
+
+Example: `kenngr.swe_pso 15000000`
+Fix: correct the key (`kenngr.swe_pos`), or load the description of your kernel with
+`--param-desc` if the key is newer than zero's table.
+""")
+ALIAS_KEY = FAMILY.rule(
+    "R002", "alias-key", W, "An undocumented spelling of a documented key",
+    """
+What it checks: keys that the vendor's own lists use but the parameter description
+does not, and that stand for a documented parameter (German or older spellings such as
+`syn_chk.fehler_pro_zeile` for `syn_chk.errors_per_block`). The value is checked
+against the documented parameter.
+
+Why it matters on the machine: a kernel that no longer accepts the old spelling does not
+take the entry over and uses the default instead.
+
+Fix: use the documented key.
+""")
+INDEX_OUT_OF_RANGE = FAMILY.rule(
+    "R003", "index-out-of-range", E, "An array index beyond the array's size",
+    """
+What it checks: each index of a key against the array size in the registry
+(`np_grp` 0..96, `achse` 0..31, `getriebe` 0..5, ...; the tool list `wz` counts from 1).
+
+Why it matters on the machine: the element does not exist; the entry is not taken over.
+
+Example: `np_grp[97].achse[0].versch 100`
+Fix: use an index inside the range.
+""")
+
+_KIND_NAMES = {k: v[1] for k, v in KINDS.items()}
+
+
+def _key_span(e: Entry) -> Span:
+    return Span.on_line(e.line, e.key_start, e.key_end)
+
+
+@FAMILY.check(UNKNOWN_KEY, ALIAS_KEY, INDEX_OUT_OF_RANGE)
+def check_keys(ctx: Context) -> Iterator[Diagnostic]:
+    """R001, R002, R003: key known, spelling documented, indices inside the arrays."""
+    reg = ctx.registry
+    for e in ctx.entries:
+        key = e.key
+        if key is None:
+            continue
+        spec = reg.by_pattern(key.pattern, ctx.kind)
+        if spec is None:
+            alias = reg.alias(key.pattern, ctx.kind)
+            if alias is not None:
+                yield ctx.report(
+                    "R002",
+                    _key_span(e),
+                    f"`{e.key_text}` is not in the parameter description; it stands for "
+                    f"`{alias.key}` ({alias.id}). A kernel that does not accept this spelling "
+                    f"ignores the entry and uses the default {alias.default_display}",
+                    param_id=alias.id,
+                    hint=f"use `{format_key(alias.key or '', key.indices)}`",
+                    fix=Fix(
+                        f"Use the documented key `{alias.key}`",
+                        (Edit(_key_span(e), format_key(alias.key or "", key.indices)),),
+                        safe=False,
+                    ),
+                )
+                continue
+            yield _unknown_key(ctx, e)
+            continue
+        if not key.indices:
+            continue
+        dims = spec.dims
+        for pos, idx in enumerate(key.indices):
+            if pos >= len(dims):
+                break
+            size = dims[pos]
+            base = spec.index_base if pos == 0 else 0
+            if idx < base or (base == 0 and size > 0 and idx >= size):
+                members = key.members
+                member = members[pos] if pos < len(members) else "?"
+                name = key.pattern.split("[]")[pos].rsplit(".", 1)[-1] or member
+                shown = str(idx) if idx < 10**18 else f"{str(idx)[:6]}…"
+                valid = f"{base}.." if base else f"0..{size - 1}"
+                yield ctx.report(
+                    "R003",
+                    _key_span(e),
+                    f"index {shown} of `{name}` is outside {valid}: the element does not exist "
+                    "and the controller does not take the entry over",
+                    param_id=spec.id,
+                )
+                break
+
+
+def _unknown_key(ctx: Context, e: Entry) -> Diagnostic:
+    assert e.key is not None
+    reg = ctx.registry
+    other = [k for k in reg.kinds_of(e.key.pattern) if k != ctx.kind]
+    hint = None
+    fix = None
+    if other:
+        where = _KIND_NAMES.get(other[0], other[0])
+        spec = reg.by_pattern(e.key.pattern, other[0])
+        pid = f" ({spec.id})" if spec else ""
+        msg = (f"`{e.key_text}` belongs to the {where}{pid}, not to this "
+               f"{_KIND_NAMES.get(ctx.kind or '', 'list')}: not taken over by the controller")
+        hint = "check that this is the right file, or override the detection with --kind"
+    else:
+        msg = f"unknown key `{e.key_text}`: not taken over by the controller"
+        near = reg.suggest(e.key.pattern, ctx.kind)
+        if near:
+            proposal = format_key(near[0], e.key.indices)
+            hint = f"did you mean `{proposal}`?"
+            fix = Fix(f"Replace with `{proposal}`", (Edit(_key_span(e), proposal),), safe=False)
+    return ctx.report("R001", _key_span(e), msg, hint=hint, fix=fix)
+
+
+# ------------------------------------------------------- values: R004, R005, R006, R009
+
+WRONG_TYPE = FAMILY.rule(
+    "R004", "wrong-type", E, "A value that is not of the parameter's type",
+    """
+What it checks: integers must be integers that fit the type (`12.5` or `abc` for an
+SGN32 are wrong, `70000` does not fit UNS16), numbers must be numbers, strings must not
+exceed their maximum length.
+
+Why it matters on the machine: the plausibility check at start-up rejects the entry and
+replaces it with the parameter's default value.
+
+Example: `kenngr.swe_pos 1500.5`
+Fix: write the value in the parameter's unit as an integer (`kenngr.swe_pos 15005000`).
+""")
+OUT_OF_RANGE = FAMILY.rule(
+    "R005", "out-of-range", E, "A value outside the parameter's range or allowed set",
+    """
+What it checks: the value against the range of the parameter description (for example
+`MIN(SGN32) < x < MAX(SGN32)`, `0 ... 96`, `-1, 0, 1`), BOOLEAN values against 0/1
+(or FALSE/TRUE), and symbolic values against the allowed symbols.
+
+Why it matters on the machine: the controller replaces a faulty value with the default
+at start-up — silently changing, for example, a soft limit or an offset.
+
+Example: `kenngr.swe_behaviour WARN`
+Fix: use a value inside the range; `zero param KEY` shows it.
+""")
+RANGE_REFERENCE = FAMILY.rule(
+    "R006", "range-reference", E, "A range over other parameters that the list violates",
+    """
+What it checks: ranges that name other parameters (`1 ≤ a_emergency ≤ 2*P-AXIS-00008`,
+`P-AXIS-00201 ≤ tr_grenz`), evaluated with the values of the same list, or the other
+parameter's default when the list does not set it.
+
+Why it matters on the machine: the controller checks the same relation at start-up and
+replaces the faulty value with its default.
+
+Fix: adjust either value; the message names both.
+""")
+UNKNOWN_REFERENCE = FAMILY.rule(
+    "R009", "unknown-reference", E, "A parameter reference to an unknown ID",
+    """
+What it checks: values of the form `P-AXIS-00212.0` ("the value of that parameter,
+element 0") must name a parameter the registry knows.
+
+Why it matters on the machine: the controller cannot resolve the reference; the entry is
+faulty and the default is used.
+
+Fix: correct the ID.
+""")
+
+_SIMPLE_PROBLEMS = {
+    "type": ("R004", "`{value}` is not {what} ({type}) for `{key}`"),
+    "overflow": ("R004", "{value} does not fit {type} for `{key}`"),
+    "length": ("R004", "the string for `{key}` has {detail} characters, more than the {max_len} allowed"),
+    "bool": ("R005", "`{value}` is not a BOOLEAN (0/1, FALSE/TRUE) for `{key}`"),
+}
+
+
+def _value_span(e: Entry) -> Span:
+    if e.value_end > e.value_start:
+        return Span.on_line(e.line, e.value_start, e.value_end)
+    return Span.on_line(e.line, e.key_start, e.key_end)
+
+
+def _fmt(n: Number | None) -> str:
+    if n is None:
+        return "?"
+    if isinstance(n, float) and n.is_integer() and abs(n) < 1e15:
+        return str(int(n))
+    return str(n)
+
+
+def _default_phrase(spec: ParamSpec) -> str:
+    return f"the controller replaces it with the default {spec.default_display} at start-up"
+
+
+@FAMILY.check(WRONG_TYPE, OUT_OF_RANGE, RANGE_REFERENCE, UNKNOWN_REFERENCE)
+def check_values(ctx: Context) -> Iterator[Diagnostic]:
+    """R004, R005, R006, R009: type, range, references."""
+    for res in ctx.resolved:
+        yield from _check_value(ctx, res)
+
+
+def _check_value(ctx: Context, res: Resolved) -> Iterator[Diagnostic]:
+    e, spec, v = res.entry, res.spec, res.value
+    if e.value_kind is None:
+        return
+    if v.problem is None and v.ref is None:  # the common case: a number or text to range-check
+        yield from _check_range(ctx, e, spec, v)
+        return
+    span = _value_span(e)
+    if v.ref is not None:
+        rid, _ = v.ref
+        if ctx.registry.get(rid) is None:
+            yield ctx.report(
+                "R009",
+                span,
+                f"`{e.value}` refers to the unknown parameter {rid}: the controller cannot "
+                f"resolve it; {_default_phrase(spec)}",
+                param_id=spec.id,
+            )
+        return
+    simple = _SIMPLE_PROBLEMS.get(v.problem or "")
+    if simple is not None:
+        code, template = simple
+        what = {"integer": "an integer", "number": "a number"}.get(v.detail, v.detail)
+        text = template.format(value=e.value, key=e.key_text, type=spec.type, what=what,
+                               detail=v.detail, max_len=spec.max_len)
+        yield ctx.report(code, span, f"{text}: {_default_phrase(spec)}", param_id=spec.id)
+        return
+    if v.problem == "symbol":
+        names = [s for s, _ in spec.symbols]
+        near = difflib.get_close_matches(v.detail, names, n=1, cutoff=0.6)
+        shown = ", ".join(names[:8]) + (", …" if len(names) > 8 else "")
+        yield ctx.report(
+            "R005",
+            span,
+            f"`{v.detail}` is not an allowed value of `{e.key_text}` ({shown}): "
+            f"{_default_phrase(spec)}",
+            param_id=spec.id,
+            hint=f"did you mean `{near[0]}`?" if near else None,
+        )
+        return
+
+
+_defaults: dict[int, tuple[ParamSpec, Number | None]] = {}
+_constant: dict[int, tuple[Range, Bounds | None]] = {}
+
+
+def _default_of(spec: ParamSpec) -> Number | None:
+    """default_number(spec), computed once per spec object."""
+    hit = _defaults.get(id(spec))
+    if hit is None or hit[0] is not spec:
+        hit = (spec, default_number(spec))
+        _defaults[id(spec)] = hit
+    return hit[1]
+
+
+def _check_range(ctx: Context, e: Entry, spec: ParamSpec, v: Value) -> Iterator[Diagnostic]:
+    if v.number is None or (spec.range_text is None):
+        return
+    dflt = _default_of(spec)
+    if dflt is not None and v.number == dflt:
+        return  # the default itself is never faulty (some vendor ranges exclude it); no parse needed
+    rng = ctx.registry.range_of(spec)
+    if rng is None:
+        return
+    hit = _constant.get(id(rng))
+    if hit is None or hit[0] is not rng:  # constant bounds are evaluated once per range
+        const = rng.allowed is None and not rng.refs
+        hit = (rng, rng.evaluate(lambda *_: None) if const else None)
+        _constant[id(rng)] = hit
+    if hit[1] is not None and hit[1].contains(v.number):
+        return
+    span = _value_span(e)
+    if rng.allowed is not None:
+        if v.number not in rng.allowed:
+            allowed = ", ".join(_fmt(a) for a in rng.allowed)
+            yield ctx.report(
+                "R005",
+                span,
+                f"{e.value} is not one of {allowed} for `{e.key_text}`: {_default_phrase(spec)}",
+                param_id=spec.id,
+            )
+        return
+    # The soft-limit pair (swe_neg < swe_pos) is explained by M001 when it is on;
+    # here only the fixed sides of their ranges are checked then.
+    skip_refs = "M001" in ctx.severities and spec.id in SOFT_LIMITS
+    indices = e.key.indices if e.key else ()
+
+    def resolve(pid: str, idx: int | None) -> Number | None:
+        if skip_refs:
+            return None
+        return ctx.number_of(pid, (idx,) if idx is not None else indices)
+
+    bounds = rng.evaluate(resolve)
+    if bounds.contains(v.number):
+        return
+    refs = [] if skip_refs else rng.refs
+    text = _bounds_text(bounds, rng.low, rng.high)
+    if refs:
+        yield ctx.report(
+            "R006",
+            span,
+            f"{e.value} violates {text} for `{e.key_text}` ({_ref_values(ctx, refs, indices)}): "
+            f"{_default_phrase(spec)}",
+            param_id=spec.id,
+        )
+    else:
+        yield ctx.report(
+            "R005",
+            span,
+            f"{e.value} is outside {text} for `{e.key_text}`: {_default_phrase(spec)}",
+            param_id=spec.id,
+        )
+
+
+def _bounds_text(b: Bounds, low: object, high: object) -> str:
+    parts = []
+    if b.low is not None:
+        shown = _fmt(b.low) if str(low) == _fmt(b.low) else f"{low} = {_fmt(b.low)}"
+        parts.append(f"{shown} {'<' if b.low_strict else '≤'} ")
+    parts.append("x")
+    if b.high is not None:
+        shown = _fmt(b.high) if str(high) == _fmt(b.high) else f"{high} = {_fmt(b.high)}"
+        parts.append(f" {'<' if b.high_strict else '≤'} {shown}")
+    return "".join(parts)
+
+
+def _ref_values(ctx: Context, refs: list[Ref], indices: tuple[int, ...]) -> str:
+    out = []
+    for r in refs:
+        spec = ctx.registry.get(r.id)
+        idx = (r.index,) if r.index is not None else indices
+        if spec is None:
+            continue
+        dims = len(spec.dims)
+        key = format_key(spec.key or r.id, (idx + (0,) * dims)[:dims])
+        where = ctx.value_of(r.id, (idx + (0,) * dims)[:dims])
+        if where is not None:
+            out.append(f"{key} is {_fmt(ctx.number_of(r.id, idx))} on line {where.entry.line}")
+        else:
+            out.append(f"{key} is not set, default {_fmt(ctx.number_of(r.id, idx))}")
+    return "; ".join(out)
+
+
+# ------------------------------------------------------------------ R007, R008
+
+DUPLICATE_KEY = FAMILY.rule(
+    "R007", "duplicate-key", W, "The same key twice in one list",
+    """
+What it checks: a key that appears more than once before `Ende`.
+
+Why it matters on the machine: the controller reads the list top to bottom, so the later
+value overwrites the earlier one. The earlier line has no effect, but whoever edits it
+believes it does. (The vendor's own SERCOS axis lists set `kenngr.antr_typ` twice.)
+
+Fix: delete one of the entries (unsafe fix: removes the earlier line).
+""")
+
+
+@FAMILY.check(DUPLICATE_KEY)
+def check_duplicates(ctx: Context) -> Iterator[Diagnostic]:
+    """R007: the later entry wins."""
+    seen: dict[str, Entry] = {}
+    for e in ctx.entries:
+        if e.key is None:
+            continue
+        first = seen.get(e.key_text)
+        if first is None:
+            seen[e.key_text] = e
+            continue
+        spec = ctx.registry.by_pattern(e.key.pattern, ctx.kind)
+        yield ctx.report(
+            "R007",
+            _key_span(e),
+            f"`{e.key_text}` is already set on line {first.line} ({first.value}); this later "
+            f"value {e.value} overwrites it, so line {first.line} has no effect",
+            param_id=spec.id if spec else None,
+            fix=Fix(
+                f"Delete the earlier entry on line {first.line}",
+                (Edit(Span(first.line, 1, first.line + 1, 1), ""),),
+                safe=False,
+            ),
+        )
+        seen[e.key_text] = e
+
+
+ANNOTATION_MISMATCH = FAMILY.rule(
+    "R008", "annotation-mismatch", W, "A `( P-XXXX-nnnnn` comment names another parameter",
+    """
+What it checks: vendor lists annotate entries with their ID in a comment
+(`kenngr.swe_pos 15000000 ( P-AXIS-00178 : ...`). zero compares the ID with the key's.
+
+Why it matters on the machine: nothing for the controller, which ignores comments; but
+engineers look up parameters by these IDs, and a wrong one sends them to the wrong page
+of the manual. Seven such annotations are in the vendor's SDK lists.
+
+Fix: correct the ID in the comment (safe fix).
+""")
+
+
+@FAMILY.check(ANNOTATION_MISMATCH)
+def check_annotations(ctx: Context) -> Iterator[Diagnostic]:
+    """R008: `( P-XXXX-nnnnn` comment naming another parameter than the key."""
+    for res in ctx.resolved:
+        e = res.entry
+        if e.annotation is None or e.annotation == res.spec.id or res.via_alias:
+            continue
+        other = ctx.registry.get(e.annotation)
+        what = f" (that is `{other.key}`)" if other and other.key else ""
+        span = Span.on_line(e.line, e.annotation_start, e.annotation_start + 12)
+        fix = Fix(f"Write {res.spec.id} in the comment", (Edit(span, res.spec.id),))
+        yield ctx.report(
+            "R008",
+            span,
+            f"the comment names {e.annotation}{what}, but `{e.key_text}` is {res.spec.id}",
+            param_id=res.spec.id,
+            fix=fix,
+            hint=fix.title,
+        )

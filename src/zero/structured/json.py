@@ -1,0 +1,90 @@
+"""The JSON form: ``json`` writes and reads the data; JSON has no comments, so they
+travel in ``_zero.comments`` (by key) and ``_zero.tail_comments``. Duplicate keys in
+one object are refused (JSON readers keep only the last).
+"""
+
+from __future__ import annotations
+
+import json
+from typing import Any
+
+from zero.errors import ZeroError
+from zero.structured.common import (
+    emit_items,
+    finish,
+    walk_mapping,
+)
+from zero.structured.tree import META_KEY, Tree
+
+# ------------------------------------------------------------------------- JSON
+
+
+def write_json(tree: Tree) -> str:
+    body: dict[str, Any] = {}
+    comments: dict[str, dict[str, Any]] = {}
+    for segs, leaf in emit_items(tree):
+        node = body
+        for seg in segs[:-1]:
+            node = node.setdefault(seg, {})
+        node[segs[-1]] = leaf.value
+        c: dict[str, Any] = {}
+        if leaf.before:
+            c["before"] = leaf.before
+        if leaf.after is not None:
+            c["after"] = leaf.after
+        if c:
+            comments[leaf.key] = c
+    meta = dict(tree.meta)
+    if comments:
+        meta["comments"] = comments
+    if tree.tail:
+        meta["tail_comments"] = tree.tail
+    body[META_KEY] = meta
+    return json.dumps(body, ensure_ascii=False, indent=2) + "\n"
+
+
+
+# ------------------------------------------------------------------------- JSON
+
+
+def _no_duplicates(pairs: list[tuple[str, Any]]) -> dict[str, Any]:
+    out: dict[str, Any] = {}
+    for k, v in pairs:
+        if k in out:
+            raise ZeroError(f"duplicate key `{k}` in one object; JSON readers keep only the last")
+        out[k] = v
+    return out
+
+
+def read_json(text: str, path: str = "-") -> Tree:
+    try:
+        data = json.loads(text, object_pairs_hook=_no_duplicates)
+    except ZeroError as exc:
+        raise ZeroError(exc.message, path) from None
+    except json.JSONDecodeError as exc:
+        raise ZeroError(f"not valid JSON: {exc.msg}", path, exc.lineno, exc.colno) from None
+    except RecursionError:
+        raise ZeroError("not read: nested too deeply", path) from None
+    if not isinstance(data, dict):
+        raise ZeroError("the top level must be an object of keys, not a "
+                           + type(data).__name__, path)
+    leaves, meta = walk_mapping(data, path, None)
+    tail: list[str] = []
+    if isinstance(meta, dict):
+        comments = meta.pop("comments", None)
+        raw_tail = meta.pop("tail_comments", None)
+        if isinstance(raw_tail, list):
+            tail = [x for x in raw_tail if isinstance(x, str)]
+        if isinstance(comments, dict):
+            for leaf in leaves:
+                c = comments.get(leaf.key)
+                if isinstance(c, dict):
+                    before = c.get("before")
+                    if isinstance(before, list):
+                        leaf.before = [x for x in before if isinstance(x, str)]
+                    after = c.get("after")
+                    if isinstance(after, str) and after.strip(" \t"):
+                        leaf.after = after.rstrip(" \t")
+    return finish(leaves, meta, tail, path)
+
+

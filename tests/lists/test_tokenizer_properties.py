@@ -1,0 +1,56 @@
+"""Property tests of the tokenizer (bounded so CI stays fast)."""
+
+from __future__ import annotations
+
+import pytest
+from hypothesis import example, given, settings
+from hypothesis import strategies as st
+
+from zero.lists.encoding import decode
+from zero.lists.model import Blank, Comment, End, Entry, Invalid
+from zero.lists.tokenizer import tokenize, tokenize_text
+
+
+@settings(max_examples=300, deadline=None)
+@given(st.binary(max_size=2000))
+def test_tokenizer_never_raises_and_is_lossless(data: bytes) -> None:
+    doc = tokenize(data)
+    text, encoding, bom = decode(data)
+    rebuilt = "".join(line + end for line, end in zip(doc.lines, doc.endings, strict=True))
+    assert rebuilt == text
+    assert (b"\xef\xbb\xbf" if bom else b"") + rebuilt.encode(encoding, "surrogateescape") == data
+    assert len(doc.items) == len(doc.lines)
+
+
+@settings(max_examples=200, deadline=None)
+@given(st.binary(max_size=500))
+def test_every_line_is_one_item(data: bytes) -> None:
+    doc = tokenize(data)
+    for n, item in enumerate(doc.items, 1):
+        assert isinstance(item, Entry | Comment | Blank | End | Invalid) and item.line == n
+
+
+_FAST_PARTS = st.sampled_from([
+    "np_grp[1].achse[2].versch", "kenngr.swe_pos", "a", "Ende", "5abc", "x.0y", " ", "\t", "  ",
+    "1", "-5", "+7", "0x1F", "1.5", "1e3", ".5", "[3]", "]", ".m", "P-AXIS-00212.0", "A|B", "|",
+    "A", "|B", '"q s"', '"', "( c", "/* x */", "# h", "#", "plain", "\xa0", "\x0c", "\r", "µ", "ä",
+])
+
+
+@pytest.mark.slow
+@settings(max_examples=500, deadline=None)
+@given(st.lists(st.lists(_FAST_PARTS, max_size=6).map("".join), max_size=12).map("\n".join))
+@example("Ende 5\na 1\nEnde")
+@example("a .b 1\na [1] 2\na 1 |B\na 1| B\nk \"q s\" c\nk\xa0v 1\nk v\xa0c")
+def test_fast_path_reads_exactly_like_the_careful_scanner(text: str) -> None:
+    def shape(doc):  # type: ignore[no-untyped-def]
+        out = []
+        for item in doc.items:
+            fields = {k: getattr(item, k) for k in getattr(item, "__slots__", ())}
+            if "commented_out" in fields and fields["commented_out"] is not None:
+                co = fields["commented_out"]
+                fields["commented_out"] = {k: getattr(co, k) for k in co.__slots__}
+            out.append((type(item).__name__, fields))
+        return out, doc.problems
+
+    assert shape(tokenize_text(text)) == shape(tokenize_text(text, use_fast=False))

@@ -1,0 +1,120 @@
+"""A machine across its lists: resolution, X rules (golden), zero limits by hand, IP247."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+
+import pytest
+from typer.testing import CliRunner
+
+from conftest import FIXTURES, builtin_registry, golden
+from zero.catalog.registry import Registry
+from zero.cli.app import app
+from zero.engine.lint import lint_machine
+from zero.machine.limits import pcs_limits
+from zero.machine.model import load_machine
+from zero.rules import RULES
+
+runner = CliRunner()
+BAD = FIXTURES / "machine" / "listen" / "hochlauf.lis"
+CLEAN = FIXTURES / "machine-clean" / "listen" / "hochlauf.lis"
+
+
+def x_findings(startup: Path) -> list[dict[str, object]]:
+    _, results = lint_machine(startup, builtin_registry())
+    return [{"file": Path(d.path).name, "line": d.span.line, "code": d.code, "severity": d.severity.label}
+            for r in results for d in r.diagnostics]
+
+
+def test_fixture_machine_golden(request: pytest.FixtureRequest) -> None:
+    actual = x_findings(BAD)
+    expected = golden(FIXTURES / "machine" / "expected.json", actual, request.config.getoption("--update-golden"))
+    assert actual == expected
+    fired = {f["code"] for f in actual}
+    assert {c for c in RULES if c.startswith("X")} <= fired  # every X rule fails on the fixture
+
+
+def test_clean_machine_has_no_findings() -> None:
+    assert x_findings(CLEAN) == []
+
+
+def test_corpus_start_up_lists_resolve_their_machine(registry: Registry, corpus: Path) -> None:
+    listen = corpus / "isg-sdk" / "listen"
+    for startup in (listen / "hochlauf.lis", listen / "SoE" / "hochlauf.lis"):
+        m = load_machine(startup, registry)
+        assert m.missing == [], startup
+        assert len(m.axis_lists) == 4 and len(m.channels) == 1
+        assert [(a.index, a.log_nr, a.name) for a in m.channels[0].axes] == [(0, 1, "X"), (1, 2, "Y"), (2, 3, "Z")]
+        _, results = lint_machine(startup, registry)
+        assert not [d for r in results for d in r.diagnostics if d.code.startswith("X")]
+
+
+def test_pcs_limits_by_hand(registry: Registry) -> None:
+    rows = {(r.group, r.axis_name): r for r in pcs_limits(load_machine(CLEAN, registry))}
+    g54_x = rows[(1, "X")]  # X: -1000 .. 1500 mm, G54 offset +10 mm
+    assert (g54_x.pcs_neg, g54_x.pcs_pos) == (-10_000_000 - 100_000, 15_000_000 - 100_000)
+    g54_c = rows[(1, "C")]  # C: -360 .. 360°, offset 90°
+    assert (g54_c.unit, g54_c.pcs_neg, g54_c.pcs_pos) == ("°", -4_500_000, 2_700_000)
+    g55_x = rows[(2, "X")]  # offset -500 mm
+    assert (g55_x.pcs_neg, g55_x.pcs_pos) == (-5_000_000, 20_000_000)
+    g53_x = rows[(0, "X")]  # g53_verfuegbar 1 but no group-0 offset
+    assert (g53_x.offset, g53_x.pcs_neg) == (0, -10_000_000)
+    assert {r.group for r in rows.values()} == set(range(7))
+    masked = {(r.group, r.axis_name): r for r in pcs_limits(load_machine(BAD, registry))}[(3, "Y")]
+    assert masked.masked and masked.offset == 0 and masked.pcs_pos == 5_000_000
+
+
+def test_limits_command_text_json_and_ip247(tmp_path: Path) -> None:
+    r = runner.invoke(app, ["limits", "--machine", str(CLEAN)], env={"NO_COLOR": "1"})
+    assert r.exit_code == 0
+    lines = [line.split() for line in r.stdout.splitlines()]
+    assert ["0", "G54", "0", "X", "mm", "-1000.0000", "1500.0000", "10.0000", "-1010.0000", "1490.0000"] in lines
+    data = json.loads(runner.invoke(app, ["limits", "--machine", str(CLEAN), "--output-format", "json"]).stdout)
+    first = next(x for x in data["limits"] if x["g_code"] == "G54" and x["name"] == "X")
+    assert (first["pcs_neg"], first["pcs_pos"], first["unit"]) == (-1010.0, 1490.0, "mm")
+    assert runner.invoke(app, ["limits", "--machine", str(CLEAN), "--profile", "ip247"]).exit_code == 0
+    bad = runner.invoke(app, ["limits", "--machine", str(BAD), "--profile", "ip247", "--output-format", "json"])
+    assert bad.exit_code == 1
+    violations = json.loads(bad.stdout)["violations"]
+    # X: soft limits -1000 / +1500 mm, tool 2 offset 99,000 mm on X → 100,500 / -100,000 mm
+    assert [(v["what"], v["value"]) for v in violations] == [
+        ("positive soft limit of X plus tool 2", 1_005_000_000),
+        ("negative soft limit of X plus tool 2", -1_000_000_000),
+        ("offset G159=9 axis 0", 2_140_000_000)]
+    assert runner.invoke(app, ["limits", "--machine", str(tmp_path / "none.lis")]).exit_code == 2
+
+
+def test_lint_machine_cli() -> None:
+    r = runner.invoke(app, ["lint", "--machine", str(BAD), "--output-format", "json"])
+    assert r.exit_code == 1
+    codes = {d["code"] for d in json.loads(r.stdout)}
+    assert {"X001", "X002", "X003", "X004", "X005", "X006", "X007"} <= codes
+    assert runner.invoke(app, ["lint", "--machine", str(CLEAN)]).exit_code == 0
+
+
+def test_machine_from_configuration(tmp_path: Path) -> None:
+    import shutil
+
+    root = tmp_path / "machine"
+    shutil.copytree(FIXTURES / "machine-clean", root)
+    shutil.copy(P_BAD := FIXTURES / "programs" / "bad.nc", root / "part.nc")
+    (root / "zero.toml").write_text('[machine]\nstartup = "listen/hochlauf.lis"\n'
+                                    '"achs_mds[1]" = "listen/achse_c.lis"\n')
+    r = runner.invoke(app, ["lint", str(root / "part.nc"), "--select", "N004", "--output-format", "concise"])
+    assert "N004" in r.stdout  # programs are checked against the configured machine
+    r = runner.invoke(app, ["config", "--show", str(root / "part.nc")])
+    assert 'startup = "' in r.stdout and "achs_mds[1]" in r.stdout
+    import os
+
+    cwd = os.getcwd()
+    try:
+        os.chdir(root)
+        r = runner.invoke(app, ["limits", "--output-format", "json"])
+    finally:
+        os.chdir(cwd)
+    assert r.exit_code == 0, r.output
+    rows = json.loads(r.stdout)["limits"]
+    # the override makes achs_mds[1] the C list: logical axis 2 (Y) has no list any more
+    assert {x["name"] for x in rows} == {"X", "C"}
+    assert P_BAD.exists()

@@ -1,0 +1,64 @@
+"""NC programs: #MACHINE DATA and G98/G99 against the machine (N rules)."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+from typer.testing import CliRunner
+
+from conftest import FIXTURES, builtin_registry, golden
+from zero.cli.app import app
+from zero.engine.lint import lint_program
+from zero.machine.model import load_machine
+from zero.nc.program import strip_comments
+from zero.rules import RULES
+
+runner = CliRunner()
+P = FIXTURES / "programs"
+MACHINE = FIXTURES / "machine" / "listen" / "hochlauf.lis"
+CLEAN_MACHINE = FIXTURES / "machine-clean" / "listen" / "hochlauf.lis"
+
+
+def findings(path: Path, machine: Path | None) -> list[dict[str, object]]:
+    registry = builtin_registry()
+    m = load_machine(machine, registry) if machine else None
+    result = lint_program(path.read_bytes(), registry, path.name, machine=m)
+    return [{"line": d.span.line, "column": d.span.column, "code": d.code, "severity": d.severity.label}
+            for d in result.diagnostics]
+
+
+def test_bad_program_golden(request: pytest.FixtureRequest) -> None:
+    actual = findings(P / "bad.nc", MACHINE)
+    expected = golden(P / "bad.expected.json", actual, request.config.getoption("--update-golden"))
+    assert actual == expected
+    assert {f["code"] for f in actual} == {c for c in RULES if c.startswith("N")}
+
+
+@pytest.mark.parametrize("machine", [None, MACHINE, CLEAN_MACHINE])
+def test_good_program_is_clean(machine: Path | None) -> None:
+    assert findings(P / "good.nc", machine) == []
+
+
+def test_without_a_machine_only_syntax_and_order() -> None:
+    assert {f["code"] for f in findings(P / "bad.nc", None)} == {"N001", "N002"}
+
+
+def test_widening_is_fine_when_allowed() -> None:
+    # the clean machine does not set range_check_prog_soft_limits: widening is allowed
+    codes = [f["code"] for f in findings(P / "bad.nc", CLEAN_MACHINE)]
+    assert "N003" not in codes and codes.count("N004") == 2
+
+
+def test_comments_and_strings() -> None:
+    assert strip_comments("N10 G98 X1 ( c G99 ) Y2 ; G99 X5") == "N10 G98 X1           Y2 "
+    kept = 'N10 #MSG ["(not a comment) ; nor this"] '
+    assert strip_comments(kept + "(but this") == kept + " " * len("(but this")
+
+
+def test_cli_lints_programs_with_and_without_machine() -> None:
+    r = runner.invoke(app, ["lint", str(P / "bad.nc"), "--output-format", "concise"])
+    assert r.exit_code == 1 and "N001" in r.stdout and "N004" not in r.stdout
+    r = runner.invoke(app, ["lint", "--machine", str(MACHINE), str(P / "bad.nc"), "--select", "N",
+                            "--output-format", "concise"])
+    assert r.exit_code == 1 and r.stdout.count("N004") == 2

@@ -1,0 +1,133 @@
+"""Machine-readable outputs of zero lint, through typer's runner and the lean entry point."""
+
+from __future__ import annotations
+
+import json
+import subprocess
+import sys
+import xml.etree.ElementTree as ET
+from pathlib import Path
+
+import pytest
+from typer.testing import CliRunner
+
+from conftest import FIXTURES
+from zero.cli.app import app
+
+SEED = str(FIXTURES / "seed" / "nullp_3achsen.lis")
+CLEAN = str(FIXTURES / "rules" / "M006" / "pass.lis")
+runner = CliRunner()
+
+
+def run(*args: str) -> tuple[int, str, str]:
+    """The real console entry (lean path) in a subprocess: exit code, stdout, stderr."""
+    p = subprocess.run([sys.executable, "-m", "zero", "lint", *args], capture_output=True, text=True,
+                       env={"NO_COLOR": "1", "PATH": ""}, check=False)
+    return p.returncode, p.stdout, p.stderr
+
+
+@pytest.mark.parametrize("via", ["subprocess", "runner"])
+def test_concise_and_summary_on_stderr(via: str) -> None:
+    if via == "runner":
+        r = runner.invoke(app, ["lint", "--output-format", "concise", SEED])
+        code, out, _err = r.exit_code, r.stdout, r.stderr
+    else:
+        code, out, _err = run("--output-format", "concise", SEED)
+    assert code == 1
+    lines = out.splitlines()
+    assert len(lines) == 7
+    assert lines[0] == (f"{SEED}:19:20: S004 error whitespace inside the key `np_grp[0].achse[1].inaktiv`: "
+                        "the controller reads a different, unknown key and does not take the entry over")
+    assert "checked" not in out
+
+
+def test_text_summary_goes_to_stderr() -> None:
+    code, out, err = run(SEED)
+    assert code == 1
+    assert "1 file checked (0 clean): 2 errors, 0 warnings, 5 infos" in err
+    assert "checked" not in out and "S004" in out
+
+
+def test_github_annotations() -> None:
+    _code, out, _ = run("--output-format", "github", SEED)
+    first = out.splitlines()[0]
+    assert first.startswith(f"::error file={SEED},line=19,col=20,endLine=19,endColumn=21,title=zero S004::S004 ")
+    assert sum(1 for x in out.splitlines() if x.startswith("::notice ")) == 5
+
+
+def test_gitlab_code_quality() -> None:
+    _, out, _ = run("--output-format", "gitlab", SEED)
+    issues = json.loads(out)
+    assert len(issues) == 7
+    assert {i["severity"] for i in issues} == {"major", "info"}
+    assert len({i["fingerprint"] for i in issues}) == 7
+    assert issues[0]["location"] == {"path": SEED, "lines": {"begin": 19, "end": 19}}
+
+
+def test_junit() -> None:
+    _, out, _ = run("--output-format", "junit", SEED, CLEAN)
+    root = ET.fromstring(out.split("\n", 1)[1] if out.startswith("<?xml") else out)
+    suites = root.findall("testsuite")
+    assert [s.get("name") for s in suites] == [SEED, CLEAN]
+    assert suites[0].get("failures") == "7" and suites[1].get("failures") == "0"
+    assert suites[1].find("testcase") is not None
+
+
+def test_sarif_structure() -> None:
+    _, out, _ = run("--output-format", "sarif", SEED)
+    log = json.loads(out)
+    assert log["version"] == "2.1.0"
+    run0 = log["runs"][0]
+    rules = run0["tool"]["driver"]["rules"]
+    assert [r["id"] for r in rules] == ["M003", "S004"]
+    for res in run0["results"]:
+        assert rules[res["ruleIndex"]]["id"] == res["ruleId"]
+        region = res["locations"][0]["physicalLocation"]["region"]
+        assert region["startLine"] >= 1 and region["endColumn"] >= region["startColumn"]
+    assert len(run0["results"]) == 7
+    assert {r["level"] for r in run0["results"]} == {"error", "note"}
+
+
+def test_output_file_statistics_exit_zero(tmp_path: Path) -> None:
+    target = tmp_path / "report.json"
+    code, out, err = run("--output-format", "json", "-o", str(target), "--statistics", SEED)
+    assert code == 1 and out == ""
+    assert len(json.loads(target.read_text())) == 7
+    assert "      5  M003  masked-offset\n      2  S004  key-whitespace\n" in err
+    code, _, _ = run("--exit-zero", SEED)
+    assert code == 0
+    r = runner.invoke(app, ["lint", "--exit-zero", "--output-format", "sarif", "-o", str(target), SEED])
+    assert r.exit_code == 0 and json.loads(target.read_text())["version"] == "2.1.0"
+
+
+def test_unknown_format_is_a_usage_error() -> None:
+    code, _, err = run("--output-format", "xml", SEED)
+    assert code == 2 and "xml" in err
+
+
+def test_stdin_with_a_filename(tmp_path: Path) -> None:
+    data = Path(SEED).read_bytes()
+    p = subprocess.run([sys.executable, "-m", "zero", "lint", "--stdin-filename", "m/nullp.lis",
+                        "--output-format", "concise"], input=data, capture_output=True, cwd=tmp_path,
+                       check=False)
+    assert p.returncode == 1 and p.stdout.startswith(b"m/nullp.lis:19:20: S004")
+    (tmp_path / "zero.toml").write_text('exclude = ["m/**"]\n')
+    p = subprocess.run([sys.executable, "-m", "zero", "lint", "--stdin-filename", "m/nullp.lis"],
+                       input=data, capture_output=True, cwd=tmp_path, check=False)
+    assert p.returncode == 0 and p.stdout == b""
+    p = subprocess.run([sys.executable, "-m", "zero", "lint", "-", "--fix"], input=data,
+                       capture_output=True, cwd=tmp_path, check=False)
+    assert p.stdout == data.replace(b"]. inaktiv", b"].inaktiv") and b"M003" in p.stderr
+    r = runner.invoke(app, ["lint", "--stdin-filename", "x.lis", "--output-format", "json"], input=data)
+    assert r.exit_code == 1 and len(json.loads(r.stdout)) == 7
+
+
+def test_sarif_validates_against_the_sarif_2_1_0_model() -> None:
+    sarif_pydantic = pytest.importorskip("sarif_pydantic", reason="pip install -e '.[test]'")
+    _, out, _ = run("--output-format", "sarif", SEED, CLEAN)
+    log = sarif_pydantic.Sarif.model_validate(json.loads(out))
+    assert log.version == "2.1.0" and len(log.runs[0].results) == 7
+    broken = json.loads(out)
+    broken["runs"][0]["results"][0]["level"] = "fatal"  # not a SARIF level: the model refuses it
+    with pytest.raises(ValueError):
+        sarif_pydantic.Sarif.model_validate(broken)

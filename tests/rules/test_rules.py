@@ -1,0 +1,71 @@
+"""Every rule has a failing and a passing fixture with exactly known findings."""
+
+from __future__ import annotations
+
+from pathlib import Path
+
+import pytest
+
+from conftest import FIXTURES, findings, golden
+from zero.catalog.registry import Registry
+from zero.engine.lint import lint_file
+from zero.rules import RULES
+
+RULE_DIRS = sorted(p for p in (FIXTURES / "rules").iterdir() if p.is_dir())
+
+
+def test_every_rule_has_fixtures() -> None:
+    assert RULE_DIRS, "no rule fixtures found"
+    # X rules need a whole machine: fixtures/machine (failing) and fixtures/machine-clean
+    # (tests/machine/test_machine.py)
+    # N rules read NC programs: fixtures/programs (tests/nc/test_program.py)
+    assert {p.name for p in RULE_DIRS} == {c for c in RULES if not c.startswith(("X", "N"))}
+
+
+@pytest.mark.parametrize("rule_dir", RULE_DIRS, ids=lambda p: p.name)
+def test_failing_fixture(rule_dir: Path, request: pytest.FixtureRequest, registry: Registry) -> None:
+    result = lint_file(rule_dir / "fail.lis", registry)
+    actual = findings(result)
+    expected = golden(rule_dir / "fail.expected.json", actual,
+                      request.config.getoption("--update-golden"))
+    assert actual == expected
+    assert rule_dir.name in [d["code"] for d in actual]
+
+
+@pytest.mark.parametrize("rule_dir", RULE_DIRS, ids=lambda p: p.name)
+def test_passing_fixture(rule_dir: Path, registry: Registry) -> None:
+    result = lint_file(rule_dir / "pass.lis", registry)
+    assert result.diagnostics == []
+
+
+@pytest.mark.parametrize("code", sorted(RULES))
+def test_rule_metadata(code: str) -> None:
+    r = RULES[code]
+    assert r.code == code and code[0] in "SRMZXN" and len(code) == 4
+    assert r.summary and "Why it matters on the machine" in r.explanation
+    assert "Fix" in r.explanation
+
+
+def test_rule_names_unique() -> None:
+    names = [r.name for r in RULES.values()]
+    assert len(names) == len(set(names))
+
+
+def test_disabled_rule_reports_nothing(registry: Registry) -> None:
+    from zero.engine.lint import LintOptions
+
+    result = lint_file(FIXTURES / "rules" / "M003" / "fail.lis", registry, options=LintOptions(ignore=("M",)))
+    assert result.diagnostics == []
+    result = lint_file(FIXTURES / "rules" / "R004" / "fail.lis", registry,
+                       options=LintOptions(select=("R",), ignore=("R004",)))
+    assert result.diagnostics == []
+
+
+def test_m001_replaces_generic_range_reference(registry: Registry) -> None:
+    """With M001 on, an inverted soft-limit pair is one M001, not R006 twice."""
+    from zero.engine.lint import LintOptions
+
+    path = FIXTURES / "rules" / "M001" / "fail.lis"
+    assert [d.code for d in lint_file(path, registry).diagnostics] == ["M001"]
+    generic = lint_file(path, registry, options=LintOptions(ignore=("M001",)))
+    assert [d.code for d in generic.diagnostics] == ["R006", "R006"]

@@ -1,0 +1,203 @@
+"""The layers of zero, held by a test: imports flow one way, and there is no import circle.
+
+Every ``import``/``from … import`` of a zero module counts, also inside functions and
+under ``TYPE_CHECKING``. Each package (or foundation module) may import only the
+components listed for it; an import inside a function must say why (``# start-up``).
+"""
+
+from __future__ import annotations
+
+import ast
+from pathlib import Path
+
+from conftest import ROOT
+
+SRC = ROOT / "src"
+
+# component → the components it may import (besides itself)
+FOUNDATION = "foundation"  # zero (version), zero.errors, zero.diagnostics, zero.files
+ALLOWED: dict[str, set[str]] = {
+    FOUNDATION: set(),
+    "lists": {FOUNDATION},
+    "catalog": {FOUNDATION, "lists"},
+    "structured": {FOUNDATION, "lists", "catalog"},
+    "machine": {FOUNDATION, "lists", "catalog"},
+    "nc": {FOUNDATION, "lists", "catalog"},
+    "diff": {FOUNDATION, "lists", "catalog", "structured"},
+    "rules": {FOUNDATION, "lists", "catalog", "machine", "nc"},
+    "engine": {FOUNDATION, "lists", "catalog", "structured", "machine", "nc", "diff", "rules"},
+    "output": {FOUNDATION, "lists", "catalog", "machine", "diff", "rules", "engine"},
+    "cli": {FOUNDATION, "lists", "catalog", "structured", "machine", "nc", "diff", "rules", "engine", "output"},
+}
+
+
+def module_name(path: Path) -> str:
+    parts = list(path.relative_to(SRC).with_suffix("").parts)
+    if parts[-1] == "__init__":
+        parts.pop()
+    return ".".join(parts)
+
+
+MODULES = {module_name(p): p for p in (SRC / "zero").rglob("*.py")}
+
+
+def component(module: str) -> str:
+    parts = module.split(".")
+    if len(parts) == 1 or parts[1] in ("errors", "diagnostics", "files", "__main__"):
+        return FOUNDATION if parts[-1] != "__main__" else "cli"
+    return parts[1]
+
+
+def imports(module: str) -> list[tuple[str, int, bool, str]]:
+    """(imported zero module, line, inside a function, source line) for one module."""
+    path = MODULES[module]
+    text = path.read_text(encoding="utf-8")
+    lines = text.split("\n")
+    tree = ast.parse(text)
+    inside: set[int] = set()
+    for fn in ast.walk(tree):
+        if isinstance(fn, (ast.FunctionDef, ast.AsyncFunctionDef)):
+            inside.update(id(n) for n in ast.walk(fn) if isinstance(n, (ast.Import, ast.ImportFrom)))
+    out = []
+    package = module if path.name == "__init__.py" else module.rpartition(".")[0]
+    for node in ast.walk(tree):
+        targets: list[str] = []
+        if isinstance(node, ast.Import):
+            targets = [a.name for a in node.names]
+        elif isinstance(node, ast.ImportFrom):
+            base = node.module or ""
+            if node.level:  # a relative import: resolved against the module's package
+                parts = package.split(".")[: len(package.split(".")) - node.level + 1]
+                base = ".".join([*parts, base] if base else parts)
+            for alias in node.names:
+                sub = f"{base}.{alias.name}"
+                targets.append(sub if sub in MODULES else base)
+        for t in targets:
+            if t == "zero" or t.startswith("zero."):
+                out.append((t, node.lineno, id(node) in inside, lines[node.lineno - 1]))
+    return out
+
+
+GRAPH = {m: sorted({t for t, *_ in imports(m) if t != m}) for m in MODULES}
+
+
+def test_the_modules_are_found() -> None:
+    assert len(MODULES) > 40
+    assert {component(m) for m in MODULES} == set(ALLOWED)
+
+
+def test_no_module_imports_a_layer_above_it() -> None:
+    wrong = [f"{m} imports {t} ({component(m)} may import {sorted(ALLOWED[component(m)])})"
+             for m, targets in GRAPH.items() for t in targets
+             if component(t) != component(m) and component(t) not in ALLOWED[component(m)]]
+    assert wrong == []
+
+
+def _cycles(graph: dict[str, list[str]]) -> list[list[str]]:
+    """Strongly connected components with more than one module (Tarjan), or a self-import."""
+    index: dict[str, int] = {}
+    low: dict[str, int] = {}
+    stack: list[str] = []
+    on_stack: set[str] = set()
+    out: list[list[str]] = []
+    counter = [0]
+
+    def visit(v: str) -> None:
+        index[v] = low[v] = counter[0]
+        counter[0] += 1
+        stack.append(v)
+        on_stack.add(v)
+        for w in graph.get(v, []):
+            if w not in index:
+                visit(w)
+                low[v] = min(low[v], low[w])
+            elif w in on_stack:
+                low[v] = min(low[v], index[w])
+        if low[v] == index[v]:
+            scc = []
+            while True:
+                w = stack.pop()
+                on_stack.discard(w)
+                scc.append(w)
+                if w == v:
+                    break
+            if len(scc) > 1:
+                out.append(sorted(scc))
+
+    for v in sorted(graph):
+        if v not in index:
+            visit(v)
+    return out
+
+
+def test_no_import_circle_counting_imports_inside_functions() -> None:
+    assert _cycles(GRAPH) == []
+
+
+def test_the_circle_detector_finds_a_circle() -> None:
+    assert _cycles({"a": ["b"], "b": ["c"], "c": ["a"], "d": ["a"]}) == [["a", "b", "c"]]
+
+
+def test_layers_do_not_import_each_other_in_a_circle() -> None:
+    layers: dict[str, set[str]] = {}
+    for m, targets in GRAPH.items():
+        layers.setdefault(component(m), set()).update(component(t) for t in targets if component(t) != component(m))
+    assert _cycles({k: sorted(v) for k, v in layers.items()}) == []
+
+
+def test_imports_inside_functions_say_why() -> None:
+    """An import inside a function is there for start-up time, and its line says so."""
+    silent = []
+    for path in MODULES.values():
+        text = path.read_text(encoding="utf-8")
+        lines = text.split("\n")
+        for fn in ast.walk(ast.parse(text)):
+            if isinstance(fn, (ast.FunctionDef, ast.AsyncFunctionDef)):
+                for node in ast.walk(fn):
+                    if isinstance(node, (ast.Import, ast.ImportFrom)) and "start-up" not in lines[node.lineno - 1]:
+                        silent.append(f"{path.relative_to(SRC)}:{node.lineno}: {lines[node.lineno - 1].strip()}")
+    assert silent == []
+
+
+def test_the_registry_is_passed_in_never_fetched_from_a_global() -> None:
+    """Below the command line nothing loads a registry of its own."""
+    loaders = [f"{m}:{line}" for m in MODULES if component(m) != "cli"
+               for t, line, _, src in imports(m) if "load_registry" in src and m != "zero.catalog.registry"]
+    assert loaders == []
+    assert "default_registry" not in (SRC / "zero" / "catalog" / "registry.py").read_text(encoding="utf-8")
+
+
+def test_one_error_type() -> None:
+    """Every layer raises zero.errors.ZeroError; no other exception class is defined."""
+    classes = [f"{module_name(p)}.{node.name}" for p in MODULES.values()
+               for node in ast.walk(ast.parse(p.read_text(encoding="utf-8")))
+               if isinstance(node, ast.ClassDef)
+               and any(getattr(b, "id", getattr(b, "attr", "")).endswith(("Error", "Exception")) for b in node.bases)]
+    assert classes == ["zero.errors.ZeroError"]
+
+
+def readme_tree() -> set[str]:
+    """The files of the README's layout tree (``src/zero/`` block), as paths below ``src/zero``."""
+    readme = (ROOT / "README.md").read_text(encoding="utf-8")
+    section = readme.split("## Layout", 1)[1].split("\n## ", 1)[0]
+    block = section.split("src/zero/\n", 1)[1].split("```", 1)[0]
+    out: set[str] = set()
+    folder = ""
+    for line in block.splitlines():
+        name = line.strip().split(" ", 1)[0]
+        depth = (len(line) - len(line.lstrip(" "))) // 2
+        if depth == 1:
+            folder = name if name.endswith("/") else ""
+            out.add(name.rstrip("/"))
+        elif depth == 2 and folder:
+            out.add(folder + name.rstrip("/"))
+    return out
+
+
+def test_the_readme_layout_matches_the_tree() -> None:
+    shown = readme_tree()
+    actual = {str(p.relative_to(SRC / "zero")) for p in MODULES.values()
+              if p.name != "__init__.py" or p.parent == SRC / "zero"}
+    actual |= {str(p.relative_to(SRC / "zero")) for p in (SRC / "zero").iterdir() if (p / "__init__.py").is_file()}
+    actual.add("catalog/data")
+    assert shown == actual
