@@ -11,6 +11,12 @@ from __future__ import annotations
 import functools
 import json
 import os
+import resource
+import shlex
+import subprocess
+import sys
+import time
+from dataclasses import dataclass
 from pathlib import Path
 
 import pytest
@@ -135,3 +141,45 @@ def generated_lists(draw: st.DrawFn) -> bytes:
     text = newline.join(lines) + (newline if lines and draw(st.booleans()) else "")
     encoding = draw(st.sampled_from(["utf-8", "cp1252"]))
     return text.encode(encoding)
+
+
+MiB = 1024 * 1024
+
+
+@dataclass(frozen=True)
+class Run:
+    code: int
+    out: bytes
+    err: bytes
+    seconds: float
+
+    @property
+    def stdout(self) -> str:
+        return self.out.decode("utf-8", "replace")
+
+    @property
+    def stderr(self) -> str:
+        return self.err.decode("utf-8", "replace")
+
+
+def zero_cli(*args: str, cwd: Path | None = None, stdin: bytes | None = None, timeout: float = 60.0,
+             memory_mib: int = 1024, env: dict[str, str] | None = None, prefix: tuple[str, ...] = ()) -> Run:
+    """The real ``zero`` command line in a child process, capped in address space and time.
+
+    Asserts what every run must give: an exit code zero documents and no traceback.
+    ``prefix`` runs it under another program (``capsh --drop=…``)."""
+    limit = memory_mib * MiB
+
+    def cap() -> None:
+        resource.setrlimit(resource.RLIMIT_AS, (limit, limit))
+
+    command = [sys.executable, "-m", "zero", *args]
+    if prefix:
+        command = [*prefix, " ".join(shlex.quote(c) for c in command)]
+    t0 = time.perf_counter()
+    proc = subprocess.run(command, cwd=cwd, input=stdin if stdin is not None else b"", capture_output=True,
+                          timeout=timeout, preexec_fn=cap, env={**os.environ, **(env or {})}, check=False)
+    run = Run(proc.returncode, proc.stdout, proc.stderr, time.perf_counter() - t0)
+    assert run.code in (0, 1, 2, 130, 141, 143), run
+    assert b"Traceback" not in proc.stderr, run.stderr
+    return run

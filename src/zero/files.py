@@ -1,86 +1,380 @@
 """Reading and writing files: the one module through which zero touches the disk.
 
-:func:`read_file` reads a whole file with a size cap and a one-line reason when it
-cannot; :func:`write_atomic` writes all at once or not at all (temporary file in the
-target directory, fsync, rename). Every layer that reads lists (the machine model
-follows the lists a start-up list names) and every command that writes uses these
-two functions, so a safety rule for files is made in one place.
+Every layer that reads (the commands, and the machine model, which follows the lists a
+start-up list names) and every command that writes goes through these functions, so the
+rules below hold for all of them:
+
+Reading (:func:`read_file`, :func:`read_stream`)
+  Only regular files and standard input are read. A FIFO, device, socket or directory is
+  refused at once with a one-line reason (opening never blocks); so are inputs larger
+  than :func:`max_file_bytes` (256 MiB, or ``$ZERO_MAX_FILE_SIZE``), dangling links and
+  link loops.
+
+Writing (:func:`write_atomic`)
+  The new content is complete and on disk (temporary file in the target's directory,
+  fsync) before it replaces anything. A symbolic link is written through to its target
+  and stays a link; mode, owner and group are kept; a file with several hard links, or
+  whose owner a rename could not keep, is rewritten in place after the new content is
+  safe, so every name and the owner stay. Anything that is not a regular file is never
+  replaced (``/dev/null`` and a terminal are written to, as meant); a file the user may
+  not write is refused even where a rename would be allowed; without ``force`` an
+  existing file is never replaced, atomically (a hard link claims the name), so two
+  writers racing for one new name cannot both succeed. Temporary files are removed on
+  errors, Ctrl-C and SIGTERM, and carry the writer's process ID, so one left by a killed
+  process is removed by the next write to the same target.
 """
 
 from __future__ import annotations
 
 import contextlib
+import errno
 import os
-import tempfile
+import re
+import secrets
+import signal
+import stat
+import sys
+import threading
+import time
+from collections.abc import Iterator
 from pathlib import Path
+from typing import BinaryIO
 
 from zero.errors import ZeroError
 
 MAX_FILE_BYTES = 256 * 1024 * 1024
+_CHUNK = 1024 * 1024
+_UNITS = {"": 1, "B": 1, "K": 1024, "KB": 1000, "KIB": 1024, "M": 1024**2, "MB": 1000**2, "MIB": 1024**2,
+          "G": 1024**3, "GB": 1000**3, "GIB": 1024**3}
+_SIZE_RE = re.compile(r"\s*([0-9]+)\s*([A-Za-z]*)\s*")
+_O_BINARY = getattr(os, "O_BINARY", 0)
+_STALE_SECONDS = 24 * 3600  # where process IDs cannot be checked (Windows)
 
 
-def read_file(path: str | Path) -> bytes:
-    """Read a file; :class:`ZeroError` with a one-line reason on failure."""
-    p = Path(path)
+def parse_size(text: str) -> int:
+    """``"256MiB"``, ``"64M"``, ``"1000000"`` → bytes; :class:`ZeroError` for anything else."""
+    m = _SIZE_RE.fullmatch(text)
+    unit = m.group(2).upper() if m else ""
+    if m is None or unit not in _UNITS or int(m.group(1)) <= 0:
+        raise ZeroError(f"{text!r} is not a size (e.g. 256MiB, 64M, 1000000)", "ZERO_MAX_FILE_SIZE")
+    return int(m.group(1)) * _UNITS[unit]
+
+
+def max_file_bytes() -> int:
+    """The largest input zero reads: 256 MiB unless ``$ZERO_MAX_FILE_SIZE`` says otherwise."""
+    text = os.environ.get("ZERO_MAX_FILE_SIZE")
+    return parse_size(text) if text else MAX_FILE_BYTES
+
+
+def _mib(n: int) -> str:
+    return f"{n // (1024 * 1024)} MiB" if n >= 1024 * 1024 and n % (1024 * 1024) == 0 else f"{n} bytes"
+
+
+def describe(mode: int) -> str:
+    """What a file is, in words, from its ``st_mode``."""
+    if stat.S_ISDIR(mode):
+        return "a directory"
+    if stat.S_ISFIFO(mode):
+        return "a FIFO (named pipe)"
+    if stat.S_ISCHR(mode):
+        return "a character device"
+    if stat.S_ISBLK(mode):
+        return "a block device"
+    if stat.S_ISSOCK(mode):
+        return "a socket"
+    return "not a regular file"
+
+
+def _open_error(exc: OSError, path: str | Path) -> ZeroError:
     where = str(path)
+    if isinstance(exc, FileNotFoundError):
+        if os.path.islink(path):
+            return ZeroError("dangling symbolic link: its target does not exist", where)
+        return ZeroError("no such file", where)
+    if isinstance(exc, IsADirectoryError):
+        return ZeroError("is a directory", where)
+    if isinstance(exc, PermissionError):
+        return ZeroError("permission denied", where)
+    if exc.errno == errno.ELOOP:
+        return ZeroError("symbolic link loop (too many levels of symbolic links)", where)
+    return ZeroError(str(exc.strerror or exc), where)
+
+
+def check_regular(path: str | Path) -> None:
+    """Raise the reason :func:`read_file` would give if ``path`` is no readable regular file,
+    without reading it (for paths named on the command line, checked before any work)."""
     try:
-        size = p.stat().st_size
-        if size > MAX_FILE_BYTES:
-            raise ZeroError(f"file is {size} bytes, larger than the "
-                            f"{MAX_FILE_BYTES // (1024 * 1024)} MiB zero reads", where)
-        return p.read_bytes()
-    except FileNotFoundError:
-        raise ZeroError("no such file", where) from None
-    except IsADirectoryError:
-        raise ZeroError("is a directory", where) from None
-    except PermissionError:
-        raise ZeroError("permission denied", where) from None
+        st = os.stat(path)
+    except OSError as exc:
+        raise _open_error(exc, path) from None
+    if not stat.S_ISREG(st.st_mode):
+        raise ZeroError(f"is {describe(st.st_mode)}, not a regular file; zero reads regular files "
+                        "and standard input (-)", str(path))
+
+
+def read_file(path: str | Path, limit: int | None = None) -> bytes:
+    """The bytes of a regular file; :class:`ZeroError` with a one-line reason otherwise."""
+    limit = max_file_bytes() if limit is None else limit
+    where = str(path)
+    flags = os.O_RDONLY | getattr(os, "O_NONBLOCK", 0) | getattr(os, "O_NOCTTY", 0) | _O_BINARY
+    try:
+        fd = os.open(path, flags)  # non-blocking: opening a FIFO never waits for a writer
+    except OSError as exc:
+        raise _open_error(exc, path) from None
+    try:
+        st = os.fstat(fd)
+        if not stat.S_ISREG(st.st_mode):
+            raise ZeroError(f"is {describe(st.st_mode)}, not a regular file; zero reads regular files "
+                            "and standard input (-)", where)
+        if st.st_size > limit:
+            raise ZeroError(f"file is {st.st_size} bytes, larger than the {_mib(limit)} zero reads "
+                            "(ZERO_MAX_FILE_SIZE raises the limit)", where)
+        chunks: list[bytes] = []
+        total = 0
+        while True:
+            chunk = os.read(fd, _CHUNK)
+            if not chunk:
+                break
+            total += len(chunk)
+            if total > limit:  # the file grew while it was read
+                raise ZeroError(f"file is larger than the {_mib(limit)} zero reads", where)
+            chunks.append(chunk)
+        return b"".join(chunks)
     except OSError as exc:
         raise ZeroError(str(exc.strerror or exc), where) from None
+    finally:
+        os.close(fd)
 
 
-def write_atomic(path: Path, data: bytes, force: bool = False,
-                 inputs: tuple[Path, ...] = ()) -> None:
-    """Write ``data`` to ``path`` all at once or not at all.
+def read_stream(stream: BinaryIO, name: str = "-", limit: int | None = None) -> bytes:
+    """All of a stream (standard input), refused beyond the size limit instead of filling memory."""
+    limit = max_file_bytes() if limit is None else limit
+    data = stream.read(limit + 1)
+    if len(data) > limit:
+        raise ZeroError(f"standard input is larger than the {_mib(limit)} zero reads "
+                        "(ZERO_MAX_FILE_SIZE raises the limit)", name)
+    return data
 
-    Never over an input file, never over an existing file unless ``force``.
-    The bytes go to a temporary file in the same directory, are flushed to
-    disk, and replace the target by one rename; on any failure the temporary
-    file is removed and the target is untouched.
-    """
-    target = Path(path)
-    where = str(target)
-    for src in inputs:
-        try:
-            if target.exists() and os.path.samefile(target, src):
-                raise ZeroError("is an input file; zero never writes over its input", where)
-        except FileNotFoundError:
-            continue
-    if target.exists() and not force:
-        raise ZeroError("already exists (use --force to replace it)", where)
-    if target.is_dir():
-        raise ZeroError("is a directory", where)
-    directory = target.parent if str(target.parent) else Path(".")
+
+# --------------------------------------------------------------------------- writing
+
+
+def _pid_alive(pid: int) -> bool:
     try:
-        fd, tmp = tempfile.mkstemp(prefix=f".{target.name}.", suffix=".tmp", dir=directory)
+        os.kill(pid, 0)
+    except ProcessLookupError:
+        return False
+    except OSError:
+        return True  # it exists, but is not ours
+    return True
+
+
+def temp_name(target: Path) -> Path:
+    """The temporary file a write to ``target`` uses: hidden, with this process's ID."""
+    return target.parent / f".{target.name}.zero-{os.getpid()}-{secrets.token_hex(4)}.tmp"
+
+
+def remove_stale_temps(target: Path) -> list[Path]:
+    """Remove temporary files a killed zero left for ``target``; return what was removed."""
+    pattern = re.compile(r"\." + re.escape(target.name) + r"\.zero-([0-9]+)-[0-9a-f]+\.tmp")
+    removed: list[Path] = []
+    try:
+        names = os.listdir(target.parent if str(target.parent) else ".")
+    except OSError:
+        return removed
+    for name in names:
+        m = pattern.fullmatch(name)
+        if m is None or int(m.group(1)) == os.getpid():
+            continue
+        path = target.parent / name
+        stale = False
+        if os.name == "posix":
+            stale = not _pid_alive(int(m.group(1)))
+        else:  # no safe way to ask whether a process lives: only old leftovers go
+            with contextlib.suppress(OSError):
+                stale = time.time() - path.stat().st_mtime > _STALE_SECONDS
+        if stale:
+            with contextlib.suppress(OSError):
+                path.unlink()
+                removed.append(path)
+    return removed
+
+
+@contextlib.contextmanager
+def _signals_unwind() -> Iterator[None]:
+    """While writing, turn SIGTERM and SIGHUP into SystemExit (Ctrl-C already raises), so that
+    the temporary file is removed on the way out."""
+    if threading.current_thread() is not threading.main_thread():
+        yield
+        return
+
+    def unwind(signum: int, _frame: object) -> None:
+        sys.stderr.write(f"zero: stopped by signal {signum}; nothing was replaced\n")
+        raise SystemExit(128 + signum)
+
+    names = [s for s in ("SIGTERM", "SIGHUP") if hasattr(signal, s)]
+    old = {name: signal.signal(getattr(signal, name), unwind) for name in names}
+    try:
+        yield
+    finally:
+        for name, handler in old.items():
+            signal.signal(getattr(signal, name), handler)
+
+
+def _fsync_directory(directory: Path) -> None:
+    if os.name != "posix":
+        return
+    with contextlib.suppress(OSError):
+        fd = os.open(directory, os.O_RDONLY)
+        try:
+            os.fsync(fd)
+        finally:
+            os.close(fd)
+
+
+def _write_all(fd: int, data: bytes) -> None:
+    view = memoryview(data)
+    while view:
+        n = os.write(fd, view)
+        view = view[n:]
+
+
+def _write_to_stream(path: Path, data: bytes) -> bool:
+    """Write to ``/dev/null`` or a terminal the way the user meant; ``False`` for anything else."""
+    flags = os.O_WRONLY | getattr(os, "O_NONBLOCK", 0) | getattr(os, "O_NOCTTY", 0) | _O_BINARY
+    try:
+        fd = os.open(path, flags)
+    except OSError:
+        return False
+    try:
+        st = os.fstat(fd)
+        null = os.stat(os.devnull)
+        if not stat.S_ISCHR(st.st_mode) or not (
+                os.isatty(fd) or (st.st_dev, st.st_ino) == (null.st_dev, null.st_ino)):
+            return False
+        _write_all(fd, data)
+        return True
+    finally:
+        os.close(fd)
+
+
+def _rewrite_in_place(target: Path, data: bytes) -> None:
+    """Overwrite the file itself (same inode: every hard link and the owner stay)."""
+    fd = os.open(target, os.O_WRONLY | _O_BINARY)
+    try:
+        _write_all(fd, data)
+        os.ftruncate(fd, len(data))
+        os.fsync(fd)
+    finally:
+        os.close(fd)
+
+
+def write_atomic(path: Path, data: bytes, force: bool = False, inputs: tuple[Path, ...] = ()) -> None:
+    """Write ``data`` to ``path`` all at once or not at all (see the module's rules).
+
+    Never over an input file; never over an existing file unless ``force``.
+    """
+    given = Path(path)
+    where = str(given)
+    target = given
+    if given.is_symlink():
+        target = Path(os.path.realpath(given))
+        if not target.exists() and not target.is_symlink():
+            try:
+                os.stat(given)
+            except OSError as exc:
+                raise _open_error(exc, given) from None
+    for src in inputs:
+        with contextlib.suppress(OSError):
+            if os.path.samefile(target, src):
+                raise ZeroError("is an input file; zero never writes over its input", where)
+    try:
+        st: os.stat_result | None = os.stat(target)
+    except FileNotFoundError:
+        st = None
+    except OSError as exc:
+        raise _open_error(exc, given) from None
+    if st is not None:
+        if stat.S_ISDIR(st.st_mode):
+            raise ZeroError("is a directory", where)
+        if not stat.S_ISREG(st.st_mode):
+            if _write_to_stream(target, data):
+                return
+            raise ZeroError(f"is {describe(st.st_mode)}, not a regular file: not replaced", where)
+        if not force:
+            raise ZeroError("already exists (use --force to replace it)", where)
+        if not os.access(target, os.W_OK):
+            raise ZeroError("not writable (permission denied): not replaced", where)
+    directory = target.parent if str(target.parent) else Path(".")
+    remove_stale_temps(target)
+    tmp = temp_name(target)
+    try:
+        fd = os.open(tmp, os.O_WRONLY | os.O_CREAT | os.O_EXCL | _O_BINARY, 0o600)
     except OSError as exc:
         raise ZeroError(f"cannot write here: {exc.strerror or exc}", where) from None
     try:
-        with os.fdopen(fd, "wb") as fh:
-            fh.write(data)
-            fh.flush()
-            os.fsync(fh.fileno())
-        if target.exists():
-            with contextlib.suppress(OSError):
-                os.chmod(tmp, target.stat().st_mode & 0o7777)
-        else:
-            umask = os.umask(0)
-            os.umask(umask)
-            os.chmod(tmp, 0o666 & ~umask)
-        os.replace(tmp, target)
+        with _signals_unwind():
+            try:
+                _write_all(fd, data)
+                os.fsync(fd)
+            finally:
+                os.close(fd)
+            if st is None:
+                _create(tmp, target, force, where)
+            else:
+                _replace(tmp, target, st, data)
+            _fsync_directory(directory)
     except BaseException as exc:
         with contextlib.suppress(OSError):
             os.unlink(tmp)
         if isinstance(exc, OSError):
             raise ZeroError(f"not written: {exc.strerror or exc}", where) from None
         raise
+
+
+def _create(tmp: Path, target: Path, force: bool, where: str) -> None:
+    """A new file: the default mode; claimed atomically unless ``force``."""
+    umask = os.umask(0)
+    os.umask(umask)
+    os.chmod(tmp, 0o666 & ~umask)
+    if force:
+        os.replace(tmp, target)
+        return
+    try:
+        os.link(tmp, target)  # fails if the name exists, however close the race
+    except FileExistsError:
+        raise ZeroError("already exists (use --force to replace it)", where) from None
+    except OSError as exc:
+        if exc.errno not in (errno.EPERM, errno.ENOTSUP, errno.EOPNOTSUPP, errno.EXDEV, errno.EMLINK,
+                             errno.ENOSYS, errno.EACCES):
+            raise
+        os.replace(tmp, _exclusive(target, where, tmp))  # a file system without hard links
+        return
+    os.unlink(tmp)
+
+
+def _exclusive(target: Path, where: str, tmp: Path) -> Path:
+    """Claim ``target`` with O_EXCL where hard links are not available; return it for the rename."""
+    try:
+        os.close(os.open(target, os.O_WRONLY | os.O_CREAT | os.O_EXCL | _O_BINARY, 0o600))
+    except FileExistsError:
+        raise ZeroError("already exists (use --force to replace it)", where) from None
+    return target
+
+
+def _replace(tmp: Path, target: Path, st: os.stat_result, data: bytes) -> None:
+    """An existing regular file: keep its mode, owner and group, and every hard link."""
+    os.chmod(tmp, stat.S_IMODE(st.st_mode))
+    in_place = st.st_nlink > 1
+    if not in_place and hasattr(os, "chown"):
+        mine = os.stat(tmp)
+        if (mine.st_uid, mine.st_gid) != (st.st_uid, st.st_gid):
+            try:
+                os.chown(tmp, st.st_uid, st.st_gid)
+            except OSError:
+                in_place = True  # a rename would change the owner: rewrite the file itself
+    if in_place:
+        _rewrite_in_place(target, data)
+        os.unlink(tmp)
+    else:
+        os.replace(tmp, target)

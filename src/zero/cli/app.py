@@ -301,17 +301,22 @@ def limits(
 
 @app.command("format")
 def format_cmd(
-    paths: Annotated[list[Path], typer.Argument(help="List files or directories.")],
+    paths: Annotated[list[Path], typer.Argument(help="List files or directories; - formats standard input.")],
     check: Annotated[bool, typer.Option("--check", help="Only say which files would change (exit 1).")] = False,
     diff: Annotated[bool, typer.Option("--diff", help="Show the changes as a unified diff; write nothing.")] = False,
     config: Annotated[Path | None, typer.Option("--config", help="Use this configuration file.")] = None,
     isolated: Annotated[bool, typer.Option("--isolated", help="Ignore configuration files.")] = False,
+    stdin_filename: Annotated[str | None, typer.Option(
+        "--stdin-filename", help="Format standard input as this file (its configuration applies).")] = None,
 ) -> None:
     """Rewrite lists in canonical layout (aligned values and comments); keys, values, comments
     and their order stay."""
 
     def body() -> int:
-        run = run_format(paths, REGISTRIES, echo(), check, diff, config, isolated, state.param_desc)
+        run = run_format(paths, REGISTRIES, echo(), check, diff, config, isolated, state.param_desc, read_stdin,
+                         stdin_filename)
+        if [str(p) for p in paths] == ["-"]:
+            return exits.found(bool(run.failed or (run.changed and (check or diff))))
         verb = "would be reformatted" if (check or diff) else "reformatted"
         sys.stderr.write(f"{run.changed} file{'s' if run.changed != 1 else ''} {verb}, "
                          f"{run.files - run.changed - run.failed} unchanged"

@@ -1,9 +1,10 @@
 """Exit codes, in one place, and the guard every command runs under.
 
 0: nothing to report (warnings allowed, unless ``--strict``); 1: findings, differences,
-violations or inputs that could not be converted or formatted; 2: a usage or input
-problem (one line on stderr, never a traceback); 130: interrupted; 141: the reader of
-standard output went away (``zero lint … | head``).
+violations, changes a ``--diff`` shows, or inputs that could not be converted or formatted;
+2: a usage or input problem, or a file that could not be read (one line on stderr, or an
+F001 finding; never a traceback); 130: interrupted; 141: the reader of standard output
+went away (``zero lint … | head``).
 """
 
 from __future__ import annotations

@@ -20,7 +20,7 @@ from zero.cli.options import OUTPUT_FORMATS
 from zero.engine.commands import Echo, LintRequest, run_lint
 from zero.engine.lint import LintResult
 from zero.errors import ZeroError
-from zero.files import write_atomic
+from zero.files import read_stream, write_atomic
 from zero.output.text import ProgressBar, render_text, statistics
 
 
@@ -59,7 +59,8 @@ def echo() -> Echo:
 
 
 def read_stdin() -> bytes:
-    return sys.stdin.buffer.read()
+    """Standard input, refused beyond the size limit."""
+    return read_stream(sys.stdin.buffer)
 
 
 def render_lint(results: Sequence[LintResult], output_format: str, stream: TextIO,
@@ -101,4 +102,10 @@ def lint(paths: Sequence[str | Path] = (), output_format: str = "text", output_f
         render_lint(run.results, output_format, sys.stderr if run.findings_to_stderr else sys.stdout)
     if show_statistics:
         sys.stderr.write(statistics(run.results))
+    if run.unreadable:
+        return exits.USAGE  # a file could not be read: something went wrong, whatever else
+    if show_diff:
+        if run.changed and not exit_zero:
+            sys.stderr.write(f"zero: fixes would change {run.changed} file{'s' if run.changed != 1 else ''}\n")
+        return exits.OK if exit_zero else exits.found(bool(run.changed))
     return exits.lint_exit(run.results, strict, exit_zero)

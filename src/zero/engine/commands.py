@@ -25,7 +25,9 @@ from zero.engine.lint import (
     STRUCTURED_SUFFIXES,
     LintOptions,
     LintResult,
+    is_unreadable,
     lint_bytes,
+    lint_data,
     lint_file,
     lint_machine,
     lint_program,
@@ -33,7 +35,6 @@ from zero.engine.lint import (
 from zero.engine.parallel import lint_many
 from zero.errors import ZeroError
 from zero.files import read_file, write_atomic
-from zero.lists.encoding import decode
 from zero.machine.limits import Ip247Violation, LimitRow, ip247, pcs_limits
 from zero.machine.model import Machine, load_machine
 from zero.rules import RULES
@@ -109,7 +110,12 @@ class LintRequest:
 class LintRun:
     results: list[LintResult] = field(default_factory=list)
     report: bool = True  # False: nothing to report (standard input excluded by the configuration)
-    findings_to_stderr: bool = False  # the fixed list went to standard output
+    findings_to_stderr: bool = False  # standard output holds the fixed list or the patch
+    changed: int = 0  # files a fix changes (or, with --diff, would change)
+
+    @property
+    def unreadable(self) -> int:
+        return sum(1 for r in self.results if is_unreadable(r))
 
 
 def run_lint(request: LintRequest, registries: Registries, echo: Echo,
@@ -146,11 +152,12 @@ def run_lint(request: LintRequest, registries: Registries, echo: Echo,
     machines: dict[Path, Machine] = {}
     results = [_with_machine(f, by_file[f], finder.for_path(f), cli, request.param_desc, registries, machines)
                for f in files]
+    run = LintRun(results, findings_to_stderr=request.show_diff)
     if request.fix or request.show_diff:
-        results = [_fix_one(f, r, finder.for_path(f).options_for(f, cli),
-                            registries(param_desc_of(finder.for_path(f), request.param_desc)),
-                            request.fix, request.unsafe_fixes, echo) for f, r in zip(files, results, strict=True)]
-    return LintRun(results)
+        run.results = [_fix_one(f, r, finder.for_path(f).options_for(f, cli),
+                                registries(param_desc_of(finder.for_path(f), request.param_desc)),
+                                request, echo, run) for f, r in zip(files, results, strict=True)]
+    return run
 
 
 def _lint_machine(request: LintRequest, startup: Path, cli: LintOptions, finder: ConfigFinder,
@@ -168,52 +175,70 @@ def _lint_machine(request: LintRequest, startup: Path, cli: LintOptions, finder:
 
 
 def _with_machine(path: Path, result: LintResult, cfg: Config, cli: LintOptions, param_desc: str | Path | None,
-                  registries: Registries, machines: dict[Path, Machine]) -> LintResult:
+                  registries: Registries, machines: dict[Path, Machine], data: bytes | None = None) -> LintResult:
     """An NC program in a project whose configuration names the machine: lint it against it."""
-    if cfg.machine is None or path.suffix.lower() not in PROGRAM_SUFFIXES:
+    if cfg.machine is None or path.suffix.lower() not in PROGRAM_SUFFIXES or is_unreadable(result):
         return result
     registry = registries(param_desc_of(cfg, param_desc))
     m = machines.get(cfg.machine)
     if m is None:
         m = machines[cfg.machine] = load_machine(cfg.machine, registry, cli.kind, cfg.machine_lists)
-    return lint_program(read_file(path), registry, str(path), cfg.options_for(path, cli), m)
+    source = read_file(path) if data is None else data
+    return lint_program(source, registry, str(path), cfg.options_for(path, cli), m)
+
+
+def _is_list(path: str) -> bool:
+    suffix = Path(path).suffix.lower()
+    return suffix not in PROGRAM_SUFFIXES and suffix not in STRUCTURED_SUFFIXES
 
 
 def _lint_stdin(request: LintRequest, cli: LintOptions, finder: ConfigFinder, registries: Registries,
                 echo: Echo, data: bytes) -> LintRun:
-    """Standard input as the file ``--stdin-filename`` (its configuration applies). With a fix
-    option the fixed list goes to standard output and the findings to standard error."""
+    """Standard input as the file ``--stdin-filename`` names: read as that file would be (a list,
+    an NC program, YAML/TOML/JSON), its configuration applied. With ``--fix`` the fixed text goes
+    to standard output, with ``--diff`` the patch; the findings then go to standard error."""
     name = request.stdin_filename or "-"
-    fix = request.fix or request.show_diff
     cfg = finder.for_path(Path(name))
+    passthrough = request.fix and not request.show_diff
     if name != "-" and cfg.excluded(Path(name)):
-        if fix:
+        if passthrough:
             echo.out_bytes(data)
         return LintRun(report=False)
     options = cfg.options_for(Path(name), cli)
     registry = registries(param_desc_of(cfg, request.param_desc))
-    if fix:
+    if (request.fix or request.show_diff) and _is_list(name):
         fixed = fix_bytes(data, name, registry, options, request.unsafe_fixes)
+        if request.show_diff:
+            patch = unified_diff(name, data, fixed.fixed)
+            echo.out_bytes(patch)
+            return LintRun([lint_bytes(data, registry, name, options)], findings_to_stderr=True,
+                           changed=int(bool(patch)))
         echo.out_bytes(fixed.fixed)
-        return LintRun([fixed.result], findings_to_stderr=True)
-    return LintRun([lint_bytes(data, registry, name, options)])
+        return LintRun([fixed.result], findings_to_stderr=True, changed=int(fixed.fixed != data))
+    result = lint_data(data, name, registry, options)
+    result = _with_machine(Path(name), result, cfg, cli, request.param_desc, registries, {}, data)
+    if passthrough:
+        echo.out_bytes(data)  # nothing to fix in an NC program or a structured file
+    return LintRun([result], findings_to_stderr=request.fix or request.show_diff)
 
 
-def _fix_one(path: Path, result: LintResult, options: LintOptions, registry: Registry, write: bool,
-             unsafe: bool, echo: Echo) -> LintResult:
-    """Fix one list file: write it (``write``) or show the unified diff; return what is left."""
-    if path.suffix.lower() in STRUCTURED_SUFFIXES:
-        return result  # findings in YAML/TOML/JSON carry no list edits
+def _fix_one(path: Path, result: LintResult, options: LintOptions, registry: Registry, request: LintRequest,
+             echo: Echo, run: LintRun) -> LintResult:
+    """Fix one list file: write it (``--fix``) or only show the patch (``--diff``, which never
+    writes); return the findings that are left (with ``--diff``, the findings as they are)."""
+    if not _is_list(str(path)) or is_unreadable(result):
+        return result  # findings in YAML/TOML/JSON and NC programs carry no list edits
     data = read_file(path)
-    fixed = fix_bytes(data, str(path), registry, options, unsafe)
+    fixed = fix_bytes(data, str(path), registry, options, request.unsafe_fixes)
     if fixed.fixed == data:
         return result
-    if write:
-        write_atomic(path, fixed.fixed, force=True)
-        echo.err(f"zero: {path}: {fixed.applied} fix{'es' if fixed.applied != 1 else ''} applied\n")
-        return fixed.result
-    echo.out(unified_diff(str(path), data, fixed.fixed, fixed.result.document.encoding))
-    return result
+    run.changed += 1
+    if request.show_diff:
+        echo.out_bytes(unified_diff(str(path), data, fixed.fixed))
+        return result
+    write_atomic(path, fixed.fixed, force=True)
+    echo.err(f"zero: {path}: {fixed.applied} fix{'es' if fixed.applied != 1 else ''} applied\n")
+    return fixed.result
 
 
 # ---------------------------------------------------------------------------- format
@@ -228,30 +253,59 @@ class FormatRun:
 
 def run_format(paths: Sequence[str | Path], registries: Registries, echo: Echo, check: bool = False,
                show_diff: bool = False, config: str | Path | None = None, isolated: bool = False,
-               param_desc: str | Path | None = None) -> FormatRun:
-    """``zero format``: rewrite files in canonical layout; with ``check``/``show_diff`` only report."""
+               param_desc: str | Path | None = None, read_stdin: Callable[[], bytes] | None = None,
+               stdin_filename: str | None = None) -> FormatRun:
+    """``zero format``: rewrite files in canonical layout; with ``check``/``show_diff`` only
+    report (never write). ``-`` formats standard input to standard output."""
     finder = ConfigFinder(Path(config) if config else None, isolated)
+    if [str(p) for p in paths] == ["-"]:
+        if read_stdin is None:
+            raise ZeroError("standard input is not available here")
+        return _format_stdin(read_stdin(), stdin_filename or "-", finder, registries, echo, check, show_diff,
+                             param_desc)
     files = collect_files([Path(p) for p in paths], include=lambda f: finder.for_path(f).included(f),
                           exclude=lambda f: finder.for_path(f).excluded(f))
     run = FormatRun(len(files))
     for f in files:
         data = read_file(f)
         registry = registries(param_desc_of(finder.for_path(f), param_desc))
-        try:
-            new = format_bytes(data, str(f), registry)
-        except ZeroError as exc:
-            echo.err(f"zero: {exc} (not formatted)\n")
-            run.failed += 1
-            continue
-        if new == data:
+        new = _formatted(data, str(f), registry, echo, run)
+        if new is None or new == data:
             continue
         run.changed += 1
         if show_diff:
-            echo.out(unified_diff(str(f), data, new, decode(data)[1]))
+            echo.out_bytes(unified_diff(str(f), data, new))
         elif check:
             echo.out(f"would reformat {f}\n")
         else:
             write_atomic(f, new, force=True)
+    return run
+
+
+def _formatted(data: bytes, name: str, registry: Registry, echo: Echo, run: FormatRun) -> bytes | None:
+    try:
+        return format_bytes(data, name, registry)
+    except ZeroError as exc:
+        echo.err(f"zero: {exc} (not formatted)\n")
+        run.failed += 1
+        return None
+
+
+def _format_stdin(data: bytes, name: str, finder: ConfigFinder, registries: Registries, echo: Echo,
+                  check: bool, show_diff: bool, param_desc: str | Path | None) -> FormatRun:
+    run = FormatRun(1)
+    cfg = finder.for_path(Path(name))
+    new = None if name != "-" and cfg.excluded(Path(name)) else \
+        _formatted(data, name, registries(param_desc_of(cfg, param_desc)), echo, run)
+    if new is not None and new != data:
+        run.changed = 1
+    if show_diff:
+        echo.out_bytes(unified_diff(name, data, new) if new is not None else b"")
+    elif check:
+        if run.changed:
+            echo.out(f"would reformat {name}\n")
+    else:
+        echo.out_bytes(new if new is not None else data)
     return run
 
 

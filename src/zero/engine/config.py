@@ -77,6 +77,14 @@ def glob_to_regex(pattern: str) -> re.Pattern[str]:
     return re.compile("".join(out) + r"\Z")
 
 
+def _resolved(file: Path) -> Path:
+    """The absolute path of a file; a link loop or dangling link resolves through its directory."""
+    try:
+        return file.resolve()
+    except (OSError, RuntimeError):
+        return file.parent.resolve() / file.name
+
+
 @dataclass(slots=True)
 class Config:
     path: Path | None = None  # the file it came from; None: defaults
@@ -98,7 +106,7 @@ class Config:
 
     def relative(self, file: Path) -> str | None:
         try:
-            return file.resolve().relative_to(self.root.resolve()).as_posix()
+            return _resolved(file).relative_to(self.root.resolve()).as_posix()
         except ValueError:
             return None
 
@@ -307,7 +315,7 @@ class ConfigFinder:
         return hit
 
     def _lookup(self, file: Path) -> Config:
-        start = file.resolve().parent if not file.is_dir() else file.resolve()
+        start = _resolved(file).parent if not file.is_dir() else file.resolve()
         walked: list[Path] = []
         d: Path | None = start
         found = self._default

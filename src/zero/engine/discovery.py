@@ -10,6 +10,7 @@ from pathlib import Path
 
 from zero.engine.lint import LIST_SUFFIXES
 from zero.errors import ZeroError
+from zero.files import check_regular
 
 
 def git_visible(directory: Path) -> set[str] | None:
@@ -58,8 +59,9 @@ def collect_files(paths: Iterable[str | Path], include: Callable[[Path], bool] |
                             not (exclude and exclude(path)):
                         found.append(path)
             out.extend(sorted(found, key=str))
-        elif p.exists():
+        elif os.path.lexists(p):
             if not (exclude and exclude(p)):
+                check_regular(p)  # a FIFO, device, dangling link or loop named here: refused at once
                 out.append(p)
         else:
             raise ZeroError("no such file or directory", str(raw))

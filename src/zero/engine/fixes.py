@@ -8,6 +8,7 @@ Safe fixes keep what the controller reads; unsafe ones (``--unsafe-fixes``) chan
 from __future__ import annotations
 
 import difflib
+import os
 from dataclasses import dataclass
 
 from zero.catalog.registry import Registry
@@ -77,8 +78,52 @@ def fix_bytes(data: bytes, path: str, registry: Registry,
     return FixResult(data, current, total, result)
 
 
-def unified_diff(path: str, before: bytes, after: bytes, encoding: str = "utf-8") -> str:
-    a = before.decode(encoding, "replace").splitlines(keepends=True)
-    b = after.decode(encoding, "replace").splitlines(keepends=True)
-    out = "".join(difflib.unified_diff(a, b, fromfile=f"a/{path}", tofile=f"b/{path}"))
-    return out if out.endswith("\n") or not out else out + "\n\\ No newline at end of file\n"
+def _lines(data: bytes) -> list[bytes]:
+    """Lines split after each LF only (a CR stays part of its line, as in the file)."""
+    parts = data.split(b"\n")
+    out = [p + b"\n" for p in parts[:-1]]
+    if parts[-1]:
+        out.append(parts[-1])
+    return out
+
+
+def patch_path(path: str) -> str:
+    """The path a patch names: relative to the working directory where the file lies below it."""
+    if os.path.isabs(path):
+        rel = os.path.relpath(path)
+        if not rel.startswith(".."):
+            path = rel
+    return path.replace(os.sep, "/")
+
+
+def unified_diff(path: str, before: bytes, after: bytes, context: int = 3) -> bytes:
+    """A unified diff of two versions of a file, byte for byte in the file's own encoding and
+    line endings, with ``a/``/``b/`` paths that ``git apply`` and ``patch -p1`` accept."""
+    a, b = _lines(before), _lines(after)
+    name = patch_path(path).encode("utf-8", "surrogateescape")
+    out = [b"--- a/" + name + b"\n", b"+++ b/" + name + b"\n"]
+    groups = list(difflib.SequenceMatcher(None, a, b, autojunk=False).get_grouped_opcodes(context))
+    if not groups:
+        return b""
+    for group in groups:
+        i1, i2, j1, j2 = group[0][1], group[-1][2], group[0][3], group[-1][4]
+        out.append(f"@@ -{_range(i1, i2)} +{_range(j1, j2)} @@\n".encode())
+        for tag, x1, x2, y1, y2 in group:
+            if tag == "equal":
+                out.extend(_hunk_line(b" ", line) for line in a[x1:x2])
+                continue
+            out.extend(_hunk_line(b"-", line) for line in a[x1:x2])
+            out.extend(_hunk_line(b"+", line) for line in b[y1:y2])
+    return b"".join(out)
+
+
+def _range(start: int, stop: int) -> str:
+    length = stop - start
+    first = start + 1 if length else start
+    return f"{first}" if length == 1 else f"{first},{length}"
+
+
+def _hunk_line(mark: bytes, line: bytes) -> bytes:
+    if line.endswith(b"\n"):
+        return mark + line
+    return mark + line + b"\n\\ No newline at end of file\n"

@@ -150,16 +150,35 @@ def lint_program(data: bytes, registry: Registry, path: str = "-", options: Lint
     return LintResult(path, program.doc, "PROGRAM", found)
 
 
-def lint_file(path: str | Path, registry: Registry, options: LintOptions | None = None) -> LintResult:
-    """Lint a list file; a YAML/TOML/JSON file as the list it converts to; an NC program."""
+def lint_data(data: bytes, path: str, registry: Registry, options: LintOptions | None = None) -> LintResult:
+    """Lint bytes as the file ``path`` names: an NC program, YAML/TOML/JSON, else a list."""
     suffix = Path(path).suffix.lower()
-    data = read_file(path)
     if suffix in PROGRAM_SUFFIXES:
-        return lint_program(data, registry, str(path), options)
+        return lint_program(data, registry, path, options)
     fmt = STRUCTURED_SUFFIXES.get(suffix)
     if fmt is None:
-        return lint_bytes(data, registry, str(path), options)
-    return lint_structured(data, fmt, registry, str(path), options)
+        return lint_bytes(data, registry, path, options)
+    return lint_structured(data, fmt, registry, path, options)
+
+
+def unreadable(path: str, error: ZeroError) -> LintResult:
+    """The result for a file that could not be read: one F001 finding, nothing checked."""
+    message = f"{error.message}: not checked"
+    finding = Diagnostic("F001", RULES["F001"].severity, message, Span(1, 1, 1, 1), path)
+    return LintResult(path, Document(path, "utf-8", [], [], []), None, [finding])
+
+
+def is_unreadable(result: LintResult) -> bool:
+    return any(d.code == "F001" for d in result.diagnostics)
+
+
+def lint_file(path: str | Path, registry: Registry, options: LintOptions | None = None) -> LintResult:
+    """Lint a file by its suffix; a file that cannot be read is one F001 finding."""
+    try:
+        data = read_file(path)
+    except ZeroError as exc:
+        return unreadable(str(path), exc)
+    return lint_data(data, str(path), registry, options)
 
 
 def lint_machine(startup_path: Path, registry: Registry, options: LintOptions | None = None,
@@ -184,6 +203,22 @@ def lint_machine(startup_path: Path, registry: Registry, options: LintOptions | 
     return machine, list(results.values())
 
 
-__all__ = ["LIST_SUFFIXES", "PROGRAM_SUFFIXES", "STRUCTURED_SUFFIXES", "LintOptions", "LintResult",
-           "ZeroError", "lint_bytes", "lint_document", "lint_file", "lint_machine", "lint_program",
-           "lint_structured", "lint_tree", "selected_rules"]
+__all__ = [
+    "LIST_SUFFIXES",
+    "PROGRAM_SUFFIXES",
+    "STRUCTURED_SUFFIXES",
+    "LintOptions",
+    "LintResult",
+    "ZeroError",
+    "is_unreadable",
+    "lint_bytes",
+    "lint_data",
+    "lint_document",
+    "lint_file",
+    "lint_machine",
+    "lint_program",
+    "lint_structured",
+    "lint_tree",
+    "selected_rules",
+    "unreadable",
+]

@@ -33,7 +33,7 @@ def _lint_in_worker(path: Path) -> LintResult | ZeroError:
     registry, options_for = _worker_state
     try:
         return _slim(lint_file(path, registry, options_for(path)))
-    except ZeroError as exc:
+    except ZeroError as exc:  # a file that cannot be converted stops the run, as in one process
         return exc
 
 

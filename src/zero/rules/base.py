@@ -27,7 +27,7 @@ from zero.diagnostics import Diagnostic, Fix, Severity, Span
 from zero.machine.model import Machine
 from zero.nc.program import Program
 
-Scope = Literal["list", "machine", "program", "suppression"]
+Scope = Literal["list", "machine", "program", "suppression", "file"]
 E, W, INFO = Severity.ERROR, Severity.WARNING, Severity.INFO
 
 
@@ -48,11 +48,17 @@ class Rule:
 
 
 _LONG_QUOTED = re.compile(r"`([^`]{81,})`")
+_LONG_WORD = re.compile(r"[^\s`]{81,}")
 
 
 def _shorten(m: re.Match[str]) -> str:
     text = m.group(1)
     return f"`{text[:60]}…{text[-12:]}` ({len(text)} characters)"
+
+
+def _shorten_word(m: re.Match[str]) -> str:
+    text = m.group()
+    return f"{text[:60]}…{text[-12:]} ({len(text)} characters)"
 
 
 class Reporter:
@@ -65,7 +71,7 @@ class Reporter:
     def report(self, code: str, span: Span, message: str, *, param_id: str | None = None,
                fix: Fix | None = None, hint: str | None = None, path: str | None = None) -> Diagnostic:
         if len(message) > 300:
-            message = _LONG_QUOTED.sub(_shorten, message)
+            message = _LONG_WORD.sub(_shorten_word, _LONG_QUOTED.sub(_shorten, message))
         severity = self.severities.get(code) or _defaults.get(code, Severity.ERROR)
         return Diagnostic(code, severity, message, span, self.path if path is None else path,
                           param_id, fix, hint)

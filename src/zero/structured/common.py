@@ -26,6 +26,18 @@ from zero.structured.tree import (
 )
 
 MAX_NESTING = 64
+_LONG_NUMBER_RE = re.compile(r"[0-9][0-9_]{999,}")
+
+
+def number_too_long(text: str, path: str) -> ZeroError:
+    """The located refusal of a number longer than Python converts (or any parameter holds)."""
+    m = _LONG_NUMBER_RE.search(text)
+    if m is None:
+        return ZeroError("a number too long to read: no parameter holds it", path)
+    line = text.count("\n", 0, m.start()) + 1
+    column = m.start() - (text.rfind("\n", 0, m.start()) + 1) + 1
+    digits = sum(c.isdigit() for c in m.group())
+    return ZeroError(f"a number of {digits} digits: no parameter holds it", path, line, column)
 
 
 def quote(text: str) -> str:

@@ -12,6 +12,7 @@ from zero.errors import ZeroError
 from zero.structured.common import (
     emit_items,
     finish,
+    number_too_long,
     walk_mapping,
 )
 from zero.structured.tree import META_KEY, Tree
@@ -65,6 +66,8 @@ def read_json(text: str, path: str = "-") -> Tree:
         raise ZeroError(f"not valid JSON: {exc.msg}", path, exc.lineno, exc.colno) from None
     except RecursionError:
         raise ZeroError("not read: nested too deeply", path) from None
+    except ValueError:  # an integer beyond Python's conversion limit
+        raise number_too_long(text, path) from None
     if not isinstance(data, dict):
         raise ZeroError("the top level must be an object of keys, not a "
                            + type(data).__name__, path)

@@ -15,6 +15,7 @@ from zero.structured.common import (
     comment_suffix,
     emit_items,
     finish,
+    number_too_long,
     quote,
     strip_comment,
     walk_mapping,
@@ -239,6 +240,8 @@ def read_toml(text: str, path: str = "-") -> Tree:
                            int(m.group(1)) if m else None, int(m.group(2)) if m else None) from None
     except RecursionError:
         raise ZeroError("not read: nested too deeply", path) from None
+    except ValueError:  # an integer beyond Python's conversion limit
+        raise number_too_long(text, path) from None
     found, tail = scan_toml(text)
     leaves, meta = walk_mapping(data, path, found)
     return finish(leaves, meta, tail, path)

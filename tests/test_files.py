@@ -1,0 +1,373 @@
+"""The fault suite of ``zero.files``: never harm a file, never hang, through the real CLI.
+
+Every case runs the real command line in a child process with a time and address-space
+bound (``conftest.zero_cli``): special files, links, owners and modes, read-only files
+without the capability to override permissions, racing writers, killed writers,
+unreadable files in a walked directory, and patches that ``git apply`` must accept.
+"""
+
+from __future__ import annotations
+
+import os
+import shutil
+import signal
+import stat
+import subprocess
+import sys
+import threading
+from pathlib import Path
+
+import pytest
+
+from conftest import FIXTURES, zero_cli
+from zero.errors import ZeroError
+from zero.files import read_file, remove_stale_temps, write_atomic
+
+pytestmark = pytest.mark.slow
+
+LIST = b"np_grp[1].achse[0].versch 100\nEnde\n"
+# cp1252, CRLF, a byte that is not UTF-8 (0xB5 = µ), and two safe fixes (S005, S004)
+CP1252 = ("# Nullpunkte in µm\r\n#np_grp[1].achse[1].versch 5\r\nnp_grp[1].achse[0]. inaktiv 0\r\n"
+          "np_grp[1].achse[0].versch 100   ( 0.01 mm in µm )\r\nEnde\r\n").encode("cp1252")
+QUICK = 10.0  # seconds: "at once"
+
+
+def fifo(path: Path) -> Path:
+    if not hasattr(os, "mkfifo"):
+        pytest.skip("no FIFOs on this platform")
+    os.mkfifo(path)
+    return path
+
+
+# ------------------------------------------------------------------------------ reading
+
+
+@pytest.mark.parametrize("command", [
+    ["lint", "{f}"], ["format", "{f}"], ["format", "--check", "{f}"], ["diff", "{f}", "{other}"],
+    ["convert", "{f}", "--to", "yaml"], ["show", "{f}"], ["lint", "--machine", "{f}"],
+])
+def test_a_fifo_named_as_a_file_is_refused_at_once(tmp_path: Path, command: list[str]) -> None:
+    f = fifo(tmp_path / "fifo.lis")
+    other = tmp_path / "other.lis"
+    other.write_bytes(LIST)
+    run = zero_cli(*(a.format(f=f, other=other) for a in command), timeout=QUICK)
+    assert run.code == 2, run
+    assert "a FIFO (named pipe), not a regular file" in run.stderr
+    assert run.stderr.count("\n") == 1
+
+
+def test_a_device_is_refused_and_memory_stays_bounded() -> None:
+    run = zero_cli("lint", "/dev/zero", timeout=QUICK, memory_mib=512)
+    assert run.code == 2
+    assert run.stderr == "zero: /dev/zero: is a character device, not a regular file; zero reads regular " \
+                         "files and standard input (-)\n"
+
+
+def test_a_device_node_is_neither_read_nor_replaced(tmp_path: Path) -> None:
+    node = tmp_path / "node.lis"
+    try:
+        os.mknod(node, stat.S_IFCHR | 0o600, os.makedev(1, 7))  # /dev/full's numbers
+    except (PermissionError, AttributeError):
+        pytest.skip("mknod needs privileges this machine does not give")
+    src = tmp_path / "a.lis"
+    src.write_bytes(LIST)
+    assert zero_cli("lint", str(node), timeout=QUICK).code == 2
+    run = zero_cli("convert", str(src), "--to", "yaml", "-o", str(node), "--force", timeout=QUICK)
+    assert run.code == 2 and "is a character device, not a regular file: not replaced" in run.stderr
+    assert stat.S_ISCHR(os.lstat(node).st_mode)
+
+
+def test_dev_null_and_standard_output_are_written_to_as_meant(tmp_path: Path) -> None:
+    src = tmp_path / "a.lis"
+    src.write_bytes(LIST)
+    run = zero_cli("convert", str(src), "--to", "yaml", "-o", os.devnull, "--force")
+    assert run.code == 0, run
+    assert stat.S_ISCHR(os.stat(os.devnull).st_mode)
+    assert zero_cli("convert", str(src), "--to", "yaml", "-o", "-").out.startswith(b"np_grp:")
+
+
+def test_an_input_over_the_size_limit_is_refused(tmp_path: Path) -> None:
+    big = tmp_path / "big.lis"
+    big.write_bytes(LIST * 20)
+    run = zero_cli("lint", str(big), env={"ZERO_MAX_FILE_SIZE": "100"})
+    assert run.code == 2
+    assert "larger than the 100 bytes zero reads" in run.stdout  # an F001 finding of that file
+    run = zero_cli("lint", "-", "--stdin-filename", "x.lis", stdin=LIST * 20, env={"ZERO_MAX_FILE_SIZE": "100"})
+    assert run.code == 2 and "standard input is larger than the 100 bytes zero reads" in run.stderr
+    assert zero_cli("lint", str(big), env={"ZERO_MAX_FILE_SIZE": "lots"}).code == 2
+
+
+def test_unreadable_files_in_a_walked_directory_do_not_stop_the_others(tmp_path: Path) -> None:
+    (tmp_path / "good.lis").write_bytes(b"np_grp[97].achse[0].versch 1\nEnde\n")
+    (tmp_path / "dangling.lis").symlink_to(tmp_path / "gone.lis")
+    (tmp_path / "loop.lis").symlink_to(tmp_path / "loop.lis")
+    fifo(tmp_path / "pipe.lis")
+    run = zero_cli("lint", str(tmp_path), "--output-format", "concise", timeout=QUICK)
+    assert run.code == 2, run
+    lines = run.stdout.splitlines()
+    assert any("good.lis:1:1: R003" in line for line in lines)
+    assert f"{tmp_path / 'dangling.lis'}:1:1: F001 error dangling symbolic link: its target does not exist: " \
+           "not checked" in lines
+    assert f"{tmp_path / 'loop.lis'}:1:1: F001 error symbolic link loop (too many levels of symbolic links): " \
+           "not checked" in lines
+    assert f"{tmp_path / 'pipe.lis'}:1:1: F001 error is a FIFO (named pipe), not a regular file; zero reads " \
+           "regular files and standard input (-): not checked" in lines
+
+
+def test_a_dangling_link_or_loop_named_on_the_command_line_is_refused(tmp_path: Path) -> None:
+    (tmp_path / "dangling.lis").symlink_to(tmp_path / "gone.lis")
+    run = zero_cli("lint", str(tmp_path / "dangling.lis"))
+    assert run.code == 2 and "dangling symbolic link" in run.stderr
+    (tmp_path / "loop.lis").symlink_to(tmp_path / "loop.lis")
+    for command in (["lint"], ["convert", "--to", "yaml"], ["format"]):
+        run = zero_cli(*command, str(tmp_path / "loop.lis"))
+        assert run.code == 2 and "symbolic link loop" in run.stderr, (command, run)
+
+
+# ------------------------------------------------------------------------------ writing
+
+
+def test_a_symlink_is_written_through_and_stays_a_link(tmp_path: Path) -> None:
+    src = tmp_path / "a.lis"
+    src.write_bytes(LIST)
+    real = tmp_path / "real.yaml"
+    real.write_bytes(b"old\n")
+    link = tmp_path / "link.yaml"
+    link.symlink_to(real)
+    assert zero_cli("convert", str(src), "-o", str(link), "--force").code == 0
+    assert link.is_symlink() and real.read_bytes().startswith(b"np_grp:")
+
+    target = tmp_path / "target.lis"
+    target.write_bytes(b"np_grp[1].achse[0]. inaktiv 0\nEnde\n")
+    list_link = tmp_path / "list.lis"
+    list_link.symlink_to(target)
+    run = zero_cli("lint", "--fix", str(list_link))
+    assert list_link.is_symlink(), run
+    assert target.read_bytes() == b"np_grp[1].achse[0].inaktiv 0\nEnde\n"
+
+
+def test_format_keeps_hard_links_owner_group_and_mode(tmp_path: Path) -> None:
+    f = tmp_path / "a.lis"
+    f.write_bytes(b"np_grp[1].achse[0].versch   100\nEnde\n")
+    other = tmp_path / "b.lis"
+    os.link(f, other)
+    os.chmod(f, 0o640)
+    if os.geteuid() == 0:
+        os.chown(f, 1234, 2345)
+    before = os.stat(f)
+    run = zero_cli("format", str(f))
+    assert run.code == 0, run
+    after = os.stat(f)
+    assert (after.st_ino, after.st_nlink) == (before.st_ino, 2)
+    assert other.read_bytes() == f.read_bytes() != b"np_grp[1].achse[0].versch   100\nEnde\n"
+    assert (after.st_uid, after.st_gid, stat.S_IMODE(after.st_mode)) == (before.st_uid, before.st_gid, 0o640)
+
+
+def test_fix_keeps_the_owner_of_a_single_file(tmp_path: Path) -> None:
+    if os.geteuid() != 0:
+        pytest.skip("giving a file another owner needs root")
+    f = tmp_path / "a.lis"
+    f.write_bytes(b"np_grp[1].achse[0]. inaktiv 0\nEnde\n")
+    os.chown(f, 1234, 2345)
+    os.chmod(f, 0o604)
+    assert zero_cli("lint", "--fix", str(f)).code == 0
+    st = os.stat(f)
+    assert (st.st_uid, st.st_gid, stat.S_IMODE(st.st_mode)) == (1234, 2345, 0o604)
+    assert f.read_bytes() == b"np_grp[1].achse[0].inaktiv 0\nEnde\n"
+
+
+def _without_dac_override() -> tuple[str, ...]:
+    capsh = shutil.which("capsh")
+    if capsh is None or os.geteuid() != 0:
+        pytest.skip("needs root and capsh to drop the capability to override file permissions")
+    probe = subprocess.run([capsh, "--drop=cap_dac_override,cap_fowner,cap_dac_read_search", "--", "-c", "true"],
+                           capture_output=True, check=False)
+    if probe.returncode != 0:
+        pytest.skip(f"this machine does not allow dropping capabilities: {probe.stderr[-200:]!r}")
+    return (capsh, "--drop=cap_dac_override,cap_fowner,cap_dac_read_search", "--", "-c")
+
+
+def test_a_read_only_file_is_refused_without_the_capability_to_override(tmp_path: Path) -> None:
+    prefix = _without_dac_override()
+    for command, original in ((["lint", "--fix"], b"np_grp[1].achse[0]. inaktiv 0\nEnde\n"),
+                              (["format"], b"np_grp[1].achse[0].versch   100\nEnde\n")):
+        f = tmp_path / f"ro-{command[0]}.lis"
+        f.write_bytes(original)
+        os.chmod(f, 0o444)
+        run = zero_cli(*command, str(f), prefix=prefix)
+        assert run.code == 2, (command, run)
+        assert "not writable (permission denied): not replaced" in run.stderr
+        assert f.read_bytes() == original and stat.S_IMODE(os.stat(f).st_mode) == 0o444
+
+
+def test_racing_writers_without_force_cannot_both_win(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """All writers have their content ready before any claims the name; exactly one wins."""
+    target = tmp_path / "out.yaml"
+    writers = 6
+    barrier = threading.Barrier(writers)
+    real_fsync = os.fsync
+    waited = threading.local()
+
+    def fsync_then_wait(fd: int) -> None:
+        real_fsync(fd)
+        if threading.current_thread() is not threading.main_thread() and not getattr(waited, "done", False):
+            waited.done = True  # the temporary file's fsync: the content is ready, the name not claimed
+            barrier.wait(timeout=10)
+
+    monkeypatch.setattr(os, "fsync", fsync_then_wait)
+    outcomes: list[str] = []
+
+    def write(n: int) -> None:
+        try:
+            write_atomic(target, f"writer {n}\n".encode())
+            outcomes.append("won")
+        except ZeroError as exc:
+            outcomes.append(str(exc))
+
+    threads = [threading.Thread(target=write, args=(n,)) for n in range(writers)]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join(20)
+    assert outcomes.count("won") == 1, outcomes
+    assert all("already exists" in o for o in outcomes if o != "won")
+    assert target.read_bytes().startswith(b"writer ")
+    assert [p.name for p in tmp_path.iterdir()] == ["out.yaml"]
+
+
+def test_racing_convert_processes_without_force(tmp_path: Path) -> None:
+    src = tmp_path / "a.lis"
+    src.write_bytes(LIST)
+    out = tmp_path / "out.yaml"
+    procs = [subprocess.Popen([sys.executable, "-m", "zero", "convert", str(src), "-o", str(out)],
+                              stdout=subprocess.PIPE, stderr=subprocess.PIPE) for _ in range(4)]
+    codes = [p.wait(60) for p in procs]
+    assert codes.count(0) == 1 and codes.count(2) == 3, codes
+
+
+def _slow_writer(target: Path) -> subprocess.Popen[bytes]:
+    script = (
+        "import os, sys, time\n"
+        "from pathlib import Path\n"
+        "import zero.files as f\n"
+        "def slow(fd):\n"
+        "    sys.stdout.write('writing\\n'); sys.stdout.flush(); time.sleep(30)\n"
+        "os.fsync = slow\n"
+        f"f.write_atomic(Path({str(target)!r}), b'x' * 1_000_000, force=True)\n"
+    )
+    proc = subprocess.Popen([sys.executable, "-c", script], stdout=subprocess.PIPE, stderr=subprocess.PIPE)
+    assert proc.stdout is not None
+    assert proc.stdout.readline() == b"writing\n"
+    return proc
+
+
+def test_sigterm_removes_the_temporary_file(tmp_path: Path) -> None:
+    target = tmp_path / "out.lis"
+    target.write_bytes(b"old\n")
+    proc = _slow_writer(target)
+    proc.send_signal(signal.SIGTERM)
+    assert proc.wait(20) == 128 + signal.SIGTERM
+    assert proc.stderr is not None and b"nothing was replaced" in proc.stderr.read()
+    assert [p.name for p in tmp_path.iterdir()] == ["out.lis"]
+    assert target.read_bytes() == b"old\n"
+
+
+def test_a_killed_writers_temporary_file_is_removed_by_the_next_write(tmp_path: Path) -> None:
+    target = tmp_path / "out.lis"
+    target.write_bytes(b"old\n")
+    proc = _slow_writer(target)
+    proc.kill()
+    proc.wait(20)
+    assert target.read_bytes() == b"old\n"
+    left = [p for p in tmp_path.iterdir() if p.name != "out.lis"]
+    assert len(left) == 1 and left[0].name.startswith(f".out.lis.zero-{proc.pid}-")
+    write_atomic(target, b"new\n", force=True)
+    assert [p.name for p in tmp_path.iterdir()] == ["out.lis"]
+    assert target.read_bytes() == b"new\n"
+    # a temporary file of a process that still runs is left alone
+    live = tmp_path / f".out.lis.zero-{os.getppid()}-0123abcd.tmp"
+    live.write_bytes(b"")
+    assert remove_stale_temps(target) == []
+
+
+# ---------------------------------------------------------------------------- --diff
+
+
+def _git(*args: str, cwd: Path) -> subprocess.CompletedProcess[bytes]:
+    return subprocess.run(["git", *args], cwd=cwd, capture_output=True, check=False)
+
+
+@pytest.mark.parametrize("command", [["lint", "--diff"], ["lint", "--fix", "--diff"], ["format", "--diff"]])
+def test_a_diff_only_shows_and_git_apply_takes_it(tmp_path: Path, command: list[str]) -> None:
+    if shutil.which("git") is None:
+        pytest.skip("git is not installed")
+    _git("init", "-q", cwd=tmp_path)
+    f = tmp_path / "nullp.lis"
+    f.write_bytes(CP1252)
+    run = zero_cli(*command, "nullp.lis", cwd=tmp_path)
+    assert run.code == 1, run
+    assert f.read_bytes() == CP1252  # --diff never writes
+    assert run.out.startswith(b"--- a/nullp.lis\n+++ b/nullp.lis\n@@ ")
+    assert b"\xb5" in run.out and b"\r\n" in run.out  # the file's own encoding and line endings
+    patch = tmp_path / "p.patch"
+    patch.write_bytes(run.out)
+    checked = _git("apply", "--check", "p.patch", cwd=tmp_path)
+    assert checked.returncode == 0, checked.stderr
+    assert _git("apply", "p.patch", cwd=tmp_path).returncode == 0
+    fixed = tmp_path / "fixed.lis"
+    fixed.write_bytes(CP1252)
+    done = ["format"] if command[0] == "format" else ["lint", "--fix"]
+    zero_cli(*done, "fixed.lis", cwd=tmp_path)
+    assert f.read_bytes() == fixed.read_bytes() != CP1252
+    if shutil.which("patch"):
+        f.write_bytes(CP1252)
+        assert subprocess.run(["patch", "-p1", "--dry-run", "-i", "p.patch"], cwd=tmp_path,
+                              capture_output=True, check=False).returncode == 0
+
+
+def test_a_diff_without_changes_is_empty_and_exits_0(tmp_path: Path) -> None:
+    f = tmp_path / "ok.lis"
+    f.write_bytes(b"np_grp[1].achse[0].versch                             100\nEnde\n")
+    run = zero_cli("lint", "--diff", str(f))
+    assert (run.code, run.out) == (0, b"")
+
+
+# ------------------------------------------------------------------------ standard input
+
+
+@pytest.mark.parametrize("name", ["bad.nc", "hand.yaml"])
+def test_stdin_filename_reads_as_a_file_of_that_name(name: str) -> None:
+    path = FIXTURES / ("programs" if name.endswith(".nc") else "diff") / name
+    from_file = zero_cli("lint", "--output-format", "concise", str(path))
+    from_stdin = zero_cli("lint", "--output-format", "concise", "-", "--stdin-filename", str(path),
+                          stdin=path.read_bytes())
+    assert (from_stdin.code, from_stdin.out) == (from_file.code, from_file.out)
+
+
+def test_format_reads_standard_input() -> None:
+    path = FIXTURES / "seed" / "nullp_3achsen.lis"
+    formatted = zero_cli("format", "-", stdin=path.read_bytes())
+    assert formatted.code == 0 and formatted.err == b""
+    assert zero_cli("format", "--check", "-", stdin=formatted.out).code == 0
+    assert zero_cli("format", "--check", "-", stdin=path.read_bytes().replace(b"  ", b" ")).code == 1
+
+
+@pytest.mark.parametrize(("name", "text"), [
+    ("big.json", '{"a": ' + "7" * 5000 + "}"),
+    ("big.toml", "[np_grp]\nx = " + "7" * 5000 + "\n"),
+])
+def test_a_number_of_any_size_gets_a_located_error(tmp_path: Path, name: str, text: str) -> None:
+    f = tmp_path / name
+    f.write_text(text)
+    for command in (["lint"], ["convert", "--to", "lis"]):
+        run = zero_cli(*command, str(f))
+        assert run.code == 2 if command == ["lint"] else run.code in (1, 2)
+        assert "a number of 5000 digits: no parameter holds it" in run.stderr
+        assert f"{f}:" + ("1:7" if name.endswith("json") else "2:5") in run.stderr
+
+
+def test_read_file_refuses_what_is_not_a_regular_file(tmp_path: Path) -> None:
+    with pytest.raises(ZeroError, match="is a directory"):
+        read_file(tmp_path)
+    with pytest.raises(ZeroError, match="no such file"):
+        read_file(tmp_path / "missing.lis")
