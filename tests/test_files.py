@@ -261,13 +261,16 @@ def _slow_writer(target: Path) -> subprocess.Popen[bytes]:
     return proc
 
 
-def test_sigterm_removes_the_temporary_file(tmp_path: Path) -> None:
+@pytest.mark.parametrize("signum", [signal.SIGTERM, signal.SIGINT])
+def test_a_signal_removes_the_temporary_file(tmp_path: Path, signum: int) -> None:
     target = tmp_path / "out.lis"
     target.write_bytes(b"old\n")
     proc = _slow_writer(target)
-    proc.send_signal(signal.SIGTERM)
-    assert proc.wait(20) == 128 + signal.SIGTERM
-    assert proc.stderr is not None and b"nothing was replaced" in proc.stderr.read()
+    proc.send_signal(signum)
+    code = proc.wait(20)
+    if signum == signal.SIGTERM:
+        assert code == 128 + signal.SIGTERM
+        assert proc.stderr is not None and b"nothing was replaced" in proc.stderr.read()
     assert [p.name for p in tmp_path.iterdir()] == ["out.lis"]
     assert target.read_bytes() == b"old\n"
 
