@@ -30,7 +30,14 @@ AXIS_UNITS = {1: "mm", 2: "°", 4: "°"}  # kenngr.achs_typ → the unit of its 
 CH_COUNT = "P-CHAN-00003"  # gruppe[0].achs_anzahl
 CH_NAME = "P-CHAN-00006"  # gruppe[0].achse[j].bezeichnung
 CH_LOG_NR = "P-CHAN-00035"  # gruppe[0].achse[j].log_achs_nr
+SPINDLE_AXIS = "P-CHAN-00036"  # spindel[s].log_achs_nr
 RANGE_CHECK_PROG_LIMITS = "P-CHAN-00498"  # range_check_prog_soft_limits
+
+# Start-up list (P-STUP-…)
+CHANNELS = "P-STUP-00001"  # kanal_anzahl
+AXIS_LISTS = "P-STUP-00014"  # zahl_mds
+COMP_LISTS = "P-STUP-00016"  # zahl_kw
+COMP_AXIS = "P-STUP-00036"  # achs_kw_log_ax_nr[i]: the axis of compensation list i
 
 # Zero-offset list (P-ZERO-…)
 G53_AVAILABLE = "P-ZERO-00001"  # g53_verfuegbar

@@ -176,6 +176,9 @@ class ListValues:
     resolved: list[Resolved] = field(default_factory=list)
     # param ID -> indices -> the entry that wins (the last one)
     by_id: dict[str, dict[tuple[int, ...], Resolved]] = field(default_factory=dict)
+    # the default list under this one (default_achs_mds under an axis list): its values apply
+    # where this list sets none
+    base: ListValues | None = None
 
     @classmethod
     def of(cls: type[_V], doc: Document, registry: Registry, kind: str | None = None) -> _V:
@@ -200,11 +203,27 @@ class ListValues:
         return out
 
     def value_of(self, param_id: str, indices: tuple[int, ...] = ()) -> Resolved | None:
-        """The entry that sets ``param_id[indices]`` (the later one wins), if any."""
+        """The entry that sets ``param_id[indices]`` (the later one wins; this list before the
+        default list under it), if any."""
         slot = self.by_id.get(param_id)
-        if not slot:
-            return None
-        return slot.get(indices)
+        hit = slot.get(indices) if slot else None
+        if hit is None and self.base is not None:
+            return self.base.value_of(param_id, indices)
+        return hit
+
+    def layer_of(self, param_id: str, indices: tuple[int, ...] = ()) -> ListValues | None:
+        """The list whose entry the controller uses for ``param_id[indices]`` (``None``: default)."""
+        slot = self.by_id.get(param_id)
+        if slot and indices in slot:
+            return self
+        return self.base.layer_of(param_id, indices) if self.base is not None else None
+
+    def ids_of(self, param_id: str) -> dict[tuple[int, ...], Resolved]:
+        """Every element of ``param_id`` this list or the default list under it sets."""
+        own = self.by_id.get(param_id, {})
+        if self.base is None:
+            return own
+        return {**self.base.ids_of(param_id), **own}
 
     def number_of(self, param_id: str, indices: tuple[int, ...] = (), _depth: int = 0) -> Number | None:
         """The numeric value the controller will use: the list's, else the default."""

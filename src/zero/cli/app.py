@@ -24,14 +24,14 @@ from zero.cli.options import LINT_OPTIONS, PATHS_HELP, Option
 from zero.cli.run import REGISTRIES, echo, read_stdin, render_lint
 from zero.cli.run import lint as run_lint_command
 from zero.diff import SAME, DiffOptions, show_lines
-from zero.engine.commands import load_side, parse_kind, run_diff, run_format, run_limits
+from zero.engine.commands import load_side, parse_kind, run_diff, run_effective, run_format, run_limits
 from zero.engine.config import ConfigFinder
 from zero.engine.convert import check_convert_options, convert_inputs, write_outputs
 from zero.errors import ZeroError
 from zero.files import write_atomic
 from zero.lists.model import parse_key
 from zero.output.docs import param_text, rule_text, rules_overview
-from zero.output.tables import render_diff, render_limits
+from zero.output.tables import render_diff, render_effective, render_limits
 from zero.output.text import render_text
 from zero.rules import RULES
 from zero.structured.schema import build_schema
@@ -203,6 +203,8 @@ def diff(
         "--output-format", help="text (a table) or json (one object per change).")] = OutputFormat.text,
     from_: Annotated[Format | None, typer.Option("--from", help="Format of both inputs.")] = None,
     kind: Annotated[str | None, typer.Option(help="List kind instead of detecting it.")] = None,
+    machine: Annotated[bool, typer.Option(
+        "--machine", help="A and B are start-up lists: compare the machines' effective values list by list.")] = False,
 ) -> None:
     """Compare two lists by parameter: added, removed, changed, with mm/° deltas.
 
@@ -213,7 +215,7 @@ def diff(
         forced = parse_kind(kind)
         run = run_diff(a, b, _registry(), read_stdin, defaults=defaults,
                        options=DiffOptions(strict=strict, comments=comments),
-                       fmt=from_.value if from_ else None, kind=forced)
+                       fmt=from_.value if from_ else None, kind=forced, machine=machine)
         if output_format is OutputFormat.json:
             sys.stdout.write(json.dumps([c.to_json() for c in run.changes], indent=2, ensure_ascii=False) + "\n")
         elif run.changes:
@@ -225,19 +227,54 @@ def diff(
 
 @app.command()
 def show(
-    path: Annotated[str, typer.Argument(help="A list, YAML, TOML or JSON file (- for stdin).")],
+    args: Annotated[list[str] | None, typer.Argument(
+        help="A list, YAML, TOML or JSON file (- for stdin); with --machine: keys, IDs or patterns.")] = None,
+    machine: Annotated[Path | None, typer.Option(
+        "--machine", help="Show the effective values of every list this start-up list loads, with origins.")] = None,
+    effective_: Annotated[bool, typer.Option(
+        "--effective", help="With --machine: also the catalogue defaults of what no list sets.")] = False,
+    output_format: Annotated[OutputFormat, typer.Option(
+        "--output-format", help="text or json (with --machine).")] = OutputFormat.text,
     from_: Annotated[Format | None, typer.Option("--from", help="Input format.")] = None,
     kind: Annotated[str | None, typer.Option(help="List kind instead of detecting it.")] = None,
 ) -> None:
-    """Print a list as the controller reads it: one parameter per line, grouped (for git textconv)."""
+    """Print a list as the controller reads it: one parameter per line, grouped (for git textconv);
+    with --machine, every list of a machine with each value's origin."""
 
     def body() -> int:
+        if machine is not None:
+            return _effective(machine, args or [], effective_, False, output_format)
+        if not args or len(args) != 1:
+            raise ZeroError("give one file to show (or --machine STARTUP [KEY...])")
         registry = _registry()
-        side = load_side(path, from_.value if from_ else None, parse_kind(kind), registry, read_stdin)
+        side = load_side(args[0], from_.value if from_ else None, parse_kind(kind), registry, read_stdin)
         sys.stdout.write("\n".join(show_lines(side, registry)) + "\n")
         return exits.OK
 
     _run(body)
+
+
+def _effective(machine: Path | None, keys: list[str], with_defaults: bool, explain: bool,
+               output_format: OutputFormat) -> int:
+    run = run_effective(machine, REGISTRIES, keys, with_defaults, explain, state.param_desc)
+    if output_format is OutputFormat.json:
+        sys.stdout.write(json.dumps(run.to_json(), indent=2, ensure_ascii=False) + "\n")
+    else:
+        render_effective(run.summary, run.scopes, explain=explain)
+    return exits.OK
+
+
+@app.command()
+def explain(
+    keys: Annotated[list[str], typer.Argument(
+        help="Keys, IDs or patterns (kenngr.swe_pos, P-AXIS-00178, 'kenngr.*').")],
+    machine: Annotated[Path | None, typer.Option(
+        "--machine", help="The start-up list [default: [tool.zero.machine] startup].")] = None,
+    output_format: Annotated[OutputFormat, typer.Option("--output-format", help="text or json.")] = OutputFormat.text,
+) -> None:
+    """Where the value of a parameter comes from on a machine: the list, the default list under it,
+    or the catalogue, for every list of the machine that has it."""
+    _run(lambda: _effective(machine, keys, False, True, output_format))
 
 
 # ---------------------------------------------------------------------------- schema

@@ -35,6 +35,7 @@ from zero.engine.lint import (
 from zero.engine.parallel import lint_many
 from zero.errors import ZeroError
 from zero.files import read_file, write_atomic
+from zero.machine.effective import Scope, effective, entries_of, summary
 from zero.machine.limits import Ip247Violation, LimitRow, ip247, pcs_limits
 from zero.machine.model import Machine, load_machine
 from zero.rules import RULES
@@ -164,8 +165,8 @@ def _lint_machine(request: LintRequest, startup: Path, cli: LintOptions, finder:
                   registries: Registries) -> list[LintResult]:
     """``--machine``: every list of the machine and the X rules, plus the files named."""
     registry = registries(Path(request.param_desc) if request.param_desc else None)
-    overrides = finder.for_path(startup).machine_lists
-    machine, results = lint_machine(startup, registry, cli, overrides)
+    cfg = finder.for_path(startup)
+    machine, results = lint_machine(startup, registry, cli, cfg.machine_lists, cfg.machine_workdir)
     for f in collect_files([Path(p) for p in request.paths]):  # programs and lists named as well
         if f.suffix.lower() in PROGRAM_SUFFIXES:
             results.append(lint_program(read_file(f), registry, str(f), cli, machine))
@@ -182,7 +183,8 @@ def _with_machine(path: Path, result: LintResult, cfg: Config, cli: LintOptions,
     registry = registries(param_desc_of(cfg, param_desc))
     m = machines.get(cfg.machine)
     if m is None:
-        m = machines[cfg.machine] = load_machine(cfg.machine, registry, cli.kind, cfg.machine_lists)
+        m = machines[cfg.machine] = load_machine(cfg.machine, registry, cli.kind, cfg.machine_lists,
+                                                 cfg.machine_workdir)
     source = read_file(path) if data is None else data
     return lint_program(source, registry, str(path), cfg.options_for(path, cli), m)
 
@@ -328,8 +330,8 @@ class DiffRun:
 
 def run_diff(a: str, b: str | None, registry: Registry, read_stdin: Callable[[], bytes], *,
              defaults: bool = False, options: DiffOptions | None = None, fmt: str | None = None,
-             kind: str | None = None) -> DiffRun:
-    """``zero diff A B`` or ``zero diff --defaults A``."""
+             kind: str | None = None, machine: bool = False) -> DiffRun:
+    """``zero diff A B``, ``zero diff --defaults A`` or ``zero diff --machine A B`` (two start-up lists)."""
     options = options or DiffOptions()
     if defaults:
         if b is not None:
@@ -341,9 +343,28 @@ def run_diff(a: str, b: str | None, registry: Registry, read_stdin: Callable[[],
         raise ZeroError("give two files to compare (or one with --defaults)")
     if a == "-" and b == "-":
         raise ZeroError("only one side can be standard input")
+    if machine:
+        return _diff_machines(Path(a), Path(b), registry, options)
     side_a = load_side(a, fmt, kind, registry, read_stdin)
     side_b = load_side(b, fmt, kind or side_a.kind, registry, read_stdin)
     return DiffRun(diff_sides(side_a, side_b, registry, options), f"--- {a}\n+++ {b}")
+
+
+def _diff_machines(a: Path, b: Path, registry: Registry, options: DiffOptions) -> DiffRun:
+    """Two machines' effective configurations, list by list (a value a default list supplies
+    counts as the machine's value; a removed one falls back to the catalogue default)."""
+    def sides(startup: Path) -> dict[str, Side]:
+        m = load_machine(startup, registry)
+        return {name: Side(str(lf.path), lf.values.kind, entries_of(lf.values)) for name, lf in m.scopes()}
+
+    left, right = sides(a), sides(b)
+    changes: list[Change] = []
+    for name in [*left, *(n for n in right if n not in left)]:
+        empty = Side("-", (left.get(name) or right[name]).kind, {})
+        for c in diff_sides(left.get(name, empty), right.get(name, empty), registry, options):
+            c.group = f"{name}: {c.group}"
+            changes.append(c)
+    return DiffRun(changes, f"--- {a} (machine)\n+++ {b} (machine)")
 
 
 # ---------------------------------------------------------------------------- limits
@@ -358,18 +379,45 @@ class LimitsRun:
 PROFILES = ("ip247",)
 
 
+def machine_of(startup: Path | None, registries: Registries, param_desc: str | Path | None = None) -> Machine:
+    """The machine of a start-up list (the configuration's ``[tool.zero.machine]`` when not
+    named), with the configuration's list overrides."""
+    cfg = ConfigFinder().for_path(startup if startup is not None else Path.cwd())
+    path = startup or cfg.machine
+    if path is None:
+        raise ZeroError("name the start-up list with --machine (or [tool.zero.machine] startup)")
+    return load_machine(path, registries(Path(param_desc) if param_desc else None), None, cfg.machine_lists,
+                        cfg.machine_workdir)
+
+
 def run_limits(machine: Path | None, registries: Registries, all_groups: bool = False,
                profile: str | None = None, param_desc: str | Path | None = None) -> LimitsRun:
     """``zero limits``: PCS soft limits of the machine (the configuration's when not named)."""
     if profile not in (None, *PROFILES):
         raise ZeroError(f"unknown profile {profile!r} (known: {', '.join(PROFILES)})")
-    cfg = ConfigFinder().for_path(machine if machine is not None else Path.cwd())
-    startup = machine or cfg.machine
-    if startup is None:
-        raise ZeroError("name the start-up list with --machine (or [tool.zero.machine] startup)")
-    m = load_machine(startup, registries(Path(param_desc) if param_desc else None), None, cfg.machine_lists)
+    m = machine_of(machine, registries, param_desc)
     return LimitsRun(pcs_limits(m, all_groups), ip247(m) if profile == "ip247" else [])
 
 
+@dataclass(slots=True)
+class EffectiveRun:
+    summary: dict[str, object]
+    scopes: list[Scope]
+
+    def to_json(self) -> dict[str, object]:
+        return {**self.summary, "scopes": [s.to_json() for s in self.scopes]}
+
+
+def run_effective(machine: Path | None, registries: Registries, keys: Sequence[str] = (),
+                  with_defaults: bool = False, explain: bool = False,
+                  param_desc: str | Path | None = None) -> EffectiveRun:
+    """``zero show --machine`` / ``zero explain``: effective values and where they come from."""
+    m = machine_of(machine, registries, param_desc)
+    scopes = effective(m, keys, with_defaults, explain)
+    if keys and not scopes:
+        raise ZeroError(f"no list of the machine has or documents {', '.join(keys)}")
+    return EffectiveRun(summary(m), scopes)
+
+
 __all__ = ["DiffRun", "Echo", "FormatRun", "LimitsRun", "LintRequest", "LintRun", "load_side", "param_desc_of",
-           "parse_codes", "parse_kind", "run_diff", "run_format", "run_limits", "run_lint"]
+           "parse_codes", "parse_kind", "run_diff", "run_effective", "run_format", "run_limits", "run_lint"]

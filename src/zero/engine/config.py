@@ -27,6 +27,7 @@ R007 = "error"
 [tool.zero.machine]               # the machine NC programs and `zero limits` refer to
 startup = "listen/hochlauf.lis"
 "achs_mds[0]" = "listen/achse_x_neu.lis"   # override a list the start-up list names
+working-directory = "."                    # where the controller resolves ./listen/...
 ```
 """
 
@@ -44,6 +45,8 @@ from zero.catalog.registry import kind_from_name
 from zero.diagnostics import Severity
 from zero.engine.lint import LintOptions
 from zero.errors import ZeroError
+from zero.lists.model import parse_key
+from zero.machine.model import BY_KEY
 from zero.rules import RULES
 from zero.structured.toml import scan_toml
 
@@ -77,6 +80,13 @@ def glob_to_regex(pattern: str) -> re.Pattern[str]:
     return re.compile("".join(out) + r"\Z")
 
 
+def _is_reference(key: str) -> bool:
+    """A start-up key that names a list (``achs_mds[0]``, ``hand_mds``)."""
+    parsed = parse_key(key)
+    ref = BY_KEY.get(parsed.pattern) if parsed is not None else None
+    return ref is not None and len(parsed.indices) == ref.key.count("[]")  # type: ignore[union-attr]
+
+
 def _resolved(file: Path) -> Path:
     """The absolute path of a file; a link loop or dangling link resolves through its directory."""
     try:
@@ -99,6 +109,7 @@ class Config:
     param_desc: Path | None = None
     machine: Path | None = None  # the start-up list of the machine ([tool.zero.machine] startup)
     machine_lists: dict[str, Path] = field(default_factory=dict)  # start-up key → path override
+    machine_workdir: Path | None = None  # the controller's working directory, where it cannot be found
 
     @property
     def root(self) -> Path:
@@ -156,10 +167,12 @@ class Config:
                  f"exclude = {arr(self.exclude)}"]
         if self.param_desc:
             lines.append(f'param-desc = "{self.param_desc}"')
-        if self.machine or self.machine_lists:
+        if self.machine or self.machine_lists or self.machine_workdir:
             lines.append("[tool.zero.machine]")
             if self.machine:
                 lines.append(f'startup = "{self.machine}"')
+            if self.machine_workdir:
+                lines.append(f'working-directory = "{self.machine_workdir}"')
             lines += [f'"{k}" = "{v}"' for k, v in self.machine_lists.items()]
         lines.append("[tool.zero.per-file-ignores]")
         lines += [f'"{g}" = {arr(c)}' for g, c in self.per_file_ignores]
@@ -256,10 +269,13 @@ def parse_config(path: Path, text: str | None = None) -> Config | None:
                     raise fail(mk, "expected a path", ("machine",))
                 if mk == "startup":
                     cfg.machine = path.parent / mv
-                elif re.fullmatch(r"(achs_mds|sda_mds|nullp_data)\[[0-9]+\]", mk):
+                elif mk == "working-directory":
+                    cfg.machine_workdir = path.parent / mv
+                elif _is_reference(mk):
                     cfg.machine_lists[mk] = path.parent / mv
                 else:
-                    raise fail(mk, "expected `startup` or a start-up key such as `achs_mds[0]`", ("machine",))
+                    raise fail(mk, "expected `startup`, `working-directory` or a key of the start-up list that "
+                               "names a list, such as `achs_mds[0]` or `hand_mds`", ("machine",))
         elif key == "per-file-ignores":
             if not isinstance(value, dict):
                 raise fail(key, "expected a table of glob = [codes]")

@@ -182,11 +182,12 @@ def lint_file(path: str | Path, registry: Registry, options: LintOptions | None 
 
 
 def lint_machine(startup_path: Path, registry: Registry, options: LintOptions | None = None,
-                 overrides: dict[str, Path] | None = None) -> tuple[Machine, list[LintResult]]:
+                 overrides: dict[str, Path] | None = None,
+                 workdir: Path | None = None) -> tuple[Machine, list[LintResult]]:
     """Every list of the machine with its own findings, plus the X findings on the file they
     concern (the start-up list, a channel list, a zero-offset list or an axis list)."""
     opts = options or LintOptions()
-    machine = load_machine(startup_path, registry, opts.kind, overrides)
+    machine = load_machine(startup_path, registry, opts.kind, overrides, workdir)
     severities = selected_rules(opts)
     results: dict[str, LintResult] = {}
     for lf in machine.lists:

@@ -1,18 +1,19 @@
-"""A machine: the lists its start-up list names, read together.
+"""A machine as the controller builds it at start-up, with the origin of every value.
 
-The controller's start-up list (``hochlauf.lis``) names the channel lists
-(``sda_mds[c]``), the zero-offset lists (``nullp_data[c]``) and the axis lists
-(``achs_mds[i]``). A channel list says which logical axis (``kopf.achs_nr`` of an
-axis list) is the channel's axis j (``gruppe[0].achse[j].log_achs_nr``) and its NC
-name. With that, zero can check a zero offset against the soft limits of *its*
-axis (rules X001–X007 in :mod:`zero.rules.machine`) and compute the soft limits in
-the programming coordinate system per work offset (:mod:`zero.machine.limits`,
-``zero limits``). Loading a machine reads and evaluates its lists; linting them is
-the engine's work (:func:`zero.engine.lint.lint_machine`).
+The start-up list (``hochlauf.lis``) names every other list of the machine
+(:data:`REFERENCES`: the keys the catalogue documents for it). The controller reads
+them from its working directory, honours the counts (``zahl_mds`` axis lists,
+``zahl_kw`` compensation lists, ``kanal_anzahl`` channels: lists beyond a count are not
+read), and applies a default list (``default_achs_mds``, ``default_sda_mds``) under the
+specific lists of its kind, so that a parameter a specific list does not set takes the
+default list's value, and only then the catalogue default. :func:`load_machine` builds
+that picture; every machine question (the X rules, ``zero limits``, the NC program
+checks, ``zero show --machine``) is answered from it.
 
-Paths in a start-up list are relative to the controller's working directory; zero
-tries the start-up list's directory, then up to four of its ancestors, then the bare
-file name next to the start-up list.
+The working directory is found once: the start-up list's directory or the nearest of
+its ancestors in which the most named lists exist (the vendor's start-up lists name
+``./listen/…`` from inside ``listen/``). A list is looked for there only; a list that is
+not there is missing, never replaced by a same-named file elsewhere.
 """
 
 from __future__ import annotations
@@ -21,12 +22,15 @@ from dataclasses import dataclass, field
 from pathlib import Path
 
 from zero.catalog.ids import (
+    AXIS_LISTS,
     AXIS_NAME,
     AXIS_NR,
     AXIS_TYPE,
     CH_COUNT,
     CH_LOG_NR,
     CH_NAME,
+    CHANNELS,
+    COMP_LISTS,
     ROTARY_TYPES,
     SWE_NEG,
     SWE_POS,
@@ -34,17 +38,52 @@ from zero.catalog.ids import (
 )
 from zero.catalog.registry import Registry
 from zero.catalog.values import ListValues
+from zero.errors import ZeroError
 from zero.files import read_file
 from zero.lists.model import Entry
 from zero.lists.tokenizer import tokenize
 
-# Soft limits the controller uses when an axis list sets none (±10 m, the catalogue default).
+# Soft limits the controller uses when no list sets them (±10 m, the catalogue default).
 DEFAULT_SOFT_LIMIT = 100_000_000
+MAX_ANCESTORS = 4  # how far above the start-up list the working directory is looked for
+
+
+@dataclass(frozen=True, slots=True)
+class Reference:
+    """A start-up key that names a list, as the catalogue documents it."""
+
+    key: str  # pattern: "achs_mds[]", "hand_mds"
+    param_id: str
+    kind: str  # the kind of list it names
+    default: bool = False  # a default list, applied under the specific lists of its kind
+    count: str | None = None  # the start-up parameter that limits how many are read
+    missing: str = ("the catalogue does not document what the controller does without it")
+
+
+ABORTS = "the catalogue says start-up is aborted when a named list cannot be opened"
+# In the controller's order: default lists before the lists they underlie.
+REFERENCES: tuple[Reference, ...] = (
+    Reference("default_sda_mds", "P-STUP-00034", "CHAN", default=True),
+    Reference("sda_mds[]", "P-STUP-00009", "CHAN", count=CHANNELS),
+    Reference("werkz_data[]", "P-STUP-00010", "TOOL", count=CHANNELS),
+    Reference("nullp_data[]", "P-STUP-00011", "ZERO", count=CHANNELS),
+    Reference("pzv_data[]", "P-STUP-00012", "CLMP", count=CHANNELS),
+    Reference("ve_var[]", "P-STUP-00146", "EXTV", count=CHANNELS),
+    Reference("hand_mds", "P-STUP-00013", "MANU"),
+    Reference("rtconf_lis", "P-STUP-00135", "RTCF"),
+    Reference("hw_configuration_list", "P-STUP-00136", "HWCF"),
+    Reference("default_achs_mds", "P-STUP-00035", "AXIS", default=True),
+    Reference("achs_mds[]", "P-STUP-00015", "AXIS", count=AXIS_LISTS, missing=ABORTS),
+    Reference("achs_kw[]", "P-STUP-00017", "COMP", count=COMP_LISTS, missing=ABORTS),
+)
+BY_KEY = {r.key: r for r in REFERENCES}
+COUNT_KEYS = {CHANNELS: "kanal_anzahl", AXIS_LISTS: "zahl_mds", COMP_LISTS: "zahl_kw"}
 
 
 @dataclass(slots=True)
 class ListFile:
-    """One list of the machine with the values the controller takes from it."""
+    """One list of the machine with the values the controller takes from it (the default
+    list's under this list's, where there is one)."""
 
     key: str  # the start-up entry that names it: achs_mds[0]
     path: Path
@@ -58,7 +97,23 @@ class ListFile:
         return self.values.text_of(pid, indices)
 
     def entry(self, pid: str, indices: tuple[int, ...] = ()) -> Entry | None:
-        return self.values.entry_of(pid, indices)
+        """The entry of *this* list that sets the parameter (not the default list's)."""
+        layer = self.values.layer_of(pid, indices)
+        return layer.entry_of(pid, indices) if layer is self.values else None
+
+
+@dataclass(slots=True)
+class Named:
+    """A list reference of the start-up list and what became of it."""
+
+    key: str  # as written: achs_mds[4]
+    reference: Reference
+    index: int | None
+    raw: str  # the path as written
+    line: int
+    path: Path | None = None  # where it was looked for
+    status: str = "loaded"  # loaded, missing, unreadable, beyond-count, overridden
+    reason: str = ""
 
 
 @dataclass(slots=True)
@@ -80,7 +135,8 @@ class ChannelAxis:
     index: int  # j in np_grp[i].achse[j]
     log_nr: int
     name: str
-    entry: Entry | None
+    entry: Entry | None  # the entry that sets log_achs_nr
+    source: Path | None = None  # the list that entry is in (the channel list or its default list)
 
 
 @dataclass(slots=True)
@@ -90,6 +146,7 @@ class Channel:
     zero: ListFile | None  # the zero-offset list
     axes: list[ChannelAxis] = field(default_factory=list)
     tools: ListFile | None = None  # the tool list (werkz_data[c])
+    others: dict[str, ListFile] = field(default_factory=dict)  # pzv_data, ve_var by key pattern
 
 
 @dataclass(slots=True)
@@ -97,21 +154,38 @@ class Missing:
     key: str
     raw: str  # the path as written
     line: int
+    reason: str = "does not exist"
+    consequence: str = ""
 
 
 @dataclass(slots=True)
 class Machine:
     startup: ListFile
+    workdir: Path = Path(".")
+    named: list[Named] = field(default_factory=list)
     axis_lists: list[ListFile] = field(default_factory=list)
     channels: list[Channel] = field(default_factory=list)
-    missing: list[Missing] = field(default_factory=list)
+    defaults: dict[str, ListFile] = field(default_factory=dict)  # list kind → its default list
+    singles: dict[str, ListFile] = field(default_factory=dict)  # hand_mds, rtconf_lis, ...
+    compensation: list[tuple[int, ListFile]] = field(default_factory=list)  # (index i, achs_kw[i])
+
+    @property
+    def missing(self) -> list[Missing]:
+        return [Missing(n.key, n.raw, n.line, n.reason, n.reference.missing) for n in self.named
+                if n.status in ("missing", "unreadable")]
 
     @property
     def lists(self) -> list[ListFile]:
-        out = [self.startup, *self.axis_lists]
+        """Every list the machine loads, each once (the start-up list first)."""
+        out: dict[Path, ListFile] = {self.startup.path: self.startup}
+        for lf in (*self.defaults.values(), *self.axis_lists, *self.singles.values(),
+                   *(lf for _, lf in self.compensation)):
+            out.setdefault(lf.path, lf)
         for ch in self.channels:
-            out.extend(x for x in (ch.lists, ch.zero, ch.tools) if x is not None)
-        return out
+            for per_channel in (ch.lists, ch.zero, ch.tools, *ch.others.values()):
+                if per_channel is not None:
+                    out.setdefault(per_channel.path, per_channel)
+        return list(out.values())
 
     def axes(self) -> dict[int, Axis]:
         """Logical axis number → axis (the first list wins when two claim one number)."""
@@ -120,6 +194,20 @@ class Machine:
             ax = axis_of(lf)
             if ax is not None and ax.nr not in out:
                 out[ax.nr] = ax
+        return out
+
+    def scopes(self) -> list[tuple[str, ListFile]]:
+        """Every list with a name for what it configures: ``axis 1 (achs_mds[0])``, ..."""
+        out = [("start-up", self.startup)]
+        for lf in self.axis_lists:
+            nr = lf.number(AXIS_NR)
+            out.append((f"axis {int(nr) if nr is not None else '?'} ({lf.key})", lf))
+        for ch in self.channels:
+            for per_channel in (ch.lists, ch.zero, ch.tools, *ch.others.values()):
+                if per_channel is not None:
+                    out.append((f"channel {ch.index} ({per_channel.key})", per_channel))
+        out.extend((lf.key, lf) for lf in self.singles.values())
+        out.extend((f"compensation {i} ({lf.key})", lf) for i, lf in self.compensation)
         return out
 
 
@@ -133,72 +221,123 @@ def axis_of(lf: ListFile) -> Axis | None:
                 neg if neg is not None else -DEFAULT_SOFT_LIMIT, pos if pos is not None else DEFAULT_SOFT_LIMIT, lf)
 
 
-def resolve(startup: Path, raw: str) -> Path | None:
-    """Where a path named in a start-up list is (None when nowhere)."""
-    text = raw.strip().strip('"')
-    if not text:
-        return None
+def _clean(raw: str) -> str:
+    return raw.strip().strip('"')
+
+
+def working_directory(startup: Path, raws: list[str]) -> Path:
+    """The controller's working directory: the start-up list's directory or the nearest
+    ancestor in which the most of ``raws`` exist (the directory itself when none does)."""
     base = startup.parent
-    # The controller's working directory is usually the parent of `listen/`: try the
-    # start-up list's directory and its ancestors, then the bare name next to it.
-    for d in [base, *list(base.parents)[:4]]:
-        cand = d / text
-        if cand.is_file():
-            return cand
-    cand = base / Path(text).name
-    return cand if cand.is_file() else None
+    candidates = [base, *list(base.parents)[:MAX_ANCESTORS]]
+    relative = [Path(_clean(r)) for r in raws if _clean(r) and not Path(_clean(r)).is_absolute()]
+    best, hits = base, 0
+    for d in candidates:
+        n = sum(1 for r in relative if (d / r).is_file())
+        if n > hits:
+            best, hits = d, n
+    return best
 
 
-def _read(key: str, path: Path, line: int, registry: Registry, kind: str) -> ListFile:
+def _read(key: str, path: Path, line: int, registry: Registry, kind: str,
+          base: ListValues | None = None) -> ListFile:
     doc = tokenize(read_file(path), str(path))
-    return ListFile(key, path, ListValues.of(doc, registry, kind), line)
+    values = ListValues.of(doc, registry, kind)
+    values.base = base
+    return ListFile(key, path, values, line)
+
+
+def _count(startup: ListValues, pid: str) -> int:
+    n = startup.number_of(pid)
+    return int(n) if n is not None else 0
 
 
 def load_machine(startup_path: Path, registry: Registry, forced_kind: str | None = None,
-                 overrides: dict[str, Path] | None = None) -> Machine:
-    """Read a start-up list and every list it names; ``overrides`` (start-up key → path, from
-    ``[tool.zero.machine]``) replace what the start-up list names. Each list is read as the
-    kind its start-up key says (``achs_mds`` an axis list, ...), or as ``forced_kind``."""
+                 overrides: dict[str, Path] | None = None, workdir: Path | None = None) -> Machine:
+    """Read a start-up list and every list it names, as the controller would.
+
+    ``overrides`` (start-up key → path, from ``[tool.zero.machine]``) replace what the
+    start-up list names; ``workdir`` fixes the working directory. Each list is read as the
+    kind its key says (``achs_mds`` an axis list, ...), or as ``forced_kind``.
+    """
     startup = _read("start-up list", startup_path, 0, registry, forced_kind or "STUP")
-    machine = Machine(startup)
-    named: dict[str, list[tuple[int, str, int]]] = {}
+    named: list[Named] = []
     for e in startup.values.doc.entries:
-        if e.key is None or not e.key.indices:
+        if e.key is None:
             continue
-        first = e.key.pattern
-        if first in ("achs_mds[]", "sda_mds[]", "nullp_data[]", "werkz_data[]"):
-            named.setdefault(first, []).append((e.key.indices[0], e.value, e.line))
+        ref = BY_KEY.get(e.key.pattern)
+        if ref is None or len(e.key.indices) != ref.key.count("[]"):
+            continue
+        named.append(Named(e.key_text, ref, e.key.indices[0] if e.key.indices else None, e.value, e.line))
+    root = workdir if workdir is not None else working_directory(startup_path, [n.raw for n in named])
+    machine = Machine(startup, root, named)
+    counts = {pid: _count(startup.values, pid) for pid in COUNT_KEYS}
+    loaded: dict[str, ListFile] = {}
 
-    def load(key: str, raw: str, line: int, kind: str) -> ListFile | None:
-        override = (overrides or {}).get(key)
-        path = override if override is not None and override.is_file() else resolve(startup_path, raw)
-        if path is None:
-            machine.missing.append(Missing(key, raw, line))
+    def load(n: Named, base: ListValues | None = None) -> ListFile | None:
+        if n.reference.count is not None and n.index is not None and n.index >= counts[n.reference.count]:
+            n.status = "beyond-count"
             return None
-        return _read(key, path, line, registry, forced_kind or kind)
+        override = (overrides or {}).get(n.key)
+        text = _clean(n.raw)
+        if override is not None:
+            n.path, n.status = override, "overridden"
+        elif not text:
+            n.status, n.reason = "missing", "is empty"
+            return None
+        else:
+            n.path = Path(text) if Path(text).is_absolute() else root / text
+        try:
+            lf = _read(n.key, n.path, n.line, registry, forced_kind or n.reference.kind, base)
+        except ZeroError as exc:
+            n.status = "missing" if exc.message == "no such file" else "unreadable"
+            n.reason = "does not exist" if n.status == "missing" else exc.message
+            return None
+        loaded[n.key] = lf
+        return lf
 
-    for idx, raw, line in sorted(named.get("achs_mds[]", [])):
-        lf = load(f"achs_mds[{idx}]", raw, line, "AXIS")
-        if lf is not None:
+    for n in named:  # default lists first: the specific lists are read over them
+        if n.reference.default:
+            lf = load(n)
+            if lf is not None:
+                machine.defaults[n.reference.kind] = lf
+    per_channel: dict[int, dict[str, ListFile]] = {}
+    for n in sorted(named, key=lambda n: (n.reference.key, n.index or 0)):
+        ref = n.reference
+        if ref.default:
+            continue
+        under = machine.defaults.get(ref.kind)
+        lf = load(n, under.values if under is not None else None)
+        if lf is None:
+            continue
+        if ref.key == "achs_mds[]":
             machine.axis_lists.append(lf)
-    sda = {i: (raw, line) for i, raw, line in named.get("sda_mds[]", [])}
-    zero = {i: (raw, line) for i, raw, line in named.get("nullp_data[]", [])}
-    tools = {i: (raw, line) for i, raw, line in named.get("werkz_data[]", [])}
-    for c in sorted(set(sda) | set(zero)):
-        ch_list = load(f"sda_mds[{c}]", *sda[c], "CHAN") if c in sda else None
-        zero_list = load(f"nullp_data[{c}]", *zero[c], "ZERO") if c in zero else None
-        ch = Channel(c, ch_list, zero_list)
-        if c in tools:
-            ch.tools = load(f"werkz_data[{c}]", *tools[c], "TOOL")
-        if ch_list is not None:
-            count = ch_list.number(CH_COUNT, (0,))
-            present = {ix[1] for ix in ch_list.values.by_id.get(CH_LOG_NR, {}) if len(ix) == 2 and ix[0] == 0}
-            n = max(int(count or 0), max(present, default=-1) + 1)
-            for j in range(min(n, 32)):
-                nr = ch_list.number(CH_LOG_NR, (0, j))
-                if nr is None:
-                    continue
-                name = ch_list.text(CH_NAME, (0, j)) or f"axis {j}"
-                ch.axes.append(ChannelAxis(j, int(nr), name, ch_list.entry(CH_LOG_NR, (0, j))))
+        elif ref.key == "achs_kw[]":
+            machine.compensation.append((n.index or 0, lf))
+        elif ref.key.endswith("[]"):
+            per_channel.setdefault(n.index or 0, {})[ref.key] = lf
+        else:
+            machine.singles[ref.key] = lf
+    for c in sorted(per_channel):
+        lists = per_channel[c]
+        ch = Channel(c, lists.get("sda_mds[]"), lists.get("nullp_data[]"), tools=lists.get("werkz_data[]"),
+                     others={k: v for k, v in lists.items()
+                             if k not in ("sda_mds[]", "nullp_data[]", "werkz_data[]")})
+        if ch.lists is not None:
+            _channel_axes(ch, ch.lists)
         machine.channels.append(ch)
     return machine
+
+
+def _channel_axes(ch: Channel, lists: ListFile) -> None:
+    count = lists.number(CH_COUNT, (0,))
+    present = {ix[1] for ix in lists.values.ids_of(CH_LOG_NR) if len(ix) == 2 and ix[0] == 0}
+    n = max(int(count or 0), max(present, default=-1) + 1)
+    for j in range(min(n, 32)):
+        nr = lists.number(CH_LOG_NR, (0, j))
+        if nr is None:
+            continue
+        name = lists.text(CH_NAME, (0, j)) or f"axis {j}"
+        layer = lists.values.layer_of(CH_LOG_NR, (0, j))
+        entry = layer.entry_of(CH_LOG_NR, (0, j)) if layer is not None else None
+        ch.axes.append(ChannelAxis(j, int(nr), name, entry, Path(layer.doc.path) if layer is not None else None))

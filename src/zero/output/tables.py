@@ -10,6 +10,7 @@ from typing import TextIO
 
 from zero.catalog.ids import fixed, g_code
 from zero.diff import ADDED, CHANGED, COMMENT, REMOVED, SAME, Change
+from zero.machine.effective import Scope
 from zero.machine.limits import Ip247Violation, LimitRow
 from zero.output.text import use_color
 
@@ -117,3 +118,29 @@ def render_limits(rows: Sequence[LimitRow], violations: Sequence[Ip247Violation]
                                for i in range(10)).rstrip() + "\n")
     for v in violations:
         stream.write(_ip247_line(v) + "\n")
+
+
+def render_effective(summary: dict[str, object], scopes: Sequence[Scope], stream: TextIO | None = None,
+                     explain: bool = False) -> None:
+    """Effective values, one line per parameter with its origin (``git config --show-origin``)."""
+    stream = stream or sys.stdout
+    named = summary["lists"]
+    assert isinstance(named, list)
+    read = sum(1 for n in named if n["status"] in ("loaded", "overridden"))
+    stream.write(f"# machine {summary['startup']}: working directory {summary['working_directory']}, "
+                 f"{read} of {len(named)} named lists read\n")
+    for n in named:
+        if n["status"] not in ("loaded", "overridden"):
+            stream.write(f"#   {n['key']} {n['path']}: {n['status']}{': ' + n['reason'] if n['reason'] else ''}\n")
+    for scope in scopes:
+        under = f" over {scope.default_list}" if scope.default_list else ""
+        stream.write(f"\n[{scope.name}: {scope.file.path}{under}]\n")
+        width = max((len(v.key) + len(v.value or "") for v in scope.values), default=0) + 3
+        for v in scope.values:
+            head = f"{v.key} = {v.value if v.value is not None else '(none)'}"
+            stream.write(f"{head.ljust(width)}  {v.param_id or '-':<12}  {v.origin}\n")
+            if explain:
+                for value, origin in v.layers:
+                    shown = value if value is not None else "(not set)"
+                    stream.write(f"    {origin.source:<18} {shown:<20} {origin.path or ''}"
+                                 f"{':' + str(origin.line) if origin.line else ''}\n")

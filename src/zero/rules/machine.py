@@ -8,23 +8,39 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
-from zero.catalog.ids import AXIS_NAME, AXIS_NR, FULL_TURN, G53_AVAILABLE, INACTIVE, OFFSET, fixed, g_code
+from zero.catalog.ids import (
+    AXIS_NAME,
+    AXIS_NR,
+    COMP_AXIS,
+    FULL_TURN,
+    G53_AVAILABLE,
+    INACTIVE,
+    OFFSET,
+    SPINDLE_AXIS,
+    fixed,
+    g_code,
+)
 from zero.catalog.ranges import TYPE_LIMITS
 from zero.diagnostics import Diagnostic, Span
-from zero.machine.model import axis_of
+from zero.machine.model import COUNT_KEYS, axis_of
 from zero.rules.base import E, Family, MachineContext, W
 
 FAMILY: Family[MachineContext] = Family("X", "machine (across lists, `zero lint --machine`)", "machine")
 SGN32 = TYPE_LIMITS["SGN32"]
 
 MISSING_LIST = FAMILY.rule(
-    "X005", "missing-list", E, "The start-up list names a list that does not exist",
+    "X005", "missing-list", E, "The start-up list names a list that cannot be read",
     """
-What it checks: every `achs_mds[i]`, `sda_mds[c]` and `nullp_data[c]` of the start-up list names
-an existing file (relative to the start-up list, its parent directory, or by file name).
+What it checks: every list the start-up list names (`default_sda_mds`, `sda_mds[c]`,
+`werkz_data[c]`, `nullp_data[c]`, `pzv_data[c]`, `ve_var[c]`, `hand_mds`, `rtconf_lis`,
+`hw_configuration_list`, `default_achs_mds`, `achs_mds[i]`, `achs_kw[i]`) exists in the
+controller's working directory and can be read. The working directory is found once (the
+start-up list's directory or the ancestor where the named lists are); a list is never looked
+for anywhere else.
 
-Why it matters on the machine: the controller starts without that axis, channel or zero-offset
-data, or refuses to start.
+Why it matters on the machine: what follows depends on the key, and zero says only what the
+catalogue documents: for axis lists (P-STUP-00015) and compensation lists (P-STUP-00017)
+start-up is aborted; for the other keys the catalogue does not say.
 
 Fix: correct the path, or add the file.
 """)
@@ -32,14 +48,49 @@ Fix: correct the path, or add the file.
 
 @FAMILY.check(MISSING_LIST)
 def check_missing(ctx: MachineContext) -> Iterator[Diagnostic]:
-    """X005: every list the start-up list names exists."""
-    startup = ctx.machine.startup
-    for m in ctx.machine.missing:
+    """X005: every list the start-up list names can be read."""
+    machine = ctx.machine
+    startup = machine.startup
+    for m in machine.missing:
         line = startup.values.doc.line_text(m.line)
         yield ctx.report("X005", Span.on_line(m.line, 0, len(line)),
-                         f"`{m.key}` names `{m.raw}`, which does not exist (looked next to the start-up "
-                         "list and in the directories above it): the controller starts without it",
-                         path=str(startup.path))
+                         f"`{m.key}` names `{m.raw}`, which {m.reason} (working directory "
+                         f"{machine.workdir}): {m.consequence}", path=str(startup.path))
+
+
+BEYOND_COUNT = FAMILY.rule(
+    "X008", "list-beyond-count", W, "A list the start-up list names beyond its count",
+    """
+What it checks: `achs_mds[i]` with i ≥ `zahl_mds` (P-STUP-00014), `achs_kw[i]` with i ≥
+`zahl_kw` (P-STUP-00016), and channel lists (`sda_mds[c]`, `nullp_data[c]`, ...) with c ≥
+`kanal_anzahl` (P-STUP-00001).
+
+Why it matters on the machine: the catalogue says the controller reads only as many axis and
+compensation lists as the count says and ignores the rest, and configures `kanal_anzahl`
+channels; the list named beyond the count is not read, however carefully it was prepared.
+
+Example: `zahl_mds 1` with `achs_mds[0]` and `achs_mds[1]`
+Fix: raise the count, or remove the reference.
+""")
+
+
+@FAMILY.check(BEYOND_COUNT)
+def check_counts(ctx: MachineContext) -> Iterator[Diagnostic]:
+    """X008: lists named beyond zahl_mds, zahl_kw or kanal_anzahl."""
+    startup = ctx.machine.startup
+    for n in ctx.machine.named:
+        if n.status != "beyond-count" or n.reference.count is None:
+            continue
+        count_key = COUNT_KEYS[n.reference.count]
+        value = startup.number(n.reference.count)
+        shown = f"{int(value or 0)}" if startup.values.value_of(n.reference.count) is not None \
+            else f"{int(value or 0)} (not set: the catalogue default)"
+        what = ("the controller configures that many channels and does not read this list"
+                if count_key == "kanal_anzahl" else "the controller does not read lists beyond it")
+        line = startup.values.doc.line_text(n.line)
+        yield ctx.report("X008", Span.on_line(n.line, 0, len(line)),
+                         f"`{n.key}` is beyond `{count_key}` {shown} ({n.reference.count}): {what}",
+                         param_id=n.reference.param_id, path=str(startup.path))
 
 
 DUPLICATE_AXIS = FAMILY.rule(
@@ -98,7 +149,8 @@ def check_axes(ctx: MachineContext) -> Iterator[Diagnostic]:
                 e = ca.entry
                 yield ctx.report("X007", Span.on_line(e.line, e.value_start, e.value_end),
                                  f"channel axis {ca.index} (`{ca.name}`) is logical axis {ca.log_nr}, but no "
-                                 "axis list of the start-up list has that `kopf.achs_nr`", path=str(ch.lists.path))
+                                 "axis list of the start-up list has that `kopf.achs_nr`",
+                                 path=str(ca.source or ch.lists.path))
 
 
 OFFSET_OUTSIDE_SOFT_LIMITS = FAMILY.rule(
@@ -194,3 +246,91 @@ def check_offsets(ctx: MachineContext) -> Iterator[Diagnostic]:
                                  f"offset {where} of rotary axis `{ca.name}` is {fixed(v)}° — more than "
                                  "a full turn: probably a length in 0.1 µm written for a linear axis",
                                  param_id=OFFSET, path=path)
+
+
+COMPENSATION_AXIS_UNKNOWN = FAMILY.rule(
+    "X009", "compensation-axis-unknown", E, "A compensation list assigned to an axis the machine does not have",
+    """
+What it checks: `achs_kw_log_ax_nr[i]` (P-STUP-00036) of each compensation list the controller
+reads (`achs_kw[i]`, i < `zahl_kw`) is the `kopf.achs_nr` of one of the machine's axis lists.
+
+Why it matters on the machine: the offset values of the list belong to no axis; the axis they
+were measured for runs uncompensated.
+
+Fix: set `achs_kw_log_ax_nr[i]` to the logical axis number of the axis the list was measured on.
+""")
+
+
+@FAMILY.check(COMPENSATION_AXIS_UNKNOWN)
+def check_compensation(ctx: MachineContext) -> Iterator[Diagnostic]:
+    """X009: the axis of each compensation list exists."""
+    machine = ctx.machine
+    axes = machine.axes()
+    startup = machine.startup
+    for i, _lf in machine.compensation:
+        nr = startup.number(COMP_AXIS, (i,))
+        e = startup.entry(COMP_AXIS, (i,))
+        if nr is None or int(nr) in axes or not nr:
+            continue  # 0 is outside the documented range: R005 says so on the start-up list
+        span = Span.on_line(e.line, e.value_start, e.value_end) if e is not None else Span(1, 1, 1, 1)
+        yield ctx.report("X009", span, f"`achs_kw_log_ax_nr[{i}]` is {int(nr)}, but no axis list of the start-up "
+                         f"list has that `kopf.achs_nr`: the compensation values of `achs_kw[{i}]` apply to no axis",
+                         param_id=COMP_AXIS, path=str(startup.path))
+
+
+CHANNEL_AXIS_TWICE = FAMILY.rule(
+    "X010", "channel-axis-twice", E, "One logical axis in two places of the channels",
+    """
+What it checks: every logical axis number appears once among the channel axes
+(`gruppe[0].achse[j].log_achs_nr`) and spindles (`spindel[s].log_achs_nr`) of all channels.
+
+Why it matters on the machine: one drive would be commanded by two channel axes (or an axis
+and a spindle); the channel configuration is contradictory.
+
+Fix: give each channel axis and spindle its own logical axis number.
+""")
+SPINDLE_WITHOUT_LIST = FAMILY.rule(
+    "X011", "spindle-without-list", E, "A spindle whose axis list is missing",
+    """
+What it checks: every `spindel[s].log_achs_nr` (P-CHAN-00036) of a channel list is the
+`kopf.achs_nr` of one of the machine's axis lists.
+
+Why it matters on the machine: the channel names a spindle the controller has no axis data for.
+
+Fix: add the spindle's axis list to the start-up list (`achs_mds[i]`), or correct `log_achs_nr`.
+""")
+
+
+@FAMILY.check(CHANNEL_AXIS_TWICE, SPINDLE_WITHOUT_LIST)
+def check_channel_axes(ctx: MachineContext) -> Iterator[Diagnostic]:
+    """X010, X011: logical axis numbers of channel axes and spindles."""
+    machine = ctx.machine
+    axes = machine.axes()
+    seen: dict[int, str] = {}
+    for ch in machine.channels:
+        if ch.lists is None:
+            continue
+        users: list[tuple[int, str, Span, str]] = []
+        for ca in ch.axes:
+            if ca.entry is not None:
+                e = ca.entry
+                users.append((ca.log_nr, f"channel {ch.index} axis {ca.index} (`{ca.name}`)",
+                              Span.on_line(e.line, e.value_start, e.value_end), str(ca.source or ch.lists.path)))
+        for idx, res in sorted(ch.lists.values.ids_of(SPINDLE_AXIS).items()):
+            nr = res.value.number
+            if nr is None or res.value.problem is not None or not nr:
+                continue
+            layer = ch.lists.values.layer_of(SPINDLE_AXIS, idx)
+            path = layer.doc.path if layer is not None else str(ch.lists.path)
+            span = Span.on_line(res.entry.line, res.entry.value_start, res.entry.value_end)
+            where = f"channel {ch.index} spindle {idx[0] if idx else 0}"
+            users.append((int(nr), where, span, path))
+            if int(nr) not in axes:
+                yield ctx.report("X011", span, f"{where} is logical axis {int(nr)}, but no axis list of the "
+                                 "start-up list has that `kopf.achs_nr`", param_id=SPINDLE_AXIS, path=path)
+        for nr, what, span, path in users:
+            if nr in seen:
+                yield ctx.report("X010", span, f"{what} is logical axis {nr}, which {seen[nr]} already is: one "
+                                 "drive cannot be two channel axes", path=path)
+            else:
+                seen[nr] = what

@@ -1,0 +1,157 @@
+"""The machine as the controller builds it: every list, counts, default lists underneath,
+the working directory found once, and every effective value with its origin (golden)."""
+
+from __future__ import annotations
+
+import json
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+from conftest import FIXTURES, ROOT, golden
+from zero.catalog.registry import Registry
+from zero.engine.lint import lint_machine
+from zero.machine.effective import effective
+from zero.machine.limits import pcs_limits
+from zero.machine.model import REFERENCES, load_machine
+
+LAYERED = FIXTURES / "machine-layered" / "listen" / "hochlauf.lis"
+REL = os.path.relpath(LAYERED, ROOT)
+
+
+def _zero(*args: str) -> subprocess.CompletedProcess[str]:
+    return subprocess.run([sys.executable, "-m", "zero", *args], cwd=ROOT, capture_output=True, text=True,
+                          check=False, timeout=60)
+
+
+def test_the_working_directory_is_found_once_and_nothing_is_replaced(registry: Registry) -> None:
+    m = load_machine(LAYERED, registry)
+    assert m.workdir == FIXTURES / "machine-layered"
+    status = {n.key: n.status for n in m.named}
+    assert status == {"default_sda_mds": "loaded", "sda_mds[0]": "loaded", "nullp_data[0]": "loaded",
+                      "hand_mds": "missing", "default_achs_mds": "loaded", "achs_mds[0]": "loaded",
+                      "achs_mds[1]": "loaded", "achs_mds[2]": "missing", "achs_mds[3]": "beyond-count"}
+    # listen/achse_c.lis exists next to the start-up list, but ./listen/SoE/achse_c.lis is named
+    assert [lf.path.name for lf in m.axis_lists] == ["achse_x.lis", "achse_y.lis"]
+
+
+def test_default_lists_lie_under_the_specific_lists(registry: Registry) -> None:
+    m = load_machine(LAYERED, registry)
+    axes = m.axes()
+    assert (axes[1].swe_neg, axes[1].swe_pos) == (-1_000_000, 1_000_000)  # all from default_mds.lis
+    assert (axes[2].swe_neg, axes[2].swe_pos) == (-1_000_000, 2_000_000)  # its own positive limit
+    # the channel's axes come from the default channel list
+    assert [(a.index, a.log_nr, a.name) for a in m.channels[0].axes] == [(0, 1, "X"), (1, 2, "Y")]
+    g54_x = {(r.group, r.axis_name): r for r in pcs_limits(m)}[(1, "X")]
+    assert (g54_x.acs_neg, g54_x.acs_pos, g54_x.pcs_neg) == (-1_000_000, 1_000_000, -6_000_000)
+
+
+def test_layered_machine_findings_golden(registry: Registry, request: pytest.FixtureRequest) -> None:
+    _, results = lint_machine(LAYERED, registry)
+    lines = [f"{os.path.relpath(d.path, ROOT)}:{d.span.line}:{d.span.column}: {d.code} "
+             + d.message.replace(f"{ROOT}{os.sep}", "") for r in results for d in r.diagnostics]
+    expected = golden(FIXTURES / "machine-layered" / "expected.json", lines,
+                      request.config.getoption("--update-golden"))
+    assert lines == expected
+    codes = {line.split(": ")[1].split()[0] for line in lines}
+    assert {"X001", "X005", "X008"} <= codes
+    linted = [os.path.basename(r.path) for r in results]
+    assert sorted(linted) == sorted(set(linted))  # each list once
+    assert "default_mds.lis" in linted and "default_sda.lis" in linted
+
+
+@pytest.mark.slow
+def test_effective_values_with_their_origin_golden(request: pytest.FixtureRequest) -> None:
+    update = request.config.getoption("--update-golden")
+    text = _zero("show", "--machine", REL)
+    assert text.returncode == 0, text.stderr
+    assert text.stdout == golden_text(FIXTURES / "machine-layered" / "effective.txt", text.stdout, update)
+    data = _zero("show", "--machine", REL, "--output-format", "json")
+    assert json.loads(data.stdout) == golden(FIXTURES / "machine-layered" / "effective.json",
+                                             json.loads(data.stdout), update)
+    explained = _zero("explain", "kenngr.swe_neg", "--machine", REL)
+    assert explained.returncode == 0, explained.stderr
+    assert explained.stdout == golden_text(FIXTURES / "machine-layered" / "explain.txt", explained.stdout, update)
+
+
+def golden_text(path: Path, actual: str, update: bool) -> str:
+    if update:
+        path.write_text(actual, encoding="utf-8")
+    return path.read_text(encoding="utf-8")
+
+
+def test_explain_names_every_layer(registry: Registry) -> None:
+    m = load_machine(LAYERED, registry)
+    scopes = {s.name: s for s in effective(m, ["kenngr.swe_pos"], explain=True)}
+    x = scopes["axis 1 (achs_mds[0])"].values[0]
+    assert (x.value, x.origin.source, x.origin.line) == ("1000000", "default list", 4)
+    assert [o.source for _, o in x.layers] == ["not set", "default list", "catalogue default"]
+    y = scopes["axis 2 (achs_mds[1])"].values[0]
+    assert (y.value, y.origin.source, y.origin.line) == ("2000000", "list", 4)
+
+
+def test_every_reference_is_a_start_up_parameter_of_the_catalogue(registry: Registry) -> None:
+    for ref in REFERENCES:
+        spec = registry.get(ref.param_id)
+        assert spec is not None and spec.kind == "STUP" and spec.key == ref.key, ref
+
+
+def test_corpus_machines_load_every_list_they_name(registry: Registry, corpus: Path) -> None:
+    listen = corpus / "isg-sdk" / "listen"
+    for startup in (listen / "hochlauf.lis", listen / "SoE" / "hochlauf.lis"):
+        m = load_machine(startup, registry)
+        assert m.workdir == corpus / "isg-sdk"
+        assert {n.status for n in m.named} == {"loaded"}, [(n.key, n.status) for n in m.named]
+        assert {n.key for n in m.named} >= {"default_sda_mds", "default_achs_mds", "hand_mds", "pzv_data[0]",
+                                            "ve_var[0]", "rtconf_lis", "achs_kw[0]"}
+        assert len(m.lists) == 15
+        scopes = effective(m)
+        assert len(scopes) == 13 and all(s.values for s in scopes)  # every list but the two default lists
+        _, results = lint_machine(startup, registry)
+        assert len(results) == 15
+
+
+def test_configuration_overrides_a_reference_and_the_working_directory(tmp_path: Path, registry: Registry) -> None:
+    import shutil
+
+    from zero.engine.config import ConfigFinder
+
+    machine = tmp_path / "m"
+    shutil.copytree(FIXTURES / "machine-layered", machine)
+    (machine / "pyproject.toml").write_text(
+        '[tool.zero.machine]\nstartup = "listen/hochlauf.lis"\n"achs_mds[2]" = "listen/achse_c.lis"\n'
+        'working-directory = "."\n')
+    cfg = ConfigFinder().for_path(machine / "listen" / "hochlauf.lis")
+    assert cfg.machine_workdir == machine / "."
+    m = load_machine(machine / "listen" / "hochlauf.lis", registry, None, cfg.machine_lists, cfg.machine_workdir)
+    assert {n.key: n.status for n in m.named}["achs_mds[2]"] == "overridden"
+    assert [lf.path.name for lf in m.axis_lists] == ["achse_x.lis", "achse_y.lis", "achse_c.lis"]
+    bad = machine / "pyproject.toml"
+    bad.write_text('[tool.zero.machine]\n"achs_kw_log_ax_nr[0]" = "x"\n')
+    from zero.engine.config import parse_config
+    from zero.errors import ZeroError
+
+    with pytest.raises(ZeroError, match="names a list"):
+        parse_config(bad)
+
+
+def test_diff_of_two_machines_compares_effective_values(tmp_path: Path, registry: Registry) -> None:
+    import shutil
+
+    from zero.engine.commands import run_diff
+
+    other = tmp_path / "other"
+    shutil.copytree(FIXTURES / "machine-layered", other)
+    default = other / "listen" / "default_mds.lis"
+    default.write_text(default.read_text().replace("kenngr.swe_neg                                        -1000000",
+                                                   "kenngr.swe_neg                                        -2000000"))
+    run = run_diff(str(LAYERED), str(other / "listen" / "hochlauf.lis"), registry, lambda: b"", machine=True)
+    changed = [(c.group, c.key, c.old, c.new, c.delta) for c in run.changes]
+    # the axis lists are the same files: the change comes from the default list under both
+    assert changed == [("axis 1 (achs_mds[0]): kenngr", "kenngr.swe_neg", "-1000000", "-2000000", -100.0),
+                       ("axis 2 (achs_mds[1]): kenngr", "kenngr.swe_neg", "-1000000", "-2000000", -100.0)]
+    same = run_diff(str(LAYERED), str(LAYERED), registry, lambda: b"", machine=True)
+    assert same.changes == []
