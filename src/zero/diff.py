@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import re
 from dataclasses import dataclass, field
+from pathlib import Path
 from typing import Any
 
 from zero.catalog.ids import AXIS_UNITS, g_code_with_index, in_units
@@ -188,8 +189,11 @@ def _text(value: tuple[str, Any] | None, entry: Entry | None) -> str | None:
     return str(value[1])
 
 
-def diff_sides(a: Side, b: Side, registry: Registry, options: DiffOptions | None = None) -> list[Change]:
-    """Changes from side ``a`` to side ``b``, grouped and in key order."""
+def diff_sides(a: Side, b: Side, registry: Registry, options: DiffOptions | None = None,
+               under: Side | None = None) -> list[Change]:
+    """Changes from side ``a`` to side ``b``, grouped and in key order. ``under`` is the default
+    list that lies under both on the machine: where it sets a parameter, that value (not the
+    catalogue's) is what an absent entry means."""
     options = options or DiffOptions()
     kind = b.kind or a.kind
     unit_a, unit_b = axis_unit(a), axis_unit(b)
@@ -214,7 +218,13 @@ def diff_sides(a: Side, b: Side, registry: Registry, options: DiffOptions | None
             unit, delta = unit_and_delta(spec, va, vb, length_unit)
             out.append(Change(key, pid, CHANGED, ea.value, eb.value, unit, delta, group))
             continue
-        dflt = default_effective(spec)
+        base = under.entries.get(key) if under is not None else None
+        if base is not None:
+            dflt: tuple[str, Any] | None = effective(base, spec)
+            shown = f"the default list's {base.value} ({Path(under.path).name}:{base.line})"  # type: ignore[union-attr]
+        else:
+            dflt = default_effective(spec)
+            shown = f"the default {spec.default_display}" if spec is not None else ""
         present = va if ea is not None else vb
         if dflt is not None and present is not None and present == dflt:
             if options.strict:
@@ -224,11 +234,11 @@ def diff_sides(a: Side, b: Side, registry: Registry, options: DiffOptions | None
         if ea is None:
             unit, delta = unit_and_delta(spec, dflt, vb, length_unit)
             out.append(Change(key, pid, ADDED, None, eb.value if eb else None, unit, delta, group,
-                              note=f"was the default {spec.default_display}" if dflt and spec else ""))
+                              note=f"was {shown}" if dflt and shown else ""))
         else:
             unit, delta = unit_and_delta(spec, va, dflt, length_unit)
             out.append(Change(key, pid, REMOVED, ea.value, None, unit, delta, group,
-                              note=f"now the default {spec.default_display}" if dflt and spec else ""))
+                              note=f"now {shown}" if dflt and shown else ""))
     return _grouped(out)
 
 

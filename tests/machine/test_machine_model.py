@@ -155,3 +155,23 @@ def test_diff_of_two_machines_compares_effective_values(tmp_path: Path, registry
                        ("axis 2 (achs_mds[1]): kenngr", "kenngr.swe_neg", "-1000000", "-2000000", -100.0)]
     same = run_diff(str(LAYERED), str(LAYERED), registry, lambda: b"", machine=True)
     assert same.changes == []
+
+
+def test_diff_of_two_lists_names_the_machines_default_list(tmp_path: Path, registry: Registry) -> None:
+    import shutil
+
+    from zero.engine.commands import run_diff
+
+    machine = tmp_path / "m"
+    shutil.copytree(FIXTURES / "machine-layered", machine)
+    (machine / "pyproject.toml").write_text('[tool.zero.machine]\nstartup = "listen/hochlauf.lis"\n')
+    old = machine / "listen" / "achse_y.lis"
+    new = machine / "listen" / "achse_y_neu.lis"
+    new.write_text(old.read_text().replace("kenngr.swe_pos                                        2000000\n", ""))
+    run = run_diff(str(old), str(new), registry, lambda: b"")
+    [change] = run.changes
+    assert (change.key, change.kind, change.delta) == ("kenngr.swe_pos", "removed", -100.0)
+    assert change.note == "now the default list's 1000000 (default_mds.lis:4)"
+    (machine / "pyproject.toml").unlink()
+    [plain] = run_diff(str(old), str(new), registry, lambda: b"").changes
+    assert plain.note == "now the default 100000000" and plain.delta == 9800.0

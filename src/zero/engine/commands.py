@@ -347,7 +347,22 @@ def run_diff(a: str, b: str | None, registry: Registry, read_stdin: Callable[[],
         return _diff_machines(Path(a), Path(b), registry, options)
     side_a = load_side(a, fmt, kind, registry, read_stdin)
     side_b = load_side(b, fmt, kind or side_a.kind, registry, read_stdin)
-    return DiffRun(diff_sides(side_a, side_b, registry, options), f"--- {a}\n+++ {b}")
+    under = _default_list_side(Path(b if b != "-" else a), side_b.kind or side_a.kind, registry)
+    return DiffRun(diff_sides(side_a, side_b, registry, options, under), f"--- {a}\n+++ {b}")
+
+
+def _default_list_side(path: Path, kind: str | None, registry: Registry) -> Side | None:
+    """The default list that lies under lists of ``kind`` on the machine the configuration of
+    ``path`` names (``[tool.zero.machine]``), if there is one."""
+    cfg = ConfigFinder().for_path(path)
+    if cfg.machine is None or kind is None:
+        return None
+    try:
+        machine = load_machine(cfg.machine, registry, None, cfg.machine_lists, cfg.machine_workdir)
+    except ZeroError:
+        return None  # a machine that cannot be read: the catalogue's defaults, as without one
+    lf = machine.defaults.get(kind)
+    return Side(str(lf.path), kind, entries_of(lf.values)) if lf is not None else None
 
 
 def _diff_machines(a: Path, b: Path, registry: Registry, options: DiffOptions) -> DiffRun:
