@@ -67,12 +67,18 @@ def test_random_binary() -> None:
 @pytest.mark.slow
 def test_nul_bytes_everywhere() -> None:
     result = _bounded(b"\x00" * 100_000 + b"\nk\x00 1\n")
-    assert "S008" in {d.code for d in result.diagnostics}
+    assert [d.code for d in result.diagnostics] == ["S013"]  # one root cause, one finding
 
 
 def test_utf16_file() -> None:
     result = _bounded("np_grp[1].achse[0].versch 5\n".encode("utf-16"))
-    assert "S008" in {d.code for d in result.diagnostics}
+    assert [d.code for d in result.diagnostics] == ["S013"]
+
+
+def test_a_nul_ends_the_line_as_the_controller_reads_it() -> None:
+    """`1<NUL>` is the value 1 (one S008 for the NUL), not a faulty BOOLEAN."""
+    result = lint_text(b"g53_verfuegbar 1\x00junk\nnp_grp[0].achse[0].versch 5\nEnde\n")
+    assert [d.code for d in result.diagnostics] == ["S008"]
 
 
 @pytest.mark.slow

@@ -29,7 +29,7 @@ def typer_params(args: list[str]) -> dict[str, Any] | None:
     for name, value in params.items():
         if isinstance(value, Enum):
             value = value.value
-        if name in ("select", "ignore", "paths"):
+        if name in ("select", "ignore", "extend_select", "paths"):
             value = list(value or [])
         out[name] = value
     return out
@@ -44,7 +44,8 @@ def test_the_typer_command_has_exactly_the_options_of_the_table() -> None:
 
 
 def test_both_read_the_same_values() -> None:
-    args = ["a.lis", "-", "--select", "R,S", "--select=M", "--ignore", "R007", "-j", "3", "--output-format=json",
+    args = ["a.lis", "-", "--select", "R,S", "--select=M", "--ignore", "R007", "--extend-select", "S012", "-j", "3",
+            "--output-format=json",
             "--no-strict", "--strict", "-o", "out.json", "--config", "zero.toml", "--kind", "axis", "--fix",
             "--diff", "--unsafe-fixes", "--statistics", "--exit-zero", "--isolated", "--stdin-filename", "x.lis",
             "--machine", "h.lis", "--", "--not-an-option.lis"]

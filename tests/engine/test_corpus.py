@@ -9,7 +9,7 @@ import pytest
 
 from conftest import corpus_dir
 from zero.catalog.registry import Registry
-from zero.engine.lint import lint_file
+from zero.engine.lint import LintOptions, lint_file
 
 LISTS = sorted((corpus_dir() / "isg-sdk" / "listen").rglob("*.lis"))
 
@@ -35,7 +35,7 @@ def test_unknown_keys_are_exactly_the_real_ones(registry: Registry, corpus: Path
     for path in LISTS:
         result = lint_file(path, registry)
         for d in result.diagnostics:
-            if d.code in ("R001", "R002"):
+            if d.code in ("R001", "R002", "R010"):
                 line = result.document.line_text(d.span.line)
                 found[(d.code, line.split()[0])] += 1
     keys = {k for _, k in found}
@@ -76,7 +76,14 @@ def test_latin1_axis_lists(registry: Registry, corpus: Path) -> None:
     assert any("µ" in line for line in result.document.lines)
 
 
-def test_commented_out_parameters_are_warnings_only(registry: Registry, corpus: Path) -> None:
-    result = lint_file(corpus / "isg-sdk" / "listen" / "sda_mds1.lis", registry)
-    s005 = [d for d in result.diagnostics if d.code == "S005"]
-    assert len(s005) > 50 and all(d.severity.label == "warning" for d in s005)
+def test_commented_out_parameters_are_opt_in_information(registry: Registry, corpus: Path) -> None:
+    path = corpus / "isg-sdk" / "listen" / "sda_mds1.lis"
+    assert not [d for d in lint_file(path, registry).diagnostics if d.code in ("S005", "S012")]
+    result = lint_file(path, registry, LintOptions(extend_select=("S012",)))
+    s012 = [d for d in result.diagnostics if d.code == "S012"]
+    assert len(s012) > 50 and all(d.severity.label == "info" for d in s012)
+
+
+def test_vendor_keys_are_information_and_unknown_keys_errors(registry: Registry, corpus: Path) -> None:
+    codes = Counter(d.code for path in LISTS for d in lint_file(path, registry).diagnostics)
+    assert codes["R001"] == 0 and codes["R010"] == 9 and codes["S005"] == 0

@@ -14,6 +14,7 @@ from conftest import FIXTURES, builtin_registry, generated_lists
 from zero.catalog.registry import Registry
 from zero.cli.app import app
 from zero.diff import DiffOptions, diff_sides, read_side
+from zero.engine.lint import LintOptions
 from zero.engine.fixes import fix_bytes
 from zero.engine.formatting import format_bytes
 from zero.errors import ZeroError
@@ -29,8 +30,8 @@ def zero(*args: str, cwd: Path) -> subprocess.CompletedProcess[str]:
 
 def test_safe_fixes_touch_only_their_bytes(registry: Registry) -> None:
     data = SEED.replace(b"\n", b"\r\n") + b"#np_grp[3].achse[0].versch 5\r\n"
-    result = fix_bytes(data, "seed.lis", registry)
-    assert result.applied == 3  # two keys with whitespace, one missing space after #
+    result = fix_bytes(data, "seed.lis", registry, LintOptions(extend_select=("S012",)))
+    assert result.applied == 3  # two keys with whitespace, one missing space after # (S012, opt-in)
     assert result.fixed == data.replace(b"]. inaktiv", b"].inaktiv").replace(b"#np_grp[3]", b"# np_grp[3]")
     assert {d.code for d in result.result.diagnostics} == {"M003"}
 

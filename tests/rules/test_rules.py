@@ -8,7 +8,7 @@ import pytest
 
 from conftest import FIXTURES, findings, golden
 from zero.catalog.registry import Registry
-from zero.engine.lint import lint_file
+from zero.engine.lint import LintOptions, lint_file
 from zero.rules import RULES
 
 RULE_DIRS = sorted(p for p in (FIXTURES / "rules").iterdir() if p.is_dir())
@@ -25,7 +25,8 @@ def test_every_rule_has_fixtures() -> None:
 
 @pytest.mark.parametrize("rule_dir", RULE_DIRS, ids=lambda p: p.name)
 def test_failing_fixture(rule_dir: Path, request: pytest.FixtureRequest, registry: Registry) -> None:
-    result = lint_file(rule_dir / "fail.lis", registry)
+    # selected by its code, so that opt-in rules (S012) run as well
+    result = lint_file(rule_dir / "fail.lis", registry, LintOptions(extend_select=(rule_dir.name,)))
     actual = findings(result)
     expected = golden(rule_dir / "fail.expected.json", actual,
                       request.config.getoption("--update-golden"))
@@ -35,7 +36,7 @@ def test_failing_fixture(rule_dir: Path, request: pytest.FixtureRequest, registr
 
 @pytest.mark.parametrize("rule_dir", RULE_DIRS, ids=lambda p: p.name)
 def test_passing_fixture(rule_dir: Path, registry: Registry) -> None:
-    result = lint_file(rule_dir / "pass.lis", registry)
+    result = lint_file(rule_dir / "pass.lis", registry, LintOptions(extend_select=(rule_dir.name,)))
     assert result.diagnostics == []
 
 
@@ -70,3 +71,15 @@ def test_m001_replaces_generic_range_reference(registry: Registry) -> None:
     assert [d.code for d in lint_file(path, registry).diagnostics] == ["M001"]
     generic = lint_file(path, registry, options=LintOptions(ignore=("M001",)))
     assert [d.code for d in generic.diagnostics] == ["R006", "R006"]
+
+
+def test_opt_in_rules_run_only_when_named() -> None:
+    from zero.engine.lint import selected_rules
+
+    opt_in = {c for c, r in RULES.items() if r.opt_in}
+    assert opt_in == {"S012"}
+    assert not opt_in & set(selected_rules(LintOptions()))
+    assert not opt_in & set(selected_rules(LintOptions(select=("S",))))
+    assert "S012" in selected_rules(LintOptions(extend_select=("S012",)))
+    assert "S012" in selected_rules(LintOptions(select=("S012",)))
+    assert set(selected_rules(LintOptions(extend_select=("S012",)))) == set(selected_rules(LintOptions())) | {"S012"}

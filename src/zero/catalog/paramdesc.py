@@ -10,6 +10,7 @@ descriptions (``with_text=True``), which are never committed to this project.
 
 from __future__ import annotations
 
+import re
 import xml.etree.ElementTree as ET
 from pathlib import Path
 from typing import Any
@@ -28,6 +29,35 @@ def _text(el: ET.Element | None, lang: str = "en") -> str | None:
         if t.get("Language") == lang and t.text:
             return t.text.strip()
     return texts[0].text.strip() if texts and texts[0].text else None
+
+
+_ENUM_LINE = re.compile(r"(0x[0-9A-Fa-f]+|[+-]?[0-9]+)\s*[:=]\s*(.*)")
+_NO_ENUM_TYPES = ("BOOLEAN", "STRING")  # BOOLEAN is checked as 0/1; a STRING lists no numbers
+
+
+def enumeration(text: str, typ: str, name: str = "") -> tuple[list[int], list[str], bool] | None:
+    """Allowed values stated in prose, one per line (``1 : Conventional drive interface``):
+    ``(values, labels, flags)``, or ``None`` when the text is not such a list. Conservative:
+    every other line must be an introduction ending in ``:`` (``0, 1, 2 where:``), or the
+    text is not read as an enumeration. ``flags``: single bits of a mask, any combination allowed."""
+    if typ in _NO_ENUM_TYPES:
+        return None
+    lines = [line.replace("\xa0", " ").strip() for line in re.split(r"\r?\n", text) if line.strip()]
+    values: list[int] = []
+    labels: list[str] = []
+    for line in lines:
+        m = _ENUM_LINE.fullmatch(line)
+        if m is None:
+            if not line.endswith(":"):
+                return None
+            continue
+        values.append(int(m.group(1), 0))
+        labels.append(m.group(2).strip())
+    if len(values) < 2 or len(set(values)) != len(values):
+        return None
+    bits = all(v > 0 and v & (v - 1) == 0 for v in values)
+    flags = bits and ("bit" in text.lower() or "mask" in name.lower())
+    return values, labels, flags
 
 
 def _find(p: ET.Element, tag: str) -> str | None:
@@ -85,11 +115,17 @@ def read_param_desc(path: str | Path, *, with_text: bool = False) -> list[dict[s
             "restart": _find(p, "ChangeRequiresRestart") == "true",
             "source": "CncParaDesc.xml",
         }
+        enum = enumeration(range_text, typ, row["key"] or "") if parsed is None and range_text else None
+        if enum is not None:
+            row["enum"] = enum[0]
+            row["enum_flags"] = enum[2]
         if with_text:
             row["vendor_text"] = _text(p.find(f"{_NS}ShortDescription"))
             row["vendor_long"] = _text(p.find(f"{_NS}LongDescription"))
             if parsed is None and range_text:
                 row["range_note"] = range_text
+            if enum is not None:
+                row["enum_labels"] = enum[1]
         elif parsed is None and range_text:
             row["range_prose"] = True
         rows.append(row)

@@ -86,6 +86,17 @@ class ParamSpec:
     description: str | None = None
     source: str = "CncParaDesc.xml"
     index_base: int = 0
+    enum: tuple[int, ...] = ()  # allowed values the catalogue lists in prose
+    enum_flags: bool = False  # the listed values are bits: any combination of them is allowed
+    enum_labels: tuple[str, ...] = ()  # their meaning (only from a user's CncParaDesc.xml)
+
+    def enum_allows(self, value: int) -> bool:
+        if self.enum_flags:
+            mask = 0
+            for v in self.enum:
+                mask |= v
+            return value & ~mask == 0
+        return value in self.enum
 
     @property
     def symbol_names(self) -> frozenset[str]:
@@ -158,6 +169,8 @@ class Registry:
     _kinds_of: dict[str, list[str]] = field(default_factory=dict)
     _ranges: dict[str, Range | None] = field(default_factory=dict)
     aliases: dict[tuple[str, str], str] = field(default_factory=dict)
+    # (kind, pattern) → (where the vendor's lists use it, the ID it probably stands for or "")
+    vendor_keys: dict[tuple[str, str], tuple[str, str]] = field(default_factory=dict)
     _suggestions: dict[tuple[str, str | None, int], list[str]] = field(default_factory=dict)
 
     def __post_init__(self) -> None:
@@ -266,6 +279,9 @@ def _spec_from_row(row: dict[str, Any], index_base: dict[str, int]) -> ParamSpec
         description=row.get("description") or row.get("vendor_text"),
         source=row.get("source", "CncParaDesc.xml"),
         index_base=base,
+        enum=tuple(row.get("enum", ())),
+        enum_flags=bool(row.get("enum_flags", False)),
+        enum_labels=tuple(row.get("enum_labels", ())),
     )
 
 
@@ -290,7 +306,11 @@ def build_registry(rows: list[dict[str, Any]], source: str) -> Registry:
     for name, target in overlay.get("aliases", {}).items():
         kind, _, pattern = name.partition(":")
         aliases[(kind, pattern)] = target
-    return Registry(specs, source, aliases=aliases)
+    vendor_keys = {}
+    for name, facts in overlay.get("vendor_keys", {}).items():
+        kind, _, pattern = name.partition(":")
+        vendor_keys[(kind, pattern)] = (facts["source"], facts.get("near", ""))
+    return Registry(specs, source, aliases=aliases, vendor_keys=vendor_keys)
 
 
 def load_table() -> list[dict[str, Any]]:

@@ -125,6 +125,7 @@ def _lint(**params: Any) -> None:
     params["paths"] = params.get("paths") or []
     params["select"] = params.get("select") or []
     params["ignore"] = params.get("ignore") or []
+    params["extend_select"] = params.get("extend_select") or []
     params = {k: v.value if isinstance(v, StrEnum) else v for k, v in params.items()}
     _run(lambda: run_lint_command(param_desc=state.param_desc, **params))
 

@@ -51,6 +51,8 @@ LINT_OPTIONS: tuple[Option, ...] = (
     Option("isolated", ("--isolated",), "Ignore all configuration files.", "flag", default=False),
     Option("strict", ("--strict",), "Exit 1 on warnings too.", "flag", negative="--no-strict", default=False),
     Option("select", ("--select",), "Only these codes or prefixes (repeatable, or comma-separated).", "multi"),
+    Option("extend_select", ("--extend-select",),
+           "Add these codes or prefixes to the selection (opt-in rules by their full code).", "multi"),
     Option("ignore", ("--ignore",), "Skip these codes or prefixes (repeatable, or comma-separated).", "multi"),
     Option("kind", ("--kind",), "List kind instead of detecting it: zero, axis, channel, tool, startup, ..."),
     Option("jobs", ("--jobs", "-j"),

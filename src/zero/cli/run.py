@@ -77,6 +77,7 @@ def render_lint(results: Sequence[LintResult], output_format: str, stream: TextI
 def lint(paths: Sequence[str | Path] = (), output_format: str = "text", output_file: str | Path | None = None,
          show_statistics: bool = False, exit_zero: bool = False, config: str | Path | None = None,
          isolated: bool = False, strict: bool = False, select: Sequence[str] = (), ignore: Sequence[str] = (),
+         extend_select: Sequence[str] = (),
          kind: str | None = None, jobs: int | None = None, fix: bool = False, show_diff: bool = False,
          unsafe_fixes: bool = False, stdin_filename: str | None = None, machine: str | Path | None = None,
          param_desc: str | Path | None = None) -> int:
@@ -86,7 +87,8 @@ def lint(paths: Sequence[str | Path] = (), output_format: str = "text", output_f
     if not paths and stdin_filename is None and machine is None:
         raise ZeroError("give list files or directories (or - with --stdin-filename)")
     request = LintRequest([str(p) for p in paths], tuple(select), tuple(ignore), kind, param_desc, jobs,
-                          config, isolated, fix, show_diff, unsafe_fixes, stdin_filename, machine)
+                          config, isolated, fix, show_diff, unsafe_fixes, stdin_filename, machine,
+                          tuple(extend_select))
     bar = ProgressBar()
     try:
         run = run_lint(request, REGISTRIES, echo(), read_stdin, bar.start)

@@ -100,6 +100,7 @@ class LintRequest:
     unsafe_fixes: bool = False
     stdin_filename: str | None = None
     machine: str | Path | None = None
+    extend_select: Sequence[str] = ()
 
     @property
     def reads_stdin(self) -> bool:
@@ -123,7 +124,7 @@ def run_lint(request: LintRequest, registries: Registries, echo: Echo,
              read_stdin: Callable[[], bytes], progress: Callable[[int], Progress | None] | None = None) -> LintRun:
     """``zero lint``: lint files, a machine or standard input; apply or show fixes."""
     cli = LintOptions(select=parse_codes(request.select), ignore=parse_codes(request.ignore),
-                      kind=parse_kind(request.kind))
+                      kind=parse_kind(request.kind), extend_select=parse_codes(request.extend_select))
     finder = ConfigFinder(Path(request.config) if request.config else None, request.isolated)
     if request.machine is not None:
         return LintRun(_lint_machine(request, Path(request.machine), cli, finder, registries))

@@ -144,8 +144,7 @@ class Config:
     def options_for(self, file: Path, cli: LintOptions) -> LintOptions:
         """The lint options for one file: the command line over this configuration."""
         select = cli.select or self.select
-        if select and self.extend_select:
-            select = (*select, *self.extend_select)
+        extend = (*self.extend_select, *cli.extend_select)
         ignore = (*self.ignore, *cli.ignore)
         for glob, codes in self.per_file_ignores:
             if self._matches((glob,), file):
@@ -154,7 +153,7 @@ class Config:
         if kind is None:
             kind = next((k for glob, k in self.kind if self._matches((glob,), file)), None)
         return LintOptions(select=select, ignore=ignore, kind=kind,
-                           severity={**self.severity, **cli.severity})
+                           severity={**self.severity, **cli.severity}, extend_select=extend)
 
     def show(self) -> str:
         """The effective configuration as TOML (``zero config --show``)."""

@@ -45,6 +45,7 @@ class LintOptions:
     ignore: tuple[str, ...] = ()
     kind: str | None = None  # force the list kind
     severity: dict[str, Severity] = field(default_factory=dict)  # per-code overrides
+    extend_select: tuple[str, ...] = ()  # codes or prefixes added to the selection
 
 
 @dataclass(slots=True)
@@ -64,7 +65,7 @@ _selected: dict[tuple[object, ...], dict[str, Severity]] = {}
 
 def selected_rules(options: LintOptions) -> dict[str, Severity]:
     """Code → severity of every rule the options enable (longest prefix wins); memoised."""
-    key = (options.select, options.ignore, tuple(sorted(options.severity.items())))
+    key = (options.select, options.ignore, options.extend_select, tuple(sorted(options.severity.items())))
     hit = _selected.get(key)
     if hit is None:
         hit = _selected[key] = _selected_rules(options)
@@ -72,13 +73,18 @@ def selected_rules(options: LintOptions) -> dict[str, Severity]:
 
 
 def _selected_rules(options: LintOptions) -> dict[str, Severity]:
+    """All rules (or those ``select`` names), plus ``extend_select``, less ``ignore``; the longest
+    matching prefix decides. An opt-in rule runs only when named by its full code."""
     out: dict[str, Severity] = {}
     for code, r in RULES.items():
         sel = max((len(p) for p in options.select if code.startswith(p)), default=-1)
+        ext = max((len(p) for p in options.extend_select if code.startswith(p)), default=-1)
         ign = max((len(p) for p in options.ignore if code.startswith(p)), default=-1)
-        if options.select and sel < 0:
+        if r.opt_in and code not in options.select and code not in options.extend_select:
             continue
-        if ign > sel:
+        if options.select and sel < 0 and ext < 0:
+            continue
+        if ign > max(sel, ext):
             continue
         out[code] = options.severity.get(code, r.severity)
     return out

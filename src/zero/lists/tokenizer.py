@@ -30,6 +30,10 @@ from zero.lists.model import (
 )
 
 END_KEYWORD = "Ende"
+# A file where more than this share of the characters are control characters or stray bytes
+# (and at least this many) is not text: one "binary" problem instead of one per character.
+BINARY_SHARE = 0.05
+BINARY_MIN_CONTROLS = 8
 _WS = " \t"
 
 _INT_RE = re.compile(r"[+-]?[0-9]+")
@@ -231,7 +235,11 @@ def tokenize_text(text: str, path: str = "-", encoding: str = "utf-8", bom: bool
     kind_match = _KIND_RE.fullmatch
     append = items.append
     for number, s in enumerate(lines, 1):
-        m = fast(s) if fast is not None else None
+        if "\x00" in s:  # the controller reads a line as a C string: it ends at the NUL
+            s = s[: s.index("\x00")]
+            m = None
+        else:
+            m = fast(s) if fast is not None else None
         if m is not None and end_line is None and m.group(1) != END_KEYWORD:
             key_text, value, comment = m.group(1, 2, 3)
             ks, ke = m.span(1)
@@ -263,7 +271,11 @@ def tokenize_text(text: str, path: str = "-", encoding: str = "utf-8", bom: bool
         append(item)
 
     if _CONTROL_RE.search(text):
-        _scan_controls(lines, problems)
+        controls = len(_CONTROL_RE.findall(text))
+        if controls >= BINARY_MIN_CONTROLS and controls > len(text) * BINARY_SHARE:
+            problems.append(Problem("binary", 1, 0, len(lines[0]) if lines else 0, str(controls)))
+        else:
+            _scan_controls(lines, problems)
     if "\r\n" in endings and "\n" in endings:
         first = endings.index("\n" if endings[0] == "\r\n" else "\r\n")
         problems.append(Problem("mixed-endings", first + 1, len(lines[first]), len(lines[first])))

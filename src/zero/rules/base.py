@@ -39,6 +39,7 @@ class Rule:
     summary: str
     explanation: str
     scope: Scope = "list"
+    opt_in: bool = False  # runs only when selected by its full code
 
     def render(self) -> str:
         return (
@@ -141,11 +142,12 @@ class Family(Generic[C]):
         self.rules: dict[str, Rule] = {}
         self.checks: list[Check[C]] = []
 
-    def rule(self, code: str, name: str, severity: Severity, summary: str, explanation: str) -> Rule:
+    def rule(self, code: str, name: str, severity: Severity, summary: str, explanation: str,
+             opt_in: bool = False) -> Rule:
         """Declare a rule of this family (its code is never reused)."""
         if not code.startswith(self.letter) or code in self.rules:
             raise ValueError(f"rule {code} does not belong to family {self.letter} or is declared twice")
-        r = Rule(code, name, severity, summary, explanation, self.scope)
+        r = Rule(code, name, severity, summary, explanation, self.scope, opt_in)
         self.rules[code] = r
         _defaults[code] = severity
         return r

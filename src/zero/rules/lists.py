@@ -20,6 +20,8 @@ def check_document(doc: Document, registry: Registry, kind: str | None,
     """The list's context (kind detected when ``None``) and its findings, sorted, suppressions applied."""
     ctx = Context.of(doc, registry, kind)
     ctx.severities = severities
+    if any(p.kind == "binary" for p in doc.problems):  # one root cause, one finding
+        return ctx, [d for d in syntax.check_problems(ctx) if d.code == "S013" and d.code in severities]
     found = run_checks(CHECKS, ctx)
     found.sort(key=Diagnostic.sort_key)
     return ctx, suppress.apply(doc, found, severities, declared_codes())

@@ -7,11 +7,11 @@ from collections.abc import Iterator
 
 from zero.catalog.ids import SOFT_LIMITS
 from zero.catalog.ranges import Bounds, Number, Range, Ref
-from zero.catalog.registry import KINDS, ParamSpec
+from zero.catalog.registry import KINDS, NO_DEFAULT, ParamSpec, Registry
 from zero.catalog.values import Resolved, Value, default_number
 from zero.diagnostics import Diagnostic, Edit, Fix, Span
 from zero.lists.model import Entry, format_key
-from zero.rules.base import Context, E, Family, W
+from zero.rules.base import INFO, Context, E, Family, W
 
 FAMILY: Family[Context] = Family("R", "registry", "list")
 
@@ -63,7 +63,24 @@ def _key_span(e: Entry) -> Span:
     return Span.on_line(e.line, e.key_start, e.key_end)
 
 
-@FAMILY.check(UNKNOWN_KEY, ALIAS_KEY, INDEX_OUT_OF_RANGE)
+VENDOR_KEY = FAMILY.rule(
+    "R010", "vendor-key", INFO, "A key the vendor's own lists use that the catalogue does not document",
+    """
+What it checks: keys that are not in the parameter description but that the vendor's own
+example lists use consistently (`thread[n].cpu` in the real-time configuration,
+`number_used_variables` in the external variables list, ...). zero keeps a table of them,
+each with the list it was found in, and names the documented parameter it probably stands
+for where one fits.
+
+Why it matters on the machine: the catalogue does not say what the controller does with such a
+key; a kernel that does not know it leaves it unused. This is information, not an error: the
+vendor ships it that way.
+
+Fix: nothing, unless your kernel's parameter description documents another key for it.
+""")
+
+
+@FAMILY.check(UNKNOWN_KEY, ALIAS_KEY, INDEX_OUT_OF_RANGE, VENDOR_KEY)
 def check_keys(ctx: Context) -> Iterator[Diagnostic]:
     """R001, R002, R003: key known, spelling documented, indices inside the arrays."""
     reg = ctx.registry
@@ -90,7 +107,8 @@ def check_keys(ctx: Context) -> Iterator[Diagnostic]:
                     ),
                 )
                 continue
-            yield _unknown_key(ctx, e)
+            vendor = reg.vendor_keys.get((ctx.kind or "", key.pattern))
+            yield _vendor_key(ctx, e, *vendor) if vendor is not None else _unknown_key(ctx, e)
             continue
         if not key.indices:
             continue
@@ -114,6 +132,14 @@ def check_keys(ctx: Context) -> Iterator[Diagnostic]:
                     param_id=spec.id,
                 )
                 break
+
+
+def _vendor_key(ctx: Context, e: Entry, source: str, near: str) -> Diagnostic:
+    spec = ctx.registry.get(near) if near else None
+    hint = f"perhaps the documented `{spec.key}` ({spec.id})" if spec is not None and spec.key else None
+    return ctx.report("R010", _key_span(e), f"`{e.key_text}` is not in the parameter description, but the "
+                      f"vendor's own lists use it ({source}): the catalogue does not say what the controller "
+                      "does with it", hint=hint)
 
 
 def _unknown_key(ctx: Context, e: Entry) -> Diagnostic:
@@ -158,8 +184,11 @@ OUT_OF_RANGE = FAMILY.rule(
     "R005", "out-of-range", E, "A value outside the parameter's range or allowed set",
     """
 What it checks: the value against the range of the parameter description (for example
-`MIN(SGN32) < x < MAX(SGN32)`, `0 ... 96`, `-1, 0, 1`), BOOLEAN values against 0/1
-(or FALSE/TRUE), and symbolic values against the allowed symbols.
+`MIN(SGN32) < x < MAX(SGN32)`, `0 ... 96`, `-1, 0, 1`), against the values the description
+lists in its text (`1 : Conventional drive interface` ... `32 : CAN bus` for
+`kenngr.antr_typ`; any combination where they are the bits of a mask), BOOLEAN values against
+0/1 (or FALSE/TRUE), and symbolic values against the allowed symbols. Where the catalogue's
+default lies outside its own range, the message says so instead of predicting the default.
 
 Why it matters on the machine: the controller replaces a faulty value with the default
 at start-up — silently changing, for example, a soft limit or an offset.
@@ -213,8 +242,31 @@ def _fmt(n: Number | None) -> str:
     return str(n)
 
 
-def _default_phrase(spec: ParamSpec) -> str:
-    return f"the controller replaces it with the default {spec.default_display} at start-up"
+def _default_phrase(spec: ParamSpec, registry: Registry | None = None) -> str:
+    """What the controller does instead, as far as the catalogue says: its default, unless it
+    documents none, or its default contradicts its own range (then say so, do not predict)."""
+    if (spec.default or "").strip() in NO_DEFAULT:
+        return "the catalogue documents no default for it, so what the controller uses instead is not known"
+    phrase = f"the controller replaces it with the default {spec.default_display} at start-up"
+    if registry is not None and _default_contradicts(spec, registry):
+        return (f"the catalogue gives the default {spec.default_display}, which its own range for it "
+                "excludes: what the controller uses instead is not certain")
+    return phrase
+
+
+def _default_contradicts(spec: ParamSpec, registry: Registry) -> bool:
+    """The catalogue's default lies outside the catalogue's own constant range or listed values."""
+    dflt = _default_of(spec)
+    if dflt is None:
+        return False
+    if spec.enum:
+        return not (isinstance(dflt, int) and spec.enum_allows(dflt))
+    rng = registry.range_of(spec)
+    if rng is None or rng.refs:
+        return False
+    if rng.allowed is not None:
+        return dflt not in rng.allowed
+    return not rng.evaluate(lambda *_: None).contains(dflt)
 
 
 @FAMILY.check(WRONG_TYPE, OUT_OF_RANGE, RANGE_REFERENCE, UNKNOWN_REFERENCE)
@@ -239,7 +291,7 @@ def _check_value(ctx: Context, res: Resolved) -> Iterator[Diagnostic]:
                 "R009",
                 span,
                 f"`{e.value}` refers to the unknown parameter {rid}: the controller cannot "
-                f"resolve it; {_default_phrase(spec)}",
+                f"resolve it; {_default_phrase(spec, ctx.registry)}",
                 param_id=spec.id,
             )
         return
@@ -249,7 +301,7 @@ def _check_value(ctx: Context, res: Resolved) -> Iterator[Diagnostic]:
         what = {"integer": "an integer", "number": "a number"}.get(v.detail, v.detail)
         text = template.format(value=e.value, key=e.key_text, type=spec.type, what=what,
                                detail=v.detail, max_len=spec.max_len)
-        yield ctx.report(code, span, f"{text}: {_default_phrase(spec)}", param_id=spec.id)
+        yield ctx.report(code, span, f"{text}: {_default_phrase(spec, ctx.registry)}", param_id=spec.id)
         return
     if v.problem == "symbol":
         names = [s for s, _ in spec.symbols]
@@ -259,7 +311,7 @@ def _check_value(ctx: Context, res: Resolved) -> Iterator[Diagnostic]:
             "R005",
             span,
             f"`{v.detail}` is not an allowed value of `{e.key_text}` ({shown}): "
-            f"{_default_phrase(spec)}",
+            f"{_default_phrase(spec, ctx.registry)}",
             param_id=spec.id,
             hint=f"did you mean `{near[0]}`?" if near else None,
         )
@@ -280,11 +332,14 @@ def _default_of(spec: ParamSpec) -> Number | None:
 
 
 def _check_range(ctx: Context, e: Entry, spec: ParamSpec, v: Value) -> Iterator[Diagnostic]:
-    if v.number is None or (spec.range_text is None):
+    if v.number is None or (spec.range_text is None and not spec.enum):
         return
     dflt = _default_of(spec)
     if dflt is not None and v.number == dflt:
         return  # the default itself is never faulty (some vendor ranges exclude it); no parse needed
+    if spec.enum:
+        yield from _check_enum(ctx, e, spec, v.number)
+        return
     rng = ctx.registry.range_of(spec)
     if rng is None:
         return
@@ -302,7 +357,7 @@ def _check_range(ctx: Context, e: Entry, spec: ParamSpec, v: Value) -> Iterator[
             yield ctx.report(
                 "R005",
                 span,
-                f"{e.value} is not one of {allowed} for `{e.key_text}`: {_default_phrase(spec)}",
+                f"{e.value} is not one of {allowed} for `{e.key_text}`: {_default_phrase(spec, ctx.registry)}",
                 param_id=spec.id,
             )
         return
@@ -326,16 +381,32 @@ def _check_range(ctx: Context, e: Entry, spec: ParamSpec, v: Value) -> Iterator[
             "R006",
             span,
             f"{e.value} violates {text} for `{e.key_text}` ({_ref_values(ctx, refs, indices)}): "
-            f"{_default_phrase(spec)}",
+            f"{_default_phrase(spec, ctx.registry)}",
             param_id=spec.id,
         )
     else:
         yield ctx.report(
             "R005",
             span,
-            f"{e.value} is outside {text} for `{e.key_text}`: {_default_phrase(spec)}",
+            f"{e.value} is outside {text} for `{e.key_text}`: {_default_phrase(spec, ctx.registry)}",
             param_id=spec.id,
         )
+
+
+def _check_enum(ctx: Context, e: Entry, spec: ParamSpec, number: Number) -> Iterator[Diagnostic]:
+    """R005 for a value the catalogue's listed values (or bits) do not allow."""
+    if isinstance(number, int) and spec.enum_allows(number):
+        return
+    labels = spec.enum_labels if len(spec.enum_labels) == len(spec.enum) else ()
+    listed = [f"{v} {label}" if label else str(v) for v, label in zip(spec.enum, labels or [""] * len(spec.enum),
+                                                                          strict=True)]
+    what = "any combination of the bits" if spec.enum_flags else "one of the values"
+    yield ctx.report(
+        "R005", _value_span(e),
+        f"{e.value} is not {what} the catalogue lists for `{e.key_text}` ({', '.join(listed)}): "
+        f"{_default_phrase(spec, ctx.registry)}",
+        param_id=spec.id,
+    )
 
 
 def _bounds_text(b: Bounds, low: object, high: object) -> str:

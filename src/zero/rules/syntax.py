@@ -6,10 +6,11 @@ below gives each kind of problem its rule and its message.
 
 from __future__ import annotations
 
+import re
 from collections.abc import Callable, Iterator
 
 from zero.diagnostics import Diagnostic, Edit, Fix, Span
-from zero.lists.model import CommentStyle, Problem, ValueKind
+from zero.lists.model import Comment, CommentStyle, Problem, ValueKind
 from zero.rules.base import INFO, Context, E, Family, W
 
 FAMILY: Family[Context] = Family("S", "syntax", "list")
@@ -64,18 +65,18 @@ Example: `np_grp[0].achse[1]. inaktiv 0`
 Fix: remove the blank (safe fix): `np_grp[0].achse[1].inaktiv 0`.
 """)
 HASH_NO_SPACE = FAMILY.rule(
-    "S005", "hash-no-space", W, "`#` not followed by a space",
+    "S005", "hash-no-space", W, "`#` glued to comment text",
     """
-What it checks: a full-line comment is `#` followed by a space (a lone `#` or `#`
-and a tab are accepted too). Vendor lists comment out parameters as `#key value`.
+What it checks: a full-line comment is `#` followed by a space (a lone `#` or `#` and a
+tab are accepted too). Not reported: banners of punctuation (`#=====`, `#*****`), tags a
+tool writes (`#TC_AXIS_DESC: …`), and parameters commented out as `#key value`, the
+vendor's own habit (S012, opt-in, reports those).
 
-Why it matters on the machine: the manual requires the space; without it the
-controller may read the line as an entry with the unknown key `#key`, and warn at
-start-up. If the parameter was meant to be disabled, that is what happens anyway,
-but the warning hides real ones.
+Why it matters on the machine: the manual requires the space after `#`; a comment glued
+to its `#` is text the controller may try to read as an entry.
 
-Example: `#m_default_outp_ax_name[0]   X`
-Fix: insert a space after `#` (safe fix): `# m_default_outp_ax_name[0]   X`.
+Example: `#Achse X neu vermessen`
+Fix: insert a space after `#` (safe fix): `# Achse X neu vermessen`.
 """)
 UNDECODABLE = FAMILY.rule(
     "S007", "undecodable", E, "Bytes that are not valid in the file's encoding",
@@ -123,6 +124,18 @@ value the controller reads, which then matches nothing.
 
 Fix: delete the character.
 """)
+BINARY_FILE = FAMILY.rule(
+    "S013", "binary-file", E, "A file that is not text",
+    """
+What it checks: whether a list is text at all. A file where more than one character in twenty
+is a control character or a byte the encoding cannot read (a binary file, a UTF-16 file, a
+compressed or corrupt copy) is reported once, as a whole; no other rule reports on it.
+
+Why it matters on the machine: the controller cannot read such a file as a parameter list;
+none of its entries is taken over.
+
+Fix: put the real list in its place (a UTF-16 file: save it as UTF-8 or Windows-1252).
+""")
 MIXED_LINE_ENDINGS = FAMILY.rule(
     "S011", "mixed-line-endings", INFO, "LF and CRLF line endings in one file",
     """
@@ -133,6 +146,21 @@ sign of a list assembled from several sources, and they make diffs noisy.
 
 Fix: convert the file to one line ending (zero keeps what it finds when it rewrites).
 """)
+
+COMMENTED_OUT = FAMILY.rule(
+    "S012", "commented-out-parameter", INFO, "A parameter commented out as `#key value`",
+    """
+What it checks (opt-in: `--select S012` or `extend-select = ["S012"]`): a parameter commented
+out without a space after `#`, as the vendor's own lists do (`#kenngr.swe_pos 15000000`).
+
+Why it matters on the machine: the manual asks for a space after `#`. The vendor's lists
+comment parameters out this way by the hundred, so the check is off by default; turn it on
+to keep your own lists to the manual's form.
+
+Example: `#m_default_outp_ax_name[0]   X`
+Fix: insert a space after `#` (safe fix): `# m_default_outp_ax_name[0]   X`.
+""", opt_in=True)
+
 
 _MESSAGES: dict[str, tuple[str, Callable[[Problem], str]]] = {
     "malformed-line": (
@@ -170,6 +198,11 @@ _MESSAGES: dict[str, tuple[str, Callable[[Problem], str]]] = {
         "S010",
         lambda p: f"control character {p.detail}: invisible, but part of what the controller reads",
     ),
+    "binary": (
+        "S013",
+        lambda p: f"not a text file ({p.detail} control characters or stray bytes): the controller cannot read "
+        "it as a parameter list",
+    ),
     "mixed-endings": (
         "S011",
         lambda p: "line ending differs from the first line's: the file mixes LF and CRLF",
@@ -182,12 +215,15 @@ def _short(text: str, limit: int = 60) -> str:
 
 
 @FAMILY.check(MALFORMED_LINE, MISSING_VALUE, UNTERMINATED_QUOTE, KEY_WHITESPACE, HASH_NO_SPACE,
-              UNDECODABLE, NUL_BYTE, AFTER_END, CONTROL_CHARACTER, MIXED_LINE_ENDINGS)
+              UNDECODABLE, NUL_BYTE, AFTER_END, CONTROL_CHARACTER, MIXED_LINE_ENDINGS, COMMENTED_OUT,
+              BINARY_FILE)
 def check_problems(ctx: Context) -> Iterator[Diagnostic]:
     """Findings for the faults the tokenizer recorded."""
     for p in ctx.doc.problems:
         if p.kind == "hash-no-space":
-            yield _hash_no_space(ctx, p)
+            found = _hash_no_space(ctx, p)
+            if found is not None:
+                yield found
             continue
         code, make = _MESSAGES[p.kind]
         span = Span.on_line(p.line, p.start, p.end)
@@ -200,16 +236,36 @@ def check_problems(ctx: Context) -> Iterator[Diagnostic]:
         yield ctx.report(code, span, make(p), fix=fix, hint=fix.title if fix else None)
 
 
-def _hash_no_space(ctx: Context, p: Problem) -> Diagnostic:
+def _commented_parameter(ctx: Context, line: int) -> str | None:
+    """The key of a parameter commented out on ``line``: a documented key, or one shaped like a
+    key of members and indices (``a.b``, ``a[0]``); ``#Achse X neu`` is prose, not a parameter."""
+    item = ctx.doc.items[line - 1] if line <= len(ctx.doc.items) else None
+    entry = item.commented_out if type(item) is Comment else None
+    if entry is None or entry.key is None:
+        return None
+    pattern = entry.key.pattern
+    registry = ctx.registry
+    known = registry.kinds_of(pattern) or registry.alias(pattern, None) is not None
+    return entry.key_text if known or "." in pattern or "[" in pattern else None
+
+
+_BANNER_RE = re.compile(r"#[^A-Za-z0-9\s]*\s*$")  # `#=====`, `#*****`: decoration
+_TAG_RE = re.compile(r"#[A-Z][A-Z0-9_]*:")  # `#TC_AXIS_DESC:`: a tag a tool writes
+
+
+def _hash_no_space(ctx: Context, p: Problem) -> Diagnostic | None:
     span = Span.on_line(p.line, p.start, p.end)
     fix = Fix("Insert a space after `#`", (Edit(Span.on_line(p.line, p.end, p.end), " "),))
-    if p.detail == "entry":
-        msg = ("`#` without a space before a commented-out parameter: the controller may read "
-               "the line as an unknown entry and warn at start-up")
-    else:
-        msg = ("`#` not followed by a space: the manual requires one, and the controller may "
-               "read the line as an unknown entry")
-    return ctx.report("S005", span, msg, fix=fix, hint=fix.title)
+    key = _commented_parameter(ctx, p.line) if p.detail == "entry" else None
+    if key is not None:
+        return ctx.report("S012", span, f"`{key}` is commented out without a space after `#`: the manual "
+                          "asks for one; the vendor's own lists write it this way", fix=fix, hint=fix.title)
+    rest = ctx.doc.line_text(p.line)[p.start:]
+    if _BANNER_RE.match(rest) or _TAG_RE.match(rest):
+        return None
+    return ctx.report("S005", span, "comment text glued to `#`: the manual requires a space after `#`, "
+                      "and without it the controller may try to read the line as an entry", fix=fix,
+                      hint=fix.title)
 
 
 STRING_COMMENT = FAMILY.rule(

@@ -212,6 +212,16 @@ def build_schema(registry: Registry, kind: str | None = None, strict: bool = Tru
             if target_spec is not None:
                 place(pattern, target_spec)
 
+    for (k, pattern), (source, _near) in registry.vendor_keys.items():
+        if kind is None or k == kind:  # admitted, as zero lint reports them as information only
+            prefix = pattern[: pattern.rfind("[]") + 2] if "[]" in pattern else None
+            sibling = next((sp for sp in specs if prefix and sp.kind == k and sp.key
+                            and sp.key.startswith(prefix)), None)  # its indices are the sibling's
+            place(pattern, ParamSpec("(not in the catalogue)", k, pattern, "UNDOCUMENTED",
+                                     dims=sibling.dims if sibling else (),
+                                     index_base=sibling.index_base if sibling else 0,
+                                     description=f"used by the vendor's own lists: {source}"))
+
     if strict:
         stack = [root]
         while stack:
