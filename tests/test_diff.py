@@ -164,3 +164,19 @@ def test_two_full_zero_lists_one_change(registry: Registry) -> None:
     assert a != b
     changes = diff_sides(read_side(a, "lis", "a.lis", registry), read_side(b, "lis", "b.lis", registry), registry)
     assert [(c.key, c.delta) for c in changes] == [("np_grp[50].achse[3].versch", 1.0)]
+
+
+def test_enumerations_and_bit_masks_get_no_arithmetic(registry: Registry) -> None:
+    a = read_side(b"kenngr.antr_typ 8\nkenngr.achs_mode 0x400001\nkenngr.swe_pos 100\n", "lis", "a.lis", registry,
+                  "AXIS")
+    b = read_side(b"kenngr.antr_typ 2\nkenngr.achs_mode 0x000001\nkenngr.swe_pos 200\n", "lis", "b.lis", registry,
+                  "AXIS")
+    by_key = {c.key: c for c in diff_sides(a, b, registry)}
+    assert (by_key["kenngr.antr_typ"].delta, by_key["kenngr.antr_typ"].note) == (None, "")
+    assert (by_key["kenngr.achs_mode"].delta, by_key["kenngr.achs_mode"].note) == (None, "cleared 0x400000")
+    assert by_key["kenngr.swe_pos"].delta == 0.01
+
+
+def test_a_default_in_exponent_notation_is_shown_as_a_number(registry: Registry) -> None:
+    spec = registry.get("P-AXIS-00067")
+    assert spec is not None and spec.default == "3.000000e+001" and spec.default_display == "30"

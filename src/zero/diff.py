@@ -147,6 +147,28 @@ def unit_and_delta(spec: ParamSpec | None, old: tuple[str, Any] | None, new: tup
     return unit, raw
 
 
+def _is_code(spec: ParamSpec | None, *texts: str) -> bool:
+    """A value that names something (listed values, symbols, bits written in hex), not a quantity."""
+    if spec is not None and (spec.enum or spec.symbols):
+        return True
+    return any(t.strip().lstrip("+-").lower().startswith("0x") for t in texts)
+
+
+def _code_note(spec: ParamSpec | None, old: tuple[str, Any] | None, new: tuple[str, Any] | None) -> str:
+    if old is None or new is None or old[0] != "num" or new[0] != "num":
+        return ""
+    a, b = old[1], new[1]
+    if spec is not None and spec.enum and not spec.enum_flags:
+        labels = dict(zip(spec.enum, spec.enum_labels, strict=False))
+        if labels.get(a) and labels.get(b):
+            return f"{labels[a]} → {labels[b]}"
+        return ""
+    if isinstance(a, int) and isinstance(b, int) and a >= 0 and b >= 0:
+        parts = [f"bits set {b & ~a:#x}" if b & ~a else "", f"cleared {a & ~b:#x}" if a & ~b else ""]
+        return ", ".join(p for p in parts if p)
+    return ""
+
+
 _INDEX_RE = re.compile(r"\[([0-9]+)\]")
 
 
@@ -216,7 +238,10 @@ def diff_sides(a: Side, b: Side, registry: Registry, options: DiffOptions | None
                                       _comment_text(b.comments.get(key, ())), group=group))
                 continue
             unit, delta = unit_and_delta(spec, va, vb, length_unit)
-            out.append(Change(key, pid, CHANGED, ea.value, eb.value, unit, delta, group))
+            note = ""
+            if _is_code(spec, ea.value, eb.value):  # an enumeration or bit mask: no arithmetic
+                delta, note = None, _code_note(spec, va, vb)
+            out.append(Change(key, pid, CHANGED, ea.value, eb.value, unit, delta, group, note))
             continue
         base = under.entries.get(key) if under is not None else None
         if base is not None:

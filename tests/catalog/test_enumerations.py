@@ -33,11 +33,11 @@ def test_every_listed_value_passes_and_others_fail(pid: str, registry: Registry)
     spec = registry.get(pid)
     assert spec is not None
     for value in spec.enum:
-        data, kind = _line(registry, pid, value)
+        data, _kind = _line(registry, pid, value)
         assert [d.code for d in lint_bytes(data, registry, "t.lis").diagnostics
                 if d.code == "R005"] == [], (pid, value)
     outside = max(spec.enum) * 2 + 1 if spec.enum_flags else max(spec.enum) + 1
-    data, kind = _line(registry, pid, outside)
+    data, _kind = _line(registry, pid, outside)
     codes = [d.code for d in lint_bytes(data, registry, "t.lis").diagnostics]
     if str(outside) != (spec.default or "").strip():
         assert "R005" in codes or "R004" in codes, (pid, outside, codes)

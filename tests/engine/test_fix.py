@@ -14,9 +14,9 @@ from conftest import FIXTURES, builtin_registry, generated_lists
 from zero.catalog.registry import Registry
 from zero.cli.app import app
 from zero.diff import DiffOptions, diff_sides, read_side
-from zero.engine.lint import LintOptions
 from zero.engine.fixes import fix_bytes
 from zero.engine.formatting import format_bytes
+from zero.engine.lint import LintOptions
 from zero.errors import ZeroError
 
 runner = CliRunner()

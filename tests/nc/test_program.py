@@ -8,6 +8,7 @@ import pytest
 from typer.testing import CliRunner
 
 from conftest import FIXTURES, builtin_registry, golden
+from zero.catalog.registry import Registry
 from zero.cli.app import app
 from zero.engine.lint import lint_program
 from zero.machine.model import load_machine
@@ -62,3 +63,16 @@ def test_cli_lints_programs_with_and_without_machine() -> None:
     r = runner.invoke(app, ["lint", "--machine", str(MACHINE), str(P / "bad.nc"), "--select", "N",
                             "--output-format", "concise"])
     assert r.exit_code == 1 and r.stdout.count("N004") == 2
+
+
+def test_machine_data_axis_given_by_variable_or_expression_and_messages(registry: Registry) -> None:
+    program = (b"N10 #MACHINE DATA [AXNR=V.P.NR P-AXIS-00209=80000]\n"
+               b"N20 #MACHINE DATA [AXNR=[2+1] P-AXIS-00209=80000]\n"
+               b"N30 #MACHINE DATA [AXNR=0 P-AXIS-00209=80000]\n"
+               b"N40 #MACHINE DATA [AX=X P-AXIS-99999=1]\n")
+    result = lint_program(program, registry, "p.nc")
+    assert [(d.span.line, d.message) for d in result.diagnostics] == [
+        (3, "#MACHINE DATA AXNR=0 is not a logical axis number (they start at 1); the controller does not "
+            "check AXNR, so the block does not write the axis it is meant for"),
+        (4, "#MACHINE DATA P-AXIS-99999 is not a parameter of the catalogue: the controller rejects the block"),
+    ]

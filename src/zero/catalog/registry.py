@@ -122,6 +122,11 @@ class ParamSpec:
         v = self.symbol_value(d)
         if v is not None and self.type != "STRING":
             return f"{v} ({d})"
+        if "e" in d.lower() and self.type != "STRING":  # `3.000000e+001` is 30
+            try:
+                return f"{float(d):g}"
+            except ValueError:
+                return d
         return d
 
 
@@ -232,6 +237,29 @@ class Registry:
         if hint in leaders:
             return hint
         return sorted(leaders)[0]
+
+    def search(self, text: str, limit: int = 20) -> list[ParamSpec]:
+        """Parameters whose key, a member of the key, the ID or the description contains ``text``
+        (case-insensitive); the closest first: whole members, then parts of keys, then descriptions."""
+        needle = text.strip().lower().replace("[0]", "[]")
+        if not needle:
+            return []
+        ranked: list[tuple[int, str, ParamSpec]] = []
+        for pid in self.specs:
+            spec = self.specs[pid]
+            key = (spec.key or "").lower()
+            members = key.replace("[]", "").split(".")
+            if needle in members or key.endswith("." + needle):
+                rank = 0
+            elif needle in key or needle in pid.lower():
+                rank = 1
+            elif spec.description and needle in spec.description.lower():
+                rank = 2
+            else:
+                continue
+            ranked.append((rank, key or pid, spec))
+        ranked.sort(key=lambda r: (r[0], r[1]))
+        return [spec for _, _, spec in ranked[:limit]]
 
     def suggest(self, pattern: str, kind: str | None, n: int = 1) -> list[str]:
         """Known key patterns close to an unknown one (did-you-mean), memoised per pattern."""

@@ -18,7 +18,7 @@ from typing import Annotated, Any
 import typer
 
 from zero import __version__
-from zero.catalog.registry import Registry, kind_from_name
+from zero.catalog.registry import KINDS, Registry, kind_from_name
 from zero.cli import exits
 from zero.cli.options import LINT_OPTIONS, PATHS_HELP, Option
 from zero.cli.run import REGISTRIES, echo, read_stdin, render_lint
@@ -424,9 +424,20 @@ def param(
                 spec = registry.by_pattern(key.pattern, forced) or registry.alias(key.pattern, forced)
                 indices = key.indices
         if spec is None:
-            near = registry.suggest(name.strip(), None)
-            hint = f" (did you mean {near[0]}?)" if near else ""
-            raise ZeroError(f"unknown parameter {name!r}{hint}")
+            found = registry.search(name)
+            if len(found) == 1:
+                spec = found[0]
+                sys.stdout.write(f"(the one parameter matching {name.strip()!r})\n")
+            elif found:
+                sys.stdout.write(f"{len(found)} parameters match {name.strip()!r}"
+                                 f"{' (the first 20)' if len(found) == 20 else ''}; `zero param ID` shows one:\n")
+                for match in found:
+                    sys.stdout.write(f"  {match.id}  {match.key or '(no key)'}  ({KINDS[match.kind][1]})\n")
+                return exits.OK
+            else:
+                near = registry.suggest(name.strip(), None)
+                hint = f" (did you mean {near[0]}?)" if near else ""
+                raise ZeroError(f"unknown parameter {name!r}{hint}; no key, ID or description contains it")
         text = param_text(spec, registry)
         if indices:
             text = f"{'element':<7}  {name.strip()}\n" + text

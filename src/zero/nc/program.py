@@ -28,7 +28,7 @@ _WORD_RE = re.compile(r"(?<![A-Za-z_#$.])([A-Z])\s*(=?)\s*([+-]?(?:[0-9]+\.?[0-9
 _G_RE = re.compile(r"(?<![A-Za-z_#$.])G\s*0*([0-9]+)(?![0-9.])", re.IGNORECASE)
 _ITEM_RE = re.compile(
     r'\s*(?:(?P<ax>AX)\s*=\s*(?P<axname>[A-Za-z_][A-Za-z0-9_]*)'
-    r'|(?P<axnr>AXNR)\s*=\s*(?P<axnrv>[^\s\]]+)'
+    r'|(?P<axnr>AXNR)\s*=\s*(?P<axnrv>\[[^\]]*\]|[^\s\]]+)'
     r'|(?P<pid>P-AXIS-[0-9]{5})(?:\.(?P<pidx>[0-9]+))?\s*=\s*(?P<pval>[^\s\]]+)'
     r'|(?P<axparam>AXPARAM)\s*=?\s*"(?P<axparamv>[^"]*)"'
     r'|(?P<axparamvar>AXPARAM)\s*=?\s*(?P<axparamvarv>V\.[A-Za-z0-9_.\[\]]+)'
@@ -69,6 +69,19 @@ def strip_comments(line: str) -> str:
     return "".join(out)
 
 
+def _closing(text: str, start: int) -> int:
+    """The ``]`` that closes the ``[`` at ``start`` (brackets of expressions nest); -1 if none."""
+    depth = 0
+    for i in range(start, len(text)):
+        if text[i] == "[":
+            depth += 1
+        elif text[i] == "]":
+            depth -= 1
+            if depth == 0:
+                return i
+    return -1
+
+
 @dataclass(slots=True)
 class MachineData:
     line: int
@@ -99,7 +112,7 @@ def parse_machine_data(text: str, line: int, start: int, registry: Registry) -> 
                             pos, len(text.rstrip())))
         return md
     masked = _blank_strings(text)
-    close = masked.find("]", pos)
+    close = _closing(masked, pos)
     if close < 0:
         md.problems.append(("the `[` is not closed", pos, len(text.rstrip())))
         close = len(text)
@@ -111,17 +124,22 @@ def parse_machine_data(text: str, line: int, start: int, registry: Registry) -> 
             md.axis = im.group("axname")
         elif im.group("axnr"):
             md.axnr = im.group("axnrv")
-            if not (md.axnr.isdigit() and int(md.axnr) > 0):
-                md.problems.append((f"AXNR={md.axnr}: the logical axis number is a positive integer "
-                                    "(the controller does not check it: a wrong one writes to another axis)", a, b))
+            computed = md.axnr.startswith("[") or md.axnr.upper().startswith("V.")  # known at run time only
+            if not computed and not (md.axnr.isdigit() and int(md.axnr) > 0):
+                md.problems.append((f"AXNR={md.axnr} is not a logical axis number (they start at 1); the "
+                                    "controller does not check AXNR, so the block does not write the axis "
+                                    "it is meant for", a, b))
         elif im.group("pid"):
             pid = im.group("pid").upper()
             md.writes.append((pid + (f".{im.group('pidx')}" if im.group("pidx") else ""), im.group("pval"), a, b))
             if pid not in keywords:
                 spec = registry.get(pid)
-                what = f"{pid} ({spec.key})" if spec and spec.key else pid
-                md.problems.append((f"{what} is not one of the parameters #MACHINE DATA accepts by ID; "
-                                    "write it with AXPARAM=\"<key> <value>\"", a, b))
+                if spec is None:
+                    md.problems.append((f"{pid} is not a parameter of the catalogue", a, b))
+                else:
+                    what = f"{pid} ({spec.key})" if spec.key else pid
+                    md.problems.append((f"{what} is not one of the parameters #MACHINE DATA accepts by ID; "
+                                        "write it with AXPARAM=\"<key> <value>\"", a, b))
         elif im.group("axparam"):
             md.writes.append(("AXPARAM", im.group("axparamv"), a, b))
             md.axparams.append((im.group("axparamv"), a, b))

@@ -60,7 +60,7 @@ def check_machine_data(ctx: ProgramContext) -> Iterator[Diagnostic]:
     for md in ctx.program.machine_data:
         problems = [*md.problems, *((m, a, b) for text, a, b in md.axparams for m in check_axparam(text, ctx))]
         for message, a, b in problems:
-            tail = "" if message.startswith("AXPARAM:") else ": the controller rejects the block"
+            tail = "" if message.startswith(("AXPARAM:", "AXNR=")) else ": the controller rejects the block"
             yield ctx.report("N001", _span(md.line, a, b), f"#MACHINE DATA {message}{tail}")
 
 
