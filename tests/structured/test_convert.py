@@ -141,10 +141,12 @@ def test_values_come_back_as_written(fmt: str) -> None:
 
 
 def test_yaml_plain_scalars_written_by_hand_keep_their_text(registry: Registry) -> None:
-    text = "wert:\n  a: 0x1F\n  b: 010\n  c: on\n  d: TRUE\n  e: 1e3\n  f: -0\n"
+    # (plain scalars YAML reads as another value than the list would, `010` or `on`, are refused:
+    # tests/structured/test_convert_precision.py)
+    text = "wert:\n  a: 0x1F\n  e: 1e3\n  f: -0\n"
     out = convert(text.encode(), "yaml", "lis", registry, "t.yaml", check=False).output.decode()
     values = [line.split()[1] for line in out.splitlines() if line.startswith("wert")]
-    assert values == ["0x1F", "010", "on", "TRUE", "1e3", "-0"]
+    assert values == ["0x1F", "1e3", "-0"]
 
 
 def test_real_parameter_values_are_numbers_and_string_parameters_stay_text(registry: Registry) -> None:

@@ -95,9 +95,15 @@ def strip_comment(text: str) -> str | None:
     return t.rstrip(" \t") or None
 
 
+NO_RECORD = (f"no `{META_KEY}` record: the list is written in UTF-8 with LF line endings and the canonical "
+             "layout (convert the original list again to keep its encoding and layout)")
+
+
 def finish(leaves: list[Leaf], meta: Any, tail: list[str], path: str) -> Tree:
+    notes = []
     if meta is None:
         meta = {}
+        notes.append(NO_RECORD)
     if not isinstance(meta, dict):
         raise ZeroError(f"`{META_KEY}` must be a mapping (zero's record of the list layout)", path)
     version = meta.get("zero", FORMAT_VERSION)
@@ -113,7 +119,7 @@ def finish(leaves: list[Leaf], meta: Any, tail: list[str], path: str) -> Tree:
             raise ZeroError(f"`{leaf.key}` is given twice{where}; a list holds each key once",
                                path, leaf.line, leaf.column)
         seen[leaf.key] = leaf
-    return Tree(leaves, meta, tail, path)
+    return Tree(leaves, meta, tail, path, notes)
 
 
 _LINE = "line"  # a string that becomes one list line: no line breaks or control characters

@@ -9,6 +9,7 @@ number for an integer parameter); :func:`write_tree` writes a tree in any of the
 
 from __future__ import annotations
 
+import re
 from collections.abc import Callable
 
 from zero.catalog.registry import INTEGER_TYPES, Registry, kind_from_name
@@ -52,9 +53,14 @@ def decode_structured(data: bytes, path: str) -> str:
                         "are read as UTF-8", path, line, col) from None
 
 
+_EXPONENT_RE = re.compile(r"[+-]?(?:[0-9]+\.?[0-9]*|\.[0-9]+)[eE][+-]?[0-9]+")
+
+
 def check_types(tree: Tree, registry: Registry) -> None:
-    """Refuse a number of the wrong kind that the format made (a float for an integer)."""
-    floats = [leaf for leaf in tree.leaves if leaf.native == "float"]
+    """Refuse a number of the wrong kind that the format made (a float for an integer), also when it
+    is written with an exponent (``1e3``), which YAML keeps as text."""
+    floats = [leaf for leaf in tree.leaves if leaf.native == "float"
+              or (leaf.native == "plain" and isinstance(leaf.value, str) and _EXPONENT_RE.fullmatch(leaf.value))]
     if not floats:
         return
     kind = tree.meta.get("kind") if isinstance(tree.meta.get("kind"), str) else None

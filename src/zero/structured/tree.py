@@ -58,7 +58,7 @@ class Leaf:
     after: str | None = None  # trailing comment as written ("( P-ZERO-00003 ...")
     line: int | None = None  # where it was read (1-based), when the reader knows
     column: int | None = None
-    native: str = "str"  # the reader's own type: int, float, str
+    native: str = "str"  # the reader's own type: int, float, str ("plain": YAML text without quotes)
 
 
 @dataclass(slots=True, eq=False)
@@ -414,11 +414,25 @@ def _exact(visible: list[str], exact: Any) -> list[str]:
     return exact if ok and [normalized(x) for x in exact] == visible else visible
 
 
+def _reordered(tree: Tree, order: list[Any]) -> bool:
+    """Did the user reorder the keys since zero wrote the file? Then the visible order wins over
+    the recorded one. zero writes the keys of a list in the order nesting them gives; if the keys
+    (those in both) stand in another order now, a person moved them."""
+    by_key = {leaf.key: leaf for leaf in tree.leaves}
+    last = {k: i for i, k in enumerate(order) if isinstance(k, str)}  # a key set twice counts where it wins
+    recorded = [by_key[k] for k in sorted(last, key=last.__getitem__) if k in by_key]
+    root, flat = nest(recorded)
+    written = [leaf.key for leaf in (*flat, *dfs(root))]
+    known = set(written)
+    visible = [leaf.key for leaf in tree.leaves if leaf.key in known]
+    return visible != written
+
+
 def list_sequence(tree: Tree) -> list[Leaf | list[str]]:
     """Leaves in the order the list holds them; shadowed lines as lists of text."""
     meta = tree.meta
     order = meta.get("order")
-    if not isinstance(order, list):
+    if not isinstance(order, list) or _reordered(tree, order):
         return list(tree.leaves)
     raw_shadowed = meta.get("shadowed")
     shadowed: dict[str, Any] = raw_shadowed if isinstance(raw_shadowed, dict) else {}

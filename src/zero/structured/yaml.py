@@ -143,6 +143,23 @@ class _Frame:
         self.keys: dict[str, int] = {}
 
 
+_OTHER_INT_RE = re.compile(r"[+-]?(?:0[0-9_]|[0-9][0-9_]*[_:])")  # octal 010, 1_000, 1:30 (YAML 1.1)
+
+
+def _refuse_reread(tag: str, text: str, where: str, path: str, line: int, column: int) -> None:
+    """Refuse a plain scalar that YAML reads as one value and the list line would read as another."""
+    if tag == "bool":
+        raise ZeroError(f"{where}: `{text}` is a YAML boolean, but a list holds the text `{text}`; write 1 or 0, "
+                        "or quote it (\"TRUE\") where the parameter takes a symbol", path, line, column)
+    if tag == "int" and _OTHER_INT_RE.match(text):
+        raise ZeroError(f"{where}: `{text}` is a YAML number in a form the controller reads differently "
+                        "(underscores, a leading zero, a colon); write plain decimal digits or quote it",
+                        path, line, column)
+    if tag == "float" and ("_" in text or text.lower().lstrip("+-") in (".inf", ".nan")):
+        raise ZeroError(f"{where}: `{text}` is a YAML number no list line holds as YAML reads it; write the "
+                        "number plainly", path, line, column)
+
+
 def _meta_scalar(value: str, tag: str) -> Any:
     if tag == "int":
         try:
@@ -268,7 +285,8 @@ def _yaml_stream(text: str, path: str) -> tuple[list[tuple[int, int, int, Leaf]]
                     if tag == "null":
                         raise ZeroError(f"{where}: no value (YAML reads it as null); give a value, "
                                            "or \"\" for an empty one", path, f.key_line + 1)
-                    native = tag if tag in ("int", "float") else "str"
+                    _refuse_reread(tag, e.value, where, path, f.key_line + 1, m.column + 1)
+                    native = tag if tag in ("int", "float") else "plain"  # text written without quotes
                 leaf = make_leaf(here, e.value, native, path, f.key_line + 1, m.column + 1)
                 spans.append((f.key_line, e.end_mark.line, e.end_mark.column, leaf))
             elif t is MapEnd or t is SeqEnd:
