@@ -11,7 +11,7 @@ from typer.testing import CliRunner
 
 from conftest import FIXTURES
 from zero.cli.app import app
-from zero.engine.config import ConfigFinder, glob_to_regex, parse_config
+from zero.engine.config import ConfigFinder, parse_config, patterns
 from zero.errors import ZeroError
 
 runner = CliRunner()
@@ -33,10 +33,40 @@ def lint(*args: str, cwd: Path | None = None) -> tuple[int, str, str]:
 
 
 def test_globs() -> None:
-    assert glob_to_regex("**/nullp*.lis").match("a/b/nullp_1.lis")
-    assert glob_to_regex("**/nullp*.lis").match("nullp.lis")
-    assert not glob_to_regex("old/*").match("old/a/b.lis")
-    assert glob_to_regex("old/**").match("old/a/b.lis")
+    assert patterns(("**/nullp*.lis",)).match_file("a/b/nullp_1.lis")
+    assert patterns(("**/nullp*.lis",)).match_file("nullp.lis")
+    assert patterns(("old/**",)).match_file("old/a/b.lis")
+
+
+@pytest.mark.parametrize("pattern", ["old/[n]*.lis", "old/", "/old/**", "./old/**", "old", "old/*"])
+def test_gitignore_patterns_exclude_a_folder(tmp_path: Path, pattern: str) -> None:
+    (tmp_path / "zero.toml").write_text(f'exclude = ["{pattern}"]\n')
+    finder = ConfigFinder()
+    cfg = finder.for_path(tmp_path / "old" / "nullp.lis")
+    assert cfg.excluded(tmp_path / "old" / "nullp.lis"), pattern
+    assert not cfg.excluded(tmp_path / "new" / "nullp.lis"), pattern
+
+
+def test_a_pattern_that_cannot_be_read_is_a_located_error(tmp_path: Path) -> None:
+    (tmp_path / "zero.toml").write_text('include = ["*.lis"]\nexclude = ["old/[n*.lis"]\n')
+    with pytest.raises(ZeroError, match=r"zero.toml:2: exclude: pattern 'old/\[n\*.lis': `\[` is not closed"):
+        parse_config(tmp_path / "zero.toml")
+
+
+def test_ignore_wins_over_select_at_equal_specificity() -> None:
+    from zero.engine.lint import LintOptions, selected_rules
+
+    chosen = selected_rules(LintOptions(select=("S", "R"), ignore=("R",)))
+    assert not any(c.startswith("R") for c in chosen) and "S001" in chosen
+    assert "R005" in selected_rules(LintOptions(select=("R005",), ignore=("R",)))  # more specific wins
+
+
+def test_zero_toml_may_be_written_with_the_tool_zero_table(tmp_path: Path) -> None:
+    (tmp_path / "zero.toml").write_text('[tool.zero]\nignore = ["M003"]\n')
+    cfg = parse_config(tmp_path / "zero.toml")
+    assert cfg is not None and cfg.ignore == ("M003",)
+    shown = cfg.show()
+    assert "[tool.zero]" not in shown and 'ignore = ["M003"]' in shown and str(tmp_path / "zero.toml") in shown
 
 
 @pytest.mark.slow

@@ -41,6 +41,8 @@ from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
+import pathspec
+
 from zero.catalog.registry import kind_from_name
 from zero.diagnostics import Severity
 from zero.engine.lint import LintOptions
@@ -57,27 +59,20 @@ _KEYS = ("select", "extend-select", "ignore", "per-file-ignores", "severity", "k
 
 
 @functools.lru_cache(maxsize=512)
-def glob_to_regex(pattern: str) -> re.Pattern[str]:
-    """A path glob (``**/`` any depth, ``*`` within a name, ``?``) as an anchored regex."""
-    out = []
-    i = 0
-    while i < len(pattern):
-        if pattern.startswith("**/", i):
-            out.append("(?:.*/)?")
-            i += 3
-        elif pattern.startswith("**", i):
-            out.append(".*")
-            i += 2
-        elif pattern[i] == "*":
-            out.append("[^/]*")
-            i += 1
-        elif pattern[i] == "?":
-            out.append("[^/]")
-            i += 1
-        else:
-            out.append(re.escape(pattern[i]))
-            i += 1
-    return re.compile("".join(out) + r"\Z")
+def patterns(globs: tuple[str, ...]) -> pathspec.GitIgnoreSpec:
+    """Patterns with gitignore's meaning (``old/``, ``/old/**``, ``**/nullp*.lis``, ``[n]*``),
+    relative to the configuration's directory (a leading ``./`` is allowed); :class:`ZeroError`
+    for a pattern that cannot be read."""
+    lines = []
+    for g in globs:
+        text = g[2:] if g.startswith("./") else g
+        if text.count("[") > text.count("]"):
+            raise ZeroError(f"pattern {g!r}: `[` is not closed")
+        lines.append(text)
+    try:
+        return pathspec.GitIgnoreSpec.from_lines(lines)
+    except (ValueError, TypeError) as exc:
+        raise ZeroError(f"a pattern cannot be read: {exc}") from None
 
 
 def _is_reference(key: str) -> bool:
@@ -122,18 +117,12 @@ class Config:
             return None
 
     def _matches(self, globs: tuple[str, ...], file: Path) -> bool:
-        """A glob with a `/` matches the path relative to the configuration's directory,
-        one without matches the file name."""
-        rel: str | None = None
-        for g in globs:
-            if "/" in g:
-                if rel is None:
-                    rel = self.relative(file) or "\0"
-                if glob_to_regex(g).match(rel):
-                    return True
-            elif glob_to_regex(g).match(file.name):
-                return True
-        return False
+        """gitignore's meaning: a pattern with a `/` is anchored at the configuration's
+        directory, one without matches a name at any depth; `dir/` matches what is below it."""
+        if not globs:
+            return False
+        rel = self.relative(file)
+        return patterns(globs).match_file(rel if rel is not None else file.name)
 
     def excluded(self, file: Path) -> bool:
         return bool(self.exclude) and self._matches(self.exclude, file)
@@ -145,7 +134,9 @@ class Config:
         """The lint options for one file: the command line over this configuration."""
         select = cli.select or self.select
         extend = (*self.extend_select, *cli.extend_select)
-        ignore = (*self.ignore, *cli.ignore)
+        # The command line is a later layer: its --select starts a new selection, which the
+        # configuration's ignore does not cut down (as in ruff); within a layer, ignore wins ties.
+        ignore = (*(() if cli.select else self.ignore), *cli.ignore)
         for glob, codes in self.per_file_ignores:
             if self._matches((glob,), file):
                 ignore = (*ignore, *codes)
@@ -160,24 +151,27 @@ class Config:
         def arr(xs: tuple[str, ...]) -> str:
             return "[" + ", ".join(f'"{x}"' for x in xs) + "]"
 
-        lines = [f"# from {self.path}" if self.path else "# no configuration file: defaults",
-                 "[tool.zero]", f"select = {arr(self.select)}", f"extend-select = {arr(self.extend_select)}",
+        table = "[tool.zero]" if self.path is None or self.path.name == "pyproject.toml" else None
+        prefix = "tool.zero." if table else ""
+        source = f"# from {self.path}" if self.path else "# no configuration file: defaults"
+        lines = [source, *([table] if table else []), f"select = {arr(self.select)}",
+                 f"extend-select = {arr(self.extend_select)}",
                  f"ignore = {arr(self.ignore)}", f"include = {arr(self.include)}",
                  f"exclude = {arr(self.exclude)}"]
         if self.param_desc:
             lines.append(f'param-desc = "{self.param_desc}"')
         if self.machine or self.machine_lists or self.machine_workdir:
-            lines.append("[tool.zero.machine]")
+            lines.append(f"[{prefix}machine]")
             if self.machine:
                 lines.append(f'startup = "{self.machine}"')
             if self.machine_workdir:
                 lines.append(f'working-directory = "{self.machine_workdir}"')
             lines += [f'"{k}" = "{v}"' for k, v in self.machine_lists.items()]
-        lines.append("[tool.zero.per-file-ignores]")
+        lines.append(f"[{prefix}per-file-ignores]")
         lines += [f'"{g}" = {arr(c)}' for g, c in self.per_file_ignores]
-        lines.append("[tool.zero.severity]")
+        lines.append(f"[{prefix}severity]")
         lines += [f'{c} = "{s.label}"' for c, s in sorted(self.severity.items())]
-        lines.append("[tool.zero.kind]")
+        lines.append(f"[{prefix}kind]")
         lines += [f'"{g}" = "{k}"' for g, k in self.kind]
         return "\n".join(lines) + "\n"
 
@@ -212,11 +206,14 @@ def parse_config(path: Path, text: str | None = None) -> Config | None:
     except tomllib.TOMLDecodeError as exc:
         raise ZeroError(f"not valid TOML: {exc}", str(path)) from None
     table: tuple[str, ...] = ()
+    tool = data.get("tool", {})
     if path.name == "pyproject.toml":
-        tool = data.get("tool", {})
         if not isinstance(tool, dict) or "zero" not in tool:
             return None
         data = tool["zero"]
+        table = ("tool", "zero")
+    elif set(data) == {"tool"} and isinstance(tool, dict) and set(tool) == {"zero"}:
+        data = tool["zero"]  # a zero.toml written like pyproject.toml: the same settings
         table = ("tool", "zero")
     if not isinstance(data, dict):
         raise ZeroError("[tool.zero] must be a table", str(path))
@@ -235,9 +232,13 @@ def parse_config(path: Path, text: str | None = None) -> Config | None:
                 raise fail(key, f"{c!r} matches no rule code (see `zero rule`)", sub)
         return out
 
-    def globs(key: str, value: Any) -> tuple[str, ...]:
+    def globs(key: str, value: Any, sub: tuple[str, ...] = ()) -> tuple[str, ...]:
         if not isinstance(value, list) or not all(isinstance(v, str) and v for v in value):
-            raise fail(key, "expected a list of glob patterns, e.g. [\"old/**\"]")
+            raise fail(key, "expected a list of glob patterns, e.g. [\"old/**\"]", sub)
+        try:
+            patterns(tuple(value))
+        except ZeroError as exc:
+            raise fail(key, exc.message, sub) from None
         return tuple(value)
 
     cfg = Config(path=path)
@@ -278,6 +279,8 @@ def parse_config(path: Path, text: str | None = None) -> Config | None:
         elif key == "per-file-ignores":
             if not isinstance(value, dict):
                 raise fail(key, "expected a table of glob = [codes]")
+            for g in value:
+                globs(g, [g], ("per-file-ignores",))
             cfg.per_file_ignores = tuple((g, codes(g, v, ("per-file-ignores",))) for g, v in value.items())
         elif key == "severity":
             if not isinstance(value, dict):
@@ -295,6 +298,7 @@ def parse_config(path: Path, text: str | None = None) -> Config | None:
                 raise fail(key, "expected a table of glob = kind")
             pairs = []
             for glob, name in value.items():
+                globs(glob, [glob], ("kind",))
                 k = kind_from_name(name) if isinstance(name, str) else None
                 if k is None:
                     raise fail(glob, f"{name!r} is not a list kind (zero, axis, channel, ...)", ("kind",))

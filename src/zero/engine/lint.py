@@ -74,7 +74,8 @@ def selected_rules(options: LintOptions) -> dict[str, Severity]:
 
 def _selected_rules(options: LintOptions) -> dict[str, Severity]:
     """All rules (or those ``select`` names), plus ``extend_select``, less ``ignore``; the longest
-    matching prefix decides. An opt-in rule runs only when named by its full code."""
+    matching prefix decides, and at equal length ``ignore`` wins. An opt-in rule runs only when
+    named by its full code."""
     out: dict[str, Severity] = {}
     for code, r in RULES.items():
         sel = max((len(p) for p in options.select if code.startswith(p)), default=-1)
@@ -84,7 +85,7 @@ def _selected_rules(options: LintOptions) -> dict[str, Severity]:
             continue
         if options.select and sel < 0 and ext < 0:
             continue
-        if ign > max(sel, ext):
+        if ign >= 0 and ign >= max(sel, ext):  # at equal specificity, ignore wins (as in ruff)
             continue
         out[code] = options.severity.get(code, r.severity)
     return out
