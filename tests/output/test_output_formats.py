@@ -69,7 +69,10 @@ def test_junit() -> None:
     root = ET.fromstring(out.split("\n", 1)[1] if out.startswith("<?xml") else out)
     suites = root.findall("testsuite")
     assert [s.get("name") for s in suites] == [SEED, CLEAN]
-    assert suites[0].get("failures") == "7" and suites[1].get("failures") == "0"
+    # two errors fail; the five infos are passing test cases that carry the finding
+    assert suites[0].get("failures") == "2" and suites[1].get("failures") == "0"
+    assert suites[0].get("tests") == "7"
+    assert len(suites[0].findall("testcase/system-out")) == 5
     assert suites[1].find("testcase") is not None
 
 
@@ -131,3 +134,29 @@ def test_sarif_validates_against_the_sarif_2_1_0_model() -> None:
     broken["runs"][0]["results"][0]["level"] = "fatal"  # not a SARIF level: the model refuses it
     with pytest.raises(ValueError):
         sarif_pydantic.Sarif.model_validate(broken)
+
+
+def test_gitlab_fingerprints_survive_moved_lines(tmp_path: Path) -> None:
+    data = Path(SEED).read_bytes()
+    first = tmp_path / "a.lis"
+    first.write_bytes(data)
+    _, out, _ = run("--output-format", "gitlab", str(first))
+    before = [i["fingerprint"] for i in json.loads(out)]
+    first.write_bytes(b"# a new comment line at the top\n" + data)
+    _, out, _ = run("--output-format", "gitlab", str(first))
+    after = json.loads(out)
+    assert [i["fingerprint"] for i in after] == before
+    assert after[0]["location"]["lines"]["begin"] == 20  # the line moved, the fingerprint did not
+
+
+def test_sarif_uris_are_percent_encoded_and_relative_to_srcroot(tmp_path: Path) -> None:
+    folder = tmp_path / "sub dir"
+    folder.mkdir()
+    odd = folder / "a b#ü.lis"
+    odd.write_bytes(Path(SEED).read_bytes())
+    proc = subprocess.run([sys.executable, "-m", "zero", "lint", "--output-format", "sarif", "sub dir/a b#ü.lis"],
+                          cwd=tmp_path, capture_output=True, text=True, check=False)
+    log = json.loads(proc.stdout)
+    location = log["runs"][0]["results"][0]["locations"][0]["physicalLocation"]["artifactLocation"]
+    assert location == {"uri": "sub%20dir/a%20b%23%C3%BC.lis", "uriBaseId": "%SRCROOT%"}
+    assert log["runs"][0]["originalUriBaseIds"]["%SRCROOT%"]["uri"] == tmp_path.as_uri() + "/"

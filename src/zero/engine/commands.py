@@ -134,7 +134,7 @@ def run_lint(request: LintRequest, registries: Registries, echo: Echo,
     files = collect_files(named, include=lambda f: finder.for_path(f).included(f),
                           exclude=lambda f: finder.for_path(f).excluded(f))
     if not files and any(p.is_dir() for p in named):
-        raise ZeroError("no list files found (looked for *.lis and *.lst)")
+        raise ZeroError("no list files or NC programs found (looked for *.lis, *.lst, *.nc, *.mpf, *.spf)")
     groups: dict[Path | None, list[Path]] = {}
     for f in files:  # files sharing a parameter description share a registry
         groups.setdefault(param_desc_of(finder.for_path(f), request.param_desc), []).append(f)
@@ -168,6 +168,7 @@ def _lint_machine(request: LintRequest, startup: Path, cli: LintOptions, finder:
     registry = registries(Path(request.param_desc) if request.param_desc else None)
     cfg = finder.for_path(startup)
     machine, results = lint_machine(startup, registry, cli, cfg.machine_lists, cfg.machine_workdir)
+    require_startup(machine, registry)
     for f in collect_files([Path(p) for p in request.paths]):  # programs and lists named as well
         if f.suffix.lower() in PROGRAM_SUFFIXES:
             results.append(lint_program(read_file(f), registry, str(f), cli, machine))
@@ -402,8 +403,18 @@ def machine_of(startup: Path | None, registries: Registries, param_desc: str | P
     path = startup or cfg.machine
     if path is None:
         raise ZeroError("name the start-up list with --machine (or [tool.zero.machine] startup)")
-    return load_machine(path, registries(Path(param_desc) if param_desc else None), None, cfg.machine_lists,
-                        cfg.machine_workdir)
+    registry = registries(Path(param_desc) if param_desc else None)
+    return require_startup(load_machine(path, registry, None, cfg.machine_lists, cfg.machine_workdir), registry)
+
+
+def require_startup(machine: Machine, registry: Registry) -> Machine:
+    """A machine question needs a start-up list: refuse another kind of list plainly."""
+    doc = machine.startup.values.doc
+    kind = registry.detect_kind((e.key.pattern for e in doc.entries if e.key), doc.path)
+    if not machine.named and kind not in (None, "STUP"):
+        raise ZeroError(f"not a start-up list: it reads as a {KINDS[kind][1]} and names no other list; "
+                        "give the start-up list (hochlauf.lis)", doc.path)
+    return machine
 
 
 def run_limits(machine: Path | None, registries: Registries, all_groups: bool = False,

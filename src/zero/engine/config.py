@@ -12,7 +12,7 @@ select = ["S", "R", "M"]          # codes or prefixes; default: all
 extend-select = ["Z"]
 ignore = ["M003"]
 exclude = ["old/**"]              # never linted, even when named on the command line
-include = ["*.lis", "*.lst"]      # what a directory walk picks up
+include = ["*.lis", "*.lst", "*.nc"]  # what a directory walk picks up
 param-desc = "vendor/CncParaDesc.xml"
 
 [tool.zero.per-file-ignores]
@@ -53,7 +53,7 @@ from zero.rules import RULES
 from zero.structured.toml import scan_toml
 
 CONFIG_NAMES = ("zero.toml", ".zero.toml", "pyproject.toml")
-DEFAULT_INCLUDE = ("*.lis", "*.lst")
+DEFAULT_INCLUDE = ("*.lis", "*.lst", "*.nc", "*.mpf", "*.spf")  # lists and NC programs
 _KEYS = ("select", "extend-select", "ignore", "per-file-ignores", "severity", "kind", "include",
          "exclude", "param-desc", "machine")
 

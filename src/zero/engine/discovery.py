@@ -8,7 +8,7 @@ import os
 from collections.abc import Callable, Iterable
 from pathlib import Path
 
-from zero.engine.lint import LIST_SUFFIXES
+from zero.engine.lint import LIST_SUFFIXES, PROGRAM_SUFFIXES
 from zero.errors import ZeroError
 from zero.files import check_regular
 
@@ -36,8 +36,9 @@ def collect_files(paths: Iterable[str | Path], include: Callable[[Path], bool] |
                   respect_gitignore: bool = True) -> list[Path]:
     """Files named explicitly, plus list files below named directories (sorted).
 
-    ``include`` decides which files a directory walk picks up (default: ``*.lis``,
-    ``*.lst``); ``exclude`` drops files and directories, named ones included. A
+    ``include`` decides which files a directory walk picks up (default: lists ``*.lis``,
+    ``*.lst`` and NC programs ``*.nc``, ``*.mpf``, ``*.spf``); ``exclude`` drops files and
+    directories, named ones included. A
     directory walk skips what ``.gitignore`` ignores when the directory is in a git
     work tree (named files are always linted).
     """
@@ -55,7 +56,7 @@ def collect_files(paths: Iterable[str | Path], include: Callable[[Path], bool] |
                     if visible is not None and os.path.normpath(os.path.join(rel_root, f)) not in visible:
                         continue
                     path = Path(root) / f
-                    if (include(path) if include else f.lower().endswith(LIST_SUFFIXES)) and \
+                    if (include(path) if include else f.lower().endswith(LIST_SUFFIXES + PROGRAM_SUFFIXES)) and \
                             not (exclude and exclude(path)):
                         found.append(path)
             out.extend(sorted(found, key=str))

@@ -7,7 +7,9 @@ from __future__ import annotations
 import hashlib
 import json
 import os
+import urllib.parse
 from collections.abc import Callable, Sequence
+from pathlib import Path
 from typing import TextIO
 
 from zero import __version__
@@ -49,38 +51,67 @@ def render_github(results: Sequence[LintResult], stream: TextIO) -> None:
         stream.write(f"::{level[d.severity]} {props}::{_gh_escape(f'{d.code} {d.message}')}\n")
 
 
+def _subject(d: Diagnostic, r: LintResult) -> str:
+    """What a finding is about, without its line: the key (or the line's text) it stands on."""
+    text = r.document.line_text(d.span.line) if d.span.line <= len(r.document.lines) else ""
+    return text.split(None, 1)[0] if text.strip() else ""
+
+
 def render_gitlab(results: Sequence[LintResult], stream: TextIO) -> None:
-    """GitLab code quality report (a JSON array of issues)."""
+    """GitLab code quality report (a JSON array of issues). The fingerprint stays the same when
+    lines move: it is made of the path, the code, the key the finding stands on and which
+    occurrence of that triple it is, not of the line number."""
     severity = {Severity.ERROR: "major", Severity.WARNING: "minor", Severity.INFO: "info"}
     out = []
-    for d in _all(results):
-        fp = hashlib.sha256(f"{d.path}\0{d.code}\0{d.span.line}\0{d.message}".encode(
-            "utf-8", "surrogateescape")).hexdigest()
-        out.append({"description": f"{d.code} {d.message}", "check_name": d.code, "fingerprint": fp,
-                    "severity": severity[d.severity],
-                    "location": {"path": d.path, "lines": {"begin": d.span.line, "end": d.span.end_line}}})
+    for r in results:
+        seen: dict[tuple[str, str, str], int] = {}
+        for d in r.diagnostics:
+            ident = (d.path, d.code, d.param_id or _subject(d, r))
+            seen[ident] = seen.get(ident, 0) + 1
+            fp = hashlib.sha256("\0".join((*ident, str(seen[ident]))).encode("utf-8", "surrogateescape")).hexdigest()
+            out.append({"description": f"{d.code} {d.message}", "check_name": d.code, "fingerprint": fp,
+                        "severity": severity[d.severity],
+                        "location": {"path": d.path, "lines": {"begin": d.span.line, "end": d.span.end_line}}})
     stream.write(json.dumps(out, indent=2) + "\n")
 
 
 def render_junit(results: Sequence[LintResult], stream: TextIO) -> None:
-    """JUnit XML: one test suite per file, one failing test case per finding."""
+    """JUnit XML: one test suite per file, one test case per finding. Errors are failures;
+    warnings and infos are passing test cases that carry the finding in ``system-out``, so a CI
+    job fails on what ``zero lint`` exits 1 for (without ``--strict``)."""
     import xml.etree.ElementTree as ET  # start-up: only for JUnit output
+
+    def failing(r: LintResult) -> int:
+        return sum(1 for d in r.diagnostics if d.severity >= Severity.ERROR)
 
     total = sum(len(r.diagnostics) for r in results)
     suites = ET.Element("testsuites", name="zero", tests=str(max(total, len(results))),
-                        failures=str(total))
+                        failures=str(sum(failing(r) for r in results)))
     for r in results:
         suite = ET.SubElement(suites, "testsuite", name=r.path, tests=str(max(len(r.diagnostics), 1)),
-                              failures=str(len(r.diagnostics)))
+                              failures=str(failing(r)))
         if not r.diagnostics:
             ET.SubElement(suite, "testcase", name=f"{r.path} clean", classname=r.path)
         for d in r.diagnostics:
             case = ET.SubElement(suite, "testcase", name=f"{d.code} line {d.span.line}",
                                  classname=r.path, file=r.path, line=str(d.span.line))
-            failure = ET.SubElement(case, "failure", message=printable(d.message), type=d.code)
-            failure.text = (f"{d.path}:{d.span.line}:{d.span.column}: {d.code} {d.severity.label} "
-                            f"{printable(d.message)}")
+            text = f"{d.path}:{d.span.line}:{d.span.column}: {d.code} {d.severity.label} {printable(d.message)}"
+            if d.severity >= Severity.ERROR:
+                failure = ET.SubElement(case, "failure", message=printable(d.message), type=d.code)
+                failure.text = text
+            else:
+                ET.SubElement(case, "system-out").text = text
     stream.write(ET.tostring(suites, encoding="unicode", xml_declaration=True) + "\n")
+
+
+def artifact_uri(path: str) -> dict[str, str]:
+    """A SARIF artifact location: a percent-encoded URI reference, relative to ``%SRCROOT%`` (the
+    working directory) where the file lies below it, else an absolute ``file:`` URI."""
+    absolute = os.path.abspath(path)
+    rel = os.path.relpath(absolute)
+    if not rel.startswith(".."):
+        return {"uri": urllib.parse.quote(rel.replace(os.sep, "/")), "uriBaseId": "%SRCROOT%"}
+    return {"uri": Path(absolute).as_uri()}
 
 
 def render_sarif(results: Sequence[LintResult], stream: TextIO) -> None:
@@ -98,7 +129,7 @@ def render_sarif(results: Sequence[LintResult], stream: TextIO) -> None:
             "ruleId": d.code, "ruleIndex": index[d.code], "level": level[d.severity],
             "message": {"text": printable(d.message)},
             "locations": [{"physicalLocation": {
-                "artifactLocation": {"uri": d.path.replace(os.sep, "/")},
+                "artifactLocation": artifact_uri(d.path),
                 "region": {"startLine": d.span.line, "startColumn": d.span.column,
                            "endLine": d.span.end_line, "endColumn": d.span.end_column}}}],
         }
@@ -106,7 +137,8 @@ def render_sarif(results: Sequence[LintResult], stream: TextIO) -> None:
             item["properties"] = {"parameterId": d.param_id}
         res.append(item)
     log = {"$schema": "https://json.schemastore.org/sarif-2.1.0.json", "version": "2.1.0",
-           "runs": [{"tool": {"driver": {"name": "zero", "version": __version__,
+           "runs": [{"originalUriBaseIds": {"%SRCROOT%": {"uri": Path.cwd().as_uri() + "/"}},
+                     "tool": {"driver": {"name": "zero", "version": __version__,
                                          "informationUri": "https://zero.invalid/", "rules": rules}},
                      "results": res, "columnKind": "unicodeCodePoints"}]}
     stream.write(json.dumps(log, indent=2) + "\n")

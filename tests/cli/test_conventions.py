@@ -1,0 +1,42 @@
+"""Conventions through the real command line: discovery of NC programs, commands that need a
+start-up list, the pre-commit hooks for every form zero reads."""
+
+from __future__ import annotations
+
+import shutil
+from pathlib import Path
+
+import yaml
+
+from conftest import FIXTURES, ROOT, zero_cli
+
+
+def test_a_folder_of_nc_programs_is_linted(tmp_path: Path) -> None:
+    for program in (FIXTURES / "programs").glob("*.nc"):
+        shutil.copy(program, tmp_path / program.name)
+    run = zero_cli("lint", "--output-format", "concise", str(tmp_path))
+    assert run.code == 1, run
+    assert "bad.nc:" in run.stdout and "N001" in run.stdout
+    empty = tmp_path / "empty"
+    empty.mkdir()
+    run = zero_cli("lint", str(empty))
+    assert run.code == 2 and "no list files or NC programs found" in run.stderr
+
+
+def test_a_machine_command_refuses_a_list_that_is_not_a_start_up_list() -> None:
+    zero_list = FIXTURES / "machine" / "listen" / "nullp.lis"
+    for command in (["limits", "--machine"], ["lint", "--machine"], ["show", "--machine"]):
+        run = zero_cli(*command, str(zero_list))
+        assert run.code == 2, (command, run)
+        assert "not a start-up list: it reads as a zero-offset list" in run.stderr
+
+
+def test_pre_commit_hooks_cover_lists_programs_and_structured_forms() -> None:
+    hooks = {h["id"]: h for h in yaml.safe_load((ROOT / ".pre-commit-hooks.yaml").read_text())}
+    assert set(hooks) == {"zero-lint", "zero-lint-structured", "zero-format"}
+    import re
+
+    assert re.search(hooks["zero-lint"]["files"], "listen/achsmds1.lis")
+    assert re.search(hooks["zero-lint"]["files"], "prog/part.nc")
+    assert re.search(hooks["zero-lint-structured"]["files"], "machines/nullp.yaml")
+    assert re.search(hooks["zero-lint-structured"]["exclude"], ".pre-commit-config.yaml")
