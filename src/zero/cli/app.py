@@ -42,6 +42,7 @@ app = typer.Typer(
     add_completion=True,
     no_args_is_help=True,
     pretty_exceptions_enable=False,
+    rich_markup_mode=None,  # help text is plain: `[tool.zero]` and `[default: …]` stay as written
 )
 
 
@@ -86,7 +87,7 @@ def main_callback(
     version: Annotated[bool, typer.Option("--version", callback=_version, is_eager=True,
                                           help="Show the version and exit.")] = False,
     param_desc: Annotated[Path | None, typer.Option(
-        "--param-desc", help="Use this CncParaDesc.xml instead of the built-in table.",
+        "--param-desc", help="Use this CncParaDesc.xml instead of the built-in table.", metavar="FILE",
         envvar="ZERO_PARAM_DESC")] = None,
 ) -> None:
     """zero: lint ISG kernel CNC parameter lists before the machine boots."""
@@ -115,6 +116,8 @@ def _typer_parameter(option: Option) -> inspect.Parameter:
         extra["min"] = option.minimum
     else:
         annotation = option.type | None
+    if option.metavar:
+        extra["metavar"] = option.metavar
     marker = typer.Option(*names, help=option.help, **extra)
     return inspect.Parameter(option.dest, inspect.Parameter.KEYWORD_ONLY,
                              annotation=Annotated[annotation, marker], default=default)
@@ -131,7 +134,7 @@ def _lint(**params: Any) -> None:
 
 
 _paths = inspect.Parameter("paths", inspect.Parameter.POSITIONAL_OR_KEYWORD, default=None,
-                           annotation=Annotated[list[Path] | None, typer.Argument(help=PATHS_HELP)])
+                           annotation=Annotated[list[Path] | None, typer.Argument(help=PATHS_HELP, metavar="PATH...")])
 _lint.__signature__ = inspect.Signature(  # type: ignore[attr-defined]
     [_paths, *(_typer_parameter(o) for o in LINT_OPTIONS)])
 _lint.__annotations__ = {p.name: p.annotation for p in _lint.__signature__.parameters.values()}  # type: ignore[attr-defined]
@@ -144,17 +147,18 @@ app.command("lint")(_lint)
 @app.command()
 def convert(
     inputs: Annotated[list[str], typer.Argument(
-        help="Files to convert (list, YAML, TOML or JSON); - reads standard input.")],
+        help="Files to convert (list, YAML, TOML or JSON); - reads standard input.", metavar="FILE...")],
     to: Annotated[Format | None, typer.Option(
-        "--to", help="Output format [default: from -o's suffix; yaml for a list, lis otherwise].")] = None,
+        "--to", help="Output format [default: from -o's suffix; yaml for a list, lis otherwise].",
+        metavar="FORMAT")] = None,
     from_: Annotated[Format | None, typer.Option(
-        "--from", help="Input format [default: from the suffix; lis for standard input].")] = None,
+        "--from", help="Input format [default: from the suffix; lis for standard input].", metavar="FORMAT")] = None,
     output: Annotated[str | None, typer.Option(
-        "-o", "--output", help="Output file; - or nothing writes to standard output.")] = None,
+        "-o", "--output", help="Output file; - or nothing writes to standard output.", metavar="FILE")] = None,
     out_dir: Annotated[Path | None, typer.Option(
-        "--out-dir", help="Write one file per input here (name.yaml, name.lis, ...).")] = None,
+        "--out-dir", help="Write one file per input here (name.yaml, name.lis, ...).", metavar="DIR")] = None,
     force: Annotated[bool, typer.Option(help="Replace existing output files.")] = False,
-    kind: Annotated[str | None, typer.Option(help="List kind instead of detecting it.")] = None,
+    kind: Annotated[str | None, typer.Option(help="List kind instead of detecting it.", metavar="KIND")] = None,
     check: Annotated[bool, typer.Option(
         help="Lint the list a YAML/TOML/JSON input makes and report the findings.")] = True,
     strict: Annotated[bool, typer.Option(
@@ -193,17 +197,18 @@ def convert(
 
 @app.command()
 def diff(
-    a: Annotated[str, typer.Argument(help="Old side: list, YAML, TOML or JSON (- for stdin).")],
-    b: Annotated[str | None, typer.Argument(help="New side (omit with --defaults).")] = None,
+    a: Annotated[str, typer.Argument(help="Old side: list, YAML, TOML or JSON (- for stdin).", metavar="A")],
+    b: Annotated[str | None, typer.Argument(help="New side (omit with --defaults).", metavar="B")] = None,
     defaults: Annotated[bool, typer.Option(
         "--defaults", help="Compare A with the registry defaults: what this machine changed.")] = False,
     strict: Annotated[bool, typer.Option(
         help="Also show default-vs-absent and values written differently but equal.")] = False,
     comments: Annotated[bool, typer.Option(help="Comment changes count too.")] = False,
     output_format: Annotated[OutputFormat, typer.Option(
-        "--output-format", help="text (a table) or json (one object per change).")] = OutputFormat.text,
-    from_: Annotated[Format | None, typer.Option("--from", help="Format of both inputs.")] = None,
-    kind: Annotated[str | None, typer.Option(help="List kind instead of detecting it.")] = None,
+        "--output-format", help="text (a table) or json (one object per change).",
+        metavar="FORMAT")] = OutputFormat.text,
+    from_: Annotated[Format | None, typer.Option("--from", help="Format of both inputs.", metavar="FORMAT")] = None,
+    kind: Annotated[str | None, typer.Option(help="List kind instead of detecting it.", metavar="KIND")] = None,
     machine: Annotated[bool, typer.Option(
         "--machine", help="A and B are start-up lists: compare the machines' effective values list by list.")] = False,
 ) -> None:
@@ -229,15 +234,17 @@ def diff(
 @app.command()
 def show(
     args: Annotated[list[str] | None, typer.Argument(
-        help="A list, YAML, TOML or JSON file (- for stdin); with --machine: keys, IDs or patterns.")] = None,
+        help="A list, YAML, TOML or JSON file (- for stdin); with --machine: keys, IDs or patterns.",
+        metavar="FILE|KEY...")] = None,
     machine: Annotated[Path | None, typer.Option(
-        "--machine", help="Show the effective values of every list this start-up list loads, with origins.")] = None,
+        "--machine", help="Show the effective values of every list this start-up list loads, with origins.",
+        metavar="STARTUP")] = None,
     effective_: Annotated[bool, typer.Option(
         "--effective", help="With --machine: also the catalogue defaults of what no list sets.")] = False,
     output_format: Annotated[OutputFormat, typer.Option(
-        "--output-format", help="text or json (with --machine).")] = OutputFormat.text,
-    from_: Annotated[Format | None, typer.Option("--from", help="Input format.")] = None,
-    kind: Annotated[str | None, typer.Option(help="List kind instead of detecting it.")] = None,
+        "--output-format", help="text or json (with --machine).", metavar="FORMAT")] = OutputFormat.text,
+    from_: Annotated[Format | None, typer.Option("--from", help="Input format.", metavar="FORMAT")] = None,
+    kind: Annotated[str | None, typer.Option(help="List kind instead of detecting it.", metavar="KIND")] = None,
 ) -> None:
     """Print a list as the controller reads it: one parameter per line, grouped (for git textconv);
     with --machine, every list of a machine with each value's origin."""
@@ -268,10 +275,12 @@ def _effective(machine: Path | None, keys: list[str], with_defaults: bool, expla
 @app.command()
 def explain(
     keys: Annotated[list[str], typer.Argument(
-        help="Keys, IDs or patterns (kenngr.swe_pos, P-AXIS-00178, 'kenngr.*').")],
+        help="Keys, IDs or patterns (kenngr.swe_pos, P-AXIS-00178, 'kenngr.*').", metavar="KEY...")],
     machine: Annotated[Path | None, typer.Option(
-        "--machine", help="The start-up list [default: [tool.zero.machine] startup].")] = None,
-    output_format: Annotated[OutputFormat, typer.Option("--output-format", help="text or json.")] = OutputFormat.text,
+        "--machine", help="The start-up list [default: [tool.zero.machine] startup].",
+        metavar="STARTUP")] = None,
+    output_format: Annotated[OutputFormat, typer.Option("--output-format", help="text or json.",
+        metavar="FORMAT")] = OutputFormat.text,
 ) -> None:
     """Where the value of a parameter comes from on a machine: the list, the default list under it,
     or the catalogue, for every list of the machine that has it."""
@@ -284,8 +293,8 @@ def explain(
 @app.command()
 def schema(
     kind: Annotated[str | None, typer.Option(
-        help="Only this list kind (zero, axis, channel, ...); all kinds when omitted.")] = None,
-    output: Annotated[str | None, typer.Option("-o", "--output", help="Write to this file.")] = None,
+        help="Only this list kind (zero, axis, channel, ...); all kinds when omitted.", metavar="KIND")] = None,
+    output: Annotated[str | None, typer.Option("-o", "--output", help="Write to this file.", metavar="FILE")] = None,
     force: Annotated[bool, typer.Option(help="Replace an existing output file.")] = False,
     allow_unknown: Annotated[bool, typer.Option(
         help="Admit keys the registry does not know (by default they fail, like R001).")] = False,
@@ -310,13 +319,15 @@ def schema(
 @app.command()
 def limits(
     machine: Annotated[Path | None, typer.Option(
-        "--machine", help="The start-up list (hochlauf.lis) [default: [tool.zero.machine] startup].")] = None,
+        "--machine", help="The start-up list (hochlauf.lis) [default: [tool.zero.machine] startup].",
+        metavar="STARTUP")] = None,
     output_format: Annotated[OutputFormat, typer.Option(
-        "--output-format", help="text (a table) or json.")] = OutputFormat.text,
+        "--output-format", help="text (a table) or json.", metavar="FORMAT")] = OutputFormat.text,
     all_groups: Annotated[bool, typer.Option(
         "--all-groups", help="All 97 groups, not only G53..G59 and the ones the list sets.")] = False,
     profile: Annotated[str | None, typer.Option(
-        help="Also apply a rule set: ip247 (Siemens S5: offsets and limits within ±99.999999 m).")] = None,
+        help="Also apply a rule set: ip247 (Siemens S5: offsets and limits within ±99.999999 m).",
+        metavar="PROFILE")] = None,
 ) -> None:
     """Soft limits in the programming coordinate system, per work offset (G53..G59, G159=n) and axis."""
 
@@ -339,13 +350,16 @@ def limits(
 
 @app.command("format")
 def format_cmd(
-    paths: Annotated[list[Path], typer.Argument(help="List files or directories; - formats standard input.")],
+    paths: Annotated[list[Path], typer.Argument(help="List files or directories; - formats standard input.",
+        metavar="PATH...")],
     check: Annotated[bool, typer.Option("--check", help="Only say which files would change (exit 1).")] = False,
     diff: Annotated[bool, typer.Option("--diff", help="Show the changes as a unified diff; write nothing.")] = False,
-    config: Annotated[Path | None, typer.Option("--config", help="Use this configuration file.")] = None,
+    config: Annotated[Path | None, typer.Option("--config", help="Use this configuration file.",
+        metavar="FILE")] = None,
     isolated: Annotated[bool, typer.Option("--isolated", help="Ignore configuration files.")] = False,
     stdin_filename: Annotated[str | None, typer.Option(
-        "--stdin-filename", help="Format standard input as this file (its configuration applies).")] = None,
+        "--stdin-filename", help="Format standard input as this file (its configuration applies).",
+        metavar="NAME")] = None,
 ) -> None:
     """Rewrite lists in canonical layout (aligned values and comments); keys, values, comments
     and their order stay."""
@@ -369,9 +383,11 @@ def format_cmd(
 
 @app.command("config")
 def config_cmd(
-    path: Annotated[Path, typer.Argument(help="A list file or directory whose configuration to show.")] = Path("."),
+    path: Annotated[Path, typer.Argument(help="A list file or directory whose configuration to show.",
+        metavar="PATH")] = Path("."),
     show: Annotated[bool, typer.Option("--show", help="Print the effective configuration.")] = True,
-    config: Annotated[Path | None, typer.Option("--config", help="Use this configuration file.")] = None,
+    config: Annotated[Path | None, typer.Option("--config", help="Use this configuration file.",
+        metavar="FILE")] = None,
     isolated: Annotated[bool, typer.Option("--isolated", help="Ignore configuration files.")] = False,
 ) -> None:
     """Show the configuration that applies to PATH ([tool.zero], zero.toml, .zero.toml)."""
@@ -387,7 +403,7 @@ def config_cmd(
 
 @app.command("rule")
 def rule_cmd(
-    code: Annotated[str | None, typer.Argument(help="A rule code such as S004.")] = None,
+    code: Annotated[str | None, typer.Argument(help="A rule code such as S004.", metavar="CODE")] = None,
     all_: Annotated[bool, typer.Option("--all", help="Explain every rule.")] = False,
 ) -> None:
     """Explain a rule: what it checks, why it matters on the machine, and the fix."""
@@ -408,8 +424,9 @@ def rule_cmd(
 
 @app.command()
 def param(
-    name: Annotated[str, typer.Argument(help="A parameter ID (P-AXIS-00178) or key (kenngr.swe_pos).")],
-    kind: Annotated[str | None, typer.Option(help="List kind, where a key exists in several.")] = None,
+    name: Annotated[str, typer.Argument(help="A parameter ID (P-AXIS-00178), key (kenngr.swe_pos) or a word to search.",
+                                        metavar="NAME")],
+    kind: Annotated[str | None, typer.Option(help="List kind, where a key exists in several.", metavar="KIND")] = None,
 ) -> None:
     """Show what zero knows about a parameter: type, range, default, unit, meaning."""
 

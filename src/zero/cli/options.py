@@ -28,6 +28,7 @@ class Option:
     minimum: int | None = None
     negative: str | None = None  # the flag that sets a "flag" option back to False
     default: object = None
+    metavar: str | None = None  # the value's placeholder in --help
 
     @property
     def names(self) -> tuple[str, ...]:
@@ -39,33 +40,36 @@ PATHS_HELP = "List files or directories (*.lis, *.lst); - reads standard input."
 LINT_OPTIONS: tuple[Option, ...] = (
     Option("output_format", ("--output-format",),
            "text (for people), concise (one line each), json (a stable contract), github, gitlab, junit "
-           "or sarif.", choices=OUTPUT_FORMATS, default="text"),
+           "or sarif.", choices=OUTPUT_FORMATS, default="text", metavar="FORMAT"),
     Option("output_file", ("--output-file", "-o"),
-           "Write the report to this file (atomically) instead of stdout.", type=Path),
+           "Write the report to this file (atomically) instead of stdout.", type=Path, metavar="FILE"),
     Option("show_statistics", ("--statistics",), "Print the number of findings per code to stderr.", "flag",
            default=False),
     Option("exit_zero", ("--exit-zero",), "Exit 0 even when there are findings (usage errors still exit 2).",
            "flag", default=False),
     Option("config", ("--config",),
-           "Use this configuration file for every file (zero.toml or pyproject.toml).", type=Path),
+           "Use this configuration file for every file (zero.toml or pyproject.toml).", type=Path, metavar="FILE"),
     Option("isolated", ("--isolated",), "Ignore all configuration files.", "flag", default=False),
     Option("strict", ("--strict",), "Exit 1 on warnings too.", "flag", negative="--no-strict", default=False),
-    Option("select", ("--select",), "Only these codes or prefixes (repeatable, or comma-separated).", "multi"),
+    Option("select", ("--select",), "Only these codes or prefixes (repeatable, or comma-separated).", "multi",
+        metavar="CODES"),
     Option("extend_select", ("--extend-select",),
-           "Add these codes or prefixes to the selection (opt-in rules by their full code).", "multi"),
-    Option("ignore", ("--ignore",), "Skip these codes or prefixes (repeatable, or comma-separated).", "multi"),
-    Option("kind", ("--kind",), "List kind instead of detecting it: zero, axis, channel, tool, startup, ..."),
+           "Add these codes or prefixes to the selection (opt-in rules by their full code).", "multi", metavar="CODES"),
+    Option("ignore", ("--ignore",), "Skip these codes or prefixes (repeatable, or comma-separated).", "multi",
+        metavar="CODES"),
+    Option("kind", ("--kind",), "List kind instead of detecting it: zero, axis, channel, tool, startup, ...",
+        metavar="KIND"),
     Option("jobs", ("--jobs", "-j"),
            "Processes for many files (default: all cores; 0 = all cores, 1 = no parallelism).", type=int,
-           minimum=0),
+           minimum=0, metavar="N"),
     Option("fix", ("--fix",), "Apply safe fixes to the files.", "flag", default=False),
     Option("show_diff", ("--diff",), "Show the fixes as a unified diff; write nothing.", "flag", default=False),
     Option("unsafe_fixes", ("--unsafe-fixes",), "Also apply fixes that change what the controller reads.",
            "flag", default=False),
-    Option("stdin_filename", ("--stdin-filename",), "Lint standard input as this file (for editors)."),
+    Option("stdin_filename", ("--stdin-filename",), "Lint standard input as this file (for editors).", metavar="NAME"),
     Option("machine", ("--machine",),
            "Lint every list a start-up list (hochlauf.lis) names, plus the checks across them (X rules).",
-           type=Path),
+           type=Path, metavar="STARTUP"),
 )
 
 

@@ -79,8 +79,11 @@ def render_diff(changes: Sequence[Change], header: str, stream: TextIO | None = 
     styles = {"+": "green", "-": "red", "~": "yellow", "=": "dim", "#": "cyan"}
     for group, cells in rows(changes):
         table = Table(title=group, title_justify="left", title_style="bold", box=None, pad_edge=False)
-        for name in ("", "key", "ID", "old → new", "delta", ""):
-            table.add_column(name, no_wrap=name in ("key", "ID"))
+        for i, name in enumerate(("", "key", "ID", "old → new", "delta", "")):
+            if name == "delta":  # a number: never cut
+                table.add_column(name, no_wrap=True, min_width=max((len(r[i]) for r in cells), default=0))
+            else:  # values and notes fold onto the next line rather than lose characters
+                table.add_column(name, no_wrap=name in ("key", "ID"), overflow="fold")
         for r in cells:
             table.add_row(*r, style=styles.get(r[0], ""))
         console.print(table)
@@ -91,23 +94,45 @@ def _ip247_line(v: Ip247Violation) -> str:
     return f"IP247: {v.what} {fixed(v.value, 'mm')} outside ±99999.999 mm ({v.where})"
 
 
+_NUMBERS = {4, 5, 6, 7, 8}  # the columns of render_limits that hold numbers
+
+
 def render_limits(rows: Sequence[LimitRow], violations: Sequence[Ip247Violation] = (),
                   stream: TextIO | None = None, color: bool | None = None) -> None:
     """``zero limits``: a rich table on a terminal, aligned text otherwise."""
     stream = stream or sys.stdout
-    head = ("ch", "offset", "axis", "unit", "ACS min", "ACS max", "offset value", "PCS min", "PCS max", "")
+    head = ("ch", "offset", "axis", "unit", "ACS min", "ACS max", "offset", "PCS min", "PCS max", "")
     cells = [(str(r.channel), g_code(r.group), f"{r.axis_index} {r.axis_name}", r.unit,
               *(fixed(v) for v in (r.acs_neg, r.acs_pos, r.offset, r.pcs_neg, r.pcs_pos)),
               r.note) for r in rows]
     if use_color(stream) if color is None else color:
+        from rich.box import SIMPLE_HEAD  # start-up: as above
         from rich.console import Console  # start-up: rich only on a terminal
         from rich.table import Table  # start-up: as above
 
-        table = Table(*head, title="soft limits in the programming coordinate system", title_justify="left")
+        table = Table(title="soft limits in the programming coordinate system", title_justify="left",
+                      box=SIMPLE_HEAD, pad_edge=False, collapse_padding=True)
+        for i, name in enumerate(head):
+            # numbers are never cut: their column is as wide as the widest one; the note folds
+            widest = max((len(c[i]) for c in cells), default=0)
+            if i in _NUMBERS:
+                table.add_column(name, justify="right", no_wrap=True, min_width=widest)
+            elif i == len(head) - 1:
+                table.add_column(name, overflow="fold", ratio=1, min_width=8)
+            else:
+                table.add_column(name, no_wrap=True, min_width=widest)
         for c in cells:
             table.add_row(*c)
         console = Console(file=stream, force_terminal=True, highlight=False, emoji=False, markup=False)
-        console.print(table)
+        needed = sum(max(len(head[i]), *(len(c[i]) for c in cells)) if cells else len(head[i])
+                     for i in range(len(head) - 1)) + 2 * len(head) + 8
+        if needed <= console.width:
+            console.print(table)
+        else:  # too narrow for the table: one line per row, nothing cut (a long line wraps)
+            console.print("soft limits in the programming coordinate system", style="bold")
+            for c in cells:
+                console.print(f"ch {c[0]} {c[1]} axis {c[2]} ({c[3]}): ACS {c[4]} .. {c[5]}, offset {c[6]}, "
+                              f"PCS {c[7]} .. {c[8]}" + (f" ({c[9]})" if c[9] else ""))
         for v in violations:
             console.print(_ip247_line(v), style="bold red")
         return
