@@ -80,6 +80,7 @@ def lint(paths: Sequence[str | Path] = (), output_format: str = "text", output_f
          extend_select: Sequence[str] = (),
          kind: str | None = None, jobs: int | None = None, fix: bool = False, show_diff: bool = False,
          unsafe_fixes: bool = False, stdin_filename: str | None = None, machine: str | Path | None = None,
+         add_noqa: bool = False,
          param_desc: str | Path | None = None) -> int:
     """``zero lint``: report what the controller will do with the files; the exit code."""
     if output_format not in OUTPUT_FORMATS:
@@ -88,7 +89,7 @@ def lint(paths: Sequence[str | Path] = (), output_format: str = "text", output_f
         raise ZeroError("give list files or directories (or - with --stdin-filename)")
     request = LintRequest([str(p) for p in paths], tuple(select), tuple(ignore), kind, param_desc, jobs,
                           config, isolated, fix, show_diff, unsafe_fixes, stdin_filename, machine,
-                          tuple(extend_select))
+                          tuple(extend_select), add_noqa)
     bar = ProgressBar()
     try:
         run = run_lint(request, REGISTRIES, echo(), read_stdin, bar.start)

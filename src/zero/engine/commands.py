@@ -15,6 +15,7 @@ from pathlib import Path
 
 from zero.catalog.registry import KINDS, Registry, kind_from_name
 from zero.diff import Change, DiffOptions, Side, diff_defaults, diff_sides, read_side
+from zero.engine.baseline import add_noqa
 from zero.engine.config import Config, ConfigFinder
 from zero.engine.convert import source_format
 from zero.engine.discovery import collect_files
@@ -101,6 +102,7 @@ class LintRequest:
     stdin_filename: str | None = None
     machine: str | Path | None = None
     extend_select: Sequence[str] = ()
+    add_noqa: bool = False
 
     @property
     def reads_stdin(self) -> bool:
@@ -155,6 +157,11 @@ def run_lint(request: LintRequest, registries: Registries, echo: Echo,
     results = [_with_machine(f, by_file[f], finder.for_path(f), cli, request.param_desc, registries, machines)
                for f in files]
     run = LintRun(results, findings_to_stderr=request.show_diff)
+    if request.add_noqa:
+        run.results = [_add_noqa(f, r, finder.for_path(f).options_for(f, cli),
+                                 registries(param_desc_of(finder.for_path(f), request.param_desc)), echo, run)
+                       for f, r in zip(files, results, strict=True)]
+        return run
     if request.fix or request.show_diff:
         run.results = [_fix_one(f, r, finder.for_path(f).options_for(f, cli),
                                 registries(param_desc_of(finder.for_path(f), request.param_desc)),
@@ -243,6 +250,23 @@ def _fix_one(path: Path, result: LintResult, options: LintOptions, registry: Reg
     write_atomic(path, fixed.fixed, force=True)
     echo.err(f"zero: {path}: {fixed.applied} fix{'es' if fixed.applied != 1 else ''} applied\n")
     return fixed.result
+
+
+def _add_noqa(path: Path, result: LintResult, options: LintOptions, registry: Registry, echo: Echo,
+              run: LintRun) -> LintResult:
+    """Record a list's findings as ``noqa`` directives; return what is still reported."""
+    if not _is_list(str(path)) or is_unreadable(result) or not result.diagnostics:
+        return result
+    data = read_file(path)
+    baseline = add_noqa(lint_bytes(data, registry, str(path), options))
+    if baseline.added:
+        write_atomic(path, baseline.data, force=True)
+        run.changed += 1
+        echo.err(f"zero: {path}: {baseline.added} noqa directive{'s' if baseline.added != 1 else ''} added\n")
+    if baseline.unplaced:
+        echo.err(f"zero: {path}: {baseline.unplaced} finding{'s' if baseline.unplaced != 1 else ''} on lines "
+                 "without an entry cannot be recorded on their line\n")
+    return lint_bytes(baseline.data, registry, str(path), options)
 
 
 # ---------------------------------------------------------------------------- format
