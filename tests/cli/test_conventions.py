@@ -40,3 +40,20 @@ def test_pre_commit_hooks_cover_lists_programs_and_structured_forms() -> None:
     assert re.search(hooks["zero-lint"]["files"], "prog/part.nc")
     assert re.search(hooks["zero-lint-structured"]["files"], "machines/nullp.yaml")
     assert re.search(hooks["zero-lint-structured"]["exclude"], ".pre-commit-config.yaml")
+
+
+def test_param_desc_after_the_command_as_before_it(corpus: Path) -> None:
+    xml = str(corpus / "isg-sdk" / "meta-data" / "CncParaDesc.xml")
+    before = zero_cli("--param-desc", xml, "param", "kenngr.antr_typ")
+    after = zero_cli("param", "kenngr.antr_typ", "--param-desc", xml)
+    assert before.code == after.code == 0 and before.stdout == after.stdout
+    assert "1 Conventional drive interface" in after.stdout
+    lean = zero_cli("lint", "--param-desc", "/no/such.xml", str(FIXTURES / "seed"))
+    assert lean.code == 2 and "cannot read parameter description /no/such.xml" in lean.stderr
+
+
+def test_severity_accepts_prefixes(tmp_path: Path) -> None:
+    (tmp_path / "zero.toml").write_text('[severity]\nM = "error"\nM003 = "warning"\n')
+    shutil.copy(FIXTURES / "seed" / "nullp_3achsen.lis", tmp_path / "n.lis")
+    run = zero_cli("lint", "--output-format", "concise", str(tmp_path / "n.lis"))
+    assert "M003 warning" in run.stdout  # the longer prefix (the full code) wins

@@ -62,6 +62,18 @@ class _State:
     param_desc: Path | None = None
 
 
+def _param_desc_given(value: Path | None) -> Path | None:
+    """``--param-desc`` after the command: the same as before it."""
+    if value is not None:
+        state.param_desc = value
+    return value
+
+
+ParamDesc = Annotated[Path | None, typer.Option(
+    "--param-desc", help="Use this CncParaDesc.xml instead of the built-in table.", metavar="FILE",
+    callback=_param_desc_given, expose_value=True)]
+
+
 state = _State()
 
 
@@ -130,7 +142,8 @@ def _lint(**params: Any) -> None:
     params["ignore"] = params.get("ignore") or []
     params["extend_select"] = params.get("extend_select") or []
     params = {k: v.value if isinstance(v, StrEnum) else v for k, v in params.items()}
-    _run(lambda: run_lint_command(param_desc=state.param_desc, **params))
+    params["param_desc"] = params.get("param_desc") or state.param_desc
+    _run(lambda: run_lint_command(**params))
 
 
 _paths = inspect.Parameter("paths", inspect.Parameter.POSITIONAL_OR_KEYWORD, default=None,
@@ -163,6 +176,7 @@ def convert(
         help="Lint the list a YAML/TOML/JSON input makes and report the findings.")] = True,
     strict: Annotated[bool, typer.Option(
         help="Refuse (exit 1, nothing written) when that lint finds an error.")] = False,
+    param_desc: ParamDesc = None,
 ) -> None:
     """Convert lists to YAML/TOML/JSON and back, keeping values, order, comments and layout."""
 
@@ -211,6 +225,7 @@ def diff(
     kind: Annotated[str | None, typer.Option(help="List kind instead of detecting it.", metavar="KIND")] = None,
     machine: Annotated[bool, typer.Option(
         "--machine", help="A and B are start-up lists: compare the machines' effective values list by list.")] = False,
+    param_desc: ParamDesc = None,
 ) -> None:
     """Compare two lists by parameter: added, removed, changed, with mm/° deltas.
 
@@ -245,6 +260,7 @@ def show(
         "--output-format", help="text or json (with --machine).", metavar="FORMAT")] = OutputFormat.text,
     from_: Annotated[Format | None, typer.Option("--from", help="Input format.", metavar="FORMAT")] = None,
     kind: Annotated[str | None, typer.Option(help="List kind instead of detecting it.", metavar="KIND")] = None,
+    param_desc: ParamDesc = None,
 ) -> None:
     """Print a list as the controller reads it: one parameter per line, grouped (for git textconv);
     with --machine, every list of a machine with each value's origin."""
@@ -281,6 +297,7 @@ def explain(
         metavar="STARTUP")] = None,
     output_format: Annotated[OutputFormat, typer.Option("--output-format", help="text or json.",
         metavar="FORMAT")] = OutputFormat.text,
+    param_desc: ParamDesc = None,
 ) -> None:
     """Where the value of a parameter comes from on a machine: the list, the default list under it,
     or the catalogue, for every list of the machine that has it."""
@@ -298,6 +315,7 @@ def schema(
     force: Annotated[bool, typer.Option(help="Replace an existing output file.")] = False,
     allow_unknown: Annotated[bool, typer.Option(
         help="Admit keys the registry does not know (by default they fail, like R001).")] = False,
+    param_desc: ParamDesc = None,
 ) -> None:
     """Print a JSON Schema of the structured (YAML/TOML/JSON) form for editors."""
 
@@ -328,6 +346,7 @@ def limits(
     profile: Annotated[str | None, typer.Option(
         help="Also apply a rule set: ip247 (Siemens S5: offsets and limits within ±99.999999 m).",
         metavar="PROFILE")] = None,
+    param_desc: ParamDesc = None,
 ) -> None:
     """Soft limits in the programming coordinate system, per work offset (G53..G59, G159=n) and axis."""
 
@@ -360,6 +379,7 @@ def format_cmd(
     stdin_filename: Annotated[str | None, typer.Option(
         "--stdin-filename", help="Format standard input as this file (its configuration applies).",
         metavar="NAME")] = None,
+    param_desc: ParamDesc = None,
 ) -> None:
     """Rewrite lists in canonical layout (aligned values and comments); keys, values, comments
     and their order stay."""
@@ -427,6 +447,7 @@ def param(
     name: Annotated[str, typer.Argument(help="A parameter ID (P-AXIS-00178), key (kenngr.swe_pos) or a word to search.",
                                         metavar="NAME")],
     kind: Annotated[str | None, typer.Option(help="List kind, where a key exists in several.", metavar="KIND")] = None,
+    param_desc: ParamDesc = None,
 ) -> None:
     """Show what zero knows about a parameter: type, range, default, unit, meaning."""
 

@@ -23,8 +23,8 @@ def main() -> None:
         if parsed is not None:
             from zero.cli.run import lint  # start-up: the engine only once the arguments are known
 
-            param_desc = os.environ.get("ZERO_PARAM_DESC") or None
-            raise SystemExit(guard(lambda: lint(param_desc=param_desc, **parsed)))  # type: ignore[arg-type]
+            parsed["param_desc"] = parsed.get("param_desc") or os.environ.get("ZERO_PARAM_DESC") or None
+            raise SystemExit(guard(lambda: lint(**parsed)))  # type: ignore[arg-type]
     from zero.cli.app import main as typer_main  # start-up: typer only off the lean path
 
     typer_main()

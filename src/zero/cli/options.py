@@ -70,6 +70,8 @@ LINT_OPTIONS: tuple[Option, ...] = (
     Option("unsafe_fixes", ("--unsafe-fixes",), "Also apply fixes that change what the controller reads.",
            "flag", default=False),
     Option("stdin_filename", ("--stdin-filename",), "Lint standard input as this file (for editors).", metavar="NAME"),
+    Option("param_desc", ("--param-desc",), "Use this CncParaDesc.xml instead of the built-in table.",
+           type=Path, metavar="FILE"),
     Option("machine", ("--machine",),
            "Lint every list a start-up list (hochlauf.lis) names, plus the checks across them (X rules).",
            type=Path, metavar="STARTUP"),

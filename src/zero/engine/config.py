@@ -285,14 +285,20 @@ def parse_config(path: Path, text: str | None = None) -> Config | None:
         elif key == "severity":
             if not isinstance(value, dict):
                 raise fail(key, "expected a table of CODE = \"error\" | \"warning\" | \"info\"")
+            given: dict[str, Severity] = {}
             for code, sev in value.items():
-                if code.upper() not in RULES:
-                    raise fail(code, f"{code!r} is not a rule code", ("severity",))
+                prefix = code.strip().upper()
+                if not any(c.startswith(prefix) for c in RULES):
+                    raise fail(code, f"{code!r} matches no rule code (see `zero rule`)", ("severity",))
                 try:
-                    cfg.severity[code.upper()] = Severity.parse(sev if isinstance(sev, str) else "")
+                    given[prefix] = Severity.parse(sev if isinstance(sev, str) else "")
                 except ValueError:
                     raise fail(code, f"{sev!r} is not a severity (error, warning or info)",
                                ("severity",)) from None
+            for c in RULES:  # a prefix sets every code it matches; the longest prefix wins
+                best = max((p for p in given if c.startswith(p)), key=len, default=None)
+                if best is not None:
+                    cfg.severity[c] = given[best]
         elif key == "kind":
             if not isinstance(value, dict):
                 raise fail(key, "expected a table of glob = kind")
