@@ -50,3 +50,15 @@ def test_a_missing_record_says_what_is_written(registry: Registry) -> None:
     result = convert(OFFSET.format(5).encode(), "yaml", "lis", registry, "t.yaml", check=False)
     assert result.notes == ["no `_zero` record: the list is written in UTF-8 with LF line endings and the "
                             "canonical layout (convert the original list again to keep its encoding and layout)"]
+
+
+@pytest.mark.parametrize(("text", "line", "column"), [
+    ("np_grp:\n  # comment with \x01 control\n  1:\n    achse:\n      0:\n        versch: 5\n", 2, 18),
+    ("a: 1\n# tail \x03 comment\n", 2, 8),
+])
+def test_a_character_yaml_refuses_is_located_even_in_a_comment(
+        registry: Registry, text: str, line: int, column: int) -> None:
+    with pytest.raises(ZeroError, match="is not allowed in YAML") as info:
+        convert(text.encode(), "yaml", "lis", registry, "t.yaml")
+    assert (info.value.line, info.value.column) == (line, column)
+    assert "\n" not in str(info.value)

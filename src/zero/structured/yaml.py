@@ -305,8 +305,15 @@ def _yaml_stream(text: str, path: str) -> tuple[list[tuple[int, int, int, Leaf]]
         problem = exc.problem or "not valid YAML"
         raise ZeroError(f"not valid YAML: {problem}", path,
                            mark.line + 1 if mark else None, mark.column + 1 if mark else None) from None
+    except yaml.reader.ReaderError as exc:  # a character YAML does not allow, anywhere (comments too)
+        at = int(exc.position)
+        line = text.count("\n", 0, at) + 1
+        column = at - (text.rfind("\n", 0, at) + 1) + 1
+        code = exc.character if isinstance(exc.character, int) else ord(str(exc.character)[:1] or "?")
+        raise ZeroError(f"not valid YAML: character U+{code:04X} is not allowed in YAML (not even in a comment)",
+                        path, line, column) from None
     except yaml.YAMLError as exc:
-        raise ZeroError(f"not valid YAML: {exc}", path) from None
+        raise ZeroError(f"not valid YAML: {' '.join(str(exc).split())}", path) from None
     finally:
         loader.dispose()
     if not seen_root:
