@@ -30,7 +30,6 @@ import contextlib
 import errno
 import os
 import re
-import secrets
 import signal
 import stat
 import sys
@@ -171,7 +170,7 @@ def _pid_alive(pid: int) -> bool:
 
 def temp_name(target: Path) -> Path:
     """The temporary file a write to ``target`` uses: hidden, with this process's ID."""
-    return target.parent / f".{target.name}.zero-{os.getpid()}-{secrets.token_hex(4)}.tmp"
+    return target.parent / f".{target.name}.zero-{os.getpid()}-{os.urandom(4).hex()}.tmp"
 
 
 def remove_stale_temps(target: Path) -> list[Path]:

@@ -25,3 +25,14 @@ def test_param_command_shows_the_one_match_or_lists_several() -> None:
     assert "P-AXIS-00177  kenngr.swe_neg  (axis parameter list)" in several.output
     none = runner.invoke(app, ["param", "xyzzy"])
     assert none.exit_code == 2
+
+
+def test_the_compiled_seeds_match_the_toml_source() -> None:
+    import json
+    import tomllib
+
+    from conftest import ROOT
+
+    data = ROOT / "src" / "zero" / "catalog" / "data"
+    assert json.loads((data / "seeds.json").read_text(encoding="utf-8")) == \
+        tomllib.loads((data / "seeds.toml").read_text(encoding="utf-8")), "run tools/gen_seeds.py"

@@ -13,7 +13,6 @@ line keeps a process-wide registry.
 from __future__ import annotations
 
 import json
-import tomllib
 from collections import Counter
 from collections.abc import Iterable, Iterator, Mapping
 from dataclasses import dataclass, field
@@ -314,8 +313,10 @@ def _spec_from_row(row: dict[str, Any], index_base: dict[str, int]) -> ParamSpec
 
 
 def _overlay() -> dict[str, Any]:
-    text = (_DATA / "seeds.toml").read_text(encoding="utf-8")
-    return tomllib.loads(text)
+    """``data/seeds.toml`` as ``tools/gen_seeds.py`` compiled it to JSON (no TOML parser at
+    start-up; a test holds the two equal)."""
+    data: dict[str, Any] = json.loads((_DATA / "seeds.json").read_text(encoding="utf-8"))
+    return data
 
 
 def build_registry(rows: list[dict[str, Any]], source: str) -> Registry:

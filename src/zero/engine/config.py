@@ -39,9 +39,7 @@ import os
 import re
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any
-
-import pathspec
+from typing import TYPE_CHECKING, Any
 
 from zero.catalog.registry import kind_from_name
 from zero.diagnostics import Severity
@@ -52,6 +50,9 @@ from zero.machine.model import BY_KEY
 from zero.rules import RULES
 from zero.structured.toml import scan_toml
 
+if TYPE_CHECKING:
+    from pathspec import GitIgnoreSpec
+
 CONFIG_NAMES = ("zero.toml", ".zero.toml", "pyproject.toml")
 DEFAULT_INCLUDE = ("*.lis", "*.lst", "*.nc", "*.mpf", "*.spf")  # lists and NC programs
 _KEYS = ("select", "extend-select", "ignore", "per-file-ignores", "severity", "kind", "include",
@@ -59,7 +60,7 @@ _KEYS = ("select", "extend-select", "ignore", "per-file-ignores", "severity", "k
 
 
 @functools.lru_cache(maxsize=512)
-def patterns(globs: tuple[str, ...]) -> pathspec.GitIgnoreSpec:
+def patterns(globs: tuple[str, ...]) -> GitIgnoreSpec:
     """Patterns with gitignore's meaning (``old/``, ``/old/**``, ``**/nullp*.lis``, ``[n]*``),
     relative to the configuration's directory (a leading ``./`` is allowed); :class:`ZeroError`
     for a pattern that cannot be read."""
@@ -69,6 +70,8 @@ def patterns(globs: tuple[str, ...]) -> pathspec.GitIgnoreSpec:
         if text.count("[") > text.count("]"):
             raise ZeroError(f"pattern {g!r}: `[` is not closed")
         lines.append(text)
+    import pathspec  # start-up: only where a pattern is matched (not for files named with the defaults)
+
     try:
         return pathspec.GitIgnoreSpec.from_lines(lines)
     except (ValueError, TypeError) as exc:

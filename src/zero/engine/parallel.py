@@ -51,8 +51,9 @@ def lint_many(files: list[Path], registry: Registry,
     jobs = min(jobs, cores * 4, max(1, len(files) // 16))
     if jobs <= 1 or len(files) < PARALLEL_MIN_FILES:
         serial = []
+        keep = (lambda r: r) if len(files) == 1 else _slim  # many files: memory does not grow with them
         for n, f in enumerate(files, 1):
-            serial.append(lint_file(f, registry, options_for(f)))
+            serial.append(keep(lint_file(f, registry, options_for(f))))
             if progress is not None and (n % 50 == 0 or n == len(files)):
                 progress(n, len(files))
         return serial

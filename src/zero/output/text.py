@@ -16,6 +16,7 @@ from zero.engine.lint import LintResult
 from zero.rules import RULES
 
 Segment = tuple[str, str]  # (text, rich style)
+MAX_SHOWN_PER_CODE = 50  # the text report shows this many findings of one code per file, then a count
 _SEVERITY_STYLE = {Severity.ERROR: "bold red", Severity.WARNING: "bold yellow",
                    Severity.INFO: "bold blue"}
 _SOURCE_WINDOW = 120
@@ -124,10 +125,19 @@ def render_text(results: Sequence[LintResult], stream: TextIO | None = None,
     stream = stream or sys.stdout
     writer = TextWriter(stream, use_color(stream) if color is None else color)
     for r in results:
+        shown: Counter[str] = Counter()
         for d in r.diagnostics:
+            shown[d.code] += 1
+            if shown[d.code] > MAX_SHOWN_PER_CODE:
+                continue
             src = r.document.line_text(d.span.line) if d.span.line <= len(r.document.lines) else None
             for segs in diagnostic_lines(d, src):
                 writer.line(segs)
+        for code, n in sorted(shown.items()):
+            if n > MAX_SHOWN_PER_CODE:
+                writer.line([(f"{r.path}: … and {n - MAX_SHOWN_PER_CODE:,} more {code} findings in this file "
+                              "(every one is in --output-format json or concise)", "bold")])
+                writer.line([("", "")])
     if summary:
         worst = max((r.worst for r in results if r.worst is not None), default=None)
         style = _SEVERITY_STYLE[worst] if worst is not None else "bold green"
