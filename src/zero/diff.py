@@ -17,7 +17,7 @@ from typing import Any
 from zero.catalog.ids import AXIS_UNITS, g_code_with_index, in_units
 from zero.catalog.registry import NO_DEFAULT, ParamSpec, Registry
 from zero.catalog.values import default_number, parse_int, read_value
-from zero.lists.model import Comment, Entry, parse_key
+from zero.lists.model import Comment, Entry, ValueKind, parse_key
 from zero.lists.tokenizer import tokenize
 from zero.structured.formats import read_tree
 from zero.structured.tree import encode_list, to_list_text
@@ -99,6 +99,8 @@ def effective(entry: Entry, spec: ParamSpec | None) -> tuple[str, Any]:
         if v.problem is None and v.number is not None:
             return ("num", v.number)
         if v.problem is None and v.text is not None:
+            if entry.value_kind is ValueKind.FLAGS:  # `REPORT | PRINT` = `PRINT|REPORT`: a set of flags
+                return ("flags", tuple(sorted({p.strip() for p in v.text.split("|") if p.strip()})))
             return ("text", v.text)
     if entry.value_kind is not None and entry.value_kind.value in ("int", "hex"):
         n = parse_int(entry.value)

@@ -17,6 +17,7 @@ from typing import Any
 
 from zero.catalog.ranges import parse_range
 from zero.errors import ZeroError
+from zero.files import read_file
 
 _NS = "{https://www.isg-stuttgart.de/kernel/CncParaDesc}"
 
@@ -68,8 +69,10 @@ def _find(p: ET.Element, tag: str) -> str | None:
 def read_param_desc(path: str | Path, *, with_text: bool = False) -> list[dict[str, Any]]:
     """Parse the XML into registry rows; :class:`~zero.errors.ZeroError` on bad input."""
     try:
-        root = ET.parse(path).getroot()
-    except (OSError, ET.ParseError) as exc:
+        root = ET.fromstring(read_file(path))  # a regular file only: a FIFO or device is refused
+    except ZeroError as exc:
+        raise ZeroError(f"cannot read parameter description {path}: {exc.message}") from None
+    except ET.ParseError as exc:
         raise ZeroError(f"cannot read parameter description {path}: {exc}") from None
     if root.tag != f"{_NS}Parameters":
         raise ZeroError(f"not a CncParaDesc file (root element {root.tag!r})", str(path))

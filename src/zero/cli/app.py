@@ -390,9 +390,12 @@ def format_cmd(
         if [str(p) for p in paths] == ["-"]:
             return exits.found(bool(run.failed or (run.changed and (check or diff))))
         verb = "would be reformatted" if (check or diff) else "reformatted"
+        skipped = run.failed + run.unreadable
         sys.stderr.write(f"{run.changed} file{'s' if run.changed != 1 else ''} {verb}, "
-                         f"{run.files - run.changed - run.failed} unchanged"
-                         + (f", {run.failed} not formatted" if run.failed else "") + "\n")
+                         f"{run.files - run.changed - skipped} unchanged"
+                         + (f", {skipped} not formatted" if skipped else "") + "\n")
+        if run.unreadable:
+            return exits.USAGE  # a file could not be read, as zero lint says it
         return exits.found(bool(run.failed or (run.changed and (check or diff))))
 
     _run(body)

@@ -18,9 +18,9 @@ from zero.catalog.registry import Registry, load_registry
 from zero.cli import exits
 from zero.cli.options import OUTPUT_FORMATS
 from zero.engine.commands import Echo, LintRequest, run_lint
-from zero.engine.lint import LintResult
+from zero.engine.lint import LIST_SUFFIXES, PROGRAM_SUFFIXES, LintResult
 from zero.errors import ZeroError
-from zero.files import read_stream, write_atomic
+from zero.files import max_file_bytes, read_stream, write_atomic
 from zero.output.text import ProgressBar, render_text, statistics
 
 
@@ -38,6 +38,8 @@ class RegistryCache:
 
 
 REGISTRIES = RegistryCache()
+# A report (--output-file) replaces a previous report, never a list, a program or an input.
+REPORT_REFUSED = (*LIST_SUFFIXES, *PROGRAM_SUFFIXES)
 
 
 def _write_out(text: str) -> None:
@@ -83,6 +85,9 @@ def lint(paths: Sequence[str | Path] = (), output_format: str = "text", output_f
          add_noqa: bool = False,
          param_desc: str | Path | None = None) -> int:
     """``zero lint``: report what the controller will do with the files; the exit code."""
+    if add_noqa and (fix or show_diff):
+        raise ZeroError("--add-noqa writes the suppressions into the files: it does not go with --fix or --diff")
+    max_file_bytes()  # a bad ZERO_MAX_FILE_SIZE is one usage error, not one finding per file
     if output_format not in OUTPUT_FORMATS:
         raise ZeroError(f"unknown output format {output_format!r} (use one of: {', '.join(OUTPUT_FORMATS)})")
     if not paths and stdin_filename is None and machine is None:
@@ -100,7 +105,11 @@ def lint(paths: Sequence[str | Path] = (), output_format: str = "text", output_f
     if output_file is not None:
         buffer = io.StringIO()
         render_lint(run.results, output_format, buffer, color=False)
-        write_atomic(Path(output_file), buffer.getvalue().encode("utf-8", "surrogateescape"), force=True)
+        target = Path(output_file)
+        if target.suffix.lower() in REPORT_REFUSED:
+            raise ZeroError("looks like a list or NC program, not a report: not replaced", str(target))
+        inputs = tuple(Path(r.path) for r in run.results if r.path != "-")
+        write_atomic(target, buffer.getvalue().encode("utf-8", "surrogateescape"), force=True, inputs=inputs)
     else:
         render_lint(run.results, output_format, sys.stderr if run.findings_to_stderr else sys.stdout)
     if show_statistics:

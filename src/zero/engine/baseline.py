@@ -10,11 +10,14 @@ be suppressed on their line and are counted, not hidden.
 
 from __future__ import annotations
 
+import re
 from dataclasses import dataclass
 
 from zero.engine.lint import LintResult
 from zero.lists.encoding import document_bytes
-from zero.lists.model import Entry
+from zero.lists.model import CommentStyle, Entry
+
+_NOQA_CODES = re.compile(r"noqa\s*:\s*([A-Z][0-9A-Z]*(?:[\s,]+[A-Z][0-9A-Z]*)*)", re.IGNORECASE)
 
 NOT_RECORDED = ("Z001", "Z002")  # findings about suppressions themselves
 
@@ -37,11 +40,21 @@ def add_noqa(result: LintResult, reason: str = "baseline") -> Baseline:
     added = unplaced = 0
     for line, codes in sorted(codes_by_line.items()):
         item = doc.items[line - 1] if line <= len(doc.items) else None
-        if type(item) is not Entry or (item.comment and "noqa" in item.comment.lower()):
+        if type(item) is not Entry:
             unplaced += len(codes)
             continue
-        directive = f"noqa: {', '.join(sorted(codes))} -- {reason}"
         text = lines[line - 1].rstrip(" \t")
-        lines[line - 1] = f"{text}  {directive}" if item.comment is not None else f"{text}  ( {directive}"
+        existing = _NOQA_CODES.search(item.comment or "")
+        if existing is not None:  # a noqa with codes already: it gets the new ones too
+            have = {c for c in re.split(r"[,\s]+", existing.group(1)) if c}
+            start = item.comment_start + existing.start(1)
+            end = item.comment_start + existing.end(1)
+            lines[line - 1] = text[:start] + ", ".join(sorted(have | codes)) + text[end:]
+        elif item.comment is not None and "noqa" in item.comment.lower():
+            continue  # a bare noqa already hides every code of the line
+        elif item.comment is not None and item.comment_style is not CommentStyle.TEXT:
+            lines[line - 1] = f"{text}  noqa: {', '.join(sorted(codes))} -- {reason}"
+        else:  # no comment, or words after the value: open a `(` comment, the one a string allows
+            lines[line - 1] = f"{text}  ( noqa: {', '.join(sorted(codes))} -- {reason}"
         added += 1
     return Baseline(document_bytes(doc, lines), added, unplaced)

@@ -277,6 +277,7 @@ class FormatRun:
     files: int = 0
     changed: int = 0
     failed: int = 0
+    unreadable: int = 0
 
 
 def run_format(paths: Sequence[str | Path], registries: Registries, echo: Echo, check: bool = False,
@@ -293,9 +294,15 @@ def run_format(paths: Sequence[str | Path], registries: Registries, echo: Echo, 
                              param_desc)
     files = collect_files([Path(p) for p in paths], include=lambda f: finder.for_path(f).included(f),
                           exclude=lambda f: finder.for_path(f).excluded(f))
-    run = FormatRun(len(files))
-    for f in files:
-        data = read_file(f)
+    lists = [f for f in files if _is_list(str(f))]  # NC programs and structured forms are not reformatted
+    run = FormatRun(len(lists))
+    for f in lists:
+        try:
+            data = read_file(f)
+        except ZeroError as exc:  # one file that cannot be read: said, and the others go on
+            echo.err(f"zero: {exc} (not formatted)\n")
+            run.unreadable += 1
+            continue
         registry = registries(param_desc_of(finder.for_path(f), param_desc))
         new = _formatted(data, str(f), registry, echo, run)
         if new is None or new == data:
@@ -323,6 +330,10 @@ def _format_stdin(data: bytes, name: str, finder: ConfigFinder, registries: Regi
                   check: bool, show_diff: bool, param_desc: str | Path | None) -> FormatRun:
     run = FormatRun(1)
     cfg = finder.for_path(Path(name))
+    if not _is_list(name):  # an NC program or a structured form passes through unchanged
+        if not (check or show_diff):
+            echo.out_bytes(data)
+        return run
     new = None if name != "-" and cfg.excluded(Path(name)) else \
         _formatted(data, name, registries(param_desc_of(cfg, param_desc)), echo, run)
     if new is not None and new != data:

@@ -45,6 +45,7 @@ from zero.catalog.registry import kind_from_name
 from zero.diagnostics import Severity
 from zero.engine.lint import LintOptions
 from zero.errors import ZeroError
+from zero.files import read_file
 from zero.lists.model import parse_key
 from zero.machine.model import BY_KEY
 from zero.rules import RULES
@@ -86,11 +87,9 @@ def _is_reference(key: str) -> bool:
 
 
 def _resolved(file: Path) -> Path:
-    """The absolute path of a file; a link loop or dangling link resolves through its directory."""
-    try:
-        return file.resolve()
-    except (OSError, RuntimeError):
-        return file.parent.resolve() / file.name
+    """The absolute path of a file under its own name: its directory resolved, the name kept (a
+    link named `m.lis` is matched as `m.lis`, whatever it points to)."""
+    return file.parent.resolve() / file.name
 
 
 @dataclass(slots=True)
@@ -199,9 +198,9 @@ def parse_config(path: Path, text: str | None = None) -> Config | None:
 
     if text is None:
         try:
-            text = path.read_text(encoding="utf-8")
-        except OSError as exc:
-            raise ZeroError(f"cannot read the configuration: {exc.strerror or exc}", str(path)) from None
+            text = read_file(path).decode("utf-8")  # a regular file only: a FIFO or device is refused
+        except ZeroError as exc:
+            raise ZeroError(f"cannot read the configuration: {exc.message}", str(path)) from None
         except UnicodeDecodeError:
             raise ZeroError("the configuration is not UTF-8", str(path)) from None
     try:
@@ -353,7 +352,7 @@ class ConfigFinder:
                 found = hit
                 break
             walked.append(d)
-            cfg = next((c for c in (parse_config(d / n) for n in CONFIG_NAMES if (d / n).is_file())
+            cfg = next((c for c in (parse_config(d / n) for n in CONFIG_NAMES if os.path.lexists(d / n))
                         if c is not None), None)
             if cfg is not None:
                 found = cfg

@@ -18,6 +18,7 @@ not there is missing, never replaced by a same-named file elsewhere.
 
 from __future__ import annotations
 
+import os
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -239,6 +240,13 @@ def working_directory(startup: Path, raws: list[str]) -> Path:
     return best
 
 
+def _inside(path: Path, root: Path) -> bool:
+    """Is ``path`` (links followed) below ``root``? A start-up list cannot make zero read, and
+    print, any file of the machine it runs on (``/proc/self/environ``, ``../../etc/passwd``)."""
+    real, base = os.path.realpath(path), os.path.realpath(root)
+    return real == base or real.startswith(base.rstrip(os.sep) + os.sep)
+
+
 def _read(key: str, path: Path, line: int, registry: Registry, kind: str,
           base: ListValues | None = None) -> ListFile:
     doc = tokenize(read_file(path), str(path))
@@ -287,6 +295,11 @@ def load_machine(startup_path: Path, registry: Registry, forced_kind: str | None
             return None
         else:
             n.path = Path(text) if Path(text).is_absolute() else root / text
+            if not _inside(n.path, root):
+                n.status = "unreadable"
+                n.reason = (f"lies outside the working directory {root}: not read (zero reads only the machine's "
+                            "own lists; `[tool.zero.machine]` can name it)")
+                return None
         try:
             lf = _read(n.key, n.path, n.line, registry, forced_kind or n.reference.kind, base)
         except ZeroError as exc:

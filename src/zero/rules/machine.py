@@ -9,9 +9,11 @@ from __future__ import annotations
 from collections.abc import Iterator
 
 from zero.catalog.ids import (
+    AXIS_LISTS,
     AXIS_NAME,
     AXIS_NR,
     COMP_AXIS,
+    COMP_LISTS,
     FULL_TURN,
     G53_AVAILABLE,
     INACTIVE,
@@ -22,7 +24,7 @@ from zero.catalog.ids import (
 )
 from zero.catalog.ranges import TYPE_LIMITS
 from zero.diagnostics import Diagnostic, Span
-from zero.machine.model import COUNT_KEYS, axis_of
+from zero.machine.model import COUNT_KEYS, REFERENCES, axis_of
 from zero.rules.base import E, Family, MachineContext, W
 
 FAMILY: Family[MachineContext] = Family("X", "machine (across lists, `zero lint --machine`)", "machine")
@@ -56,6 +58,19 @@ def check_missing(ctx: MachineContext) -> Iterator[Diagnostic]:
         yield ctx.report("X005", Span.on_line(m.line, 0, len(line)),
                          f"`{m.key}` names `{m.raw}`, which {m.reason} (working directory "
                          f"{machine.workdir}): {m.consequence}", path=str(startup.path))
+    for ref in REFERENCES:  # a count larger than the lists named: the controller looks for the rest
+        if ref.count not in (AXIS_LISTS, COMP_LISTS):
+            continue
+        entry = startup.entry(ref.count)
+        count = startup.number(ref.count)
+        named = {n.index for n in machine.named if n.reference is ref}
+        absent = [i for i in range(int(count or 0)) if i not in named]
+        if entry is not None and absent:
+            keys = ", ".join(f"{ref.key[:-2]}[{i}]" for i in absent[:4]) + (" …" if len(absent) > 4 else "")
+            yield ctx.report("X005", Span.on_line(entry.line, entry.value_start, entry.value_end),
+                             f"`{COUNT_KEYS[ref.count]}` is {int(count or 0)}, but the start-up list names no "
+                             f"{keys}: the controller looks for them, and {ref.missing}",
+                             param_id=ref.count, path=str(startup.path))
 
 
 BEYOND_COUNT = FAMILY.rule(

@@ -456,13 +456,14 @@ Fix: delete one of the entries (unsafe fix: removes the earlier line).
 @FAMILY.check(DUPLICATE_KEY)
 def check_duplicates(ctx: Context) -> Iterator[Diagnostic]:
     """R007: the later entry wins."""
-    seen: dict[str, Entry] = {}
+    seen: dict[tuple[str, tuple[int, ...]], Entry] = {}
     for e in ctx.entries:
         if e.key is None:
             continue
-        first = seen.get(e.key_text)
+        slot = (e.key.pattern, e.key.indices)  # `np_grp[01]` is element 1, as `np_grp[1]` is
+        first = seen.get(slot)
         if first is None:
-            seen[e.key_text] = e
+            seen[slot] = e
             continue
         spec = ctx.registry.by_pattern(e.key.pattern, ctx.kind)
         yield ctx.report(
@@ -477,7 +478,7 @@ def check_duplicates(ctx: Context) -> Iterator[Diagnostic]:
                 safe=False,
             ),
         )
-        seen[e.key_text] = e
+        seen[slot] = e
 
 
 ANNOTATION_MISMATCH = FAMILY.rule(
