@@ -175,3 +175,11 @@ def test_diff_of_two_lists_names_the_machines_default_list(tmp_path: Path, regis
     (machine / "pyproject.toml").unlink()
     [plain] = run_diff(str(old), str(new), registry, lambda: b"").changes
     assert plain.note == "now the default 100000000" and plain.delta == 9800.0
+
+
+def test_an_alias_counts_as_the_parameter_it_stands_for(registry: Registry, corpus: Path) -> None:
+    m = load_machine(corpus / "isg-sdk" / "listen" / "hochlauf.lis", registry)
+    scopes = effective(m, ["kenngr.homing.homing_type"], explain=True)
+    value = scopes[0].values[0]
+    assert (value.value, value.origin.source) == ("CNC_CONTROLLED", "list")  # written `kenngr.homing_type`
+    assert [o.source for _, o in value.layers] == ["list", "default list", "catalogue default"]

@@ -15,7 +15,7 @@ from dataclasses import dataclass, field
 
 from zero.catalog.registry import NO_DEFAULT, ParamSpec
 from zero.catalog.values import ListValues
-from zero.lists.model import Entry, parse_key
+from zero.lists.model import Entry, format_key, parse_key
 from zero.machine.model import ListFile, Machine
 
 LIST, DEFAULT_LIST, CATALOGUE, NOT_SET = "list", "default list", "catalogue default", "not set"
@@ -73,13 +73,22 @@ class Scope:
                 "values": [v.to_json() for v in self.values]}
 
 
+def canonical(values: ListValues, entry: Entry) -> str:
+    """The documented key an entry sets: an alias (`kenngr.homing_type`) counts as the key it
+    stands for (`kenngr.homing.homing_type`), with the entry's indices."""
+    if entry.key is None or values.registry.by_pattern(entry.key.pattern, values.kind) is not None:
+        return entry.key_text
+    spec = values.registry.alias(entry.key.pattern, values.kind)
+    return format_key(spec.key, entry.key.indices) if spec is not None and spec.key else entry.key_text
+
+
 def _entries(values: ListValues) -> dict[str, tuple[Entry, Origin]]:
-    """Key → (entry that wins, its origin): the default list first, the list over it."""
+    """Documented key → (entry that wins, its origin): the default list first, the list over it."""
     out: dict[str, tuple[Entry, Origin]] = {}
     if values.base is not None:
         out.update({k: (e, Origin(DEFAULT_LIST, o.path, o.line)) for k, (e, o) in _entries(values.base).items()})
     for e in values.doc.entries:
-        out[e.key_text] = (e, Origin(LIST, values.doc.path, e.line))
+        out[canonical(values, e)] = (e, Origin(LIST, values.doc.path, e.line))
     return out
 
 
@@ -110,7 +119,7 @@ def _layers(values: ListValues, key: str, spec: ParamSpec | None) -> tuple[tuple
     layer: ListValues | None = values
     source = LIST
     while layer is not None:
-        hit = next((e for e in reversed(layer.doc.entries) if e.key_text == key), None)
+        hit = next((e for e in reversed(layer.doc.entries) if canonical(layer, e) == key), None)
         out.append((hit.value, Origin(source, layer.doc.path, hit.line)) if hit is not None
                    else (None, Origin(NOT_SET, layer.doc.path)))
         layer, source = layer.base, DEFAULT_LIST
