@@ -141,7 +141,7 @@ def test_configuration_overrides_a_reference_and_the_working_directory(tmp_path:
 def test_diff_of_two_machines_compares_effective_values(tmp_path: Path, registry: Registry) -> None:
     import shutil
 
-    from zero.engine.commands import run_diff
+    from zero.engine.queries import run_diff
 
     other = tmp_path / "other"
     shutil.copytree(FIXTURES / "machine-layered", other)
@@ -160,7 +160,7 @@ def test_diff_of_two_machines_compares_effective_values(tmp_path: Path, registry
 def test_diff_of_two_lists_names_the_machines_default_list(tmp_path: Path, registry: Registry) -> None:
     import shutil
 
-    from zero.engine.commands import run_diff
+    from zero.engine.queries import run_diff
 
     machine = tmp_path / "m"
     shutil.copytree(FIXTURES / "machine-layered", machine)

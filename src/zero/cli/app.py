@@ -24,9 +24,10 @@ from zero.cli.options import LINT_OPTIONS, PATHS_HELP, Option
 from zero.cli.run import REGISTRIES, echo, read_stdin, render_lint
 from zero.cli.run import lint as run_lint_command
 from zero.diff import SAME, DiffOptions, show_lines
-from zero.engine.commands import load_side, parse_kind, run_diff, run_effective, run_format, run_limits
+from zero.engine.commands import parse_kind, run_format
 from zero.engine.config import ConfigFinder
 from zero.engine.convert import check_convert_options, convert_inputs, write_outputs
+from zero.engine.queries import load_side, run_diff, run_effective, run_limits
 from zero.errors import ZeroError
 from zero.files import write_atomic
 from zero.lists.model import parse_key

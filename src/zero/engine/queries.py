@@ -1,0 +1,145 @@
+"""The commands that ask about lists and machines, as library functions: ``zero diff``,
+``zero show``, ``zero limits``, ``zero show --machine`` and ``zero explain``.
+
+Kept apart from :mod:`zero.engine.commands` (``lint``, ``format``), so that the pre-commit
+path does not load what only these commands need.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable, Sequence
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from zero.catalog.registry import Registry
+from zero.diff import Change, DiffOptions, Side, diff_defaults, diff_sides, read_side
+from zero.engine.commands import Registries, require_startup
+from zero.engine.config import ConfigFinder
+from zero.engine.convert import source_format
+from zero.errors import ZeroError
+from zero.files import read_file
+from zero.machine.effective import Scope, effective, entries_of, summary
+from zero.machine.limits import Ip247Violation, LimitRow, ip247, pcs_limits
+from zero.machine.model import Machine, load_machine
+
+
+def load_side(name: str, fmt: str | None, kind: str | None, registry: Registry,
+              read_stdin: Callable[[], bytes]) -> Side:
+    """One side of ``zero diff`` (or ``zero show``): a file in any format, or standard input."""
+    src = source_format(fmt, name)
+    data = read_stdin() if name == "-" else read_file(name)
+    return read_side(data, src, name, registry, kind)
+
+
+@dataclass(slots=True)
+class DiffRun:
+    changes: list[Change]
+    header: str
+
+
+def run_diff(a: str, b: str | None, registry: Registry, read_stdin: Callable[[], bytes], *,
+             defaults: bool = False, options: DiffOptions | None = None, fmt: str | None = None,
+             kind: str | None = None, machine: bool = False) -> DiffRun:
+    """``zero diff A B``, ``zero diff --defaults A`` or ``zero diff --machine A B`` (two start-up lists)."""
+    options = options or DiffOptions()
+    if defaults:
+        if b is not None:
+            raise ZeroError("--defaults compares one file with the registry; give one file")
+        side = load_side(a, fmt, kind, registry, read_stdin)
+        changes = diff_defaults(side, registry, options)
+        return DiffRun(changes, f"{a}: {len(changes)} parameters differ from the registry defaults")
+    if b is None:
+        raise ZeroError("give two files to compare (or one with --defaults)")
+    if a == "-" and b == "-":
+        raise ZeroError("only one side can be standard input")
+    if machine:
+        return _diff_machines(Path(a), Path(b), registry, options)
+    side_a = load_side(a, fmt, kind, registry, read_stdin)
+    side_b = load_side(b, fmt, kind or side_a.kind, registry, read_stdin)
+    under = _default_list_side(Path(b if b != "-" else a), side_b.kind or side_a.kind, registry)
+    return DiffRun(diff_sides(side_a, side_b, registry, options, under), f"--- {a}\n+++ {b}")
+
+
+def _default_list_side(path: Path, kind: str | None, registry: Registry) -> Side | None:
+    """The default list that lies under lists of ``kind`` on the machine the configuration of
+    ``path`` names (``[tool.zero.machine]``), if there is one."""
+    cfg = ConfigFinder().for_path(path)
+    if cfg.machine is None or kind is None:
+        return None
+    try:
+        machine = load_machine(cfg.machine, registry, None, cfg.machine_lists, cfg.machine_workdir)
+    except ZeroError:
+        return None  # a machine that cannot be read: the catalogue's defaults, as without one
+    lf = machine.defaults.get(kind)
+    return Side(str(lf.path), kind, entries_of(lf.values)) if lf is not None else None
+
+
+def _diff_machines(a: Path, b: Path, registry: Registry, options: DiffOptions) -> DiffRun:
+    """Two machines' effective configurations, list by list (a value a default list supplies
+    counts as the machine's value; a removed one falls back to the catalogue default)."""
+    def sides(startup: Path) -> dict[str, Side]:
+        m = load_machine(startup, registry)
+        return {name: Side(str(lf.path), lf.values.kind, entries_of(lf.values)) for name, lf in m.scopes()}
+
+    left, right = sides(a), sides(b)
+    changes: list[Change] = []
+    for name in [*left, *(n for n in right if n not in left)]:
+        empty = Side("-", (left.get(name) or right[name]).kind, {})
+        for c in diff_sides(left.get(name, empty), right.get(name, empty), registry, options):
+            c.group = f"{name}: {c.group}"
+            changes.append(c)
+    return DiffRun(changes, f"--- {a} (machine)\n+++ {b} (machine)")
+
+
+# ---------------------------------------------------------------------------- limits
+
+
+@dataclass(slots=True)
+class LimitsRun:
+    rows: list[LimitRow]
+    violations: list[Ip247Violation] = field(default_factory=list)
+
+
+PROFILES = ("ip247",)
+
+
+def machine_of(startup: Path | None, registries: Registries, param_desc: str | Path | None = None) -> Machine:
+    """The machine of a start-up list (the configuration's ``[tool.zero.machine]`` when not
+    named), with the configuration's list overrides."""
+    cfg = ConfigFinder().for_path(startup if startup is not None else Path.cwd())
+    path = startup or cfg.machine
+    if path is None:
+        raise ZeroError("name the start-up list with --machine (or [tool.zero.machine] startup)")
+    registry = registries(Path(param_desc) if param_desc else None)
+    return require_startup(load_machine(path, registry, None, cfg.machine_lists, cfg.machine_workdir), registry)
+
+
+def run_limits(machine: Path | None, registries: Registries, all_groups: bool = False,
+               profile: str | None = None, param_desc: str | Path | None = None) -> LimitsRun:
+    """``zero limits``: PCS soft limits of the machine (the configuration's when not named)."""
+    if profile not in (None, *PROFILES):
+        raise ZeroError(f"unknown profile {profile!r} (known: {', '.join(PROFILES)})")
+    m = machine_of(machine, registries, param_desc)
+    return LimitsRun(pcs_limits(m, all_groups), ip247(m) if profile == "ip247" else [])
+
+
+@dataclass(slots=True)
+class EffectiveRun:
+    summary: dict[str, object]
+    scopes: list[Scope]
+
+    def to_json(self) -> dict[str, object]:
+        return {**self.summary, "scopes": [s.to_json() for s in self.scopes]}
+
+
+def run_effective(machine: Path | None, registries: Registries, keys: Sequence[str] = (),
+                  with_defaults: bool = False, explain: bool = False,
+                  param_desc: str | Path | None = None) -> EffectiveRun:
+    """``zero show --machine`` / ``zero explain``: effective values and where they come from."""
+    m = machine_of(machine, registries, param_desc)
+    scopes = effective(m, keys, with_defaults, explain)
+    if keys and not scopes:
+        raise ZeroError(f"no list of the machine has or documents {', '.join(keys)}")
+    return EffectiveRun(summary(m), scopes)
+
+
