@@ -17,6 +17,7 @@ from typing import Any
 from zero.catalog.ids import AXIS_UNITS, g_code_with_index, in_units
 from zero.catalog.registry import NO_DEFAULT, ParamSpec, Registry
 from zero.catalog.values import default_number, parse_int, read_value
+from zero.errors import ZeroError
 from zero.lists.model import Comment, Entry, ValueKind, parse_key
 from zero.lists.tokenizer import tokenize
 from zero.structured.formats import read_tree
@@ -60,6 +61,8 @@ def read_side(data: bytes, fmt: str, path: str, registry: Registry, kind: str | 
     """Read list/YAML/TOML/JSON bytes as the controller would see them."""
     if fmt == "lis":
         doc = tokenize(data, path)
+        if any(p.kind == "binary" for p in doc.problems):
+            raise ZeroError("not a text file: not a parameter list (zero lint says so as S013)", path)
     else:
         tree = read_tree(data, fmt, registry, path, kind)
         doc = tokenize(encode_list(tree, to_list_text(tree).text), path)

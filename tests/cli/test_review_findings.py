@@ -117,3 +117,16 @@ def test_add_noqa_after_a_string_value_and_into_an_existing_noqa(tmp_path: Path)
 def test_a_bad_size_limit_is_one_usage_error(tmp_path: Path) -> None:
     run = zero_cli("lint", str(SEED), str(FIXTURES / "diff" / "base.lis"), env={"ZERO_MAX_FILE_SIZE": "0"})
     assert run.code == 2 and run.stderr.count("is not a size") == 1 and run.stdout == ""
+
+
+def test_show_and_diff_refuse_a_file_that_is_not_text(tmp_path: Path) -> None:
+    binary = tmp_path / "b.lis"
+    binary.write_bytes(bytes(range(256)) * 8)
+    for command in (["show", str(binary)], ["diff", str(binary), str(SEED)]):
+        run = zero_cli(*command)
+        assert run.code == 2 and "not a text file" in run.stderr, command
+
+
+def test_param_says_when_an_index_is_outside_its_array() -> None:
+    run = zero_cli("param", "np_grp[97].achse[0].versch")
+    assert run.code == 0 and "(index 97 is outside 0..96: no such element, R003)" in run.stdout

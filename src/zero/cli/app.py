@@ -18,7 +18,7 @@ from typing import Annotated, Any
 import typer
 
 from zero import __version__
-from zero.catalog.registry import KINDS, Registry, kind_from_name
+from zero.catalog.registry import KINDS, ParamSpec, Registry, kind_from_name
 from zero.cli import exits
 from zero.cli.options import LINT_OPTIONS, PATHS_HELP, Option
 from zero.cli.run import REGISTRIES, echo, read_stdin, render_lint
@@ -482,11 +482,21 @@ def param(
                 raise ZeroError(f"unknown parameter {name!r}{hint}; no key, ID or description contains it")
         text = param_text(spec, registry)
         if indices:
-            text = f"{'element':<7}  {name.strip()}\n" + text
+            text = f"{'element':<7}  {name.strip()}{_outside(spec, indices)}\n" + text
         sys.stdout.write(text)
         return exits.OK
 
     _run(body)
+
+
+def _outside(spec: ParamSpec, indices: tuple[int, ...]) -> str:
+    """A note when an index lies outside its array (what R003 reports in a list)."""
+    for pos, (idx, size) in enumerate(zip(indices, spec.dims, strict=False)):
+        base = spec.index_base if pos == 0 else 0
+        if idx < base or (base == 0 and size > 0 and idx >= size):
+            valid = f"{base}.." if base else f"0..{size - 1}"
+            return f"  (index {idx} is outside {valid}: no such element, R003)"
+    return ""
 
 
 def main() -> None:
