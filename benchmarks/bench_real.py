@@ -1,0 +1,112 @@
+#!/usr/bin/env python3
+"""The realistic workloads of issue 16, whole process, next to their anchors, as ratios.
+
+Builds the workloads with ``../shared/bench/workloads_real.py`` (the vendor's axis list, a tool
+list of N tools made of the vendor's tool block, a fleet of M machines of all corpus lists) in a
+temporary directory outside any git work tree, then times each command in a fresh process and
+reads its peak memory. Prints figures; it passes or fails nothing.
+
+usage: python benchmarks/bench_real.py [--quick] [--tools N] [--machines M] [--keep DIR]
+"""
+
+from __future__ import annotations
+
+import argparse
+import shutil
+import subprocess
+import sys
+import tempfile
+from pathlib import Path
+
+ROOT = Path(__file__).resolve().parent.parent
+SHARED = ROOT.parent / "shared" / "bench" / "workloads_real.py"
+PY = sys.executable
+ZERO = [PY, "-m", "zero"]
+
+# Run a command in a child; print its wall time (s) and peak resident memory (KiB).
+_PEAK = ("import resource, subprocess, sys, time; t = time.perf_counter(); "
+         "subprocess.run(sys.argv[1:], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL); "
+         "print(time.perf_counter() - t, resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss)")
+
+
+def measure(cmd: list[str], repeat: int = 1, cwd: Path | None = None) -> tuple[float, float]:
+    """Best wall time (s) over ``repeat`` runs and the peak memory (MiB) of the last."""
+    best, peak = float("inf"), 0.0
+    for _ in range(repeat):
+        out = subprocess.run([PY, "-c", _PEAK, *cmd], capture_output=True, text=True, cwd=cwd, check=False)
+        seconds, kib = out.stdout.strip().splitlines()[-1].split()
+        best, peak = min(best, float(seconds)), int(kib) / 1024
+    return best, peak
+
+
+def entries(path: Path) -> int:
+    with path.open("rb") as f:
+        return sum(1 for line in f if line[:1] not in (b"#", b"\n", b"E"))
+
+
+def row(name: str, seconds: float, peak: float, anchor: str, ratio: float, target: str) -> None:
+    print(f"{name:<44}{seconds * 1000:>10.1f} ms{peak:>9.0f} MiB   {anchor:<34}{ratio:>7.2f}×   {target}")
+
+
+def main() -> None:
+    a = argparse.ArgumentParser()
+    a.add_argument("--quick", action="store_true", help="3,000 tools and 30 machines")
+    a.add_argument("--tools", type=int)
+    a.add_argument("--machines", type=int)
+    a.add_argument("--keep", type=Path, help="build (or reuse) the workloads here")
+    args = a.parse_args()
+    tools = args.tools or (3000 if args.quick else 30000)
+    machines = args.machines or (30 if args.quick else 300)
+    out = args.keep or Path(tempfile.mkdtemp(prefix="zero-bench-"))
+    if not (out / "tools.lis").is_file():
+        zero = shutil.which("zero") or str(Path(PY).parent / "zero")
+        subprocess.run([PY, str(SHARED), "--zero", zero, "--out", str(out), "--tools", str(tools),
+                        "--machines", str(machines)], check=True)
+    n_tools = entries(out / "tools.lis")
+    print(f"workloads in {out}: tools.lis {n_tools:,} entries, fleet {machines} machines\n")
+    print(f"{'workload':<44}{'time':>13}{'peak':>13}   {'anchor':<34}{'ratio':>8}    target")
+
+    pass_s, _ = measure([PY, "-c", "pass"], 10)
+    lint_s, lint_m = measure([*ZERO, "lint", str(out / "axis.lis")], 10)
+    row("start-up: zero lint axis.lis", lint_s, lint_m, f"python -c pass {pass_s * 1000:.1f} ms",
+        lint_s / pass_s, "≤ 3×")
+
+    toml_s, _ = measure([PY, "-c", f"import tomllib; tomllib.load(open({str(out / 'tools.toml')!r}, 'rb'))"])
+    tools_s, tools_m = measure([*ZERO, "lint", "--exit-zero", "--output-format", "json", str(out / "tools.lis")])
+    size = (out / "tools.lis").stat().st_size / 2**20
+    row(f"zero lint tools.lis ({n_tools / tools_s:,.0f} entries/s)", tools_s, tools_m,
+        f"tomllib.load {toml_s * 1000:.0f} ms", tools_s / toml_s, f"≤ 0.25×; peak ≤ {2 * size:.0f} MiB")
+
+    read_s, _ = measure([PY, "-c", "import os,sys\n"
+                         f"for d, _, fs in os.walk({str(out / 'fleet')!r}):\n"
+                         "    for f in fs: open(os.path.join(d, f), 'rb').read().splitlines()"])
+    fleet_s, fleet_m = measure([*ZERO, "lint", "--exit-zero", "-j", "2", "--output-format", "json",
+                                str(out / "fleet")])
+    row("zero lint fleet -j 2", fleet_s, fleet_m, f"read + split {read_s * 1000:.0f} ms", fleet_s / read_s, "≤ 5×")
+    one_s, one_m = measure([*ZERO, "lint", "--exit-zero", "-j", "1", "--output-format", "json", str(out / "fleet")])
+    row("zero lint fleet -j 1", one_s, one_m, "(peak memory)", 0.0, "peak independent of files")
+
+    target = out / "tools.out.yaml"
+    conv_s, conv_m = measure([*ZERO, "convert", "--force", "-o", str(target), str(out / "tools.lis")])
+    row(f"zero convert tools.lis --to yaml ({n_tools / conv_s:,.0f}/s)", conv_s, conv_m, "entries/s",
+        n_tools / conv_s / 300_000, "≥ 300k entries/s (ratio ≥ 1)")
+    changed = out / "tools2.lis"
+    changed.write_bytes((out / "tools.lis").read_bytes().replace(b"wz[7].", b"wz[7].", 1))
+    diff_s, diff_m = measure([*ZERO, "diff", str(out / "tools.lis"), str(changed)])
+    row(f"zero diff tools.lis tools2.lis ({n_tools / diff_s:,.0f}/s)", diff_s, diff_m, "entries/s",
+        n_tools / diff_s / 300_000, "≥ 300k entries/s (ratio ≥ 1)")
+
+    unknown = out / "unknown.lis"
+    if not unknown.is_file():
+        with unknown.open("w") as f:
+            for i in range(n_tools):
+                f.write(f"unknown_key_{i % 997}.member[{i}] 1\n")
+    mass_s, mass_m = measure([*ZERO, "lint", "--exit-zero", str(unknown)])
+    row(f"zero lint {n_tools:,} unknown keys (text)", mass_s, mass_m, f"clean lint {tools_s * 1000:.0f} ms",
+        mass_s / tools_s, "≤ 3×")
+    if args.keep is None:
+        shutil.rmtree(out, ignore_errors=True)
+
+
+if __name__ == "__main__":
+    main()
