@@ -106,6 +106,7 @@ def test_unreadable_files_in_a_walked_directory_do_not_stop_the_others(tmp_path:
     assert run.code == 2, run
     lines = run.stdout.splitlines()
     assert any("good.lis:1:1: R003" in line for line in lines)
+    assert not any("good.lis" in line and "F001" in line for line in lines)  # a readable file: no F001
     assert f"{tmp_path / 'dangling.lis'}:1:1: F001 error dangling symbolic link: its target does not exist: " \
            "not checked" in lines
     assert f"{tmp_path / 'loop.lis'}:1:1: F001 error symbolic link loop (too many levels of symbolic links): " \

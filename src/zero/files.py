@@ -28,6 +28,7 @@ from __future__ import annotations
 
 import contextlib
 import errno
+import io
 import os
 import re
 import signal
@@ -42,7 +43,6 @@ from typing import BinaryIO
 from zero.errors import ZeroError
 
 MAX_FILE_BYTES = 256 * 1024 * 1024
-_CHUNK = 1024 * 1024
 _UNITS = {"": 1, "B": 1, "K": 1024, "KB": 1000, "KIB": 1024, "M": 1024**2, "MB": 1000**2, "MIB": 1024**2,
           "G": 1024**3, "GB": 1000**3, "GIB": 1024**3}
 _SIZE_RE = re.compile(r"\s*([0-9]+)\s*([A-Za-z]*)\s*")
@@ -128,17 +128,10 @@ def read_file(path: str | Path, limit: int | None = None) -> bytes:
         if st.st_size > limit:
             raise ZeroError(f"file is {st.st_size} bytes, larger than the {_mib(limit)} zero reads "
                             "(ZERO_MAX_FILE_SIZE raises the limit)", where)
-        chunks: list[bytes] = []
-        total = 0
-        while True:
-            chunk = os.read(fd, _CHUNK)
-            if not chunk:
-                break
-            total += len(chunk)
-            if total > limit:  # the file grew while it was read
-                raise ZeroError(f"file is larger than the {_mib(limit)} zero reads", where)
-            chunks.append(chunk)
-        return b"".join(chunks)
+        data = io.FileIO(fd, closefd=False).readall()  # sized by fstat: one allocation
+        if len(data) > limit:  # the file grew while it was read
+            raise ZeroError(f"file is larger than the {_mib(limit)} zero reads", where)
+        return data
     except OSError as exc:
         raise ZeroError(str(exc.strerror or exc), where) from None
     finally:

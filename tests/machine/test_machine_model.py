@@ -41,7 +41,7 @@ def test_the_working_directory_is_found_once_and_nothing_is_replaced(registry: R
 def test_default_lists_lie_under_the_specific_lists(registry: Registry) -> None:
     m = load_machine(LAYERED, registry)
     axes = m.axes()
-    assert (axes[1].swe_neg, axes[1].swe_pos) == (-1_000_000, 1_000_000)  # all from default_mds.lis
+    assert (axes[1].swe_neg, axes[1].swe_pos) == (-1_000_000, 1_000_000)  # all from achse_vorgabe.lis
     assert (axes[2].swe_neg, axes[2].swe_pos) == (-1_000_000, 2_000_000)  # its own positive limit
     # the channel's axes come from the default channel list
     assert [(a.index, a.log_nr, a.name) for a in m.channels[0].axes] == [(0, 1, "X"), (1, 2, "Y")]
@@ -60,7 +60,7 @@ def test_layered_machine_findings_golden(registry: Registry, request: pytest.Fix
     assert {"X001", "X005", "X008"} <= codes
     linted = [os.path.basename(r.path) for r in results]
     assert sorted(linted) == sorted(set(linted))  # each list once
-    assert "default_mds.lis" in linted and "default_sda.lis" in linted
+    assert "achse_vorgabe.lis" in linted and "kanal_vorgabe.lis" in linted
 
 
 @pytest.mark.slow
@@ -145,7 +145,7 @@ def test_diff_of_two_machines_compares_effective_values(tmp_path: Path, registry
 
     other = tmp_path / "other"
     shutil.copytree(FIXTURES / "machine-layered", other)
-    default = other / "listen" / "default_mds.lis"
+    default = other / "listen" / "achse_vorgabe.lis"
     default.write_text(default.read_text().replace("kenngr.swe_neg                                        -1000000",
                                                    "kenngr.swe_neg                                        -2000000"))
     run = run_diff(str(LAYERED), str(other / "listen" / "hochlauf.lis"), registry, lambda: b"", machine=True)
@@ -171,7 +171,7 @@ def test_diff_of_two_lists_names_the_machines_default_list(tmp_path: Path, regis
     run = run_diff(str(old), str(new), registry, lambda: b"")
     [change] = run.changes
     assert (change.key, change.kind, change.delta) == ("kenngr.swe_pos", "removed", -100.0)
-    assert change.note == "now the default list's 1000000 (default_mds.lis:4)"
+    assert change.note == "now the default list's 1000000 (achse_vorgabe.lis:4)"
     (machine / "pyproject.toml").unlink()
     [plain] = run_diff(str(old), str(new), registry, lambda: b"").changes
     assert plain.note == "now the default 100000000" and plain.delta == 9800.0

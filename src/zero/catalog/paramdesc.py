@@ -37,7 +37,7 @@ _NO_ENUM_TYPES = ("BOOLEAN", "STRING")  # BOOLEAN is checked as 0/1; a STRING li
 
 
 def enumeration(text: str, typ: str, name: str = "") -> tuple[list[int], list[str], bool] | None:
-    """Allowed values stated in prose, one per line (``1 : Conventional drive interface``):
+    """Allowed values stated in prose, one per line (``1 : <meaning>``):
     ``(values, labels, flags)``, or ``None`` when the text is not such a list. Conservative:
     every other line must be an introduction ending in ``:`` (``0, 1, 2 where:``), or the
     text is not read as an enumeration. ``flags``: single bits of a mask, any combination allowed."""

@@ -176,6 +176,7 @@ class Registry:
     # (kind, pattern) → (where the vendor's lists use it, the ID it probably stands for or "")
     vendor_keys: dict[tuple[str, str], tuple[str, str]] = field(default_factory=dict)
     _suggestions: dict[tuple[str, str | None, int], list[str]] = field(default_factory=dict)
+    _machine_data: frozenset[str] | None = None
 
     def __post_init__(self) -> None:
         if isinstance(self.specs, SpecTable):
@@ -208,6 +209,13 @@ class Registry:
                 pid = self._by_key.get((k, target))
                 return self.specs[pid] if pid is not None else None
         return None
+
+    def machine_data_ids(self) -> frozenset[str]:
+        """The IDs ``#MACHINE DATA`` accepts as keywords (the seed's entries), computed once."""
+        if self._machine_data is None:
+            self._machine_data = frozenset(pid for pid in self.specs
+                                           if self.specs[pid].source.startswith("#MACHINE DATA"))
+        return self._machine_data
 
     def kinds_of(self, pattern: str) -> list[str]:
         return self._kinds_of.get(pattern, [])

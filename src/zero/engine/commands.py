@@ -21,9 +21,9 @@ from zero.engine.fixes import fix_bytes, unified_diff
 from zero.engine.formatting import format_bytes
 from zero.engine.lint import (
     PROGRAM_SUFFIXES,
-    STRUCTURED_SUFFIXES,
     LintOptions,
     LintResult,
+    is_list,
     is_unreadable,
     lint_bytes,
     lint_data,
@@ -194,11 +194,6 @@ def _with_machine(path: Path, result: LintResult, cfg: Config, cli: LintOptions,
     return lint_program(source, registry, str(path), cfg.options_for(path, cli), m)
 
 
-def _is_list(path: str) -> bool:
-    suffix = Path(path).suffix.lower()
-    return suffix not in PROGRAM_SUFFIXES and suffix not in STRUCTURED_SUFFIXES
-
-
 def _lint_stdin(request: LintRequest, cli: LintOptions, finder: ConfigFinder, registries: Registries,
                 echo: Echo, data: bytes) -> LintRun:
     """Standard input as the file ``--stdin-filename`` names: read as that file would be (a list,
@@ -213,7 +208,7 @@ def _lint_stdin(request: LintRequest, cli: LintOptions, finder: ConfigFinder, re
         return LintRun(report=False)
     options = cfg.options_for(Path(name), cli)
     registry = registries(param_desc_of(cfg, request.param_desc))
-    if (request.fix or request.show_diff) and _is_list(name):
+    if (request.fix or request.show_diff) and is_list(name):
         fixed = fix_bytes(data, name, registry, options, request.unsafe_fixes)
         if request.show_diff:
             patch = unified_diff(name, data, fixed.fixed)
@@ -233,7 +228,7 @@ def _fix_one(path: Path, result: LintResult, options: LintOptions, registry: Reg
              echo: Echo, run: LintRun) -> LintResult:
     """Fix one list file: write it (``--fix``) or only show the patch (``--diff``, which never
     writes); return the findings that are left (with ``--diff``, the findings as they are)."""
-    if not _is_list(str(path)) or is_unreadable(result):
+    if not is_list(str(path)) or is_unreadable(result):
         return result  # findings in YAML/TOML/JSON and NC programs carry no list edits
     data = read_file(path)
     fixed = fix_bytes(data, str(path), registry, options, request.unsafe_fixes)
@@ -251,7 +246,7 @@ def _fix_one(path: Path, result: LintResult, options: LintOptions, registry: Reg
 def _add_noqa(path: Path, result: LintResult, options: LintOptions, registry: Registry, echo: Echo,
               run: LintRun) -> LintResult:
     """Record a list's findings as ``noqa`` directives; return what is still reported."""
-    if not _is_list(str(path)) or is_unreadable(result) or not result.diagnostics:
+    if not is_list(str(path)) or is_unreadable(result) or not result.diagnostics:
         return result
     data = read_file(path)
     baseline = add_noqa(lint_bytes(data, registry, str(path), options))
@@ -290,7 +285,7 @@ def run_format(paths: Sequence[str | Path], registries: Registries, echo: Echo, 
                              param_desc)
     files = collect_files([Path(p) for p in paths], include=lambda f: finder.for_path(f).included(f),
                           exclude=lambda f: finder.for_path(f).excluded(f))
-    lists = [f for f in files if _is_list(str(f))]  # NC programs and structured forms are not reformatted
+    lists = [f for f in files if is_list(str(f))]  # NC programs and structured forms are not reformatted
     run = FormatRun(len(lists))
     for f in lists:
         try:
@@ -326,7 +321,7 @@ def _format_stdin(data: bytes, name: str, finder: ConfigFinder, registries: Regi
                   check: bool, show_diff: bool, param_desc: str | Path | None) -> FormatRun:
     run = FormatRun(1)
     cfg = finder.for_path(Path(name))
-    if not _is_list(name):  # an NC program or a structured form passes through unchanged
+    if not is_list(name):  # an NC program or a structured form passes through unchanged
         if not (check or show_diff):
             echo.out_bytes(data)
         return run

@@ -157,6 +157,12 @@ def lint_program(data: bytes, registry: Registry, path: str = "-", options: Lint
     return LintResult(path, program.doc, "PROGRAM", found)
 
 
+def is_list(path: str | Path) -> bool:
+    """A parameter list by its name (not an NC program, not a YAML/TOML/JSON form)."""
+    suffix = Path(path).suffix.lower()
+    return suffix not in PROGRAM_SUFFIXES and suffix not in STRUCTURED_SUFFIXES
+
+
 def lint_data(data: bytes, path: str, registry: Registry, options: LintOptions | None = None) -> LintResult:
     """Lint bytes as the file ``path`` names: an NC program, YAML/TOML/JSON, else a list."""
     suffix = Path(path).suffix.lower()

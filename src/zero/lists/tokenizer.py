@@ -234,8 +234,9 @@ def tokenize_text(text: str, path: str = "-", encoding: str = "utf-8", bom: bool
     fast = _FAST_ENTRY_RE.match if use_fast else None
     kind_match = _KIND_RE.fullmatch
     append = items.append
+    has_nul = "\x00" in text  # one scan of the text, not one per line
     for number, s in enumerate(lines, 1):
-        if "\x00" in s:  # the controller reads a line as a C string: it ends at the NUL
+        if has_nul and "\x00" in s:  # the controller reads a line as a C string: it ends at the NUL
             s = s[: s.index("\x00")]
             m = None
         else:

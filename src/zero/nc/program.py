@@ -116,7 +116,7 @@ def parse_machine_data(text: str, line: int, start: int, registry: Registry) -> 
     if close < 0:
         md.problems.append(("the `[` is not closed", pos, len(text.rstrip())))
         close = len(text)
-    keywords = {s.id for s in registry.specs.values() if s.source.startswith("#MACHINE DATA")}
+    keywords = registry.machine_data_ids()
     body_at = pos + 1
     for im in _ITEM_RE.finditer(text[body_at:close]):
         a, b = body_at + im.start(im.lastgroup or 0), body_at + im.end()

@@ -167,5 +167,5 @@ def render_effective(summary: dict[str, object], scopes: Sequence[Scope], stream
             if explain:
                 for value, origin in v.layers:
                     shown = value if value is not None else "(not set)"
-                    stream.write(f"    {origin.source:<18} {shown:<20} {origin.path or ''}"
-                                 f"{':' + str(origin.line) if origin.line else ''}\n")
+                    where = f"{origin.path or ''}{':' + str(origin.line) if origin.line else ''}"
+                    stream.write(f"    {origin.source:<18} {shown:<20} {where}".rstrip() + "\n")

@@ -185,7 +185,7 @@ OUT_OF_RANGE = FAMILY.rule(
     """
 What it checks: the value against the range of the parameter description (for example
 `MIN(SGN32) < x < MAX(SGN32)`, `0 ... 96`, `-1, 0, 1`), against the values the description
-lists in its text (`1 : Conventional drive interface` ... `32 : CAN bus` for
+lists in its text, one per line (`1 : <meaning>` … `32 : <meaning>` for
 `kenngr.antr_typ`; any combination where they are the bits of a mask), BOOLEAN values against
 0/1 (or FALSE/TRUE), and symbolic values against the allowed symbols. Where the catalogue's
 default lies outside its own range, the message says so instead of predicting the default.
