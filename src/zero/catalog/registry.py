@@ -177,6 +177,8 @@ class Registry:
     vendor_keys: dict[tuple[str, str], tuple[str, str]] = field(default_factory=dict)
     _suggestions: dict[tuple[str, str | None, int], list[str]] = field(default_factory=dict)
     _machine_data: frozenset[str] | None = None
+    # (kind, pattern) → spec: a big list asks for a few dozen patterns a million times
+    _pattern_specs: dict[tuple[str | None, str], ParamSpec | None] = field(default_factory=dict)
 
     def __post_init__(self) -> None:
         if isinstance(self.specs, SpecTable):
@@ -196,6 +198,16 @@ class Registry:
 
     def by_pattern(self, pattern: str, kind: str | None) -> ParamSpec | None:
         """The spec for a key pattern (``np_grp[].achse[].versch``) in a list kind."""
+        slot = (kind, pattern)
+        try:
+            return self._pattern_specs[slot]
+        except KeyError:
+            spec = self._by_pattern(pattern, kind)
+            if len(self._pattern_specs) < 100_000:
+                self._pattern_specs[slot] = spec
+            return spec
+
+    def _by_pattern(self, pattern: str, kind: str | None) -> ParamSpec | None:
         if kind is not None:
             pid = self._by_key.get((kind, pattern))
             return self.specs[pid] if pid is not None else None
@@ -232,9 +244,9 @@ class Registry:
     def detect_kind(self, patterns: Iterable[str], path: str = "") -> str | None:
         """The list kind whose keys match most of ``patterns``; file name breaks ties."""
         votes: Counter[str] = Counter()
-        for p in patterns:
+        for p, n in Counter(patterns).items():  # counted in C: a big list has few patterns
             for k in self._kinds_of.get(p, ()):
-                votes[k] += 1
+                votes[k] += n
         name = Path(path).name.lower()
         hint = next((k for frag, k in _FILE_HINTS if frag in name), None)
         if not votes:

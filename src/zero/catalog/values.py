@@ -187,19 +187,41 @@ class ListValues:
         if kind is None:
             kind = registry.detect_kind((e.key.pattern for e in entries if e.key), doc.path)
         out = cls(doc, registry, kind, entries)
+        append = out.resolved.append
+        by_id = out.by_id
+        # A big list has few patterns and few distinct values: each pattern is bound, and each
+        # (parameter, value) read, once. Values are never changed after reading, so are shared.
+        bound: dict[str, tuple[ParamSpec, bool] | None] = {}
+        read: dict[tuple[str, str], Value] = {}  # the value's kind follows from its text
         for e in entries:
-            if e.key is None:
+            key = e.key
+            if key is None or e.value_kind is None:
                 continue
-            via_alias = False
-            spec = registry.by_pattern(e.key.pattern, kind)
-            if spec is None:
-                spec = registry.alias(e.key.pattern, kind)
-                via_alias = spec is not None
-            if spec is None or e.value_kind is None:
+            pattern = key.pattern
+            try:
+                hit = bound[pattern]
+            except KeyError:
+                spec = registry.by_pattern(pattern, kind)
+                via_alias = False
+                if spec is None:
+                    spec = registry.alias(pattern, kind)
+                    via_alias = spec is not None
+                hit = bound[pattern] = (spec, via_alias) if spec is not None else None
+            if hit is None:
                 continue
-            res = Resolved(e, spec, read_value(spec, e), via_alias)
-            out.resolved.append(res)
-            out.by_id.setdefault(spec.id, {})[e.key.indices] = res
+            spec = hit[0]
+            slot = (spec.id, e.value)
+            value = read.get(slot)
+            if value is None:
+                value = read_value(spec, e)
+                if len(read) < 65_536:
+                    read[slot] = value
+            res = Resolved(e, spec, value, hit[1])
+            append(res)
+            ids = by_id.get(spec.id)
+            if ids is None:
+                ids = by_id[spec.id] = {}
+            ids[key.indices] = res
         return out
 
     def value_of(self, param_id: str, indices: tuple[int, ...] = ()) -> Resolved | None:

@@ -9,7 +9,6 @@ from __future__ import annotations
 
 import enum
 import re
-import sys
 from dataclasses import dataclass, field
 
 # An index with more digits than this is not converted to an int: it is clamped
@@ -40,12 +39,14 @@ class CommentStyle(enum.Enum):
     TEXT = "text"  # plain words after a value
 
 
-@dataclass(frozen=True, slots=True)
+@dataclass(slots=True, unsafe_hash=True)
 class Key:
     """A parameter key such as ``np_grp[5].achse[2].versch``.
 
     ``pattern`` has the indices removed (``np_grp[].achse[].versch``), which is
-    how the registry spells keys; ``indices`` holds them in order.
+    how the registry spells keys; ``indices`` holds them in order. Treat it as immutable
+    (not frozen only because a frozen dataclass costs three times as much to build, and a
+    big list builds one per entry).
     """
 
     text: str
@@ -61,7 +62,22 @@ class Key:
         return any(i >= HUGE_INDEX for i in self.indices)
 
 
-_key_cache: dict[str, Key | None] = {}
+_CACHE_LIMIT = 200_000
+# A key split after its first index: ``wz[17]`` + ``.kinematic.param[3]``. Both halves repeat
+# across a list (a few thousand heads, a few dozen tails), so each is parsed once.
+_part_cache: dict[str, tuple[str, tuple[int, ...]]] = {}
+_patterns: dict[str, str] = {}
+
+
+def _part(text: str) -> tuple[str, tuple[int, ...]]:
+    got = _part_cache.get(text)
+    if got is None:
+        digits = _INDEX_RE.findall(text)
+        got = (_INDEX_RE.sub("[]", text) if digits else text,
+               tuple(int(d) if len(d) <= MAX_INDEX_DIGITS else HUGE_INDEX for d in digits))
+        if len(_part_cache) < _CACHE_LIMIT and len(text) < 512:
+            _part_cache[text] = got
+    return got
 
 
 def parse_key(text: str, trusted: bool = False) -> Key | None:
@@ -70,22 +86,17 @@ def parse_key(text: str, trusted: bool = False) -> Key | None:
     ``trusted``: the caller has matched the key form already (the tokenizer's fast path).
     Patterns are interned: a million keys share a handful of pattern strings.
     """
-    cached = _key_cache.get(text)
-    if cached is not None or text in _key_cache:
-        return cached
-    key: Key | None = None
-    if trusted or _KEY_RE.fullmatch(text):
-        if "[" in text:
-            digits = _INDEX_RE.findall(text)
-            indices = tuple(
-                int(d) if len(d) <= MAX_INDEX_DIGITS else HUGE_INDEX for d in digits
-            )
-            key = Key(text, sys.intern(_INDEX_RE.sub("[]", text)), indices)
-        else:
-            key = Key(text, text, ())
-    if len(_key_cache) < 200_000 and len(text) < 512:
-        _key_cache[text] = key
-    return key
+    if not trusted and not _KEY_RE.fullmatch(text):
+        return None
+    cut = text.find("]") + 1
+    if not cut:
+        return Key(text, text, ())
+    head, head_indices = _part(text[:cut])
+    tail, tail_indices = _part(text[cut:])
+    pattern = head + tail
+    pattern = _patterns.get(pattern) or (
+        _patterns.setdefault(pattern, pattern) if len(_patterns) < _CACHE_LIMIT else pattern)
+    return Key(text, pattern, head_indices + tail_indices)
 
 
 def format_key(pattern: str, indices: tuple[int, ...] | list[int]) -> str:

@@ -51,7 +51,8 @@ _MAX_KEY_JOINS = 8
 # not match goes to scan_line, which gives the same result for what it does match.
 _FAST_ENTRY_RE = re.compile(
     r"[ \t]*([A-Za-z_][A-Za-z0-9_]*(?:\[[0-9]+\])*(?:\.[A-Za-z0-9_]+(?:\[[0-9]+\])*)*)"
-    r"[ \t]+([^\s\"|.\[\]][^\s|]*)(?:[ \t]+([^\s|].*)|[ \t]*)\Z", re.DOTALL)
+    r"[ \t]+([^\s\"|.\[\]][^\s|]*)(?:[ \t]+([^\s|](?:(?<=\()\s*(P-[A-Z]{4}-[0-9]{5}))?.*)|[ \t]*)\Z",
+    re.DOTALL)
 _KIND_RE = re.compile(
     r"(?P<int>[+-]?[0-9]+)|(?P<hex>[+-]?0[xX][0-9A-Fa-f]+)|(?P<ref>P-[A-Z]{4}-[0-9]{5}(?:\.[0-9]+)?)"
     r"|(?P<real>[+-]?(?:[0-9]+\.[0-9]*|\.[0-9]+|[0-9]+(?=[eE]))(?:[eE][+-]?[0-9]+)?)")
@@ -233,6 +234,7 @@ def tokenize_text(text: str, path: str = "-", encoding: str = "utf-8", bom: bool
     after_end_reported = False
     fast = _FAST_ENTRY_RE.match if use_fast else None
     kind_match = _KIND_RE.fullmatch
+    kinds: dict[str, ValueKind] = {}  # values repeat ("0", "1"): classified once per text
     append = items.append
     has_nul = "\x00" in text  # one scan of the text, not one per line
     for number, s in enumerate(lines, 1):
@@ -242,18 +244,24 @@ def tokenize_text(text: str, path: str = "-", encoding: str = "utf-8", bom: bool
         else:
             m = fast(s) if fast is not None else None
         if m is not None and end_line is None and m.group(1) != END_KEYWORD:
-            key_text, value, comment = m.group(1, 2, 3)
-            ks, ke = m.span(1)
-            vs, ve = m.span(2)
-            km = kind_match(value)
-            kind = _KIND_OF[km.lastgroup] if km is not None and km.lastgroup else ValueKind.WORD
-            entry = Entry(number, key_text, key_text, parse_key(key_text, True), ks, ke, value, kind, vs, ve)
+            key_text, value, comment, note = m.group(1, 2, 3, 4)
+            kind: ValueKind | None = kinds.get(value)
+            if kind is None:
+                km = kind_match(value)
+                kind = _KIND_OF[km.lastgroup] if km is not None and km.lastgroup else ValueKind.WORD
+                if len(kinds) < 4096:
+                    kinds[value] = kind
+            entry = Entry(number, key_text, key_text, parse_key(key_text, True), m.start(1), m.end(1),
+                          value, kind, m.start(2), m.end(2))
             if comment is not None:
                 cs = m.start(3)
                 entry.comment = comment
                 entry.comment_start = cs
                 entry.comment_style = _STYLE_OF.get(comment[0]) or comment_style(comment)
-                if "P-" in comment:
+                if note is not None:  # `( P-AXIS-00001 …` at the comment's start: matched above
+                    entry.annotation = note
+                    entry.annotation_start = m.start(4)
+                elif "P-" in comment:
                     am = _ANNOTATION_RE.search(comment)
                     if am:
                         entry.annotation = am.group(1)

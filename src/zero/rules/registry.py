@@ -272,8 +272,22 @@ def _default_contradicts(spec: ParamSpec, registry: Registry) -> bool:
 @FAMILY.check(WRONG_TYPE, OUT_OF_RANGE, RANGE_REFERENCE, UNKNOWN_REFERENCE)
 def check_values(ctx: Context) -> Iterator[Diagnostic]:
     """R004, R005, R006, R009: type, range, references."""
+    # Whether a value passes depends only on (parameter, value text) unless its range refers to
+    # other parameters (then on the entry's indices too): a value that passed once passes again.
+    passed: set[tuple[str, str]] = set()
+    registry = ctx.registry
     for res in ctx.resolved:
-        yield from _check_value(ctx, res)
+        slot = (res.spec.id, res.entry.value)
+        if slot in passed:
+            continue
+        clean = True
+        for found in _check_value(ctx, res):
+            clean = False
+            yield found
+        if clean and len(passed) < 65_536:
+            rng = registry.range_of(res.spec) if res.spec.range_text else None
+            if rng is None or not rng.refs:
+                passed.add(slot)
 
 
 def _check_value(ctx: Context, res: Resolved) -> Iterator[Diagnostic]:
