@@ -54,3 +54,21 @@ def test_fast_path_reads_exactly_like_the_careful_scanner(text: str) -> None:
         return out, doc.problems
 
     assert shape(tokenize_text(text)) == shape(tokenize_text(text, use_fast=False))
+
+
+@given(st.lists(st.sampled_from([b"a", b"\xb5", b"\xc2\xb5", b"\xe2\x82\xac", b"\xff", b"\n", b"\xed\xb2\x80"]),
+                max_size=40).map(b"".join))
+@settings(max_examples=300)
+def test_mixed_encoding_is_told_from_stray_bytes(data: bytes) -> None:
+    """UTF-8 with stray bytes stays UTF-8 only when it also holds real multi-byte characters
+    (the one-regex test equals the per-character definition)."""
+    text, encoding, _ = decode(data)
+    assert text.encode(encoding, "surrogateescape") == data
+    try:
+        data.decode("utf-8")
+        return
+    except UnicodeDecodeError:
+        pass
+    escaped = data.decode("utf-8", "surrogateescape")
+    real = any(ord(ch) > 0x7F and not 0xDC80 <= ord(ch) <= 0xDCFF for ch in escaped)
+    assert (encoding == "utf-8") == real

@@ -12,13 +12,11 @@ from __future__ import annotations
 from collections.abc import Callable, Sequence
 from dataclasses import dataclass, field
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from zero.catalog.registry import KINDS, Registry, kind_from_name
-from zero.engine.baseline import add_noqa
 from zero.engine.config import Config, ConfigFinder
 from zero.engine.discovery import collect_files
-from zero.engine.fixes import fix_bytes, unified_diff
-from zero.engine.formatting import format_bytes
 from zero.engine.lint import (
     PROGRAM_SUFFIXES,
     LintOptions,
@@ -34,8 +32,10 @@ from zero.engine.lint import (
 from zero.engine.parallel import lint_many
 from zero.errors import ZeroError
 from zero.files import read_file, write_atomic
-from zero.machine.model import Machine, load_machine
 from zero.rules import RULES
+
+if TYPE_CHECKING:  # start-up: `zero lint` of lists loads no machine model, fixer or formatter
+    from zero.machine.model import Machine
 
 Registries = Callable[[Path | None], Registry]
 Progress = Callable[[int, int], None]
@@ -185,6 +185,8 @@ def _with_machine(path: Path, result: LintResult, cfg: Config, cli: LintOptions,
     """An NC program in a project whose configuration names the machine: lint it against it."""
     if cfg.machine is None or path.suffix.lower() not in PROGRAM_SUFFIXES or is_unreadable(result):
         return result
+    from zero.machine.model import load_machine  # start-up: only with a machine
+
     registry = registries(param_desc_of(cfg, param_desc))
     m = machines.get(cfg.machine)
     if m is None:
@@ -209,6 +211,8 @@ def _lint_stdin(request: LintRequest, cli: LintOptions, finder: ConfigFinder, re
     options = cfg.options_for(Path(name), cli)
     registry = registries(param_desc_of(cfg, request.param_desc))
     if (request.fix or request.show_diff) and is_list(name):
+        from zero.engine.fixes import fix_bytes, unified_diff  # start-up: only with --fix/--diff
+
         fixed = fix_bytes(data, name, registry, options, request.unsafe_fixes)
         if request.show_diff:
             patch = unified_diff(name, data, fixed.fixed)
@@ -230,6 +234,8 @@ def _fix_one(path: Path, result: LintResult, options: LintOptions, registry: Reg
     writes); return the findings that are left (with ``--diff``, the findings as they are)."""
     if not is_list(str(path)) or is_unreadable(result):
         return result  # findings in YAML/TOML/JSON and NC programs carry no list edits
+    from zero.engine.fixes import fix_bytes, unified_diff  # start-up: only with --fix/--diff
+
     data = read_file(path)
     fixed = fix_bytes(data, str(path), registry, options, request.unsafe_fixes)
     if fixed.fixed == data:
@@ -248,6 +254,8 @@ def _add_noqa(path: Path, result: LintResult, options: LintOptions, registry: Re
     """Record a list's findings as ``noqa`` directives; return what is still reported."""
     if not is_list(str(path)) or is_unreadable(result) or not result.diagnostics:
         return result
+    from zero.engine.baseline import add_noqa  # start-up: only with --add-noqa
+
     data = read_file(path)
     baseline = add_noqa(lint_bytes(data, registry, str(path), options))
     if baseline.added:
@@ -277,6 +285,8 @@ def run_format(paths: Sequence[str | Path], registries: Registries, echo: Echo, 
                stdin_filename: str | None = None) -> FormatRun:
     """``zero format``: rewrite files in canonical layout; with ``check``/``show_diff`` only
     report (never write). ``-`` formats standard input to standard output."""
+    from zero.engine.fixes import unified_diff  # start-up: `zero lint` does not format
+
     finder = ConfigFinder(Path(config) if config else None, isolated)
     if [str(p) for p in paths] == ["-"]:
         if read_stdin is None:
@@ -309,6 +319,8 @@ def run_format(paths: Sequence[str | Path], registries: Registries, echo: Echo, 
 
 
 def _formatted(data: bytes, name: str, registry: Registry, echo: Echo, run: FormatRun) -> bytes | None:
+    from zero.engine.formatting import format_bytes  # start-up: `zero lint` does not format
+
     try:
         return format_bytes(data, name, registry)
     except ZeroError as exc:
@@ -319,6 +331,8 @@ def _formatted(data: bytes, name: str, registry: Registry, echo: Echo, run: Form
 
 def _format_stdin(data: bytes, name: str, finder: ConfigFinder, registries: Registries, echo: Echo,
                   check: bool, show_diff: bool, param_desc: str | Path | None) -> FormatRun:
+    from zero.engine.fixes import unified_diff  # start-up: `zero lint` does not format
+
     run = FormatRun(1)
     cfg = finder.for_path(Path(name))
     if not is_list(name):  # an NC program or a structured form passes through unchanged

@@ -33,7 +33,6 @@ working-directory = "."                    # where the controller resolves ./lis
 
 from __future__ import annotations
 
-import difflib
 import functools
 import os
 import re
@@ -47,9 +46,7 @@ from zero.engine.lint import LintOptions
 from zero.errors import ZeroError
 from zero.files import read_file
 from zero.lists.model import parse_key
-from zero.machine.model import BY_KEY
 from zero.rules import RULES
-from zero.structured.toml import scan_toml
 
 if TYPE_CHECKING:
     from pathspec import GitIgnoreSpec
@@ -81,6 +78,8 @@ def patterns(globs: tuple[str, ...]) -> GitIgnoreSpec:
 
 def _is_reference(key: str) -> bool:
     """A start-up key that names a list (``achs_mds[0]``, ``hand_mds``)."""
+    from zero.machine.model import BY_KEY  # start-up: only a configuration that names lists
+
     parsed = parse_key(key)
     ref = BY_KEY.get(parsed.pattern) if parsed is not None else None
     return ref is not None and len(parsed.indices) == ref.key.count("[]")  # type: ignore[union-attr]
@@ -180,6 +179,8 @@ class Config:
 
 def _line_of(text: str, table: tuple[str, ...], key: str | None) -> int | None:
     """Best effort: the line of ``key`` in ``table`` (or of the table header)."""
+    from zero.structured.toml import scan_toml  # start-up: only for a configuration error
+
     found, _ = scan_toml(text)
     if key is not None:
         hit = found.get((*table, key))
@@ -246,6 +247,8 @@ def parse_config(path: Path, text: str | None = None) -> Config | None:
     cfg = Config(path=path)
     for key, value in data.items():
         if key not in _KEYS:
+            import difflib  # start-up: only for a configuration error
+
             near = difflib.get_close_matches(key.replace("_", "-"), _KEYS, n=1, cutoff=0.6)
             hint = f" (did you mean `{near[0]}`?)" if near else ""
             raise fail(key, f"unknown key{hint}; known: {', '.join(_KEYS)}")

@@ -13,6 +13,7 @@ from __future__ import annotations
 import re
 from dataclasses import dataclass, field, replace
 from pathlib import Path
+from typing import TYPE_CHECKING
 
 from zero.catalog.registry import Registry, kind_from_name
 from zero.diagnostics import Diagnostic, Severity, Span
@@ -20,8 +21,6 @@ from zero.errors import ZeroError
 from zero.files import read_file
 from zero.lists.model import Document
 from zero.lists.tokenizer import tokenize
-from zero.machine.model import Machine, load_machine
-from zero.nc.program import read_program
 from zero.rules import (
     MACHINE_CHECKS,
     PROGRAM_CHECKS,
@@ -31,8 +30,10 @@ from zero.rules import (
     check_document,
     run_checks,
 )
-from zero.structured.formats import read_tree
-from zero.structured.tree import Tree, encode_list, structured_path, to_list_text
+
+if TYPE_CHECKING:  # start-up: linting a list loads neither the machine model nor the structured forms
+    from zero.machine.model import Machine
+    from zero.structured.tree import Tree
 
 LIST_SUFFIXES = (".lis", ".lst")
 PROGRAM_SUFFIXES = (".nc", ".mpf", ".spf")  # NC programs (zero.nc)
@@ -105,6 +106,8 @@ def lint_bytes(data: bytes, registry: Registry, path: str = "-",
 def lint_tree(tree: Tree, registry: Registry, options: LintOptions | None = None,
               source: str | None = None) -> LintResult:
     """Lint the list a tree makes; findings point at the structured file where known."""
+    from zero.structured.tree import encode_list, structured_path, to_list_text  # start-up: not for lists
+
     written = to_list_text(tree)
     data = encode_list(tree, written.text)
     doc = tokenize(data, tree.path)
@@ -142,6 +145,8 @@ def lint_tree(tree: Tree, registry: Registry, options: LintOptions | None = None
 def lint_structured(data: bytes, fmt: str, registry: Registry, path: str = "-",
                     options: LintOptions | None = None) -> LintResult:
     """Lint YAML/TOML/JSON bytes as the list they convert to."""
+    from zero.structured.formats import read_tree  # start-up: not for lists
+
     tree = read_tree(data, fmt, registry, path)
     source = data.decode("utf-8", "replace").lstrip("\ufeff")
     return lint_tree(tree, registry, options, source if fmt in ("yaml", "toml") else None)
@@ -150,6 +155,8 @@ def lint_structured(data: bytes, fmt: str, registry: Registry, path: str = "-",
 def lint_program(data: bytes, registry: Registry, path: str = "-", options: LintOptions | None = None,
                  machine: Machine | None = None) -> LintResult:
     """Findings N001–N004 for one NC program (N003/N004 need the machine)."""
+    from zero.nc.program import read_program  # start-up: not for lists
+
     program = read_program(data, path, registry)
     ctx = ProgramContext(program, registry, machine, selected_rules(options or LintOptions()), path)
     found = run_checks(PROGRAM_CHECKS, ctx)
@@ -199,6 +206,8 @@ def lint_machine(startup_path: Path, registry: Registry, options: LintOptions | 
                  workdir: Path | None = None) -> tuple[Machine, list[LintResult]]:
     """Every list of the machine with its own findings, plus the X findings on the file they
     concern (the start-up list, a channel list, a zero-offset list or an axis list)."""
+    from zero.machine.model import load_machine  # start-up: not for a single list
+
     opts = options or LintOptions()
     machine = load_machine(startup_path, registry, opts.kind, overrides, workdir)
     severities = selected_rules(opts)

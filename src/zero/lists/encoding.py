@@ -7,9 +7,13 @@ are not valid in the file's encoding are kept as lone surrogates
 
 from __future__ import annotations
 
+import re
+
 from zero.lists.model import Document
 
 BOM = b"\xef\xbb\xbf"
+# A character that came from a real UTF-8 sequence: beyond ASCII and not an escaped stray byte.
+_REAL_UTF8 = re.compile("[\x80-\udc7f\udd00-\U0010ffff]")
 
 
 def decode(data: bytes) -> tuple[str, str, bool]:
@@ -25,7 +29,7 @@ def decode(data: bytes) -> tuple[str, str, bool]:
     except UnicodeDecodeError:
         pass
     text = data.decode("utf-8", "surrogateescape")
-    if any(ord(ch) > 0x7F and not 0xDC80 <= ord(ch) <= 0xDCFF for ch in text):
+    if _REAL_UTF8.search(text):
         # Real UTF-8 sequences next to stray bytes: a file of mixed encodings.
         return text, "utf-8", False
     try:

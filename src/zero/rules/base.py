@@ -19,13 +19,15 @@ from __future__ import annotations
 import re
 from collections.abc import Callable, Iterator
 from dataclasses import dataclass, field
-from typing import Generic, Literal, TypeVar
+from typing import TYPE_CHECKING, Generic, Literal, TypeVar
 
 from zero.catalog.registry import Registry
 from zero.catalog.values import ListValues
 from zero.diagnostics import Diagnostic, Fix, Severity, Span
-from zero.machine.model import Machine
-from zero.nc.program import Program
+
+if TYPE_CHECKING:  # start-up: a list's lint does not load the machine and program models
+    from zero.machine.model import Machine
+    from zero.nc.program import Program
 
 Scope = Literal["list", "machine", "program", "suppression", "file"]
 E, W, INFO = Severity.ERROR, Severity.WARNING, Severity.INFO

@@ -24,7 +24,6 @@ from zero.catalog.ids import (
 )
 from zero.catalog.ranges import TYPE_LIMITS
 from zero.diagnostics import Diagnostic, Span
-from zero.machine.model import COUNT_KEYS, REFERENCES, axis_of
 from zero.rules.base import E, Family, MachineContext, W
 
 FAMILY: Family[MachineContext] = Family("X", "machine (across lists, `zero lint --machine`)", "machine")
@@ -51,6 +50,8 @@ Fix: correct the path, or add the file.
 @FAMILY.check(MISSING_LIST)
 def check_missing(ctx: MachineContext) -> Iterator[Diagnostic]:
     """X005: every list the start-up list names can be read."""
+    from zero.machine.model import COUNT_KEYS, REFERENCES  # start-up: only a machine's lint needs it
+
     machine = ctx.machine
     startup = machine.startup
     for m in machine.missing:
@@ -92,6 +93,8 @@ Fix: raise the count, or remove the reference.
 @FAMILY.check(BEYOND_COUNT)
 def check_counts(ctx: MachineContext) -> Iterator[Diagnostic]:
     """X008: lists named beyond zahl_mds, zahl_kw or kanal_anzahl."""
+    from zero.machine.model import COUNT_KEYS  # start-up: only a machine's lint needs it
+
     startup = ctx.machine.startup
     for n in ctx.machine.named:
         if n.status != "beyond-count" or n.reference.count is None:
@@ -135,6 +138,8 @@ Fix: add the axis list to the start-up list (`achs_mds[i]`), or correct `log_ach
 @FAMILY.check(DUPLICATE_AXIS, CHANNEL_AXIS_WITHOUT_LIST)
 def check_axes(ctx: MachineContext) -> Iterator[Diagnostic]:
     """X004, X007: one axis list per logical axis, and one for every channel axis."""
+    from zero.machine.model import axis_of  # start-up: only a machine's lint needs it
+
     machine = ctx.machine
     seen_nr: dict[int, str] = {}
     seen_name: dict[str, str] = {}

@@ -7,13 +7,16 @@ does with its ``#MACHINE DATA`` blocks and its programmed soft limits (G98/G99).
 from __future__ import annotations
 
 from collections.abc import Iterator
+from typing import TYPE_CHECKING
 
 from zero.catalog.ids import LENGTH_UNIT, RANGE_CHECK_PROG_LIMITS, SWE_NEG, SWE_POS, fixed
 from zero.diagnostics import Diagnostic, Severity, Span
 from zero.lists.tokenizer import tokenize
-from zero.machine.model import Axis
 from zero.rules import registry, syntax
 from zero.rules.base import E, Family, ProgramContext, W
+
+if TYPE_CHECKING:  # start-up: a list's lint does not load the machine model
+    from zero.machine.model import Axis
 from zero.rules.lists import check_document
 
 FAMILY: Family[ProgramContext] = Family("N", "NC programs", "program")

@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import difflib
 from collections.abc import Iterator
 
 from zero.catalog.ids import SOFT_LIMITS
@@ -319,6 +318,8 @@ def _check_value(ctx: Context, res: Resolved) -> Iterator[Diagnostic]:
         return
     if v.problem == "symbol":
         names = [s for s, _ in spec.symbols]
+        import difflib  # start-up: only for a value that is not allowed
+
         near = difflib.get_close_matches(v.detail, names, n=1, cutoff=0.6)
         shown = ", ".join(names[:8]) + (", …" if len(names) > 8 else "")
         yield ctx.report(
