@@ -8,8 +8,9 @@ import pytest
 
 from conftest import FIXTURES, findings, golden
 from zero.catalog.registry import Registry
-from zero.engine.lint import LintOptions, lint_file
+from zero.engine.lint import LintOptions, lint_bytes, lint_file
 from zero.rules import RULES
+from zero.rules.registry import SUGGESTIONS
 
 RULE_DIRS = sorted(p for p in (FIXTURES / "rules").iterdir() if p.is_dir())
 
@@ -83,3 +84,15 @@ def test_opt_in_rules_run_only_when_named() -> None:
     assert "S012" in selected_rules(LintOptions(extend_select=("S012",)))
     assert "S012" in selected_rules(LintOptions(select=("S012",)))
     assert set(selected_rules(LintOptions(extend_select=("S012",)))) == set(selected_rules(LintOptions())) | {"S012"}
+
+
+def test_spellings_are_proposed_for_the_first_hundred_unknown_keys(registry: Registry) -> None:
+    """Did-you-mean scans every known key: a list of made-up keys gets it for its first 100
+    distinct unknown keys, and every entry is still reported."""
+    lines = [f"kenngr.swe_pos{i:03d} 1\n" for i in range(SUGGESTIONS + 20)]
+    lines += ["kenngr.swe_pos000 2\n"]  # an unknown key seen before keeps its proposal
+    result = lint_bytes("".join(lines).encode(), registry, "achse.lis", LintOptions(kind="AXIS"))
+    r001 = [d for d in result.diagnostics if d.code == "R001"]
+    assert len(r001) == SUGGESTIONS + 21
+    hinted = [d.span.line for d in r001 if d.hint and "did you mean" in d.hint]
+    assert hinted == [*range(1, SUGGESTIONS + 1), SUGGESTIONS + 21]

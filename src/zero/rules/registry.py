@@ -21,7 +21,8 @@ UNKNOWN_KEY = FAMILY.rule(
     """
 What it checks: every key (with its indices removed) must be a parameter of the list's
 kind in the registry. zero says which list a key belongs to when it is valid elsewhere,
-and proposes the closest known key.
+and proposes the closest known key (for the first 100 distinct unknown keys of a list:
+a list with more is not a list of its kind, and spellings would not help).
 
 Why it matters on the machine: unknown entries are not taken over; the parameter the
 engineer meant keeps its default, and the start-up shows only a warning.
@@ -83,6 +84,7 @@ Fix: nothing, unless your kernel's parameter description documents another key f
 def check_keys(ctx: Context) -> Iterator[Diagnostic]:
     """R001, R002, R003: key known, spelling documented, indices inside the arrays."""
     reg = ctx.registry
+    proposed: set[str] = set()  # unknown patterns a spelling was looked for (the first SUGGESTIONS)
     for e in ctx.entries:
         key = e.key
         if key is None:
@@ -107,7 +109,13 @@ def check_keys(ctx: Context) -> Iterator[Diagnostic]:
                 )
                 continue
             vendor = reg.vendor_keys.get((ctx.kind or "", key.pattern))
-            yield _vendor_key(ctx, e, *vendor) if vendor is not None else _unknown_key(ctx, e)
+            if vendor is not None:
+                yield _vendor_key(ctx, e, *vendor)
+                continue
+            propose = key.pattern in proposed or len(proposed) < SUGGESTIONS
+            if propose:
+                proposed.add(key.pattern)
+            yield _unknown_key(ctx, e, propose)
             continue
         if not key.indices:
             continue
@@ -141,7 +149,12 @@ def _vendor_key(ctx: Context, e: Entry, source: str, near: str) -> Diagnostic:
                       "does with it", hint=hint)
 
 
-def _unknown_key(ctx: Context, e: Entry) -> Diagnostic:
+# Did-you-mean costs a scan of every known key per distinct unknown one: proposed for this many
+# distinct unknown keys of a list (a list of a million made-up keys must not take minutes).
+SUGGESTIONS = 100
+
+
+def _unknown_key(ctx: Context, e: Entry, propose: bool = True) -> Diagnostic:
     assert e.key is not None
     reg = ctx.registry
     other = [k for k in reg.kinds_of(e.key.pattern) if k != ctx.kind]
@@ -156,7 +169,7 @@ def _unknown_key(ctx: Context, e: Entry) -> Diagnostic:
         hint = "check that this is the right file, or override the detection with --kind"
     else:
         msg = f"unknown key `{e.key_text}`: not taken over by the controller"
-        near = reg.suggest(e.key.pattern, ctx.kind)
+        near = reg.suggest(e.key.pattern, ctx.kind) if propose else []
         if near:
             proposal = format_key(near[0], e.key.indices)
             hint = f"did you mean `{proposal}`?"
