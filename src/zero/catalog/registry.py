@@ -179,6 +179,9 @@ class Registry:
     _machine_data: frozenset[str] | None = None
     # (kind, pattern) → spec: a big list asks for a few dozen patterns a million times
     _pattern_specs: dict[tuple[str | None, str], ParamSpec | None] = field(default_factory=dict)
+    # Caches of the layers above, kept with the registry their entries depend on (values read per
+    # (ID, text), values that passed their range): a fleet of lists repeats them from file to file.
+    memo: dict[str, dict[Any, Any]] = field(default_factory=dict, repr=False)
 
     def __post_init__(self) -> None:
         if isinstance(self.specs, SpecTable):

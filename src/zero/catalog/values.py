@@ -192,7 +192,7 @@ class ListValues:
         # A big list has few patterns and few distinct values: each pattern is bound, and each
         # (parameter, value) read, once. Values are never changed after reading, so are shared.
         bound: dict[str, tuple[ParamSpec, bool] | None] = {}
-        read: dict[tuple[str, str], Value] = {}  # the value's kind follows from its text
+        read: dict[tuple[str, str], Value] = registry.memo.setdefault("values", {})  # kind follows from text
         for e in entries:
             key = e.key
             if key is None or e.value_kind is None:

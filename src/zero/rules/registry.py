@@ -286,8 +286,8 @@ def check_values(ctx: Context) -> Iterator[Diagnostic]:
     """R004, R005, R006, R009: type, range, references."""
     # Whether a value passes depends only on (parameter, value text) unless its range refers to
     # other parameters (then on the entry's indices too): a value that passed once passes again.
-    passed: set[tuple[str, str]] = set()
     registry = ctx.registry
+    passed: dict[tuple[str, str], bool] = registry.memo.setdefault("passed", {})  # kept across lists
     for res in ctx.resolved:
         slot = (res.spec.id, res.entry.value)
         if slot in passed:
@@ -299,7 +299,7 @@ def check_values(ctx: Context) -> Iterator[Diagnostic]:
         if clean and len(passed) < 65_536:
             rng = registry.range_of(res.spec) if res.spec.range_text else None
             if rng is None or not rng.refs:
-                passed.add(slot)
+                passed[slot] = True
 
 
 def _check_value(ctx: Context, res: Resolved) -> Iterator[Diagnostic]:
