@@ -27,7 +27,9 @@ ALLOWED: dict[str, set[str]] = {
     "rules": {FOUNDATION, "lists", "catalog", "machine", "nc"},
     "engine": {FOUNDATION, "lists", "catalog", "structured", "machine", "nc", "diff", "rules"},
     "output": {FOUNDATION, "lists", "catalog", "machine", "diff", "rules", "engine"},
-    "cli": {FOUNDATION, "lists", "catalog", "structured", "machine", "nc", "diff", "rules", "engine", "output"},
+    "server": {FOUNDATION, "lists", "catalog", "structured", "machine", "nc", "diff", "rules", "engine", "output"},
+    "cli": {FOUNDATION, "lists", "catalog", "structured", "machine", "nc", "diff", "rules", "engine", "output",
+            "server"},
 }
 
 

@@ -402,6 +402,28 @@ def format_cmd(
     _run(body)
 
 
+# ---------------------------------------------------------------------------- server
+
+
+@app.command("server")
+def server_cmd(
+    stdio: Annotated[bool, typer.Option(
+        "--stdio", help="Talk over standard input and output: the default and only transport (accepted for "
+        "editors that pass it).", show_default=False)] = False,
+    param_desc: ParamDesc = None,
+) -> None:
+    """Run the language server (LSP) for editors: findings as you type, hover, completion, fixes,
+    formatting, outline (see the README's Editors section)."""
+
+    def body() -> int:
+        from zero.server.lsp import serve  # start-up: pygls only for the server
+
+        serve(REGISTRIES, state.param_desc)
+        return exits.OK
+
+    _run(body)
+
+
 # ------------------------------------------------------------------ config, rule, param
 
 

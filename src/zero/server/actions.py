@@ -1,0 +1,166 @@
+"""Code actions and formatting: zero's own fixes, ``noqa`` directives and ``zero format`` as
+text edits.
+
+Every fix a finding carries is offered as a quick fix, labelled when it is unsafe (it
+changes what the controller reads; ``zero lint --unsafe-fixes``); every finding of a list
+can be suppressed on its line in the list's own comment syntax, written as ``zero lint
+--add-noqa`` writes it (:func:`zero.engine.baseline.add_noqa`), and in the trailing comment
+of a YAML/TOML line. ``source.fixAll.zero`` applies the safe fixes as ``zero lint --fix``
+does, ``source.zero.fixAllUnsafe`` the unsafe ones too; formatting is ``zero format``.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Sequence
+
+from lsprotocol import types
+
+from zero.diagnostics import Diagnostic
+from zero.engine.baseline import NOT_RECORDED, add_noqa
+from zero.engine.fixes import fix_bytes
+from zero.engine.formatting import format_bytes
+from zero.engine.lint import LintResult
+from zero.lists.encoding import BOM, decode
+from zero.server.documents import LIST, STRUCTURED, Analysis, Text
+from zero.server.findings import RuleDocs, span_range, to_lsp
+
+FIX_ALL = "source.fixAll.zero"
+FIX_ALL_UNSAFE = "source.zero.fixAllUnsafe"  # not below source.fixAll: never applied on save unasked
+KINDS = [types.CodeActionKind.QuickFix, FIX_ALL, FIX_ALL_UNSAFE]
+_LINES = re.compile(r"[^\n]*\n|[^\n]+\Z")
+
+
+def _split(text: str) -> list[str]:
+    """Lines with their endings, split where zero and the client split them (after each LF)."""
+    return _LINES.findall(text)
+
+
+def line_edits(text: Text, new: str) -> list[types.TextEdit]:
+    """The edits that turn the document into ``new``: one per run of changed lines."""
+    import difflib  # start-up: only when there is something to compare
+
+    old_lines, new_lines = _split(text.source), _split(new)
+
+    def start_of(i: int) -> types.Position:
+        if i < len(old_lines):
+            return types.Position(i, 0)
+        if not old_lines or old_lines[-1].endswith("\n"):
+            return types.Position(len(old_lines), 0)
+        last = len(old_lines) - 1
+        return types.Position(last, text.character(last, len(old_lines[-1])))
+
+    edits = []
+    matcher = difflib.SequenceMatcher(None, old_lines, new_lines, autojunk=False)
+    for tag, i1, i2, j1, j2 in matcher.get_opcodes():
+        if tag != "equal":
+            edits.append(types.TextEdit(types.Range(start_of(i1), start_of(i2)), "".join(new_lines[j1:j2])))
+    return edits
+
+
+def _decoded(data: bytes, encoding: str | None) -> str:
+    """Bytes zero wrote back in the document's own encoding, as text (a BOM dropped, as the editor does)."""
+    if encoding is None:
+        return decode(data)[0]
+    return (data[3:] if data.startswith(BOM) else data).decode(encoding, "surrogateescape")
+
+
+def formatting(a: Analysis) -> list[types.TextEdit]:
+    """``zero format`` of the document as edits (:class:`~zero.errors.ZeroError` for a line it cannot
+    read); nothing for NC programs and structured forms, which zero does not reformat."""
+    if a.form != LIST:
+        return []
+    new = format_bytes(a.data, a.name, a.registry)
+    if new == a.data:
+        return []
+    encoding = a.result.document.encoding if a.result is not None else None
+    return line_edits(a.text, _decoded(new, encoding))
+
+
+def _fix_edits(a: Analysis, d: Diagnostic) -> list[types.TextEdit]:
+    assert d.fix is not None
+    return [types.TextEdit(span_range(a.text, e.span), e.replacement) for e in d.fix.edits]
+
+
+def _noqa_edit(a: Analysis, d: Diagnostic) -> types.TextEdit | None:
+    """The edit that suppresses ``d`` on its line, or None where zero cannot suppress it there."""
+    if d.code in NOT_RECORDED or d.code[0] in "XF" or a.result is None:
+        return None
+    line = d.span.line
+    if a.form == LIST:
+        doc = a.result.document
+        baseline = add_noqa(LintResult(a.name, doc, a.result.kind, [d]), reason="reviewed")
+        if not baseline.added:
+            return None
+        new_lines = [x[:-1] if x.endswith("\r") else x for x in _decoded(baseline.data, doc.encoding).split("\n")]
+        old, new = doc.line_text(line), new_lines[line - 1] if line <= len(new_lines) else ""
+    elif a.form == STRUCTURED and a.name.lower().endswith((".yaml", ".yml", ".toml")):
+        old = a.text.line(line - 1)
+        if "#" in old or d.message.startswith("(list line") or not old.strip():
+            return None  # a trailing comment there already, or no line of its own
+        new = f"{old.rstrip()}  # ( noqa: {d.code} -- reviewed )"
+    else:
+        return None
+    keep = 0
+    while keep < min(len(old), len(new)) and old[keep] == new[keep]:
+        keep += 1
+    index = line - 1
+    rng = types.Range(types.Position(index, a.text.character(index, keep)),
+                      types.Position(index, a.text.character(index, len(old))))
+    return types.TextEdit(rng, new[keep:])
+
+
+def _wanted(kind: str, only: Sequence[str] | None) -> bool:
+    return not only or any(kind == o or kind.startswith(o + ".") for o in only)
+
+
+def _fix_all(a: Analysis, unsafe: bool) -> list[types.TextEdit]:
+    fixed = fix_bytes(a.data, a.name, a.registry, a.options, unsafe)
+    if fixed.fixed == a.data:
+        return []
+    return line_edits(a.text, _decoded(fixed.fixed, a.result.document.encoding if a.result else None))
+
+
+def code_actions(a: Analysis, rng: types.Range, only: Sequence[str] | None, docs: RuleDocs,
+                 lazy: bool = False) -> list[types.CodeAction]:
+    """The fixes and suppressions of the findings on the lines of ``rng``, and the whole-file fixes
+    (``lazy``: those without their edit, which :func:`resolve` adds when the user picks one)."""
+    out: list[types.CodeAction] = []
+    first, last = rng.start.line, max(rng.start.line, rng.end.line)
+    here = [d for d in a.diagnostics if d.span.line - 1 <= last and d.span.end_line - 1 >= first]
+    for d in here:
+        diag = to_lsp(a, d, docs)
+        if d.fix is not None and d.fix.edits and _wanted(types.CodeActionKind.QuickFix, only):
+            title = f"{d.fix.title} ({d.code})" if d.fix.safe else \
+                f"{d.fix.title} ({d.code}, unsafe: changes what the controller reads)"
+            out.append(types.CodeAction(title, kind=types.CodeActionKind.QuickFix, diagnostics=[diag],
+                                        is_preferred=d.fix.safe or None,
+                                        edit=types.WorkspaceEdit(changes={a.uri: _fix_edits(a, d)})))
+        noqa = _noqa_edit(a, d) if _wanted(types.CodeActionKind.QuickFix, only) else None
+        if noqa is not None:
+            out.append(types.CodeAction(f"Suppress {d.code} on this line (noqa)", kind=types.CodeActionKind.QuickFix,
+                                        diagnostics=[diag], edit=types.WorkspaceEdit(changes={a.uri: [noqa]})))
+    if a.form == LIST and a.result is not None:
+        fixes = [d.fix for d in a.diagnostics if d.fix is not None and d.fix.edits]
+        for kind, unsafe, title in ((FIX_ALL, False, "Apply zero's safe fixes (zero lint --fix)"),
+                                    (FIX_ALL_UNSAFE, True, "Apply all of zero's fixes, unsafe ones too "
+                                                           "(zero lint --fix --unsafe-fixes)")):
+            if not _wanted(kind, only) or not any(f.safe or unsafe for f in fixes):
+                continue
+            if unsafe and all(f.safe for f in fixes):
+                continue  # the same as the safe fixes
+            if lazy:
+                out.append(types.CodeAction(title, kind=kind, data={"uri": a.uri, "unsafe": unsafe}))
+                continue
+            edits = _fix_all(a, unsafe)
+            if edits:
+                out.append(types.CodeAction(title, kind=kind, edit=types.WorkspaceEdit(changes={a.uri: edits})))
+    return out
+
+
+def resolve(a: Analysis, action: types.CodeAction) -> types.CodeAction:
+    """A whole-file fix with its edit (for the current text of the document)."""
+    data = action.data if isinstance(action.data, dict) else {}
+    if action.edit is None and a.form == LIST and a.result is not None:
+        action.edit = types.WorkspaceEdit(changes={a.uri: _fix_all(a, bool(data.get("unsafe")))})
+    return action

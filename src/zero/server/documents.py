@@ -1,0 +1,421 @@
+"""The documents an editor has open, each analysed as ``zero lint`` analyses the file.
+
+The protocol layer hands in a document's URI, version and text; :meth:`Projects.analyse`
+returns an :class:`Analysis`: the findings of the engine with the configuration of the
+file's project applied (``[tool.zero]``, ``per-file-ignores``, ``exclude``, ``param-desc``,
+noqa), and, where the project names its machine (``[tool.zero.machine]``), the X findings
+of the machine's lists and the N findings of NC programs against it. The text the editor
+holds is linted, not the file: where it equals the file as zero decodes it, the file's own
+bytes are linted (its encoding, BOM and line endings, exactly as on the command line).
+
+Positions: zero counts 1-based lines and code points; the client counts 0-based lines in
+UTF-16 code units (or UTF-8/UTF-32, as negotiated). :class:`Text` converts both ways.
+"""
+
+from __future__ import annotations
+
+import os
+import re
+from collections import OrderedDict
+from collections.abc import Mapping
+from dataclasses import dataclass, field, replace
+from pathlib import Path
+from urllib.parse import unquote, urlparse
+from urllib.request import url2pathname
+
+from zero.catalog.registry import Registry
+from zero.catalog.values import ListValues
+from zero.diagnostics import Diagnostic, Severity, Span
+from zero.engine.commands import Registries, param_desc_of
+from zero.engine.config import Config, ConfigFinder
+from zero.engine.lint import (
+    PROGRAM_SUFFIXES,
+    STRUCTURED_SUFFIXES,
+    LintOptions,
+    LintResult,
+    lint_data,
+    lint_program,
+    selected_rules,
+)
+from zero.errors import ZeroError
+from zero.files import max_file_bytes, read_file
+from zero.lists.encoding import decode
+from zero.lists.tokenizer import tokenize
+from zero.machine.model import ListFile, Machine, load_machine
+from zero.rules import MACHINE_CHECKS, MachineContext, run_checks
+
+LIST, PROGRAM, STRUCTURED = "list", "program", "structured"
+# A YAML/TOML/JSON file is a list's structured form when it carries zero's record.
+_ZERO_RECORD = re.compile(r'^(?:_zero\s*:|\[\s*_zero\s*\]|\s*"_zero"\s*:)', re.MULTILINE)
+
+
+@dataclass(slots=True)
+class Settings:
+    """What the editor may set (``initializationOptions`` or ``workspace/didChangeConfiguration``,
+    section ``zero``)."""
+
+    debounce: float = 0.25  # seconds of quiet after a change before the document is linted again
+    rule_docs: str | None = None  # URL of a rule's text, `{code}` replaced; None: rendered files
+    structured: str = "zero"  # "zero": YAML/TOML/JSON with a `_zero` record or matched by `include`; "all"
+    machine: bool = True  # X findings and NC program checks against [tool.zero.machine]
+
+    def update(self, given: object) -> list[str]:
+        """Take the known keys of a settings object; the names of values that were refused."""
+        if not isinstance(given, dict):
+            return []
+        given = given.get("zero", given) if isinstance(given.get("zero"), dict) else given
+        refused = []
+        for key, value in given.items():
+            if key == "debounce" and isinstance(value, (int, float)) and not isinstance(value, bool) \
+                    and 0 <= value <= 10_000:
+                self.debounce = value / 1000
+            elif key == "ruleDocs" and (value is None or (isinstance(value, str) and "{code}" in value)):
+                self.rule_docs = value or None
+            elif key == "structured" and value in ("zero", "all"):
+                self.structured = value
+            elif key == "machine" and isinstance(value, bool):
+                self.machine = value
+            else:
+                refused.append(key)
+        return refused
+
+
+def path_of(uri: str) -> Path | None:
+    """The file a ``file:`` URI names; ``None`` for any other scheme (``untitled:``)."""
+    parsed = urlparse(uri)
+    if parsed.scheme != "file":
+        return None
+    local = url2pathname(unquote(parsed.path))
+    if parsed.netloc and parsed.netloc != "localhost":
+        local = f"//{parsed.netloc}{local}"
+    return Path(local)
+
+
+def uri_of(path: Path) -> str:
+    return Path(os.path.abspath(path)).as_uri()
+
+
+def form_of(name: str) -> str:
+    """A list, an NC program or a structured form, by the file name (as ``zero lint`` decides)."""
+    suffix = Path(name).suffix.lower()
+    if suffix in PROGRAM_SUFFIXES:
+        return PROGRAM
+    if suffix in STRUCTURED_SUFFIXES:
+        return STRUCTURED
+    return LIST
+
+
+def _units(text: str, encoding: str) -> int:
+    if encoding == "utf-8":
+        return len(text.encode("utf-8", "surrogatepass"))
+    if encoding == "utf-32":
+        return len(text)
+    return len(text) + sum(1 for ch in text if ord(ch) > 0xFFFF)
+
+
+class Text:
+    """A document's text as zero splits it into lines, and positions in the client's units."""
+
+    def __init__(self, text: str, encoding: str = "utf-16") -> None:
+        self.source = text
+        self.encoding = encoding
+        self.lines = [line[:-1] if line.endswith("\r") else line for line in text.split("\n")]
+        self.bom = text.startswith("\ufeff")  # zero reads past a BOM: line 1 starts one later
+
+    def line(self, index: int) -> str:
+        """The text of 0-based line ``index`` ("" beyond the end)."""
+        return self.lines[index] if 0 <= index < len(self.lines) else ""
+
+    def character(self, line: int, column: int) -> int:
+        """Client units of 0-based code-point ``column`` on 0-based ``line`` (clamped to the line)."""
+        text = self.line(line)
+        if line == 0 and self.bom:
+            column += 1
+        return _units(text[: max(0, min(column, len(text)))], self.encoding)
+
+    def column(self, line: int, character: int) -> int:
+        """The 0-based code-point column of a client position (as zero counts it)."""
+        text = self.line(line)
+        units = 0
+        col = 0
+        for ch in text:
+            if units >= character:
+                break
+            units += _units(ch, self.encoding)
+            col += 1
+        if line == 0 and self.bom:
+            col = max(0, col - 1)
+        return col
+
+    def position(self, line: int, column: int) -> tuple[int, int]:
+        """A zero position (1-based line and column) as a client (line, character)."""
+        line = max(1, min(line, len(self.lines)))
+        return line - 1, self.character(line - 1, column - 1)
+
+    def span(self, span: Span) -> tuple[tuple[int, int], tuple[int, int]]:
+        start = self.position(span.line, span.column)
+        end = self.position(span.end_line, span.end_column)
+        return start, max(start, end)
+
+    def end(self) -> tuple[int, int]:
+        """The position after the last character."""
+        last = len(self.lines) - 1
+        return last, _units(self.lines[last], self.encoding)
+
+
+def encode_text(text: str) -> bytes:
+    """The editor's text as the bytes zero lints (UTF-8; a lone surrogate becomes `?`)."""
+    try:
+        return text.encode("utf-8")
+    except UnicodeEncodeError:
+        return text.encode("utf-8", "replace")
+
+
+def source_bytes(path: Path | None, text: str) -> tuple[bytes, bool]:
+    """The bytes to lint and whether they are the file's own: the file when the editor's text
+    is the file as zero decodes it (so its encoding and endings count as on the command line),
+    else the editor's text."""
+    if path is not None:
+        try:
+            disk = read_file(path)
+        except ZeroError:
+            disk = None
+        if disk is not None and len(disk) <= 4 * len(text) + 8 and decode(disk)[0] == text:
+            return disk, True
+    return encode_text(text), False
+
+
+@dataclass(slots=True)
+class Note:
+    """Something to show that is no rule's finding: a configuration that cannot be read, a
+    structured form that is not a list, a machine that cannot be built."""
+
+    message: str
+    line: int = 1
+    column: int = 1
+    severity: Severity = Severity.ERROR
+
+
+@dataclass(slots=True, eq=False)
+class Analysis:
+    uri: str
+    version: int | None
+    path: Path | None  # the file on disk, for file: URIs
+    name: str  # what zero calls it in its findings
+    form: str  # list, program, structured
+    text: Text
+    data: bytes
+    saved: bool  # the editor's text is the file as saved
+    registry: Registry
+    config: Config
+    options: LintOptions
+    result: LintResult | None = None  # None: not linted (excluded, not a list's form, config error)
+    notes: list[Note] = field(default_factory=list)
+    machine: Machine | None = None
+    _values: ListValues | None = None
+
+    @property
+    def diagnostics(self) -> list[Diagnostic]:
+        return self.result.diagnostics if self.result is not None else []
+
+    def values(self) -> ListValues | None:
+        """The list's entries bound to their parameters (lists only), built on first use."""
+        if self._values is None and self.form == LIST:
+            doc = self.result.document if self.result is not None else tokenize(self.data, self.name)
+            kind = self.result.kind if self.result is not None else self.options.kind
+            self._values = ListValues.of(doc, self.registry, kind)
+        return self._values
+
+    def machine_list(self) -> ListFile | None:
+        """This document as one of the lists of the machine (with the default list under it)."""
+        if self.machine is None or self.path is None:
+            return None
+        me = os.path.realpath(self.path)
+        return next((lf for lf in self.machine.lists if os.path.realpath(lf.path) == me), None)
+
+
+def _structural(machine: Machine) -> set[str]:
+    """The lists whose content decides the machine's shape (which lists, which channel axes,
+    which values lie under others): only their saved content is used."""
+    out = {os.path.realpath(machine.startup.path)}
+    out.update(os.path.realpath(lf.path) for lf in machine.defaults.values())
+    out.update(os.path.realpath(ch.lists.path) for ch in machine.channels if ch.lists is not None)
+    return out
+
+
+def _signature(machine: Machine) -> tuple[tuple[str, int, int], ...]:
+    """What the machine was read from: every named file's size and modification time."""
+    paths = [machine.startup.path, *(n.path for n in machine.named if n.path is not None)]
+    out = []
+    for p in paths:
+        try:
+            st = os.stat(p)
+            out.append((str(p), st.st_mtime_ns, st.st_size))
+        except OSError:
+            out.append((str(p), -1, -1))
+    return tuple(out)
+
+
+def _swap(machine: Machine, new: dict[int, ListFile]) -> Machine:
+    """The machine with some of its lists replaced (by ``id`` of the list they replace)."""
+    if not new:
+        return machine
+
+    def s(lf: ListFile) -> ListFile:
+        return new.get(id(lf), lf)
+
+    def o(lf: ListFile | None) -> ListFile | None:
+        return s(lf) if lf is not None else None
+
+    channels = [replace(ch, lists=o(ch.lists), zero=o(ch.zero), tools=o(ch.tools),
+                        others={k: s(v) for k, v in ch.others.items()}) for ch in machine.channels]
+    return replace(machine, startup=s(machine.startup), axis_lists=[s(lf) for lf in machine.axis_lists],
+                   channels=channels, defaults={k: s(v) for k, v in machine.defaults.items()},
+                   singles={k: s(v) for k, v in machine.singles.items()},
+                   compensation=[(i, s(lf)) for i, lf in machine.compensation])
+
+
+class Projects:
+    """The configuration, registry and machine of each document's project, read once and read
+    again when the files change (:meth:`forget`)."""
+
+    def __init__(self, registries: Registries, param_desc: Path | None = None,
+                 settings: Settings | None = None) -> None:
+        self.registries = registries
+        self.param_desc = param_desc
+        self.settings = settings or Settings()
+        self.finder = ConfigFinder()
+        self._machines: dict[tuple[object, ...], tuple[tuple[tuple[str, int, int], ...], Machine]] = {}
+        self._values: OrderedDict[tuple[str, int, str], ListValues] = OrderedDict()
+
+    def forget(self) -> None:
+        """Configuration files changed (or may have): find and read them again."""
+        self.finder = ConfigFinder()
+
+    def config(self, path: Path | None) -> Config:
+        """The configuration that applies to ``path`` (:class:`ZeroError` when it cannot be read)."""
+        return self.finder.for_path(path) if path is not None else Config()
+
+    def registry(self, config: Config) -> Registry:
+        return self.registries(param_desc_of(config, self.param_desc))
+
+    def machine(self, config: Config, registry: Registry) -> Machine | None:
+        """The machine the configuration names, as saved (:class:`ZeroError` when it cannot be read)."""
+        if config.machine is None or not self.settings.machine:
+            return None
+        key = (config.machine, tuple(sorted(config.machine_lists.items())), config.machine_workdir, id(registry))
+        hit = self._machines.get(key)
+        if hit is not None and hit[0] == _signature(hit[1]):
+            return hit[1]
+        machine = load_machine(config.machine, registry, None, config.machine_lists, config.machine_workdir)
+        self._machines[key] = (_signature(machine), machine)
+        return machine
+
+    def analyse(self, uri: str, version: int | None, text: str, encoding: str = "utf-16",
+                buffers: Mapping[str, str] | None = None) -> Analysis:
+        """Lint one document as ``zero lint`` lints the file; ``buffers`` (real path → text) are the
+        other open documents, whose text counts for the machine's X findings."""
+        path = path_of(uri)
+        name = str(path) if path is not None else uri
+        notes: list[Note] = []
+        try:
+            config = self.config(path)
+        except ZeroError as exc:
+            config = Config()
+            notes.append(Note(f"the configuration cannot be read, nothing is checked: {exc}"))
+        try:
+            registry = self.registry(config)
+        except ZeroError as exc:
+            registry = self.registries(None)
+            notes.append(Note(f"the parameter description cannot be read, nothing is checked: {exc}"))
+        data, saved = source_bytes(path, text)
+        options = config.options_for(path if path is not None else Path(name), LintOptions())
+        a = Analysis(uri, version, path, name, form_of(name), Text(text, encoding), data, saved, registry, config,
+                     options, notes=notes)
+        if notes or (path is not None and config.excluded(path)):
+            return a  # as `zero lint`: a broken configuration checks nothing; an excluded file is not linted
+        if len(data) > max_file_bytes():
+            a.notes.append(Note(f"larger than the size limit ({max_file_bytes()} bytes, ZERO_MAX_FILE_SIZE): "
+                                "not checked", severity=Severity.WARNING))
+            return a
+        if a.form == STRUCTURED and not self._is_list_form(text, config, path):
+            return a
+        if a.form == PROGRAM:
+            a.machine = self._try_machine(a, buffers or {})
+        try:
+            if a.form == PROGRAM:
+                a.result = lint_program(data, registry, name, options, a.machine)
+            else:
+                a.result = lint_data(data, name, registry, options)
+        except ZeroError as exc:  # a YAML/TOML/JSON form that does not make a list
+            a.notes.append(Note(exc.message, exc.line or 1, exc.column or 1))
+            return a
+        if a.form == LIST:
+            a.machine = self._try_machine(a, buffers or {})
+            found = self._machine_findings(a) if a.machine is not None else []
+            if found:
+                a.result.diagnostics = sorted([*a.result.diagnostics, *found], key=Diagnostic.sort_key)
+        return a
+
+    def _try_machine(self, a: Analysis, buffers: Mapping[str, str]) -> Machine | None:
+        try:
+            return self._machine_for(a, buffers)
+        except ZeroError as exc:  # as `zero lint` says it for an NC program; the list is still checked
+            a.notes.append(Note(f"the machine of [tool.zero.machine] cannot be read: {exc}",
+                                severity=Severity.WARNING))
+            return None
+
+    def _is_list_form(self, text: str, config: Config, path: Path | None) -> bool:
+        if self.settings.structured == "all" or _ZERO_RECORD.search(text):
+            return True
+        return path is not None and config.path is not None and config.included(path)
+
+    def _list_values(self, lf: ListFile, text: str) -> ListValues:
+        """An open document's text as the values of one of the machine's lists (cached)."""
+        key = (str(lf.path), id(lf.values.registry), text)
+        hit = self._values.get(key)
+        if hit is None:
+            data, _ = source_bytes(lf.path, text)
+            hit = ListValues.of(tokenize(data, str(lf.path)), lf.values.registry, lf.values.kind)
+            self._values[key] = hit
+            while len(self._values) > 8:
+                self._values.popitem(last=False)
+        return hit
+
+    def _machine_for(self, a: Analysis, buffers: Mapping[str, str]) -> Machine | None:
+        """The machine with the open documents' text in place of their saved lists, where that
+        does not change the machine's shape (the start-up, channel and default lists count as saved)."""
+        machine = self.machine(a.config, a.registry)
+        if machine is None:
+            return None
+        structural = _structural(machine)
+        me = os.path.realpath(a.path) if a.path is not None else None
+        new: dict[int, ListFile] = {}
+        for lf in machine.lists:
+            real = os.path.realpath(lf.path)
+            if real in structural:
+                continue
+            if real == me and a.result is not None:  # this document: as its lint has read it
+                own = a.values()
+                values = own if own is not None and own.kind == lf.values.kind else \
+                    ListValues.of(a.result.document, a.registry, lf.values.kind)
+            elif real in buffers:
+                values = self._list_values(lf, buffers[real])
+            else:
+                continue
+            new[id(lf)] = replace(lf, values=replace(values, base=lf.values.base))
+        return _swap(machine, new)
+
+    def _machine_findings(self, a: Analysis) -> list[Diagnostic]:
+        """The X findings of the machine that concern this list."""
+        assert a.machine is not None and a.path is not None
+        me = os.path.realpath(a.path)
+        if me not in {os.path.realpath(lf.path) for lf in a.machine.lists}:
+            return []
+        if me in _structural(a.machine) and not a.saved:
+            a.notes.append(Note("the machine's findings (X) are shown for this list as saved: save it to see "
+                                "them again", severity=Severity.INFO))
+            return []
+        context = MachineContext(a.machine, a.registry, selected_rules(a.options))
+        return [replace(d, path=a.name) for d in run_checks(MACHINE_CHECKS, context)
+                if os.path.realpath(d.path) == me]

@@ -1,0 +1,134 @@
+"""zero's findings as LSP diagnostics: severity, exact range, code with a link to the rule's
+text, related locations.
+
+The link (``codeDescription.href``) is, by default, a ``file:`` URI of the rule's text as
+``zero rule CODE`` prints it, written once per zero version as Markdown below the user's
+cache directory (``$XDG_CACHE_HOME/zero/<version>/rules/<CODE>.md``, else
+``~/.cache/zero/…``; ``%LOCALAPPDATA%\\zero\\…`` on Windows); the setting ``ruleDocs``
+(``"https://…/{code}"``) names a web page instead. Related locations are the lines a
+message names (``already set on line 12``) and the other lists of the machine it names.
+"""
+
+from __future__ import annotations
+
+import os
+import re
+from pathlib import Path
+
+from lsprotocol import types
+
+from zero import __version__
+from zero.diagnostics import Diagnostic, Severity, Span
+from zero.errors import ZeroError
+from zero.files import write_atomic
+from zero.rules import RULES
+from zero.server.documents import Analysis, Note, Text, uri_of
+
+SEVERITY = {Severity.ERROR: types.DiagnosticSeverity.Error, Severity.WARNING: types.DiagnosticSeverity.Warning,
+            Severity.INFO: types.DiagnosticSeverity.Information}
+_LINE = re.compile(r"(?<!list )\bline (\d+)\b")  # "(list line 5)" is the converted list's
+UNNECESSARY = ("Z001",)  # an unused suppression: shown faded where the editor does
+
+
+def cache_dir() -> Path:
+    """Where the rendered rule texts go."""
+    base = os.environ.get("XDG_CACHE_HOME") or (os.environ.get("LOCALAPPDATA") if os.name == "nt" else None)
+    root = Path(base) if base else Path.home() / ".cache"
+    return root / "zero" / __version__ / "rules"
+
+
+def rule_markdown(code: str) -> str:
+    rule = RULES[code]
+    return f"# {code} {rule.name}\n\n```text\n{rule.render()}```\n"
+
+
+class RuleDocs:
+    """The link of each rule's text: a URL template, or the rendered files (written on first use)."""
+
+    def __init__(self, template: str | None = None, directory: Path | None = None) -> None:
+        self.template = template
+        self.directory = directory
+        self._written: bool | None = None
+
+    def href(self, code: str) -> str | None:
+        if code not in RULES:
+            return None
+        if self.template:
+            return self.template.replace("{code}", code)
+        directory = self.directory or cache_dir()
+        if self._written is None:
+            self._written = self._write(directory)
+        return uri_of(directory / f"{code}.md") if self._written else None
+
+    def _write(self, directory: Path) -> bool:
+        """Every rule's text as a file; False when the directory cannot be written (no links then)."""
+        try:
+            directory.mkdir(parents=True, exist_ok=True)
+            for code in RULES:
+                target = directory / f"{code}.md"
+                data = rule_markdown(code).encode("utf-8")
+                if not target.is_file() or target.read_bytes() != data:
+                    write_atomic(target, data, force=True)
+        except (OSError, ZeroError):
+            return False
+        return True
+
+
+def lsp_range(start: tuple[int, int], end: tuple[int, int]) -> types.Range:
+    return types.Range(types.Position(*start), types.Position(*end))
+
+
+def span_range(text: Text, span: Span) -> types.Range:
+    """A zero span (1-based, end column exclusive) in the client's units."""
+    return lsp_range(*text.span(span))
+
+
+def line_range(text: Text, index: int) -> types.Range:
+    """The whole of 0-based line ``index``."""
+    return types.Range(types.Position(index, 0), types.Position(index, text.character(index, len(text.line(index)))))
+
+
+def _related(a: Analysis, d: Diagnostic) -> list[types.DiagnosticRelatedInformation]:
+    out: list[types.DiagnosticRelatedInformation] = []
+    for m in _LINE.finditer(d.message):
+        n = int(m.group(1))
+        if n != d.span.line and 1 <= n <= len(a.text.lines):
+            shown = a.text.line(n - 1).strip()
+            out.append(types.DiagnosticRelatedInformation(
+                types.Location(a.uri, line_range(a.text, n - 1)),
+                f"line {n}: {shown[:120]}" if shown else f"line {n}"))
+    if a.machine is not None:
+        for lf in a.machine.lists:
+            if str(lf.path) in d.message and str(lf.path) != a.name:
+                out.append(types.DiagnosticRelatedInformation(
+                    types.Location(uri_of(lf.path), types.Range(types.Position(0, 0), types.Position(0, 0))),
+                    f"{lf.key}: {lf.path.name}"))
+    return out
+
+
+def to_lsp(a: Analysis, d: Diagnostic, docs: RuleDocs) -> types.Diagnostic:
+    """One finding as an LSP diagnostic."""
+    href = docs.href(d.code)
+    message = d.message if d.hint is None else f"{d.message}\nhint: {d.hint}"
+    return types.Diagnostic(
+        range=span_range(a.text, d.span),
+        message=message,
+        severity=SEVERITY[d.severity],
+        code=d.code,
+        code_description=types.CodeDescription(href) if href else None,
+        source="zero",
+        related_information=_related(a, d) or None,
+        tags=[types.DiagnosticTag.Unnecessary] if d.code in UNNECESSARY else None,
+        data={"param_id": d.param_id} if d.param_id else None,
+    )
+
+
+def note_to_lsp(a: Analysis, note: Note) -> types.Diagnostic:
+    start = a.text.position(note.line, note.column)
+    return types.Diagnostic(range=lsp_range(start, start), message=note.message,
+                            severity=SEVERITY[note.severity], source="zero")
+
+
+def diagnostics(a: Analysis, docs: RuleDocs) -> list[types.Diagnostic]:
+    """Everything to publish for one document."""
+    return [*(note_to_lsp(a, n) for n in a.notes), *(to_lsp(a, d, docs) for d in a.diagnostics)]

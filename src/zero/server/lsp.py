@@ -1,0 +1,293 @@
+"""The protocol: a pygls language server with zero's features, over standard input and output.
+
+Documents are synchronised incrementally; a document is linted when it is opened, and again
+after a quiet spell once it changes (``debounce``, 250 ms by default), on the event loop's one
+thread (the engine is never run twice at once). A request about a document whose findings are
+not current lints it first, so that answers always match the text. Saving any file, or a
+configuration file changing, reads the projects' configuration and machines again and
+re-lints every open document.
+
+Nothing stops the server but ``exit``: a request whose parameters cannot be read is answered
+with ``InvalidParams``; a document that cannot be read (a FIFO, a missing file named by a
+request) with ``RequestFailed`` and its reason; an error inside zero with ``InternalError``
+for a request, and for a document's findings as one diagnostic saying so.
+"""
+
+from __future__ import annotations
+
+import asyncio
+import contextlib
+import logging
+import os
+import sys
+import traceback
+from pathlib import Path
+from typing import Any
+
+from lsprotocol import types
+from pygls.exceptions import JsonRpcException, JsonRpcInvalidParams
+from pygls.lsp.server import LanguageServer
+from pygls.protocol import LanguageServerProtocol
+
+from zero import __version__
+from zero.engine.commands import Registries
+from zero.errors import ZeroError
+from zero.files import read_file
+from zero.lists.encoding import decode
+from zero.server import actions, completion, findings, hover, outline
+from zero.server.documents import Analysis, Projects, Settings, path_of
+
+REQUEST_FAILED = -32803  # LSP ErrorCodes.RequestFailed
+CONFIG_NAMES = ("pyproject.toml", "zero.toml", ".zero.toml")
+WATCHED = "**/{pyproject.toml,zero.toml,.zero.toml}"
+logger = logging.getLogger("zero.server")
+
+
+class _Answered:
+    """A request that was answered while it was read (its parameters could not be read)."""
+
+
+ANSWERED = _Answered()
+
+
+class ZeroProtocol(LanguageServerProtocol):
+    """pygls's protocol, answering a request whose parameters it cannot read with ``InvalidParams``
+    (pygls would log it and leave the client waiting)."""
+
+    def structure_message(self, data: dict[str, Any]) -> Any:
+        try:
+            return super().structure_message(data)
+        except JsonRpcException as exc:
+            if isinstance(data, dict) and "id" in data and "method" in data:
+                cause = exc.__cause__
+                detail = str(cause).splitlines()[0] if cause is not None and str(cause) else exc.message
+                error = JsonRpcInvalidParams(f"{data.get('method')}: the parameters cannot be read: {detail}")
+                self._send_response(data["id"], error=error.to_response_error())
+                return ANSWERED
+            raise
+
+    def handle_message(self, message: Any) -> None:
+        if message is ANSWERED:
+            return
+        super().handle_message(message)
+
+
+def failed(message: str) -> JsonRpcException:
+    return JsonRpcException(message, code=REQUEST_FAILED)
+
+
+class ZeroServer(LanguageServer):
+    def __init__(self, registries: Registries, param_desc: Path | None = None) -> None:
+        super().__init__("zero", __version__, text_document_sync_kind=types.TextDocumentSyncKind.Incremental,
+                         protocol_cls=ZeroProtocol)
+        self.settings = Settings()
+        self.projects = Projects(registries, param_desc, self.settings)
+        self.rule_docs = findings.RuleDocs()
+        self.analyses: dict[str, Analysis] = {}
+        self.timers: dict[str, asyncio.TimerHandle] = {}
+        self.snippets = False
+        self.lazy_actions = False
+
+    def report_server_error(self, error: Exception, source: Any) -> None:
+        """Errors outside a request go to the client's log, not into pop-ups."""
+        logger.error("%s", error)
+        with contextlib.suppress(Exception):  # the client is gone: nothing to tell
+            self.window_log_message(types.LogMessageParams(types.MessageType.Error, f"zero server: {error}"))
+
+    # ------------------------------------------------------------------ documents
+
+    @property
+    def encoding(self) -> str:
+        return str(getattr(self.workspace.position_encoding, "value", self.workspace.position_encoding) or "utf-16")
+
+    def buffers(self) -> dict[str, str]:
+        """The open documents' text by real path (for the machine's lists)."""
+        out = {}
+        for uri, doc in self.workspace.text_documents.items():
+            path = path_of(uri)
+            if path is not None:
+                out[os.path.realpath(path)] = doc.source
+        return out
+
+    def analysis(self, uri: str) -> Analysis:
+        """The current analysis of a document (linted now when it is not current); a document that is
+        not open is read from its file (:class:`JsonRpcException` when it cannot be read)."""
+        doc = self.workspace.text_documents.get(uri)
+        if doc is None:
+            path = path_of(uri)
+            if path is None:
+                raise failed(f"{uri}: not open, and not a file")
+            try:
+                text = decode(read_file(path))[0]
+            except ZeroError as exc:
+                raise failed(str(exc)) from None
+            return self.projects.analyse(uri, None, text, self.encoding, self.buffers())
+        hit = self.analyses.get(uri)
+        if hit is not None and hit.version == doc.version and hit.text.source == doc.source:
+            return hit
+        a = self.projects.analyse(uri, doc.version, doc.source, self.encoding, self.buffers())
+        self.analyses[uri] = a
+        return a
+
+    def publish(self, uri: str) -> None:
+        """Lint a document and publish its findings (an error inside zero is said as one)."""
+        self.timers.pop(uri, None)
+        doc = self.workspace.text_documents.get(uri)
+        if doc is None:
+            return
+        try:
+            a = self.analysis(uri)
+            found = findings.diagnostics(a, self.rule_docs)
+        except Exception as exc:  # a fault in zero: said on the document, never the end of the server
+            logger.error("zero could not check %s:\n%s", uri, traceback.format_exc())
+            found = [types.Diagnostic(types.Range(types.Position(0, 0), types.Position(0, 0)),
+                                      f"zero could not check this file (an error in zero, please report it): "
+                                      f"{type(exc).__name__}: {exc}", severity=types.DiagnosticSeverity.Error,
+                                      source="zero")]
+        self.text_document_publish_diagnostics(types.PublishDiagnosticsParams(uri, found, version=doc.version))
+
+    def schedule(self, uri: str, delay: float | None = None) -> None:
+        old = self.timers.pop(uri, None)
+        if old is not None:
+            old.cancel()
+        wait = self.settings.debounce if delay is None else delay
+        self.timers[uri] = asyncio.get_running_loop().call_later(wait, self.publish, uri)
+
+    def refresh_all(self) -> None:
+        """Configuration or lists on disk changed: read them again and re-lint every open document."""
+        self.projects.forget()
+        self.analyses.clear()
+        for uri in list(self.workspace.text_documents):
+            self.schedule(uri, 0)
+
+
+def create_server(registries: Registries, param_desc: Path | None = None) -> ZeroServer:
+    """The language server with every feature registered (``registries`` as the command line has them)."""
+    server = ZeroServer(registries, param_desc)
+
+    @server.feature(types.INITIALIZE)
+    def initialize(params: types.InitializeParams) -> None:
+        refused = server.settings.update(params.initialization_options)
+        server.rule_docs = findings.RuleDocs(server.settings.rule_docs)
+        caps = params.capabilities.text_document
+        item = caps.completion.completion_item if caps and caps.completion else None
+        server.snippets = bool(item and item.snippet_support)
+        resolve = caps.code_action.resolve_support if caps and caps.code_action else None
+        server.lazy_actions = bool(resolve and "edit" in resolve.properties)
+        if refused:
+            logger.warning("unknown or bad settings ignored: %s", ", ".join(refused))
+
+    @server.feature(types.INITIALIZED)
+    def initialized(params: types.InitializedParams) -> None:
+        watch = server.client_capabilities.workspace
+        dynamic = watch.did_change_watched_files if watch else None
+        if dynamic is not None and dynamic.dynamic_registration:
+            options = types.DidChangeWatchedFilesRegistrationOptions([types.FileSystemWatcher(WATCHED)])
+            future = server.client_register_capability(types.RegistrationParams(
+                [types.Registration("zero-config", types.WORKSPACE_DID_CHANGE_WATCHED_FILES, options)]))
+            future.add_done_callback(lambda f: f.cancelled() or f.exception())  # a refusal is no error
+
+    @server.feature(types.TEXT_DOCUMENT_DID_OPEN)
+    def did_open(params: types.DidOpenTextDocumentParams) -> None:
+        server.projects.forget()  # a configuration file may have changed while nothing was open
+        server.publish(params.text_document.uri)
+
+    @server.feature(types.TEXT_DOCUMENT_DID_CHANGE)
+    def did_change(params: types.DidChangeTextDocumentParams) -> None:
+        server.schedule(params.text_document.uri)
+
+    @server.feature(types.TEXT_DOCUMENT_DID_SAVE)
+    def did_save(params: types.DidSaveTextDocumentParams) -> None:
+        server.refresh_all()
+
+    @server.feature(types.TEXT_DOCUMENT_DID_CLOSE)
+    def did_close(params: types.DidCloseTextDocumentParams) -> None:
+        uri = params.text_document.uri
+        timer = server.timers.pop(uri, None)
+        if timer is not None:
+            timer.cancel()
+        server.analyses.pop(uri, None)
+        server.text_document_publish_diagnostics(types.PublishDiagnosticsParams(uri, []))
+
+    @server.feature(types.WORKSPACE_DID_CHANGE_WATCHED_FILES)
+    def watched(params: types.DidChangeWatchedFilesParams) -> None:
+        server.refresh_all()
+
+    @server.feature(types.WORKSPACE_DID_CHANGE_CONFIGURATION)
+    def configuration(params: types.DidChangeConfigurationParams) -> None:
+        server.settings.update(params.settings)
+        server.rule_docs = findings.RuleDocs(server.settings.rule_docs)
+        server.refresh_all()
+
+    @server.feature(types.TEXT_DOCUMENT_HOVER)
+    def on_hover(params: types.HoverParams) -> types.Hover | None:
+        a = server.analysis(params.text_document.uri)
+        return hover.hover(a, params.position.line, params.position.character)
+
+    @server.feature(types.TEXT_DOCUMENT_COMPLETION,
+                    types.CompletionOptions(trigger_characters=completion.TRIGGERS, resolve_provider=True))
+    def on_completion(params: types.CompletionParams) -> types.CompletionList:
+        a = server.analysis(params.text_document.uri)
+        found = completion.completion(a, params.position.line, params.position.character, server.snippets)
+        for item in found.items:
+            if isinstance(item.data, dict):
+                item.data["uri"] = a.uri  # resolved with the registry of the document's project
+        return found
+
+    @server.feature(types.COMPLETION_ITEM_RESOLVE)
+    def on_completion_resolve(item: types.CompletionItem) -> types.CompletionItem:
+        uri = item.data.get("uri") if isinstance(item.data, dict) else None
+        registry = server.analysis(uri).registry if isinstance(uri, str) else \
+            server.projects.registries(server.projects.param_desc)
+        return completion.resolve(item, registry)
+
+    @server.feature(types.TEXT_DOCUMENT_SIGNATURE_HELP,
+                    types.SignatureHelpOptions(trigger_characters=["[", " ", "="], retrigger_characters=[","]))
+    def on_signature_help(params: types.SignatureHelpParams) -> types.SignatureHelp | None:
+        a = server.analysis(params.text_document.uri)
+        return completion.signature_help(a, params.position.line, params.position.character)
+
+    @server.feature(types.TEXT_DOCUMENT_CODE_ACTION,
+                    types.CodeActionOptions(code_action_kinds=actions.KINDS, resolve_provider=True))
+    def on_code_action(params: types.CodeActionParams) -> list[types.CodeAction]:
+        a = server.analysis(params.text_document.uri)
+        return actions.code_actions(a, params.range, params.context.only, server.rule_docs, server.lazy_actions)
+
+    @server.feature(types.CODE_ACTION_RESOLVE)
+    def on_code_action_resolve(action: types.CodeAction) -> types.CodeAction:
+        data = action.data if isinstance(action.data, dict) else {}
+        uri = data.get("uri")
+        if not isinstance(uri, str):
+            return action
+        return actions.resolve(server.analysis(uri), action)
+
+    @server.feature(types.TEXT_DOCUMENT_FORMATTING)
+    def on_formatting(params: types.DocumentFormattingParams) -> list[types.TextEdit]:
+        a = server.analysis(params.text_document.uri)
+        try:
+            return actions.formatting(a)
+        except ZeroError as exc:
+            raise failed(f"zero format: {exc} (not formatted)") from None
+
+    @server.feature(types.TEXT_DOCUMENT_DOCUMENT_SYMBOL)
+    def on_symbols(params: types.DocumentSymbolParams) -> list[types.DocumentSymbol]:
+        return outline.document_symbols(server.analysis(params.text_document.uri))
+
+    @server.feature(types.TEXT_DOCUMENT_DEFINITION)
+    def on_definition(params: types.DefinitionParams) -> list[types.Location]:
+        a = server.analysis(params.text_document.uri)
+        return outline.definition(a, params.position.line, params.position.character)
+
+    return server
+
+
+def serve(registries: Registries, param_desc: Path | None = None) -> None:
+    """Run the server over standard input and output until the client says ``exit``."""
+    stdout = sys.stdout.buffer
+    sys.stdout = sys.stderr  # nothing but the protocol may reach the client's stream
+    handler = logging.StreamHandler(sys.stderr)
+    handler.setFormatter(logging.Formatter("zero server: %(levelname)s %(name)s: %(message)s"))
+    root = logging.getLogger()
+    root.addHandler(handler)
+    root.setLevel(logging.WARNING)
+    create_server(registries, param_desc).start_io(sys.stdin.buffer, stdout)

@@ -1,0 +1,202 @@
+"""Document symbols (the outline) and go to definition.
+
+The outline groups a list's entries as its keys do: ``np_grp[1]`` (G54) → ``achse[0]`` →
+``versch``, ``kenngr`` → ``swe_pos``, at most two levels of groups; a YAML/TOML form the
+same by the keys of its leaves; an NC program lists its ``#MACHINE DATA`` blocks and
+programmed soft limits (G98/G99).
+
+Go to definition: on a start-up list's reference (``achs_mds[0]  ./listen/achse_x.lis``) the
+list file, resolved as the controller resolves it (:data:`zero.machine.model.REFERENCES`,
+the working directory, ``[tool.zero.machine]`` overrides); on a value that refers to another
+parameter (``P-AXIS-00212.0``) the entry that sets it, in this list or the default list under it.
+"""
+
+from __future__ import annotations
+
+import os
+from dataclasses import dataclass, field
+from pathlib import Path
+
+from lsprotocol import types
+
+from zero.catalog.ids import g_code_with_index
+from zero.lists.model import Entry, ValueKind, parse_key
+from zero.machine.model import BY_KEY, working_directory
+from zero.server.documents import LIST, PROGRAM, STRUCTURED, Analysis, uri_of
+from zero.server.findings import line_range
+
+_KINDS = (types.SymbolKind.Namespace, types.SymbolKind.Object)
+
+
+@dataclass(slots=True)
+class _Group:
+    name: str
+    detail: str | None
+    level: int
+    symbols: list[types.DocumentSymbol] = field(default_factory=list)
+    groups: dict[str, _Group] = field(default_factory=dict)
+    order: list[_Group | types.DocumentSymbol] = field(default_factory=list)
+    first: int = 1 << 30
+    last: int = -1
+
+
+def _segments(key: str) -> list[str]:
+    """``np_grp[1].achse[0].versch`` → ``["np_grp[1]", "achse[0]", "versch"]``."""
+    return key.split(".")
+
+
+def _detail(segment: str, kind: str | None, level: int) -> str | None:
+    parsed = parse_key(segment)
+    if kind == "ZERO" and level == 0 and parsed is not None and parsed.pattern == "np_grp[]" and parsed.indices:
+        return g_code_with_index(parsed.indices[0])
+    return None
+
+
+def _build(group: _Group) -> list[types.DocumentSymbol]:
+    out = []
+    for item in group.order:
+        if isinstance(item, types.DocumentSymbol):
+            out.append(item)
+            continue
+        children = _build(item)
+        start = min((c.range.start for c in children), key=lambda p: (p.line, p.character))
+        end = max((c.range.end for c in children), key=lambda p: (p.line, p.character))
+        rng = types.Range(start, end)
+        out.append(types.DocumentSymbol(item.name, _KINDS[min(item.level, 1)], rng, children[0].selection_range,
+                                        detail=item.detail, children=children))
+    return out
+
+
+def _outline(rows: list[tuple[str, str, types.Range, types.Range]], kind: str | None) -> list[types.DocumentSymbol]:
+    """Symbols from (key, value, line range, key range) rows, grouped by the key's first members."""
+    root = _Group("", None, -1)
+    for key, value, rng, sel in rows:
+        parts = _segments(key)
+        group = root
+        for level, segment in enumerate(parts[:-1][:2]):
+            sub = group.groups.get(segment)
+            if sub is None:
+                sub = group.groups[segment] = _Group(segment, _detail(segment, kind, level), level)
+                group.order.append(sub)
+            group = sub
+        name = ".".join(parts[min(len(parts) - 1, 2):])
+        group.order.append(types.DocumentSymbol(name, types.SymbolKind.Property, rng, sel, detail=value))
+    return _build(root)
+
+
+def _list_rows(a: Analysis) -> list[tuple[str, str, types.Range, types.Range]]:
+    values = a.values()
+    if values is None:
+        return []
+    rows = []
+    for e in values.doc.entries:
+        index = e.line - 1
+        sel = types.Range(types.Position(index, a.text.character(index, e.key_start)),
+                          types.Position(index, a.text.character(index, e.key_end)))
+        rows.append((e.key_text, e.value, line_range(a.text, index), sel))
+    return rows
+
+
+def _structured_rows(a: Analysis) -> list[tuple[str, str, types.Range, types.Range]]:
+    from zero.structured.formats import format_of, read_tree  # start-up: only for outlines of YAML/TOML
+
+    fmt = format_of(a.name)
+    if fmt is None or a.result is None:
+        return []
+    rows = []
+    for leaf in read_tree(a.data, fmt, a.registry, a.name).leaves:
+        if leaf.line is None:
+            continue
+        rng = line_range(a.text, leaf.line - 1)
+        rows.append((leaf.key, str(leaf.value), rng, rng))
+    return rows
+
+
+def _program_symbols(a: Analysis) -> list[types.DocumentSymbol]:
+    from zero.nc.program import read_program  # start-up: only for outlines of NC programs
+
+    program = read_program(a.data, a.name, a.registry)
+    out = []
+    for md in program.machine_data:
+        index = md.line - 1
+        rng = line_range(a.text, index)
+        sel = types.Range(types.Position(index, a.text.character(index, md.start)),
+                          types.Position(index, a.text.character(index, md.end)))
+        axis = f"AX={md.axis}" if md.axis else (f"AXNR={md.axnr}" if md.axnr else "no axis")
+        writes = ", ".join(w for w, *_ in md.writes)
+        out.append(types.DocumentSymbol(f"#MACHINE DATA {axis}", types.SymbolKind.Event, rng, sel, detail=writes))
+    for limit in program.limits:
+        index = limit.line - 1
+        rng = line_range(a.text, index)
+        sel = types.Range(types.Position(index, a.text.character(index, limit.start)),
+                          types.Position(index, a.text.character(index, limit.end)))
+        g = "G99" if limit.positive else "G98"
+        out.append(types.DocumentSymbol(f"{g} {limit.axis}", types.SymbolKind.Constant, rng, sel,
+                                        detail=f"{limit.value:g}" + (" (G91)" if limit.relative else "")))
+    out.sort(key=lambda s: (s.range.start.line, s.range.start.character))
+    return out
+
+
+def document_symbols(a: Analysis) -> list[types.DocumentSymbol]:
+    if a.form == LIST:
+        return _outline(_list_rows(a), a.result.kind if a.result is not None else None)
+    if a.form == STRUCTURED:
+        return _outline(_structured_rows(a), a.result.kind if a.result is not None else None)
+    if a.form == PROGRAM:
+        return _program_symbols(a)
+    return []
+
+
+def _reference_target(a: Analysis, entry: Entry) -> Path | None:
+    """The list file a start-up list's entry names, where the controller would look for it."""
+    if entry.key is None or a.path is None:
+        return None
+    ref = BY_KEY.get(entry.key.pattern)
+    if ref is None or len(entry.key.indices) != ref.key.count("[]"):
+        return None
+    cfg = a.config
+    own = cfg.machine is not None and os.path.realpath(cfg.machine) == os.path.realpath(a.path)
+    if own and entry.key_text in cfg.machine_lists:
+        return cfg.machine_lists[entry.key_text]
+    text = entry.value.strip().strip('"')
+    if not text:
+        return None
+    if Path(text).is_absolute():
+        return Path(text)
+    values = a.values()
+    raws = [e.value for e in (values.doc.entries if values is not None else [])
+            if e.key is not None and e.key.pattern in BY_KEY]
+    root = cfg.machine_workdir if own and cfg.machine_workdir is not None else working_directory(a.path, raws)
+    return root / text
+
+
+def definition(a: Analysis, line: int, character: int) -> list[types.Location]:
+    if a.form != LIST:
+        return []
+    values = a.values()
+    if values is None or line >= len(values.doc.items):
+        return []
+    entry = values.doc.items[line]
+    if not isinstance(entry, Entry):
+        return []
+    col = a.text.column(line, character)
+    if entry.value_kind is ValueKind.REF and entry.value_start <= col <= entry.value_end:
+        rid, _, ridx = entry.value.partition(".")
+        on_machine = a.machine_list()
+        layers = on_machine.values if on_machine is not None else values  # with the default list under it
+        hit = layers.value_of(rid, (int(ridx),) if ridx.isdigit() else ())
+        layer = layers.layer_of(rid, (int(ridx),) if ridx.isdigit() else ())
+        if layer is layers:
+            layer = values
+        if hit is None or layer is None:
+            return []
+        path = Path(layer.doc.path)
+        uri = a.uri if layer is values else uri_of(path)
+        index = hit.entry.line - 1
+        rng = types.Range(types.Position(index, 0), types.Position(index, 0)) if layer is not values else \
+            line_range(a.text, index)
+        return [types.Location(uri, rng)]
+    target = _reference_target(a, entry)
+    if target is None or not target.is_file():
+        return []
+    return [types.Location(uri_of(target), types.Range(types.Position(0, 0), types.Position(0, 0)))]
