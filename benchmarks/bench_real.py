@@ -62,6 +62,10 @@ def main() -> None:
         zero = shutil.which("zero") or str(Path(PY).parent / "zero")
         subprocess.run([PY, str(SHARED), "--zero", zero, "--out", str(out), "--tools", str(tools),
                         "--machines", str(machines)], check=True)
+    # An installed zero has its bytecode compiled; a work tree under PYTHONDONTWRITEBYTECODE would
+    # otherwise compile every edited module at every start and measure that instead.
+    subprocess.run([PY, "-m", "compileall", "-q", str(ROOT / "src" / "zero")], check=False,
+                   stdout=subprocess.DEVNULL)
     n_tools = entries(out / "tools.lis")
     print(f"workloads in {out}: tools.lis {n_tools:,} entries, fleet {machines} machines\n")
     print(f"{'workload':<44}{'time':>13}{'peak':>13}   {'anchor':<34}{'ratio':>8}    target")

@@ -18,7 +18,7 @@ from zero.catalog.ids import AXIS_UNITS, g_code_with_index, in_units
 from zero.catalog.registry import NO_DEFAULT, ParamSpec, Registry
 from zero.catalog.values import default_number, parse_int, read_value
 from zero.errors import ZeroError
-from zero.lists.model import Comment, Entry, ValueKind, parse_key
+from zero.lists.model import Comment, Entry, Key, ValueKind, parse_key
 from zero.lists.tokenizer import tokenize
 from zero.structured.formats import read_tree
 from zero.structured.tree import encode_list, to_list_text
@@ -86,8 +86,8 @@ def read_side(data: bytes, fmt: str, path: str, registry: Registry, kind: str | 
 # ----------------------------------------------------------------- values
 
 
-def spec_for(key: str, kind: str | None, registry: Registry) -> ParamSpec | None:
-    k = parse_key(key)
+def spec_for(key: str, kind: str | None, registry: Registry, parsed: Key | None = None) -> ParamSpec | None:
+    k = parsed or parse_key(key)
     if k is None:
         return None
     return registry.by_pattern(k.pattern, kind) or registry.alias(k.pattern, kind)
@@ -226,9 +226,15 @@ def diff_sides(a: Side, b: Side, registry: Registry, options: DiffOptions | None
     unit_a, unit_b = axis_unit(a), axis_unit(b)
     length_unit = unit_b or unit_a
     out: list[Change] = []
-    for key in sorted(set(a.entries) | set(b.entries), key=_sort_key):
+    # Keys in plain order here (the changes are put in key order at the end): most keys of two
+    # versions of a list are the same, with the same text, and cost nothing more.
+    same_comments = not options.comments
+    for key in sorted(set(a.entries) | set(b.entries)):
         ea, eb = a.entries.get(key), b.entries.get(key)
-        spec = spec_for(key, kind, registry)
+        if (ea is not None and eb is not None and ea.value == eb.value
+                and (same_comments or a.comments.get(key) == b.comments.get(key))):
+            continue  # the same text is the same value, whatever the parameter
+        spec = spec_for(key, kind, registry, (ea or eb).key)  # type: ignore[union-attr]
         pid = spec.id if spec else None
         va = effective(ea, spec) if ea is not None else None
         vb = effective(eb, spec) if eb is not None else None
