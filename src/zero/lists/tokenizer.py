@@ -220,13 +220,14 @@ def tokenize_text(text: str, path: str = "-", encoding: str = "utf-8", bom: bool
     if raw_lines and raw_lines[-1] == "":
         raw_lines.pop()
         endings.pop()
-    lines: list[str] = []
-    for idx, s in enumerate(raw_lines):
-        if s.endswith("\r") and endings[idx] == "\n":
-            lines.append(s[:-1])
-            endings[idx] = "\r\n"
-        else:
-            lines.append(s)
+    lines: list[str] = raw_lines if "\r" not in text else []
+    if "\r" in text:
+        for idx, s in enumerate(raw_lines):
+            if s.endswith("\r") and endings[idx] == "\n":
+                lines.append(s[:-1])
+                endings[idx] = "\r\n"
+            else:
+                lines.append(s)
 
     problems: list[Problem] = []
     items: list[Item] = []
@@ -251,22 +252,21 @@ def tokenize_text(text: str, path: str = "-", encoding: str = "utf-8", bom: bool
                 kind = _KIND_OF[km.lastgroup] if km is not None and km.lastgroup else ValueKind.WORD
                 if len(kinds) < 4096:
                     kinds[value] = kind
-            entry = Entry(number, key_text, key_text, parse_key(key_text, True), m.start(1), m.end(1),
-                          value, kind, m.start(2), m.end(2))
-            if comment is not None:
-                cs = m.start(3)
-                entry.comment = comment
-                entry.comment_start = cs
-                entry.comment_style = _STYLE_OF.get(comment[0]) or comment_style(comment)
-                if note is not None:  # `( P-AXIS-00001 …` at the comment's start: matched above
-                    entry.annotation = note
-                    entry.annotation_start = m.start(4)
-                elif "P-" in comment:
-                    am = _ANNOTATION_RE.search(comment)
-                    if am:
-                        entry.annotation = am.group(1)
-                        entry.annotation_start = cs + am.start(1)
-            append(entry)
+            ks, ke = m.span(1)
+            vs, ve = m.span(2)
+            if comment is None:
+                append(Entry(number, key_text, key_text, parse_key(key_text, True), ks, ke, value, kind, vs, ve))
+                continue
+            cs = m.start(3)
+            style = _STYLE_OF.get(comment[0]) or comment_style(comment)
+            if note is not None:  # `( P-AXIS-00001 …` at the comment's start: matched above
+                ns = m.start(4)
+            elif "P-" in comment and (am := _ANNOTATION_RE.search(comment)) is not None:
+                note, ns = am.group(1), cs + am.start(1)
+            else:
+                ns = -1
+            append(Entry(number, key_text, key_text, parse_key(key_text, True), ks, ke, value, kind, vs, ve,
+                         comment, cs, style, note, ns))
             continue
         item = scan_line(s, number, problems)
         if end_line is not None:
