@@ -35,6 +35,7 @@ async def start(cache: Path, options: dict[str, Any] | None = None, capabilities
 
     client.registrations = []  # type: ignore[attr-defined]
     _record(client)
+    _record_responses(client)
     await client.initialize_session(types.InitializeParams(
         capabilities=client_capabilities(capabilities),
         root_uri=(cwd or Path.cwd()).as_uri(),
@@ -69,6 +70,44 @@ def _record(client: LanguageClient) -> None:
         handle(method_name, params)
 
     client.protocol._handle_notification = handle_and_record  # type: ignore[method-assign]
+
+
+def _record_responses(client: LanguageClient) -> None:
+    """Keep the answers to requests the client did not make itself (sent with :func:`send_raw`)."""
+    client.raw_answers = {}  # type: ignore[attr-defined]
+    handle = client.protocol._handle_response
+
+    def handle_and_record(msg_id: Any, result: Any = None, error: Any = None) -> None:
+        if isinstance(msg_id, str) and msg_id.startswith("raw-"):
+            client.raw_answers[msg_id] = (result, error)  # type: ignore[attr-defined]
+            return
+        handle(msg_id, result, error)
+
+    client.protocol._handle_response = handle_and_record  # type: ignore[method-assign]
+
+
+async def send_raw(client: LanguageClient, body: bytes) -> None:
+    """Bytes to the server as a message (``Content-Length`` header added), as no well-behaved client would."""
+    server = client._server
+    assert server is not None and server.stdin is not None
+    server.stdin.write(b"Content-Length: %d\r\n\r\n" % len(body) + body)
+    await server.stdin.drain()
+
+
+async def raw_request(client: LanguageClient, method: str, params: Any, msg_id: str) -> tuple[Any, Any]:
+    """Send a request whatever its parameters; its (result, error) as the server answers it."""
+    import json
+
+    await send_raw(client, json.dumps({"jsonrpc": "2.0", "id": f"raw-{msg_id}", "method": method,
+                                       "params": params}).encode())
+    loop = asyncio.get_running_loop()
+    deadline = loop.time() + TIMEOUT
+    answers: dict[str, tuple[Any, Any]] = client.raw_answers  # type: ignore[attr-defined]
+    while f"raw-{msg_id}" not in answers:
+        if loop.time() > deadline:
+            raise TimeoutError(f"no answer to {method}")
+        await asyncio.sleep(0.005)
+    return answers[f"raw-{msg_id}"]
 
 
 async def diagnostics_after(client: LanguageClient, uri: str, action: Any = None) -> list[types.Diagnostic]:

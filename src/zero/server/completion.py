@@ -159,11 +159,11 @@ def _value_items(a: Analysis, line: int, start: int, col: int, key: str) -> list
     if spec is None:
         return []
     items = _Items(a, line, start, col, False)
-    _spec_values(items, spec)
+    _spec_values(items, spec, a.registry)
     return items.items
 
 
-def _spec_values(items: _Items, spec: ParamSpec) -> None:
+def _spec_values(items: _Items, spec: ParamSpec, registry: Registry) -> None:
     seen: set[str] = set()
 
     def add(label: str, detail: str, sort: str) -> None:
@@ -178,6 +178,10 @@ def _spec_values(items: _Items, spec: ParamSpec) -> None:
     for value, label in zip(spec.enum, labels, strict=True):
         add(str(value), f"{spec.id}: " + (label or "a value the catalogue lists")
             + (" (bits: any combination)" if spec.enum_flags else ""), "1")
+    rng = registry.range_of(spec)
+    for allowed in (rng.allowed or ()) if rng is not None else ():
+        text = str(int(allowed)) if isinstance(allowed, float) and allowed.is_integer() else str(allowed)
+        add(text, f"{spec.id}: a value of the range {spec.range_text}", "1")
     if spec.type == "BOOLEAN":
         add("0", f"{spec.id}: FALSE", "1")
         add("1", f"{spec.id}: TRUE", "1")

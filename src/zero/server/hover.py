@@ -173,13 +173,13 @@ def _value_lines(t: Target, values: ListValues | None) -> list[str]:
         labels = spec.enum_labels if len(spec.enum_labels) == len(spec.enum) else ("",) * len(spec.enum)
         if spec.enum_flags:
             bits = [f"{v} {label}".strip() for v, label in zip(spec.enum, labels, strict=True) if v and number & v]
-            out.append("bits set: " + (", ".join(bits) if bits else "none"))
+            out.append("— bits set: " + (", ".join(bits) if bits else "none"))
         else:
             meaning = next((label for v, label in zip(spec.enum, labels, strict=True) if v == number), None)
             if meaning:
                 out.append(f"= {meaning}")
             elif meaning is None:
-                out.append("not one of the values the catalogue lists")
+                out.append("— not one of the values the catalogue lists")
     return out
 
 
@@ -245,7 +245,10 @@ def hover_text(a: Analysis, t: Target) -> str:
     lines = [head]
     if t.alias is not None:
         lines.append(f"`{t.alias}` is an undocumented spelling of `{spec.key}` (R002)")
-    for block in (_value_lines(t, values), _range_lines(t, values, a.registry), _machine_lines(a, t)):
+    value = _value_lines(t, values)
+    if value:
+        lines.append(" ".join(value))
+    for block in (_range_lines(t, values, a.registry), _machine_lines(a, t)):
         if block:
             lines.append("\n".join(block))
     lines.append(f"```text\n{param_text(spec, a.registry)}```")

@@ -1,0 +1,119 @@
+"""The server never dies of what a client sends: malformed requests and notifications, bytes that
+are no JSON, files that cannot be read, positions beyond the text. Each is answered (an LSP error
+or an empty result) and the next request is served as usual."""
+
+from __future__ import annotations
+
+import os
+from collections.abc import AsyncIterator
+from pathlib import Path
+
+import pytest
+import pytest_asyncio
+from lsp_support import close_document, codes, diagnostics_after, open_document, raw_request, send_raw, session
+from lsprotocol import types
+from pygls.exceptions import JsonRpcException
+from pytest_lsp import LanguageClient
+
+pytestmark = [pytest.mark.slow, pytest.mark.asyncio(loop_scope="module")]
+
+
+@pytest_asyncio.fixture(scope="module", loop_scope="module")
+async def client(tmp_path_factory: pytest.TempPathFactory) -> AsyncIterator[LanguageClient]:
+    async for c in session(tmp_path_factory.mktemp("cache")):
+        yield c
+
+
+async def still_serving(client: LanguageClient, tmp_path: Path) -> None:
+    """A document opened after the fault gets its findings and a hover."""
+    path = tmp_path / "alive.lis"
+    found = await open_document(client, path, "np_grp[1].achse[0].versch 99999999999\n")
+    assert codes(found) == [(1, "R004")]
+    result = await client.text_document_hover_async(types.HoverParams(
+        types.TextDocumentIdentifier(uri=path.as_uri()), types.Position(line=0, character=3)))
+    assert result is not None
+    close_document(client, path)
+
+
+async def test_a_request_with_malformed_parameters_is_answered_invalid_params(client: LanguageClient,
+                                                                             tmp_path: Path) -> None:
+    result, error = await raw_request(client, types.TEXT_DOCUMENT_HOVER,
+                                      {"textDocument": {"uri": 5}, "position": {"line": "x"}}, "hover")
+    assert result is None and error is not None
+    assert error.code == -32602 and "textDocument/hover" in error.message
+    result, error = await raw_request(client, types.TEXT_DOCUMENT_COMPLETION, None, "completion")
+    assert error is not None and error.code == -32602
+    result, error = await raw_request(client, "zero/noSuchMethod", {}, "unknown")
+    assert error is not None and error.code == -32601
+    await still_serving(client, tmp_path)
+
+
+async def test_malformed_notifications_and_bytes_are_read_past(client: LanguageClient, tmp_path: Path) -> None:
+    await send_raw(client, b'{"jsonrpc": "2.0", "method": "textDocument/didOpen", "params": {"textDocument": 1}}')
+    await send_raw(client, b'{"jsonrpc": "2.0", "method": "textDocument/didChange", "params": {"textDocument": '
+                           b'{"uri": "file:///never-opened.lis", "version": 2}, "contentChanges": [{"text": "x"}]}}')
+    await send_raw(client, b"{not json")
+    await send_raw(client, "\u00fc".encode("latin-1"))
+    await still_serving(client, tmp_path)
+
+
+async def test_a_file_that_cannot_be_read_is_a_request_failed(client: LanguageClient, tmp_path: Path) -> None:
+    fifo = tmp_path / "pipe.lis"
+    os.mkfifo(fifo)
+    missing = tmp_path / "missing.lis"
+    for path, reason in ((fifo, "FIFO"), (missing, "no such file"), (tmp_path, "directory")):
+        with pytest.raises(JsonRpcException) as caught:
+            await client.text_document_document_symbol_async(types.DocumentSymbolParams(
+                types.TextDocumentIdentifier(uri=path.as_uri())))
+        assert caught.value.code == -32803, reason
+        assert reason in caught.value.message.lower() or reason in caught.value.message
+    with pytest.raises(JsonRpcException) as caught:
+        await client.text_document_hover_async(types.HoverParams(
+            types.TextDocumentIdentifier(uri="untitled:Untitled-1"), types.Position(line=0, character=0)))
+    assert caught.value.code == -32803
+    await still_serving(client, tmp_path)
+
+
+async def test_an_open_document_on_a_fifo_is_linted_from_the_editor_text(client: LanguageClient,
+                                                                        tmp_path: Path) -> None:
+    fifo = tmp_path / "nullp.lis"
+    os.mkfifo(fifo)  # reading it would block: zero never opens it for reading
+    found = await open_document(client, fifo, "np_grp[1].achse[0].inaktiv 7\n")
+    assert codes(found) == [(1, "R005")]
+    close_document(client, fifo)
+
+
+async def test_positions_beyond_the_text_get_empty_answers(client: LanguageClient, tmp_path: Path) -> None:
+    path = tmp_path / "n.lis"
+    await open_document(client, path, "np_grp[1].achse[0].versch 1\n")
+    ident = types.TextDocumentIdentifier(uri=path.as_uri())
+    far = types.Position(line=1000, character=1000)
+    assert await client.text_document_hover_async(types.HoverParams(ident, far)) is None
+    assert await client.text_document_definition_async(types.DefinitionParams(ident, far)) == []
+    completion = await client.text_document_completion_async(types.CompletionParams(ident, far))
+    assert isinstance(completion, types.CompletionList)
+    actions = await client.text_document_code_action_async(types.CodeActionParams(
+        ident, types.Range(start=far, end=far), types.CodeActionContext(diagnostics=[])))
+    assert not actions
+    close_document(client, path)
+    await still_serving(client, tmp_path)
+
+
+async def test_an_untitled_document_is_linted_with_the_defaults(client: LanguageClient) -> None:
+    uri = "untitled:Untitled-2"
+    client.text_document_did_open(types.DidOpenTextDocumentParams(types.TextDocumentItem(
+        uri=uri, language_id="plaintext", version=1, text="np_grp[1].achse[0].inaktiv 7\n")))
+    found = await diagnostics_after(client, uri)
+    assert codes(found) == [(1, "R005")]
+
+
+async def test_formatting_a_list_it_cannot_read_is_a_request_failed(client: LanguageClient,
+                                                                   tmp_path: Path) -> None:
+    path = tmp_path / "n.lis"
+    await open_document(client, path, "np_grp[1].achse[0].versch 1\n\"quoted key\" 1\n")
+    with pytest.raises(JsonRpcException) as caught:
+        await client.text_document_formatting_async(types.DocumentFormattingParams(
+            types.TextDocumentIdentifier(uri=path.as_uri()), types.FormattingOptions(tab_size=4, insert_spaces=True)))
+    assert caught.value.code == -32803 and "not formatted" in caught.value.message
+    close_document(client, path)
+    await still_serving(client, tmp_path)
