@@ -7,7 +7,7 @@ from pathlib import Path
 
 import pytest
 
-from conftest import corpus_dir
+from conftest import FIXTURES, corpus_dir, golden
 from zero.catalog.registry import Registry
 from zero.engine.lint import LintOptions, lint_file
 
@@ -87,3 +87,18 @@ def test_commented_out_parameters_are_opt_in_information(registry: Registry, cor
 def test_vendor_keys_are_information_and_unknown_keys_errors(registry: Registry, corpus: Path) -> None:
     codes = Counter(d.code for path in LISTS for d in lint_file(path, registry).diagnostics)
     assert codes["R001"] == 0 and codes["R010"] == 9 and codes["S005"] == 0
+
+
+def _compact(path: Path, registry: Registry) -> list[str]:
+    result = lint_file(path, registry, LintOptions(extend_select=("S012",)))
+    return [f"{d.span.line}:{d.span.column}-{d.span.end_line}:{d.span.end_column} {d.code} "
+            f"{d.severity.label} {d.param_id or ''}".rstrip() for d in result.diagnostics]
+
+
+def test_every_finding_on_the_corpus_is_pinned(registry: Registry, corpus: Path,
+                                              request: pytest.FixtureRequest) -> None:
+    """Exactly the findings (location, code, severity, parameter) zero gave on every vendor list
+    before its speed work: a faster path must not lose or add one. Opt-in S012 included."""
+    actual = {_name(p): _compact(p, registry) for p in LISTS}
+    expected = golden(FIXTURES / "corpus-findings.json", actual, request.config.getoption("--update-golden"))
+    assert actual == expected
