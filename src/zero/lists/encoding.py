@@ -13,7 +13,7 @@ from zero.lists.model import Document
 
 BOM = b"\xef\xbb\xbf"
 # A character that came from a real UTF-8 sequence: beyond ASCII and not an escaped stray byte.
-_REAL_UTF8 = re.compile("[\x80-\udc7f\udd00-\U0010ffff]")
+_REAL_UTF8 = re.compile("[^\x00-\x7f\udc80-\udcff]")  # negated: a range up to U+10FFFF compiles 40× slower
 
 
 def decode(data: bytes) -> tuple[str, str, bool]:
