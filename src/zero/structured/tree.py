@@ -87,7 +87,7 @@ _PLAIN_KEY_RE = re.compile(r"[A-Za-z_][A-Za-z0-9_]*(?:\[[0-9]+\])*(?:\.[A-Za-z_]
 def split_key(key: str) -> tuple[str, ...] | None:
     """``np_grp[1].achse[0].versch`` → ``("np_grp", "1", "achse", "0", "versch")``."""
     if _PLAIN_KEY_RE.fullmatch(key):
-        return tuple(x for x in _SPLIT_RE.split(key) if x)
+        return tuple(filter(None, _SPLIT_RE.split(key)))
     out: list[str] = []
     for part in key.split("."):
         m = _FRAGMENT_RE.fullmatch(part)
