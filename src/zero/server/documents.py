@@ -49,6 +49,9 @@ LIST, PROGRAM, STRUCTURED = "list", "program", "structured"
 _ZERO_RECORD = re.compile(r'^(?:_zero\s*:|\[\s*_zero\s*\]|\s*"_zero"\s*:)', re.MULTILINE)
 
 
+CLIENT_KEYS = ("path", "args", "trace")  # the editor extension's own settings, sent along
+
+
 @dataclass(slots=True)
 class Settings:
     """What the editor may set (``initializationOptions`` or ``workspace/didChangeConfiguration``,
@@ -66,6 +69,8 @@ class Settings:
         given = given.get("zero", given) if isinstance(given.get("zero"), dict) else given
         refused = []
         for key, value in given.items():
+            if key in CLIENT_KEYS:
+                continue
             if key == "debounce" and isinstance(value, (int, float)) and not isinstance(value, bool) \
                     and 0 <= value <= 10_000:
                 self.debounce = value / 1000
@@ -106,6 +111,8 @@ def form_of(name: str) -> str:
 
 
 def _units(text: str, encoding: str) -> int:
+    if text.isascii():
+        return len(text)
     if encoding == "utf-8":
         return len(text.encode("utf-8", "surrogatepass"))
     if encoding == "utf-32":
@@ -136,6 +143,8 @@ class Text:
     def column(self, line: int, character: int) -> int:
         """The 0-based code-point column of a client position (as zero counts it)."""
         text = self.line(line)
+        if text.isascii() and not (line == 0 and self.bom):
+            return min(character, len(text))
         units = 0
         col = 0
         for ch in text:
@@ -212,6 +221,7 @@ class Analysis:
     result: LintResult | None = None  # None: not linted (excluded, not a list's form, config error)
     notes: list[Note] = field(default_factory=list)
     machine: Machine | None = None
+    cache: dict[str, object] = field(default_factory=dict)  # answers that depend on the text only
     _values: ListValues | None = None
 
     @property

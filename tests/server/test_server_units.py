@@ -1,0 +1,150 @@
+"""The server's pieces without the protocol (fast): positions in the client's units, settings, URIs,
+the edits of fixes, noqa and formatting, the outline and completion as plain values."""
+
+from __future__ import annotations
+
+import sys
+from pathlib import Path
+
+import pytest
+from lsp_support import apply_edits
+from lsprotocol import types
+
+from conftest import builtin_registry
+from zero.diagnostics import Span
+from zero.server import actions, completion, findings, hover, outline
+from zero.server.documents import (
+    LIST,
+    PROGRAM,
+    STRUCTURED,
+    Analysis,
+    Projects,
+    Settings,
+    Text,
+    form_of,
+    path_of,
+    uri_of,
+)
+
+
+def projects() -> Projects:
+    return Projects(lambda desc: builtin_registry())
+
+
+def analyse(text: str, name: str = "nullp.lis", directory: Path | None = None) -> Analysis:
+    uri = (directory / name).as_uri() if directory is not None else f"untitled:{name}"
+    return projects().analyse(uri, 1, text)
+
+
+def test_positions_in_utf16_utf8_and_utf32() -> None:
+    line = "a😀b ( µ"
+    for encoding, after_emoji in (("utf-16", 3), ("utf-8", 5), ("utf-32", 2)):
+        text = Text(line + "\n", encoding)
+        assert text.character(0, 2) == after_emoji
+        assert text.column(0, after_emoji) == 2
+        assert text.position(1, 3) == (0, after_emoji)  # zero's 1-based column 3
+    ascii_text = Text("abc\n")
+    assert ascii_text.character(0, 99) == 3 and ascii_text.column(0, 99) == 3
+    bom = Text("\ufeffkey 1\n")
+    assert bom.position(1, 1) == (0, 1)  # zero reads past the BOM
+    assert Text("x\r\ny").lines == ["x", "y"] and Text("").end() == (0, 0)
+
+
+def test_spans_become_ranges_in_the_clients_units() -> None:
+    text = Text("# 😀 comment\nkey 😀 value\n")
+    assert text.span(Span(2, 5, 2, 6)) == ((1, 4), (1, 6))
+    assert text.span(Span(9, 1, 9, 1)) == ((2, 0), (2, 0))  # beyond the end: the last line
+
+
+def test_settings_take_what_they_know() -> None:
+    s = Settings()
+    refused = s.update({"zero": {"debounce": 100, "ruleDocs": "https://wiki/{code}", "structured": "all",
+                                 "machine": False, "path": ["zero"], "colour": 1}})
+    assert (s.debounce, s.rule_docs, s.structured, s.machine) == (0.1, "https://wiki/{code}", "all", False)
+    assert refused == ["colour"]
+    assert s.update({"debounce": -5, "ruleDocs": "no placeholder", "structured": 3}) == [
+        "debounce", "ruleDocs", "structured"]
+    assert s.update(None) == [] and s.debounce == 0.1
+
+
+def test_uris_and_forms() -> None:
+    assert path_of("file:///tmp/a%20b/n.lis") == Path("/tmp/a b/n.lis")
+    assert path_of("untitled:Untitled-1") is None
+    assert uri_of(Path("/tmp/a b/n.lis")) == "file:///tmp/a%20b/n.lis"
+    assert [form_of(n) for n in ("a.lis", "a.LST", "p.NC", "p.mpf", "n.yaml", "n.toml", "n.json", "x")] == [
+        LIST, LIST, PROGRAM, PROGRAM, STRUCTURED, STRUCTURED, STRUCTURED, LIST]
+
+
+def test_rule_links_are_files_or_the_template(tmp_path: Path) -> None:
+    docs = findings.RuleDocs(directory=tmp_path / "rules")
+    href = docs.href("R005")
+    assert href == (tmp_path / "rules" / "R005.md").as_uri()
+    assert (tmp_path / "rules" / "R005.md").read_text(encoding="utf-8").startswith("# R005 out-of-range")
+    assert docs.href("XYZ") is None
+    assert findings.RuleDocs("https://wiki.example/zero/{code}").href("S004") == "https://wiki.example/zero/S004"
+    blocked = tmp_path / "file"
+    blocked.write_text("")
+    assert findings.RuleDocs(directory=blocked / "rules").href("R005") is None  # cannot write: no link
+
+
+def test_the_noqa_edit_appends_after_an_astral_character(tmp_path: Path) -> None:
+    text = "np_grp[1].achse[0].versch 99999999999 ( 😀\n"
+    a = analyse(text, directory=tmp_path)
+    assert [d.code for d in a.diagnostics] == ["R004"]
+    acts = actions.code_actions(a, types.Range(start=types.Position(line=0, character=0),
+                                               end=types.Position(line=0, character=0)), None,
+                                findings.RuleDocs("x/{code}"))
+    (noqa,) = [x for x in acts if x.title.startswith("Suppress")]
+    assert noqa.edit is not None and noqa.edit.changes is not None
+    fixed = apply_edits(text, list(noqa.edit.changes[a.uri]))
+    assert fixed == "np_grp[1].achse[0].versch 99999999999 ( 😀  noqa: R004 -- reviewed\n"
+    assert analyse(fixed, directory=tmp_path).diagnostics == []
+
+
+def test_formatting_edits_touch_only_the_lines_that_change(tmp_path: Path) -> None:
+    text = "# head\n" + "np_grp[1].achse[0].versch".ljust(54) + "1\n" + "np_grp[1].achse[1].versch 2\n"
+    a = analyse(text, directory=tmp_path)
+    edits = actions.formatting(a)
+    assert len(edits) == 1 and edits[0].range.start.line == 2
+    formatted = apply_edits(text, edits)
+    assert formatted.splitlines()[2] == "np_grp[1].achse[1].versch".ljust(54) + "2"
+    assert actions.formatting(analyse(formatted, directory=tmp_path)) == []
+
+
+def test_line_edits_at_the_end_without_a_newline() -> None:
+    text = Text("a 1\nb 2")
+    (edit,) = actions.line_edits(text, "a 1\nb 3\n")
+    assert edit.range.start == types.Position(line=1, character=0)
+    assert edit.range.end == types.Position(line=1, character=3)
+    assert apply_edits("a 1\nb 2", [edit]) == "a 1\nb 3\n"
+
+
+def test_completion_fills_indices_from_the_entry_above(tmp_path: Path) -> None:
+    a = analyse("np_grp[4].achse[7].versch 5\n\n", directory=tmp_path)
+    labels = {i.label for i in completion.completion(a, 1, 0, False).items}
+    assert {"np_grp[4].achse[7].inaktiv", "np_grp[4].achse[8].versch"} <= labels
+    snippets = completion.completion(a, 1, 0, True).items
+    versch = next(i for i in snippets if i.label == "np_grp[4].achse[8].versch")
+    assert isinstance(versch.text_edit, types.TextEdit)
+    assert versch.text_edit.new_text == "np_grp[${1:4}].achse[${2:8}].versch"
+
+
+def test_hover_and_outline_of_an_untitled_list() -> None:
+    a = analyse("g53_verfuegbar 1\nnp_grp[1].achse[0].versch -25000\n")
+    h = hover.hover(a, 1, 3)
+    assert h is not None and isinstance(h.contents, types.MarkupContent)
+    assert "= -2.5 mm (or °)" in h.contents.value
+    symbols = outline.document_symbols(a)
+    assert [s.name for s in symbols] == ["g53_verfuegbar", "np_grp[1]"]
+    assert outline.document_symbols(a) is symbols  # once per version of the text
+
+
+@pytest.mark.skipif(sys.platform == "win32", reason="FIFOs")
+def test_an_open_fifo_is_never_read(tmp_path: Path) -> None:
+    import os
+
+    fifo = tmp_path / "n.lis"
+    os.mkfifo(fifo)
+    a = analyse("np_grp[1].achse[0].inaktiv 7\n", "n.lis", tmp_path)
+    assert [d.code for d in a.diagnostics] == ["R005"]
+    assert not a.saved
