@@ -158,6 +158,8 @@ async def test_the_machine_findings_follow_the_open_lists(client: LanguageClient
     assert (2, "X001") in codes(found)  # G54 X at 500 mm, outside the default list's +-100 mm
     x001 = next(d for d in found if d.code == "X001")
     assert "achse_x.lis" in x001.message
+    related = {(r.location.uri.rsplit("/", 1)[-1], r.location.range.start.line) for r in x001.related_information or []}
+    assert {name for name, _ in related} == {"achse_vorgabe.lis"}  # the soft limits come from the default list
     # the offset moved inside the limits in the editor, not saved: the finding goes
     text = zero_list.read_text().replace("5000000", "50000")
     found = await change_document(client, zero_list, text, 2)

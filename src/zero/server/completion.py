@@ -26,6 +26,7 @@ _KEY_TYPED = re.compile(r"([ \t]*)([A-Za-z0-9_\[\].]*)")
 _VALUE_TYPED = re.compile(r"[ \t]*([A-Za-z_][A-Za-z0-9_\[\].]*)[ \t]+([^\s|]*)")
 _INDEX = re.compile(r"\[([0-9]*)\]?")
 _MACHINE_DATA = re.compile(r"#\s*MACHINE\s+DATA\b", re.IGNORECASE)
+_HASH_TYPED = re.compile(r"(?:^|\s)#[A-Za-z ]*$")  # `#MA` typed, at the start or after `N10 `
 _AXPARAM_OPEN = re.compile(r'AXPARAM\s*=?\s*"([^"\s]*)$', re.IGNORECASE)
 MACHINE_DATA_LABEL = ('#MACHINE DATA [SYN] [AX=<name> | AXNR=<n>  P-AXIS-<id>[.<i>]=<value> | '
                       'AXPARAM="<key> <value>" [WAIT]]')
@@ -202,15 +203,18 @@ def _program_items(a: Analysis, line: int, col: int, snippets: bool) -> list[typ
             items.add(key, types.CompletionItemKind.Field, f"{spec.id} · {spec.type}", sort=key, data={"id": spec.id})
         return items.items
     md = _MACHINE_DATA.search(before)
-    word = re.search(r"[A-Za-z0-9_#=.-]*$", before)
-    start = word.start() if word else col
-    items = _Items(a, line, start, col, snippets)
     if md is None:
-        if before.strip().startswith("#") or before.strip() == "":
-            items.add("#MACHINE DATA", types.CompletionItemKind.Snippet, "write axis parameters from the program",
-                      "#MACHINE DATA [AX=${1:X} ${2:P-AXIS-00209}=${3:0}]" if snippets else "#MACHINE DATA [",
-                      snippet=True)
+        hash_typed = _HASH_TYPED.search(before)
+        if before != "" and hash_typed is None:
+            return []
+        start = before.index("#", hash_typed.start()) if hash_typed is not None else col
+        items = _Items(a, line, start, col, snippets)
+        items.add("#MACHINE DATA", types.CompletionItemKind.Snippet, "write axis parameters from the program",
+                  "#MACHINE DATA [AX=${1:X} ${2:P-AXIS-00209}=${3:0}]" if snippets else "#MACHINE DATA [",
+                  snippet=True)
         return items.items
+    word = re.search(r"[A-Za-z0-9_#=.-]*$", before)
+    items = _Items(a, line, word.start() if word else col, col, snippets)
     if "[" not in before[md.end():]:
         items.add("SYN", types.CompletionItemKind.Keyword, "synchronise with the program (allows WAIT)")
         return items.items
