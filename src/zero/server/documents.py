@@ -186,10 +186,11 @@ def source_bytes(path: Path | None, text: str) -> tuple[bytes, bool]:
     else the editor's text."""
     if path is not None:
         try:
-            disk = read_file(path)
-        except ZeroError:
+            size = os.stat(path).st_size
+            disk = read_file(path) if size <= 4 * len(text) + 8 else None  # far larger: not this text
+        except (OSError, ZeroError):
             disk = None
-        if disk is not None and len(disk) <= 4 * len(text) + 8 and decode(disk)[0] == text:
+        if disk is not None and decode(disk)[0] == text:
             return disk, True
     return encode_text(text), False
 
