@@ -148,3 +148,19 @@ def test_an_open_fifo_is_never_read(tmp_path: Path) -> None:
     a = analyse("np_grp[1].achse[0].inaktiv 7\n", "n.lis", tmp_path)
     assert [d.code for d in a.diagnostics] == ["R005"]
     assert not a.saved
+
+
+def test_a_machine_that_cannot_be_read_is_said_on_programs_and_the_start_up_list(tmp_path: Path) -> None:
+    (tmp_path / "zero.toml").write_text('[machine]\nstartup = "listen/hochlauf.lis"\n')
+    lint = analyse("np_grp[1].achse[0].inaktiv 7\n", "nullp.lis", tmp_path)
+    assert [d.code for d in lint.diagnostics] == ["R005"] and lint.notes == []
+    program = analyse("N10 G99 X1600\n", "part.nc", tmp_path)
+    (note,) = program.notes
+    assert "the machine of [tool.zero.machine] cannot be read" in note.message and "no such file" in note.message
+    (tmp_path / "listen").mkdir()
+    text = "kanal_anzahl 1\nzahl_mds 1\nachs_mds[0] ./achse.lis\n"
+    startup = analyse(text, "listen/hochlauf.lis", tmp_path)  # not saved yet: the machine is read from disk
+    assert len(startup.notes) == 1 and "no such file" in startup.notes[0].message
+    (tmp_path / "listen" / "hochlauf.lis").write_text(text)
+    startup = analyse(text, "listen/hochlauf.lis", tmp_path)
+    assert startup.notes == [] and [(d.span.line, d.code) for d in startup.diagnostics] == [(3, "X005")]

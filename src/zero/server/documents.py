@@ -369,11 +369,16 @@ class Projects:
         return a
 
     def _try_machine(self, a: Analysis, buffers: Mapping[str, str]) -> Machine | None:
+        """The machine, or None with a note where it cannot be read (said on NC programs, as `zero lint`
+        says it, and on the start-up list; the project's other lists are checked as without one)."""
         try:
             return self._machine_for(a, buffers)
-        except ZeroError as exc:  # as `zero lint` says it for an NC program; the list is still checked
-            a.notes.append(Note(f"the machine of [tool.zero.machine] cannot be read: {exc}",
-                                severity=Severity.WARNING))
+        except ZeroError as exc:
+            startup = a.config.machine
+            if a.form == PROGRAM or (startup is not None and a.path is not None
+                                     and os.path.realpath(startup) == os.path.realpath(a.path)):
+                a.notes.append(Note(f"the machine of [tool.zero.machine] cannot be read: {exc}",
+                                    severity=Severity.WARNING))
             return None
 
     def _is_list_form(self, text: str, config: Config, path: Path | None) -> bool:
@@ -399,8 +404,10 @@ class Projects:
         machine = self.machine(a.config, a.registry)
         if machine is None:
             return None
-        structural = _structural(machine)
         me = os.path.realpath(a.path) if a.path is not None else None
+        if a.form == LIST and me not in {os.path.realpath(lf.path) for lf in machine.lists}:
+            return None  # a list of the project the machine does not read
+        structural = _structural(machine)
         new: dict[int, ListFile] = {}
         for lf in machine.lists:
             real = os.path.realpath(lf.path)
