@@ -12,8 +12,10 @@ values it refers to, and, on a machine, the effective value and where it comes f
 
 from __future__ import annotations
 
+import os
 import re
 from dataclasses import dataclass
+from pathlib import Path
 
 from lsprotocol import types
 
@@ -22,7 +24,7 @@ from zero.catalog.ranges import Number
 from zero.catalog.registry import KINDS, ParamSpec, Registry
 from zero.catalog.values import ListValues, read_value
 from zero.lists.model import Comment, Entry, format_key, parse_key
-from zero.machine.effective import canonical, scope_values
+from zero.machine.effective import Origin, canonical, scope_values
 from zero.output.docs import param_text
 from zero.server.documents import LIST, PROGRAM, STRUCTURED, Analysis
 
@@ -212,33 +214,41 @@ def _range_lines(t: Target, values: ListValues | None, registry: Registry) -> li
         shown = _fmt(n) if n is not None else "unknown"
         layer = values.layer_of(r.id, idx[:dims])
         if where is None or layer is None:
-            source = "not set: the default"
+            source = "not set: the catalogue default"
         elif layer is values:
             source = f"line {where.entry.line}"
         else:
-            source = f"{layer.doc.path}:{where.entry.line}"
+            source = f"default list {Path(layer.doc.path).name}:{where.entry.line}"
         out.append(f"- `{key}` = {shown} ({r.id}, {source})")
     return out
 
 
 def _machine_lines(a: Analysis, t: Target) -> list[str]:
-    """The effective value on the machine and the layer it comes from."""
+    """The effective value on the machine and the layers under it (``zero explain``)."""
     lf = a.machine_list()
     if lf is None or t.entry is None or t.entry.key is None:
         return []
     key = canonical(lf.values, t.entry)
     escaped = key.replace("[", "[[]")  # the key as a literal pattern
     scope = scope_values(lf.key, lf, [escaped], explain=True)
+
+    def where(origin: Origin) -> str:
+        if origin.path is None:
+            return origin.source
+        if os.path.realpath(origin.path) == os.path.realpath(lf.path):
+            return f"this list, line {origin.line}"
+        return f"{origin.source} {Path(origin.path).name}:{origin.line}"
+
     out = []
     for v in scope.values:
-        out.append(f"on the machine ({lf.key}): `{v.value}` from {v.origin}")
-        out.extend(f"- {o.source}: `{val}`" + (f" ({o})" if o.path else "") for val, o in v.layers
-                   if val is not None)
+        out.append(f"on the machine ({lf.key}): `{v.value}` from {where(v.origin)}")
+        out.extend(f"- {where(o)}: `{val}`" for val, o in v.layers if val is not None and o != v.origin)
     return out
 
 
 def hover_text(a: Analysis, t: Target) -> str:
-    values = a.values() if a.form == LIST else None
+    on_machine = a.machine_list()  # with the default list under this one, where the machine has one
+    values = on_machine.values if on_machine is not None else (a.values() if a.form == LIST else None)
     spec = t.spec
     kind = KINDS.get(spec.kind, (spec.kind, spec.kind))[1]
     head = f"**{t.key or spec.key or spec.id}** — {spec.id}, {kind}"
