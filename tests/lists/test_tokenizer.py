@@ -194,3 +194,17 @@ def test_keys() -> None:
 def test_tool_list_indices_from_one() -> None:
     e = one("wz[1].gueltig 1 ( P-TOOL-00005 : Validity")
     assert e.key is not None and e.key.indices == (1,)
+
+
+def test_a_short_crlf_list_is_text_not_binary() -> None:
+    """The \\r of CRLF endings are not control characters: a list of short CRLF lines was taken
+    for a binary file (S013, nothing else checked) because each ending counted as one."""
+    data = b"kenngr.swe_pos 0\r\n" * 12 + b"Ende\r\n"
+    doc = tokenize(data)
+    assert [p.kind for p in doc.problems] == []
+    assert len(doc.entries) == 12
+    assert set(doc.endings) == {"\r\n"}
+    stray = tokenize(b"a 1\r\n" + b"b\x01 1\r\n" * 10)
+    assert "binary" in [p.kind for p in stray.problems]  # real control characters still count
+    one = tokenize(b"a 1\r\nb 1 # x\x01y\r\n" + b"kenngr.swe_pos 0\r\n" * 10)
+    assert [p.kind for p in one.problems] == ["control-char"]

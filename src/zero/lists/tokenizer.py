@@ -280,8 +280,11 @@ def tokenize_text(text: str, path: str = "-", encoding: str = "utf-8", bom: bool
         append(item)
 
     if _CONTROL_RE.search(text):
-        controls = len(_CONTROL_RE.findall(text))
-        if controls >= BINARY_MIN_CONTROLS and controls > len(text) * BINARY_SHARE:
+        # the \r of each CRLF ending is no control character of a line
+        controls = len(_CONTROL_RE.findall(text)) - (endings.count("\r\n") if "\r" in text else 0)
+        if controls == 0:
+            pass
+        elif controls >= BINARY_MIN_CONTROLS and controls > len(text) * BINARY_SHARE:
             problems.append(Problem("binary", 1, 0, len(lines[0]) if lines else 0, str(controls)))
         else:
             _scan_controls(lines, problems)
