@@ -2,6 +2,7 @@
 
 from __future__ import annotations
 
+import io
 import json
 import subprocess
 import sys
@@ -9,10 +10,16 @@ import xml.etree.ElementTree as ET
 from pathlib import Path
 
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 from typer.testing import CliRunner
 
 from conftest import FIXTURES
 from zero.cli.app import app
+from zero.diagnostics import Diagnostic, Edit, Fix, Severity, Span
+from zero.engine.lint import LintResult
+from zero.lists.model import Document
+from zero.output.formats import render_json
 
 SEED = str(FIXTURES / "seed" / "nullp_3achsen.lis")
 CLEAN = str(FIXTURES / "rules" / "M006" / "pass.lis")
@@ -160,3 +167,24 @@ def test_sarif_uris_are_percent_encoded_and_relative_to_srcroot(tmp_path: Path) 
     location = log["runs"][0]["results"][0]["locations"][0]["physicalLocation"]["artifactLocation"]
     assert location == {"uri": "sub%20dir/a%20b%23%C3%BC.lis", "uriBaseId": "%SRCROOT%"}
     assert log["runs"][0]["originalUriBaseIds"]["%SRCROOT%"]["uri"] == tmp_path.as_uri() + "/"
+
+
+_TEXT = st.text(st.characters(codec="utf-8", exclude_categories=("Cs",)), max_size=30)
+
+
+@given(st.lists(st.lists(st.tuples(_TEXT, st.integers(1, 10**6), st.sampled_from(list(Severity)),
+                                   st.one_of(st.none(), _TEXT)), max_size=4), max_size=4))
+@settings(max_examples=200)
+def test_json_written_object_by_object_is_json_dumps_of_all(files: list[list[tuple[str, int, Severity,
+                                                                                      str | None]]]) -> None:
+    """The streamed JSON report is byte for byte what one json.dumps of every finding gives."""
+    results = []
+    for n, found in enumerate(files):
+        diags = [Diagnostic("R001", sev, msg, Span(line, 1, line, 2), f"f{n}.lis", None,
+                            Fix(msg, (Edit(Span(line, 1, line, 2), fix_text),)) if fix_text is not None else None)
+                 for msg, line, sev, fix_text in found]
+        results.append(LintResult(f"f{n}.lis", Document(f"f{n}.lis", "utf-8", [], [], []), "AXIS", diags))
+    out = io.StringIO()
+    render_json(results, out)
+    expected = json.dumps([d.to_json() for r in results for d in r.diagnostics], indent=2) + "\n"
+    assert out.getvalue() == expected

@@ -11,7 +11,7 @@ from pathlib import Path
 from zero.catalog.registry import Registry
 from zero.engine.lint import LintOptions, LintResult, lint_file
 from zero.errors import ZeroError
-from zero.lists.model import Document
+from zero.lists.model import Excerpt
 
 # Below this many files a second process costs more than it saves.
 PARALLEL_MIN_FILES = 64
@@ -22,9 +22,8 @@ _worker_state: tuple[Registry, OptionsFor] | None = None
 def _slim(result: LintResult) -> LintResult:
     """A result without the parsed items, keeping only the lines findings show (cheap to pickle)."""
     doc = result.document
-    wanted = {d.span.line for d in result.diagnostics}
-    lines = [t if n in wanted else "" for n, t in enumerate(doc.lines, 1)]
-    slim = Document(doc.path, doc.encoding, lines, [], [], [], doc.bom, doc.end_line)
+    shown = {d.span.line: doc.lines[d.span.line - 1] for d in result.diagnostics if doc.has_line(d.span.line)}
+    slim = Excerpt(doc.path, doc.encoding, [], [], [], [], doc.bom, doc.end_line, shown)
     return LintResult(result.path, slim, result.kind, result.diagnostics)
 
 

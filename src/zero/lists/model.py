@@ -209,3 +209,20 @@ class Document:
         if 1 <= line <= len(self.lines):
             return self.lines[line - 1]
         return ""
+
+    def has_line(self, line: int) -> bool:
+        return 1 <= line <= len(self.lines)
+
+
+@dataclass(slots=True, eq=False)
+class Excerpt(Document):
+    """A document reduced to the lines its findings show: what a report of many files keeps of
+    each, so that memory grows with the findings, not with the files' lines."""
+
+    shown: dict[int, str] = field(default_factory=dict)
+
+    def line_text(self, line: int) -> str:
+        return self.shown.get(line, "")
+
+    def has_line(self, line: int) -> bool:
+        return line in self.shown

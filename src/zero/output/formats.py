@@ -24,9 +24,16 @@ def _all(results: Sequence[LintResult]) -> list[Diagnostic]:
 
 
 def render_json(results: Sequence[LintResult], stream: TextIO) -> None:
-    """The JSON contract of ``--output-format json``: one object per finding."""
-    data = [d.to_json() for r in results for d in r.diagnostics]
-    stream.write(json.dumps(data, indent=2) + "\n")
+    """The JSON contract of ``--output-format json``: one object per finding. Written object by
+    object (the bytes ``json.dumps(all, indent=2)`` gives, without holding them all: JSON escapes
+    every newline inside a string, so each object's lines can be indented on their own)."""
+    opened = False
+    for r in results:
+        for d in r.diagnostics:
+            stream.write(",\n  " if opened else "[\n  ")
+            stream.write(json.dumps(d.to_json(), indent=2).replace("\n", "\n  "))
+            opened = True
+    stream.write("\n]\n" if opened else "[]\n")
 
 
 def render_concise(results: Sequence[LintResult], stream: TextIO) -> None:
@@ -53,7 +60,7 @@ def render_github(results: Sequence[LintResult], stream: TextIO) -> None:
 
 def _subject(d: Diagnostic, r: LintResult) -> str:
     """What a finding is about, without its line: the key (or the line's text) it stands on."""
-    text = r.document.line_text(d.span.line) if d.span.line <= len(r.document.lines) else ""
+    text = r.document.line_text(d.span.line)
     return text.split(None, 1)[0] if text.strip() else ""
 
 

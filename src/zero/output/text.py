@@ -130,7 +130,7 @@ def render_text(results: Sequence[LintResult], stream: TextIO | None = None,
             shown[d.code] += 1
             if shown[d.code] > MAX_SHOWN_PER_CODE:
                 continue
-            src = r.document.line_text(d.span.line) if d.span.line <= len(r.document.lines) else None
+            src = r.document.line_text(d.span.line) if r.document.has_line(d.span.line) else None
             for segs in diagnostic_lines(d, src):
                 writer.line(segs)
         for code, n in sorted(shown.items()):
