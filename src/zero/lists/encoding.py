@@ -7,13 +7,9 @@ are not valid in the file's encoding are kept as lone surrogates
 
 from __future__ import annotations
 
-import re
-
 from zero.lists.model import Document
 
 BOM = b"\xef\xbb\xbf"
-# A character that came from a real UTF-8 sequence: beyond ASCII and not an escaped stray byte.
-_REAL_UTF8 = re.compile("[^\x00-\x7f\udc80-\udcff]")  # negated: a range up to U+10FFFF compiles 40× slower
 
 
 def decode(data: bytes) -> tuple[str, str, bool]:
@@ -29,8 +25,9 @@ def decode(data: bytes) -> tuple[str, str, bool]:
     except UnicodeDecodeError:
         pass
     text = data.decode("utf-8", "surrogateescape")
-    if _REAL_UTF8.search(text):
-        # Real UTF-8 sequences next to stray bytes: a file of mixed encodings.
+    if len(text) < len(data):
+        # Real UTF-8 sequences next to stray bytes: a file of mixed encodings. (ASCII and each stray
+        # byte give one character per byte; only a real sequence of 2 to 4 bytes gives one for more.)
         return text, "utf-8", False
     try:
         return data.decode("cp1252"), "cp1252", False

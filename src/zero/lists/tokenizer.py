@@ -35,6 +35,7 @@ END_KEYWORD = "Ende"
 BINARY_SHARE = 0.05
 BINARY_MIN_CONTROLS = 8
 _WS = " \t"
+_PLAIN_COMMENT = ("# ", "#\t")
 
 _INT_RE = re.compile(r"[+-]?[0-9]+")
 _HEX_RE = re.compile(r"[+-]?0[xX][0-9A-Fa-f]+")
@@ -88,9 +89,7 @@ def comment_style(comment: str) -> CommentStyle:
 
 
 def _skip_ws(s: str, i: int, n: int) -> int:
-    while i < n and s[i] in _WS:
-        i += 1
-    return i
+    return n - len(s[i:].lstrip(_WS)) if i < n else i
 
 
 def _skip_token(s: str, i: int, n: int) -> int:
@@ -268,6 +267,13 @@ def tokenize_text(text: str, path: str = "-", encoding: str = "utf-8", bom: bool
             append(Entry(number, key_text, key_text, parse_key(key_text, True), ks, ke, value, kind, vs, ve,
                          comment, cs, style, note, ns))
             continue
+        if fast is not None:  # the common comment and blank lines, as scan_line reads them
+            if s[:2] in _PLAIN_COMMENT or s == "#":
+                append(Comment(number, s))
+                continue
+            if not s.strip():
+                append(Blank(number))
+                continue
         item = scan_line(s, number, problems)
         if end_line is not None:
             if type(item) is Entry:
