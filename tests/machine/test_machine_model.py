@@ -183,3 +183,13 @@ def test_an_alias_counts_as_the_parameter_it_stands_for(registry: Registry, corp
     value = scopes[0].values[0]
     assert (value.value, value.origin.source) == ("CNC_CONTROLLED", "list")  # written `kenngr.homing_type`
     assert [o.source for _, o in value.layers] == ["list", "default list", "catalogue default"]
+
+
+def test_an_indexed_key_is_found_as_written(registry: Registry) -> None:
+    """`np_grp[1].achse[0].versch` names that element; fnmatch alone read `[1]` as a character class
+    and found nothing ("no list of the machine has or documents …")."""
+    m = load_machine(LAYERED, registry)
+    found = [(s.name, v.key, v.value) for s in effective(m, ["np_grp[1].achse[0].versch"]) for v in s.values]
+    assert [(key, value) for _, key, value in found] == [("np_grp[1].achse[0].versch", "5000000")]
+    globbed = {v.key for s in effective(m, ["np_grp*.versch"]) for v in s.values}  # a glob stays a glob
+    assert {"np_grp[1].achse[0].versch", "np_grp[1].achse[1].versch"} <= globbed

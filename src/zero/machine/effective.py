@@ -110,7 +110,8 @@ def _matches(key: str, spec: ParamSpec | None, wanted: Sequence[str]) -> bool:
     if not wanted:
         return True
     pattern = parse_key(key).pattern if parse_key(key) is not None else key  # type: ignore[union-attr]
-    return any(fnmatch.fnmatchcase(key, w) or w == pattern or (spec is not None and w.upper() == spec.id)
+    # a key as written first: `[1]` is an index, not fnmatch's character class
+    return any(w in (key, pattern) or fnmatch.fnmatchcase(key, w) or (spec is not None and w.upper() == spec.id)
                for w in wanted)
 
 
