@@ -6,7 +6,8 @@ import pytest
 
 from conftest import FIXTURES, zero_cli
 
-COMMANDS = ["", "lint", "convert", "diff", "show", "explain", "schema", "limits", "format", "config", "rule", "param"]
+COMMANDS = ["", "lint", "convert", "diff", "show", "explain", "schema", "limits", "format", "config", "rule", "param",
+            "server"]
 
 
 @pytest.mark.slow
