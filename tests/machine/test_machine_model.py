@@ -5,6 +5,7 @@ from __future__ import annotations
 
 import json
 import os
+import shutil
 import subprocess
 import sys
 from pathlib import Path
@@ -13,7 +14,7 @@ import pytest
 
 from conftest import FIXTURES, ROOT, golden
 from zero.catalog.registry import Registry
-from zero.engine.lint import lint_machine
+from zero.engine.lint import LintOptions, lint_machine
 from zero.machine.effective import effective
 from zero.machine.limits import pcs_limits
 from zero.machine.model import REFERENCES, load_machine
@@ -193,3 +194,25 @@ def test_an_indexed_key_is_found_as_written(registry: Registry) -> None:
     assert [(key, value) for _, key, value in found] == [("np_grp[1].achse[0].versch", "5000000")]
     globbed = {v.key for s in effective(m, ["np_grp*.versch"]) for v in s.values}  # a glob stays a glob
     assert {"np_grp[1].achse[0].versch", "np_grp[1].achse[1].versch"} <= globbed
+
+
+def test_a_machine_finding_is_suppressed_in_the_list_it_concerns(registry: Registry, tmp_path: Path) -> None:
+    """X findings land on a list's line; that list's `zero: noqa` covers them as it covers the
+    list's own findings (and an unused one is still Z001)."""
+    shutil.copytree(FIXTURES / "machine-layered", tmp_path / "m")
+    startup = tmp_path / "m" / "listen" / "hochlauf.lis"
+    zero_list = tmp_path / "m" / "listen" / "nullp.lis"
+
+    def x001() -> list[int]:
+        _, results = lint_machine(startup, registry, LintOptions(extend_select=("Z",)))
+        found = [d for r in results for d in r.diagnostics if r.path == str(zero_list)]
+        return [d.span.line for d in found if d.code in ("X001", "Z001")]
+
+    assert x001() == [2]
+    lines = zero_list.read_text().split("\n")
+    lines[1] += "  ( noqa: X001 -- reviewed: the offset is meant"
+    zero_list.write_text("\n".join(lines))
+    assert x001() == []
+    lines[1] = lines[1].replace("X001", "X002")
+    zero_list.write_text("\n".join(lines))
+    assert x001() == [2, 2]  # X001 again, and the suppression hides nothing

@@ -164,6 +164,11 @@ async def test_the_machine_findings_follow_the_open_lists(client: LanguageClient
     text = zero_list.read_text().replace("5000000", "50000")
     found = await change_document(client, zero_list, text, 2)
     assert "X001" not in {d.code for d in found}
+    # suppressed on its line, as `zero lint --machine` suppresses it: gone, and the noqa is used
+    lines = zero_list.read_text().split("\n")
+    lines[1] += "  ( noqa: X001 -- reviewed"
+    found = await change_document(client, zero_list, "\n".join(lines), 3)
+    assert not {"X001", "Z001"} & {d.code for d in found}
     close_document(client, zero_list)
 
 

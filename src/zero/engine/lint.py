@@ -11,6 +11,7 @@ passed in.
 from __future__ import annotations
 
 import re
+from collections.abc import Sequence
 from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import TYPE_CHECKING
@@ -92,9 +93,11 @@ def _selected_rules(options: LintOptions) -> dict[str, Severity]:
     return out
 
 
-def lint_document(doc: Document, registry: Registry, options: LintOptions | None = None) -> LintResult:
+def lint_document(doc: Document, registry: Registry, options: LintOptions | None = None,
+                  extra: Sequence[Diagnostic] = ()) -> LintResult:
+    """One list's findings; ``extra`` are findings about it from its machine (suppressible in it)."""
     options = options or LintOptions()
-    ctx, found = check_document(doc, registry, options.kind, selected_rules(options))
+    ctx, found = check_document(doc, registry, options.kind, selected_rules(options), extra)
     return LintResult(doc.path, doc, ctx.kind, found)
 
 
@@ -211,18 +214,15 @@ def lint_machine(startup_path: Path, registry: Registry, options: LintOptions | 
     opts = options or LintOptions()
     machine = load_machine(startup_path, registry, opts.kind, overrides, workdir)
     severities = selected_rules(opts)
+    across: dict[str, list[Diagnostic]] = {}  # the X findings, by the list they concern
+    for d in run_checks(MACHINE_CHECKS, MachineContext(machine, registry, severities)):
+        across.setdefault(d.path, []).append(d)
     results: dict[str, LintResult] = {}
     for lf in machine.lists:
         if str(lf.path) not in results:
             kind = lf.values.kind
-            results[str(lf.path)] = lint_document(lf.values.doc, registry,
-                                                  replace(opts, kind=kind) if kind else opts)
-    for d in run_checks(MACHINE_CHECKS, MachineContext(machine, registry, severities)):
-        r = results.get(d.path)
-        if r is not None:
-            r.diagnostics.append(d)
-    for r in results.values():
-        r.diagnostics.sort(key=Diagnostic.sort_key)
+            results[str(lf.path)] = lint_document(lf.values.doc, registry, replace(opts, kind=kind) if kind else opts,
+                                                  across.get(str(lf.path), ()))
     return machine, list(results.values())
 
 

@@ -5,6 +5,8 @@ the suppressions written in it applied (Z). The engine lints a list through
 
 from __future__ import annotations
 
+from collections.abc import Sequence
+
 from zero.catalog.registry import Registry
 from zero.diagnostics import Diagnostic, Severity
 from zero.lists.model import Document
@@ -16,12 +18,16 @@ CHECKS: list[Check[Context]] = [c for family in FAMILIES for c in family.checks]
 
 
 def check_document(doc: Document, registry: Registry, kind: str | None,
-                   severities: dict[str, Severity]) -> tuple[Context, list[Diagnostic]]:
-    """The list's context (kind detected when ``None``) and its findings, sorted, suppressions applied."""
+                   severities: dict[str, Severity],
+                   extra: Sequence[Diagnostic] = ()) -> tuple[Context, list[Diagnostic]]:
+    """The list's context (kind detected when ``None``) and its findings, sorted, suppressions applied.
+    ``extra``: findings about this list from elsewhere (the X rules of its machine), which the
+    list's own suppressions cover as they cover its own findings."""
     ctx = Context.of(doc, registry, kind)
     ctx.severities = severities
     if any(p.kind == "binary" for p in doc.problems):  # one root cause, one finding
         return ctx, [d for d in syntax.check_problems(ctx) if d.code == "S013" and d.code in severities]
     found = run_checks(CHECKS, ctx)
+    found.extend(extra)
     found.sort(key=Diagnostic.sort_key)
     return ctx, suppress.apply(doc, found, severities, declared_codes())

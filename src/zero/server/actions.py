@@ -84,7 +84,7 @@ def _fix_edits(a: Analysis, d: Diagnostic) -> list[types.TextEdit]:
 
 def _noqa_edit(a: Analysis, d: Diagnostic) -> types.TextEdit | None:
     """The edit that suppresses ``d`` on its line, or None where zero cannot suppress it there."""
-    if d.code in NOT_RECORDED or d.code[0] in "XF" or a.result is None:
+    if d.code in NOT_RECORDED or d.code[0] == "F" or a.result is None or (d.code[0] == "X" and a.form != LIST):
         return None
     line = d.span.line
     if a.form == LIST:

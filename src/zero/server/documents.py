@@ -34,6 +34,7 @@ from zero.engine.lint import (
     LintOptions,
     LintResult,
     lint_data,
+    lint_document,
     lint_program,
     selected_rules,
 )
@@ -364,8 +365,8 @@ class Projects:
         if a.form == LIST:
             a.machine = self._try_machine(a, buffers or {})
             found = self._machine_findings(a) if a.machine is not None else []
-            if found:
-                a.result.diagnostics = sorted([*a.result.diagnostics, *found], key=Diagnostic.sort_key)
+            if found:  # linted again with them: the list's suppressions cover them, as in `zero lint --machine`
+                a.result = lint_document(a.result.document, registry, options, found)
         return a
 
     def _try_machine(self, a: Analysis, buffers: Mapping[str, str]) -> Machine | None:
