@@ -234,7 +234,10 @@ def tokenize_text(text: str, path: str = "-", encoding: str = "utf-8", bom: bool
     after_end_reported = False
     fast = _FAST_ENTRY_RE.match if use_fast else None
     kind_match = _KIND_RE.fullmatch
-    kinds: dict[str, ValueKind] = {}  # values repeat ("0", "1"): classified once per text
+    # Values repeat ("0", "1") and annotations too (`( P-TOOL-00005`): each is classified once
+    # and kept once, whatever the number of entries that share it.
+    values: dict[str, tuple[str, ValueKind]] = {}
+    notes: dict[str, str] = {}
     append = items.append
     has_nul = "\x00" in text  # one scan of the text, not one per line
     for number, s in enumerate(lines, 1):
@@ -245,12 +248,14 @@ def tokenize_text(text: str, path: str = "-", encoding: str = "utf-8", bom: bool
             m = fast(s) if fast is not None else None
         if m is not None and end_line is None and m.group(1) != END_KEYWORD:
             key_text, value, comment, note = m.group(1, 2, 3, 4)
-            kind: ValueKind | None = kinds.get(value)
-            if kind is None:
+            seen = values.get(value)
+            if seen is not None:
+                value, kind = seen
+            else:
                 km = kind_match(value)
                 kind = _KIND_OF[km.lastgroup] if km is not None and km.lastgroup else ValueKind.WORD
-                if len(kinds) < 4096:
-                    kinds[value] = kind
+                if len(values) < 4096:
+                    values[value] = (value, kind)
             ks, ke = m.span(1)
             vs, ve = m.span(2)
             if comment is None:
@@ -260,6 +265,7 @@ def tokenize_text(text: str, path: str = "-", encoding: str = "utf-8", bom: bool
             style = _STYLE_OF.get(comment[0]) or comment_style(comment)
             if note is not None:  # `( P-AXIS-00001 …` at the comment's start: matched above
                 ns = m.start(4)
+                note = notes.get(note) or (notes.setdefault(note, note) if len(notes) < 4096 else note)
             elif "P-" in comment and (am := _ANNOTATION_RE.search(comment)) is not None:
                 note, ns = am.group(1), cs + am.start(1)
             else:
