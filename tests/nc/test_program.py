@@ -10,7 +10,7 @@ from typer.testing import CliRunner
 from conftest import FIXTURES, builtin_registry, golden
 from zero.catalog.registry import Registry
 from zero.cli.app import app
-from zero.engine.lint import lint_program
+from zero.engine.lint import LintOptions, lint_program
 from zero.machine.model import load_machine
 from zero.nc.program import strip_comments
 from zero.rules import RULES
@@ -76,3 +76,30 @@ def test_machine_data_axis_given_by_variable_or_expression_and_messages(registry
             "check AXNR, so the block does not write the axis it is meant for"),
         (4, "#MACHINE DATA P-AXIS-99999 is not a parameter of the catalogue: the controller rejects the block"),
     ]
+
+
+def test_suppressions_in_the_programs_own_comments(tmp_path: Path) -> None:
+    """`( noqa: N003 )` and `; noqa` on a line, `( zero: ignore[N003] )` for the next line with
+    code, `; zero: noqa: N003` for the program; unused ones are Z001, unreadable ones Z002 —
+    as in a list, in the program's comment syntax."""
+    body = ("N10 G99 X1600 ( noqa: N003 -- probing )\n"
+            "N20 G98 X-1600 ; noqa\n"
+            "( zero: ignore[N003] )\n"
+            "( a comment line is skipped )\n"
+            "N30 G99 X1700\n"
+            "N40 G99 X1800 (noqa: R005)\n"
+            "N50 G99 X1900 ( noqa R005 )\n"
+            'N60 #MSG ["( noqa )"] G99 X2000\n')
+    path = tmp_path / "p.nc"
+    path.write_text(body)
+    registry = builtin_registry()
+    m = load_machine(MACHINE, registry)
+    result = lint_program(path.read_bytes(), registry, path.name, LintOptions(extend_select=("Z",)), m)
+    assert [(d.span.line, d.span.column, d.code) for d in result.diagnostics] == [
+        (6, 9, "N003"), (6, 16, "Z001"),  # another code named: the finding stays, the directive is unused
+        (7, 9, "N003"), (7, 17, "Z002"),  # `noqa R005` without the colon cannot be read
+        (8, 27, "N003"),  # inside a string: no comment, no suppression
+    ]
+    path.write_text("; zero: noqa: N003\n" + body)
+    result = lint_program(path.read_bytes(), registry, path.name, LintOptions(extend_select=("Z",)), m)
+    assert [d.code for d in result.diagnostics if d.code == "N003"] == []

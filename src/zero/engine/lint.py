@@ -31,6 +31,8 @@ from zero.rules import (
     check_document,
     run_checks,
 )
+from zero.rules.base import declared_codes
+from zero.rules.suppress import apply_directives, parse_comment_directives
 
 if TYPE_CHECKING:  # start-up: linting a list loads neither the machine model nor the structured forms
     from zero.machine.model import Machine
@@ -158,12 +160,20 @@ def lint_structured(data: bytes, fmt: str, registry: Registry, path: str = "-",
 def lint_program(data: bytes, registry: Registry, path: str = "-", options: LintOptions | None = None,
                  machine: Machine | None = None) -> LintResult:
     """Findings N001–N004 for one NC program (N003/N004 need the machine)."""
-    from zero.nc.program import read_program  # start-up: not for lists
+    from zero.nc.program import comment_spans, read_program, strip_comments  # start-up: not for lists
 
     program = read_program(data, path, registry)
-    ctx = ProgramContext(program, registry, machine, selected_rules(options or LintOptions()), path)
+    severities = selected_rules(options or LintOptions())
+    ctx = ProgramContext(program, registry, machine, severities, path)
     found = run_checks(PROGRAM_CHECKS, ctx)
     found.sort(key=Diagnostic.sort_key)
+    lines = program.doc.lines  # suppressions in the program's own comments: `( noqa: N003 )`, `; noqa`
+    comments = [(n, col, text) for n, line in enumerate(lines, 1) if "(" in line or ";" in line
+                 for col, text in comment_spans(line)]
+    if comments:
+        code = [n for n, line in enumerate(lines, 1) if strip_comments(line).strip()]
+        directives, bad = parse_comment_directives(comments, code, declared_codes())
+        found = apply_directives(path, directives, bad, found, severities)
     return LintResult(path, program.doc, "PROGRAM", found)
 
 

@@ -69,6 +69,32 @@ def strip_comments(line: str) -> str:
     return "".join(out)
 
 
+def comment_spans(line: str) -> list[tuple[int, str]]:
+    """The comments of a program line as (0-based column, text with its delimiters): ``( … )``
+    (nested parentheses inside), and ``; …`` to the end; what is in double quotes is no comment."""
+    out: list[tuple[int, str]] = []
+    depth = 0
+    start = 0
+    in_str = False
+    for i, ch in enumerate(line):
+        if in_str:
+            in_str = ch != '"'
+        elif depth:
+            depth += (ch == "(") - (ch == ")")
+            if not depth:
+                out.append((start, line[start:i + 1]))
+        elif ch == '"':
+            in_str = True
+        elif ch == "(":
+            depth, start = 1, i
+        elif ch == ";":
+            out.append((i, line[i:]))
+            return out
+    if depth:  # not closed: to the end of the line
+        out.append((start, line[start:]))
+    return out
+
+
 def _closing(text: str, start: int) -> int:
     """The ``]`` that closes the ``[`` at ``start`` (brackets of expressions nest); -1 if none."""
     depth = 0

@@ -5,6 +5,10 @@
 * next entry: a full-line comment ``# zero: ignore[R005]`` (or ``ignore[R005,M003]``);
 * whole file: a full-line comment ``# zero: noqa`` or ``# zero: noqa: R005``.
 
+In an NC program the same directives are written in its comments, ``( noqa: N003 )`` or
+``; noqa`` on the line, ``( zero: ignore[N003] )`` before the next line with code, and
+``; zero: noqa: N003`` for the program (:func:`parse_comment_directives`).
+
 A reason may follow after `` -- ``. Codes may be prefixes (``R``, ``M00``). A
 directive that suppresses nothing is reported (Z001), a directive zero cannot read
 is reported (Z002): none is ever silently ignored. The engine applies them to the
@@ -14,6 +18,7 @@ findings of the other rules (:func:`apply`), so these rules have no check of the
 from __future__ import annotations
 
 import re
+from collections.abc import Iterable
 from dataclasses import dataclass, field
 
 from zero.diagnostics import Diagnostic, Severity, Span
@@ -143,10 +148,69 @@ def parse_directives(doc: Document, known: set[str]) -> tuple[list[Directive], l
     return out, bad
 
 
+def parse_comment_directives(comments: Iterable[tuple[int, int, str]], code_lines: Iterable[int],
+                             known: set[str]) -> tuple[list[Directive], list[tuple[int, int, int, str]]]:
+    """Directives in comments given as (line, 0-based column, text with its delimiters) — an NC
+    program's ``( … )`` and ``; …`` — and malformed ones. ``zero: ignore[...]`` covers the next of
+    ``code_lines`` (lines with more than comments), ``zero: noqa`` the file, ``noqa`` its line."""
+    out: list[Directive] = []
+    bad: list[tuple[int, int, int, str]] = []
+    code = sorted(set(code_lines))
+    for line, column, text in comments:
+        if "noqa" not in text.lower() and "zero" not in text.lower():
+            continue
+        body_at = column + 1
+        body = text[1:].rstrip(")") if text.startswith("(") else text[1:]
+        m = re.match(r"\s*zero\s*:\s*(?P<body>.*?)\s*$", body, re.IGNORECASE)
+        if m is not None:
+            start, end = body_at + m.start("body"), body_at + len(body.rstrip())
+            im = re.fullmatch(r"ignore\s*\[(?P<codes>[^\]]*)\]\s*(?:--.*)?", m.group("body"), re.IGNORECASE)
+            nm = re.fullmatch(r"noqa\s*(?::(?P<codes>.*))?", m.group("body"), re.IGNORECASE)
+            if im:
+                codes, err = _codes(im.group("codes"), known)
+                if err or codes is None:
+                    bad.append((line, start, end, err or "`ignore[...]` names no code"))
+                    continue
+                target = next((n for n in code if n > line), None)
+                out.append(Directive(line, start, end, codes, "next", target))
+            elif nm:
+                codes, err = _codes(nm.group("codes") or "", known)
+                if err:
+                    bad.append((line, start, end, err))
+                    continue
+                out.append(Directive(line, start, end, codes, "file"))
+            else:
+                bad.append((line, start, end, "expected `zero: ignore[CODE, ...]` or `zero: noqa[: CODE, ...]`"))
+            continue
+        nq = _NOQA_RE.search(body)
+        if nq is None:
+            continue
+        start, end = body_at + nq.start(), body_at + nq.end()
+        rest = nq.group("rest").strip()
+        if rest.startswith(":"):
+            codes, err = _codes(rest[1:], known)
+            if err or codes is None:
+                bad.append((line, start, end, err or "`noqa:` names no code"))
+                continue
+        elif rest and not rest.startswith("--"):
+            bad.append((line, start, end, "expected `noqa` or `noqa: CODE, ...`"))
+            continue
+        else:
+            codes = None
+        out.append(Directive(line, start, end, codes, "line", line))
+    return out, bad
+
+
 def apply(doc: Document, found: list[Diagnostic], severities: dict[str, Severity],
           known: set[str]) -> list[Diagnostic]:
     """Drop suppressed findings; add Z001 for unused and Z002 for malformed directives."""
     directives, bad = parse_directives(doc, known)
+    return apply_directives(doc.path, directives, bad, found, severities)
+
+
+def apply_directives(path: str, directives: list[Directive], bad: list[tuple[int, int, int, str]],
+                     found: list[Diagnostic], severities: dict[str, Severity]) -> list[Diagnostic]:
+    """Drop the findings the directives suppress; Z001 for an unused one, Z002 for a malformed one."""
     if not directives and not bad:
         return found
     by_line: dict[int, list[Directive]] = {}
@@ -164,7 +228,6 @@ def apply(doc: Document, found: list[Diagnostic], severities: dict[str, Severity
                 hit = True
         if not hit:
             kept.append(diag)
-    path = doc.path
     if "Z001" in severities:
         for d in directives:
             named = ("*",) if d.codes is None else d.codes
