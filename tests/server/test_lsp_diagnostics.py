@@ -186,3 +186,21 @@ async def test_closing_a_document_clears_its_findings(client: LanguageClient, tm
     path.write_text("np_grp[1].achse[0].versch 99999999999\n")
     assert await open_document(client, path)
     assert await diagnostics_after(client, path.as_uri(), lambda: close_document(client, path)) == []
+
+
+async def test_a_file_whose_uri_is_percent_encoded_gets_its_findings(client: LanguageClient, tmp_path: Path) -> None:
+    """pygls keeps documents by the decoded URI: a path with a space, `%` or `ä` (and every Windows path,
+    `file:///c%3A/…`) was never found open, and got no findings."""
+    folder = tmp_path / "Meine Listen %41 ä"
+    folder.mkdir()
+    path = folder / "nullp #1.lis"
+    path.write_text("np_grp[1].achse[0].versch 99999999999\n")
+    uri = path.as_uri()
+    assert "%20" in uri and "%2541" in uri and "%23" in uri
+    assert codes(await open_document(client, path)) == [(1, "R004")]
+    assert [p.uri for p in client.published if p.uri.startswith(folder.as_uri())] == [uri]  # as the client wrote it
+    hover = await client.text_document_hover_async(types.HoverParams(types.TextDocumentIdentifier(uri=uri),
+                                                                     types.Position(line=0, character=3)))
+    assert hover is not None
+    assert codes(await change_document(client, path, "np_grp[1].achse[0].inaktiv 7\n", 2)) == [(1, "R005")]
+    close_document(client, path)

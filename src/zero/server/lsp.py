@@ -23,11 +23,13 @@ import sys
 import traceback
 from pathlib import Path
 from typing import Any
+from urllib.parse import unquote
 
 from lsprotocol import types
 from pygls.exceptions import JsonRpcException, JsonRpcInvalidParams
 from pygls.lsp.server import LanguageServer
 from pygls.protocol import LanguageServerProtocol
+from pygls.workspace import TextDocument
 
 from zero import __version__
 from zero.engine.commands import Registries
@@ -100,11 +102,17 @@ class ZeroServer(LanguageServer):
     def encoding(self) -> str:
         return str(getattr(self.workspace.position_encoding, "value", self.workspace.position_encoding) or "utf-16")
 
+    def document(self, uri: str) -> TextDocument | None:
+        """The open document of ``uri`` however the client percent-encodes it (pygls keeps them by the
+        decoded URI: ``file:///c%3A/My%20Lists/x.lis`` is open as ``file:///c:/My Lists/x.lis``)."""
+        doc: TextDocument | None = self.workspace.text_documents.get(unquote(uri))
+        return doc
+
     def buffers(self) -> dict[str, str]:
         """The open documents' text by real path (for the machine's lists)."""
         out = {}
-        for uri, doc in self.workspace.text_documents.items():
-            path = path_of(uri)
+        for doc in self.workspace.text_documents.values():
+            path = path_of(doc.uri)
             if path is not None:
                 out[os.path.realpath(path)] = doc.source
         return out
@@ -112,7 +120,7 @@ class ZeroServer(LanguageServer):
     def analysis(self, uri: str) -> Analysis:
         """The current analysis of a document (linted now when it is not current); a document that is
         not open is read from its file (:class:`JsonRpcException` when it cannot be read)."""
-        doc = self.workspace.text_documents.get(uri)
+        doc = self.document(uri)
         if doc is None:
             path = path_of(uri)
             if path is None:
@@ -122,17 +130,18 @@ class ZeroServer(LanguageServer):
             except ZeroError as exc:
                 raise failed(str(exc)) from None
             return self.projects.analyse(uri, None, text, self.encoding, self.buffers())
-        hit = self.analyses.get(uri)
+        key = unquote(uri)
+        hit = self.analyses.get(key)
         if hit is not None and hit.version == doc.version and hit.text.source == doc.source:
             return hit
-        a = self.projects.analyse(uri, doc.version, doc.source, self.encoding, self.buffers())
-        self.analyses[uri] = a
+        a = self.projects.analyse(doc.uri, doc.version, doc.source, self.encoding, self.buffers())
+        self.analyses[key] = a
         return a
 
     def publish(self, uri: str) -> None:
         """Lint a document and publish its findings (an error inside zero is said as one)."""
-        self.timers.pop(uri, None)
-        doc = self.workspace.text_documents.get(uri)
+        self.timers.pop(unquote(uri), None)
+        doc = self.document(uri)
         if doc is None:
             return
         try:
@@ -144,21 +153,25 @@ class ZeroServer(LanguageServer):
                                       f"zero could not check this file (an error in zero, please report it): "
                                       f"{type(exc).__name__}: {exc}", severity=types.DiagnosticSeverity.Error,
                                       source="zero")]
-        self.text_document_publish_diagnostics(types.PublishDiagnosticsParams(uri, found, version=doc.version))
+        self.text_document_publish_diagnostics(types.PublishDiagnosticsParams(doc.uri, found, version=doc.version))
 
     def schedule(self, uri: str, delay: float | None = None) -> None:
-        old = self.timers.pop(uri, None)
+        self.cancel(uri)
+        wait = self.settings.debounce if delay is None else delay
+        self.timers[unquote(uri)] = asyncio.get_running_loop().call_later(wait, self.publish, uri)
+
+    def cancel(self, uri: str) -> None:
+        """The pending lint of a document, if any, is not run."""
+        old = self.timers.pop(unquote(uri), None)
         if old is not None:
             old.cancel()
-        wait = self.settings.debounce if delay is None else delay
-        self.timers[uri] = asyncio.get_running_loop().call_later(wait, self.publish, uri)
 
     def refresh_all(self) -> None:
         """Configuration or lists on disk changed: read them again and re-lint every open document."""
         self.projects.forget()
         self.analyses.clear()
-        for uri in list(self.workspace.text_documents):
-            self.schedule(uri, 0)
+        for doc in list(self.workspace.text_documents.values()):
+            self.schedule(doc.uri, 0)
 
 
 def create_server(registries: Registries, param_desc: Path | None = None) -> ZeroServer:
@@ -203,10 +216,8 @@ def create_server(registries: Registries, param_desc: Path | None = None) -> Zer
     @server.feature(types.TEXT_DOCUMENT_DID_CLOSE)
     def did_close(params: types.DidCloseTextDocumentParams) -> None:
         uri = params.text_document.uri
-        timer = server.timers.pop(uri, None)
-        if timer is not None:
-            timer.cancel()
-        server.analyses.pop(uri, None)
+        server.cancel(uri)
+        server.analyses.pop(unquote(uri), None)
         server.text_document_publish_diagnostics(types.PublishDiagnosticsParams(uri, []))
 
     @server.feature(types.WORKSPACE_DID_CHANGE_WATCHED_FILES)
