@@ -100,14 +100,19 @@ async def raw_request(client: LanguageClient, method: str, params: Any, msg_id: 
 
     await send_raw(client, json.dumps({"jsonrpc": "2.0", "id": f"raw-{msg_id}", "method": method,
                                        "params": params}).encode())
+    return await answer_of(client, f"raw-{msg_id}")
+
+
+async def answer_of(client: LanguageClient, msg_id: str) -> tuple[Any, Any]:
+    """The (result, error) of a request sent with :func:`send_raw` (its id starting with ``raw-``)."""
     loop = asyncio.get_running_loop()
     deadline = loop.time() + TIMEOUT
     answers: dict[str, tuple[Any, Any]] = client.raw_answers  # type: ignore[attr-defined]
-    while f"raw-{msg_id}" not in answers:
+    while msg_id not in answers:
         if loop.time() > deadline:
-            raise TimeoutError(f"no answer to {method}")
+            raise TimeoutError(f"no answer to {msg_id}")
         await asyncio.sleep(0.005)
-    return answers[f"raw-{msg_id}"]
+    return answers[msg_id]
 
 
 async def diagnostics_after(client: LanguageClient, uri: str, action: Any = None) -> list[types.Diagnostic]:

@@ -4,13 +4,23 @@ or an empty result) and the next request is served as usual."""
 
 from __future__ import annotations
 
+import asyncio
 import os
 from collections.abc import AsyncIterator
 from pathlib import Path
 
 import pytest
 import pytest_asyncio
-from lsp_support import close_document, codes, diagnostics_after, open_document, raw_request, send_raw, session
+from lsp_support import (
+    answer_of,
+    close_document,
+    codes,
+    diagnostics_after,
+    open_document,
+    raw_request,
+    send_raw,
+    session,
+)
 from lsprotocol import types
 from pygls.exceptions import JsonRpcException
 from pytest_lsp import LanguageClient
@@ -115,5 +125,24 @@ async def test_formatting_a_list_it_cannot_read_is_a_request_failed(client: Lang
         await client.text_document_formatting_async(types.DocumentFormattingParams(
             types.TextDocumentIdentifier(uri=path.as_uri()), types.FormattingOptions(tab_size=4, insert_spaces=True)))
     assert caught.value.code == -32803 and "not formatted" in caught.value.message
+    close_document(client, path)
+    await still_serving(client, tmp_path)
+
+
+async def test_a_message_that_is_not_utf8_is_read_with_its_bytes(client: LanguageClient, tmp_path: Path) -> None:
+    """An editor that sends a buffer it could not decode (raw Latin-1 bytes in the JSON): the document is
+    opened and the byte reported where it is (S007), a request is answered; pygls used to drop both."""
+    path = tmp_path / "gemischt.lis"  # not on disk: the editor's bytes are linted
+    uri = path.as_uri()
+    body = (b'{"jsonrpc": "2.0", "method": "textDocument/didOpen", "params": {"textDocument": {"uri": "'
+            + uri.encode() + b'", "languageId": "plaintext", "version": 1, "text": '
+            + b'"# Umlaut \xc3\xa4\\nnp_grp[1].achse[0].versch 1 ( 0,1 \xb5m\\n"}}}')
+    found = await diagnostics_after(client, uri, lambda: asyncio.ensure_future(send_raw(client, body)))
+    assert [(d.code, d.range.start.line, d.range.start.character) for d in found] == [("S007", 1, 34)]
+    body = (b'{"jsonrpc": "2.0", "id": "raw-latin1", "method": "textDocument/hover", "params": {"textDocument": '
+            b'{"uri": "' + uri.encode() + b'"}, "position": {"line": 1, "character": 3}}}')
+    await send_raw(client, body)
+    result, error = await answer_of(client, "raw-latin1")
+    assert error is None and "P-ZERO-00003" in str(result)
     close_document(client, path)
     await still_serving(client, tmp_path)

@@ -21,8 +21,10 @@ from zero.server.documents import (
     Projects,
     Settings,
     Text,
+    encode_text,
     form_of,
     path_of,
+    source_bytes,
     uri_of,
 )
 
@@ -164,3 +166,14 @@ def test_a_machine_that_cannot_be_read_is_said_on_programs_and_the_start_up_list
     (tmp_path / "listen" / "hochlauf.lis").write_text(text)
     startup = analyse(text, "listen/hochlauf.lis", tmp_path)
     assert startup.notes == [] and [(d.span.line, d.code) for d in startup.diagnostics] == [(3, "X005")]
+
+
+def test_bytes_the_client_could_not_decode_are_linted_as_they_were(tmp_path: Path) -> None:
+    """The editor's text with a byte kept as `\\udcb5` is the file's bytes again (it was made `?`, and
+    formatting then wrote `?` into the list); any other lone surrogate is still `?`."""
+    assert encode_text("( 0,1 \udcb5m \ud83d") == b"( 0,1 \xb5m ?"
+    path = tmp_path / "n.lis"
+    path.write_bytes(b"# \xc3\xa4\nnp_grp[1].achse[0].versch 1 ( \xb5m\n")
+    assert source_bytes(path, "# \u00e4\nnp_grp[1].achse[0].versch 1 ( \udcb5m\n") == (path.read_bytes(), True)
+    a = analyse("# \u00e4\nnp_grp[1].achse[0].versch 1 ( \udcb5m\n", "n.lis", tmp_path)
+    assert [d.code for d in a.diagnostics] == ["S007"] and a.saved

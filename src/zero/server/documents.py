@@ -173,18 +173,24 @@ class Text:
         return last, _units(self.lines[last], self.encoding)
 
 
+_NOT_A_BYTE = re.compile(r"[\ud800-\udc7f\udd00-\udfff]")
+
+
 def encode_text(text: str) -> bytes:
-    """The editor's text as the bytes zero lints (UTF-8; a lone surrogate becomes `?`)."""
+    """The editor's text as the bytes zero lints: UTF-8, with the bytes the client could not decode
+    (``\udc80``–``\udcff``, as zero and the server's input keep them) as they were, so that zero
+    reports them (S007) where they are; any other lone surrogate becomes `?`."""
     try:
         return text.encode("utf-8")
     except UnicodeEncodeError:
-        return text.encode("utf-8", "replace")
+        return _NOT_A_BYTE.sub("?", text).encode("utf-8", "surrogateescape")
 
 
 def source_bytes(path: Path | None, text: str) -> tuple[bytes, bool]:
     """The bytes to lint and whether they are the file's own: the file when the editor's text
     is the file as zero decodes it (so its encoding and endings count as on the command line),
     else the editor's text."""
+    disk = None
     if path is not None:
         try:
             size = os.stat(path).st_size
@@ -193,7 +199,8 @@ def source_bytes(path: Path | None, text: str) -> tuple[bytes, bool]:
             disk = None
         if disk is not None and decode(disk)[0] == text:
             return disk, True
-    return encode_text(text), False
+    data = encode_text(text)
+    return data, data == disk
 
 
 @dataclass(slots=True)

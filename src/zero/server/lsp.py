@@ -292,6 +292,29 @@ def create_server(registries: Registries, param_desc: Path | None = None) -> Zer
     return server
 
 
+class ByteSafeInput:
+    """The client's stream, each message's bytes made readable: JSON-RPC is UTF-8, but an editor
+    may send a buffer it could not decode (Neovim does, for a Latin-1 file read as UTF-8) and
+    pygls would drop the message (a request never answered, a document never opened). A byte
+    that is not UTF-8 reaches zero as the lone surrogate zero keeps such bytes as
+    (``surrogateescape``), and is reported where it is (S007)."""
+
+    def __init__(self, stream: Any) -> None:
+        self.stream = stream
+
+    def readline(self) -> bytes:
+        line: bytes = self.stream.readline()
+        return line
+
+    def read(self, size: int = -1) -> bytes:
+        data: bytes = self.stream.read(size)
+        try:
+            data.decode("utf-8")
+        except UnicodeDecodeError:
+            return data.decode("utf-8", "surrogateescape").encode("utf-8", "surrogatepass")
+        return data
+
+
 def serve(registries: Registries, param_desc: Path | None = None) -> None:
     """Run the server over standard input and output until the client says ``exit``."""
     stdout = sys.stdout.buffer
@@ -301,4 +324,4 @@ def serve(registries: Registries, param_desc: Path | None = None) -> None:
     root = logging.getLogger()
     root.addHandler(handler)
     root.setLevel(logging.WARNING)
-    create_server(registries, param_desc).start_io(sys.stdin.buffer, stdout)
+    create_server(registries, param_desc).start_io(ByteSafeInput(sys.stdin.buffer), stdout)  # type: ignore[arg-type]
