@@ -56,8 +56,6 @@ Fix: write the directive as shown above (`zero rule Z002`).
 _NOQA_RE = re.compile(r"(?<![A-Za-z0-9_])noqa(?![A-Za-z0-9_])(?P<rest>[^)]*)", re.IGNORECASE)
 _ZERO_RE = re.compile(r"^\s*#\s*zero\s*:\s*(?P<body>.*?)\s*$", re.IGNORECASE)
 _CODE_RE = re.compile(r"[A-Z][0-9]{0,3}")
-# Every directive holds `noqa` or `zero:` (a line without either holds none).
-_ANY_DIRECTIVE = re.compile(r"noqa|zero\s*:", re.IGNORECASE)
 
 
 @dataclass(slots=True, eq=False)
@@ -93,8 +91,6 @@ def parse_directives(doc: Document, known: set[str]) -> tuple[list[Directive], l
     """Directives of a document, and malformed ones as (line, start, end, reason)."""
     out: list[Directive] = []
     bad: list[tuple[int, int, int, str]] = []
-    if not _ANY_DIRECTIVE.search("\n".join(doc.lines)):  # most lists have none: one scan, not one per line
-        return out, bad
     pending_next: list[Directive] = []
     for item in doc.items:
         t = type(item)
