@@ -5,13 +5,17 @@ or an empty result) and the next request is served as usual."""
 from __future__ import annotations
 
 import asyncio
+import json
 import os
 from collections.abc import AsyncIterator
 from pathlib import Path
+from typing import Any
 
 import pytest
 import pytest_asyncio
 from lsp_support import (
+    SERVER,
+    TIMEOUT,
     answer_of,
     close_document,
     codes,
@@ -146,3 +150,41 @@ async def test_a_message_that_is_not_utf8_is_read_with_its_bytes(client: Languag
     assert error is None and "P-ZERO-00003" in str(result)
     close_document(client, path)
     await still_serving(client, tmp_path)
+
+
+def _message(body: dict[str, object]) -> bytes:
+    data = json.dumps(body).encode()
+    return b"Content-Length: %d\r\n\r\n" % len(data) + data
+
+
+async def _run_server(*messages: dict[str, object]) -> tuple[int, list[dict[str, Any]]]:
+    """A server process fed these messages and then the end of its input: its exit code and answers."""
+    process = await asyncio.create_subprocess_exec(*SERVER, stdin=asyncio.subprocess.PIPE,
+                                                   stdout=asyncio.subprocess.PIPE, stderr=asyncio.subprocess.PIPE)
+    out, _ = await asyncio.wait_for(process.communicate(b"".join(_message(m) for m in messages)), TIMEOUT)
+    answers = [json.loads(part.split(b"\r\n\r\n", 1)[1]) for part in out.split(b"Content-Length: ")[1:]]
+    assert process.returncode is not None
+    return process.returncode, answers
+
+
+INITIALIZE = {"jsonrpc": "2.0", "id": 1, "method": "initialize", "params": {"processId": None, "rootUri": None,
+                                                                             "capabilities": {}}}
+
+
+async def test_shutdown_then_exit_is_0_and_requests_after_shutdown_are_refused() -> None:
+    """A request after shutdown is answered InvalidRequest, as the protocol says (pygls left it unanswered:
+    the client waited); exit without shutdown, or the client gone, ends with 1 (it was 0)."""
+    hover = {"textDocument": {"uri": "file:///x.lis"}, "position": {"line": 0, "character": 0}}
+    code, answers = await _run_server(
+        INITIALIZE, {"jsonrpc": "2.0", "method": "initialized", "params": {}},
+        {"jsonrpc": "2.0", "id": 2, "method": "shutdown"},
+        {"jsonrpc": "2.0", "id": 3, "method": "textDocument/hover", "params": hover},
+        {"jsonrpc": "2.0", "method": "exit"})
+    assert code == 0
+    by_id = {a["id"]: a for a in answers if "id" in a}
+    assert by_id[2]["result"] is None
+    assert by_id[3]["error"]["code"] == -32600 and "shutting down" in by_id[3]["error"]["message"]
+    code, _ = await _run_server(INITIALIZE, {"jsonrpc": "2.0", "method": "exit"})
+    assert code == 1
+    code, _ = await _run_server(INITIALIZE)
+    assert code == 1

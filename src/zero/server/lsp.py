@@ -26,7 +26,7 @@ from typing import Any
 from urllib.parse import unquote
 
 from lsprotocol import types
-from pygls.exceptions import JsonRpcException, JsonRpcInvalidParams
+from pygls.exceptions import JsonRpcException, JsonRpcInvalidParams, JsonRpcInvalidRequest
 from pygls.lsp.server import LanguageServer
 from pygls.protocol import LanguageServerProtocol
 from pygls.workspace import TextDocument
@@ -71,6 +71,11 @@ class ZeroProtocol(LanguageServerProtocol):
     def handle_message(self, message: Any) -> None:
         if message is ANSWERED:
             return
+        if self._shutdown and getattr(message, "id", None) is not None \
+                and getattr(message, "method", types.EXIT) != types.EXIT:  # a request, not a response
+            error = JsonRpcInvalidRequest(f"{message.method}: the server is shutting down (shutdown was requested)")
+            self._send_response(message.id, error=error.to_response_error())  # pygls would leave it unanswered
+            return
         super().handle_message(message)
 
 
@@ -89,6 +94,7 @@ class ZeroServer(LanguageServer):
         self.timers: dict[str, asyncio.TimerHandle] = {}
         self.snippets = False
         self.lazy_actions = False
+        self.shut_down = False  # the client asked to shut down (exit then ends the process with 0, else 1)
 
     def report_server_error(self, error: Exception, source: Any) -> None:
         """Errors outside a request go to the client's log, not into pop-ups."""
@@ -199,6 +205,12 @@ def create_server(registries: Registries, param_desc: Path | None = None) -> Zer
             future = server.client_register_capability(types.RegistrationParams(
                 [types.Registration("zero-config", types.WORKSPACE_DID_CHANGE_WATCHED_FILES, options)]))
             future.add_done_callback(lambda f: f.cancelled() or f.exception())  # a refusal is no error
+
+    @server.feature(types.SHUTDOWN)
+    def shutdown(params: None) -> None:
+        server.shut_down = True
+        for uri in list(server.timers):
+            server.cancel(uri)
 
     @server.feature(types.TEXT_DOCUMENT_DID_OPEN)
     def did_open(params: types.DidOpenTextDocumentParams) -> None:
@@ -316,7 +328,8 @@ class ByteSafeInput:
 
 
 def serve(registries: Registries, param_desc: Path | None = None) -> None:
-    """Run the server over standard input and output until the client says ``exit``."""
+    """Run the server over standard input and output until the client says ``exit`` (exit code 0 after
+    ``shutdown``, else 1)."""
     stdout = sys.stdout.buffer
     sys.stdout = sys.stderr  # nothing but the protocol may reach the client's stream
     handler = logging.StreamHandler(sys.stderr)
@@ -324,4 +337,7 @@ def serve(registries: Registries, param_desc: Path | None = None) -> None:
     root = logging.getLogger()
     root.addHandler(handler)
     root.setLevel(logging.WARNING)
-    create_server(registries, param_desc).start_io(ByteSafeInput(sys.stdin.buffer), stdout)  # type: ignore[arg-type]
+    server = create_server(registries, param_desc)
+    server.start_io(ByteSafeInput(sys.stdin.buffer), stdout)  # type: ignore[arg-type]
+    if not server.shut_down:  # `exit` without `shutdown`, or the client gone: 1, as the protocol says
+        raise SystemExit(1)
