@@ -37,9 +37,9 @@ def _split(text: str) -> list[str]:
 
 
 def line_edits(text: Text, new: str) -> list[types.TextEdit]:
-    """The edits that turn the document into ``new``: one per run of changed lines."""
-    import difflib  # start-up: only when there is something to compare
-
+    """The edits that turn the document into ``new``: one per run of changed lines (line by line
+    where the number of lines stays, as ``zero format`` keeps it; else a diff of the lines between
+    the common start and end: difflib over a whole long list that repeats itself took half a minute)."""
     old_lines, new_lines = _split(text.source), _split(new)
 
     def start_of(i: int) -> types.Position:
@@ -50,12 +50,33 @@ def line_edits(text: Text, new: str) -> list[types.TextEdit]:
         last = len(old_lines) - 1
         return types.Position(last, text.character(last, len(old_lines[-1])))
 
-    edits = []
-    matcher = difflib.SequenceMatcher(None, old_lines, new_lines, autojunk=False)
-    for tag, i1, i2, j1, j2 in matcher.get_opcodes():
-        if tag != "equal":
-            edits.append(types.TextEdit(types.Range(start_of(i1), start_of(i2)), "".join(new_lines[j1:j2])))
-    return edits
+    head = 0
+    while head < min(len(old_lines), len(new_lines)) and old_lines[head] == new_lines[head]:
+        head += 1
+    tail = 0
+    while tail < min(len(old_lines), len(new_lines)) - head and old_lines[-1 - tail] == new_lines[-1 - tail]:
+        tail += 1
+    if len(old_lines) == len(new_lines):
+        opcodes = []
+        i = head
+        while i < len(old_lines) - tail:
+            if old_lines[i] == new_lines[i]:
+                i += 1
+                continue
+            j = i
+            while j < len(old_lines) - tail and old_lines[j] != new_lines[j]:
+                j += 1
+            opcodes.append((i, j, i, j))
+            i = j
+    else:
+        import difflib  # start-up: only when lines come or go
+
+        matcher = difflib.SequenceMatcher(None, old_lines[head:len(old_lines) - tail],
+                                          new_lines[head:len(new_lines) - tail], autojunk=False)
+        opcodes = [(head + i1, head + i2, head + j1, head + j2)
+                   for tag, i1, i2, j1, j2 in matcher.get_opcodes() if tag != "equal"]
+    return [types.TextEdit(types.Range(start_of(i1), start_of(i2)), "".join(new_lines[j1:j2]))
+            for i1, i2, j1, j2 in opcodes]
 
 
 def _decoded(data: bytes, encoding: str | None) -> str:
