@@ -204,3 +204,22 @@ async def test_a_file_whose_uri_is_percent_encoded_gets_its_findings(client: Lan
     assert hover is not None
     assert codes(await change_document(client, path, "np_grp[1].achse[0].inaktiv 7\n", 2)) == [(1, "R005")]
     close_document(client, path)
+
+
+async def test_a_broken_pyproject_points_at_its_line(client: LanguageClient, tmp_path: Path) -> None:
+    """The note on the list links to the place in pyproject.toml (it said it only in words)."""
+    (tmp_path / "pyproject.toml").write_text('[project]\nname = "x"\n\n[tool.zero]\nselect = ["R"\nignore = 3\n')
+    path = tmp_path / "n.lis"
+    path.write_text("np_grp[1].achse[0].versch 99999999999\n")
+    (note,) = await open_document(client, path)
+    assert "pyproject.toml: not valid TOML" in note.message and note.severity == types.DiagnosticSeverity.Error
+    (where,) = note.related_information or []
+    assert where.location.uri == (tmp_path / "pyproject.toml").as_uri()
+    assert where.location.range.start == types.Position(line=5, character=0)
+    (tmp_path / "pyproject.toml").write_text('[tool.zero]\nselect = "R"\n')
+    found = await diagnostics_after(client, path.as_uri(), lambda: client.text_document_did_save(
+        types.DidSaveTextDocumentParams(types.TextDocumentIdentifier(uri=path.as_uri()))))
+    (note,) = found
+    assert "tool.zero.select" in note.message
+    assert note.related_information and note.related_information[0].location.range.start.line == 1
+    close_document(client, path)

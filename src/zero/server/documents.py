@@ -212,6 +212,20 @@ class Note:
     line: int = 1
     column: int = 1
     severity: Severity = Severity.ERROR
+    elsewhere: tuple[Path, int, int] | None = None  # the place in another file it is about (1-based)
+
+
+_TOML_AT = re.compile(r"\(at line (\d+), column (\d+)\)")
+
+
+def _place(exc: ZeroError) -> tuple[Path, int, int] | None:
+    """Where in its file an error is (tomllib says it only in the message)."""
+    if not exc.path:
+        return None
+    if exc.line is not None:
+        return Path(exc.path), exc.line, exc.column or 1
+    m = _TOML_AT.search(exc.message)
+    return (Path(exc.path), int(m.group(1)), int(m.group(2))) if m else (Path(exc.path), 1, 1)
 
 
 @dataclass(slots=True, eq=False)
@@ -341,7 +355,7 @@ class Projects:
             config = self.config(path)
         except ZeroError as exc:
             config = Config()
-            notes.append(Note(f"the configuration cannot be read, nothing is checked: {exc}"))
+            notes.append(Note(f"the configuration cannot be read, nothing is checked: {exc}", elsewhere=_place(exc)))
         try:
             registry = self.registry(config)
         except ZeroError as exc:

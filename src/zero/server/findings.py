@@ -159,8 +159,14 @@ def to_lsp(a: Analysis, d: Diagnostic, docs: RuleDocs) -> types.Diagnostic:
 
 def note_to_lsp(a: Analysis, note: Note) -> types.Diagnostic:
     start = a.text.position(note.line, note.column)
+    related = None
+    if note.elsewhere is not None:  # e.g. the line of pyproject.toml that cannot be read: one click away
+        path, line, column = note.elsewhere
+        at = types.Position(max(0, line - 1), max(0, column - 1))
+        related = [types.DiagnosticRelatedInformation(types.Location(uri_of(path), types.Range(at, at)),
+                                                      f"{path.name}:{line}:{column}")]
     return types.Diagnostic(range=lsp_range(start, start), message=note.message,
-                            severity=SEVERITY[note.severity], source="zero")
+                            severity=SEVERITY[note.severity], source="zero", related_information=related)
 
 
 def diagnostics(a: Analysis, docs: RuleDocs) -> list[types.Diagnostic]:
