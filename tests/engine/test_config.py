@@ -160,3 +160,13 @@ def test_directory_walk_respects_gitignore(tmp_path: Path) -> None:
     assert "old" not in out and "lists/nullp.lis" in out
     _code, out, _ = lint(str(root / "lists" / "old" / "nullp.lis"))  # named: linted
     assert "old/nullp.lis" in out
+
+
+def test_a_toml_error_in_the_configuration_is_located(tmp_path: Path) -> None:
+    """tomllib says where only in its message; zero's error carries the line and column."""
+    path = tmp_path / "pyproject.toml"
+    path.write_text('[tool.zero]\nselect = ["R0\nignore = 1\n')
+    with pytest.raises(ZeroError) as caught:
+        parse_config(path)
+    assert (caught.value.line, caught.value.column) == (2, 14)
+    assert str(caught.value).startswith(f"{path}:2:14: not valid TOML")

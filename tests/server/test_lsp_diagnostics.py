@@ -212,7 +212,7 @@ async def test_a_broken_pyproject_points_at_its_line(client: LanguageClient, tmp
     path = tmp_path / "n.lis"
     path.write_text("np_grp[1].achse[0].versch 99999999999\n")
     (note,) = await open_document(client, path)
-    assert "pyproject.toml: not valid TOML" in note.message and note.severity == types.DiagnosticSeverity.Error
+    assert "pyproject.toml:6:1: not valid TOML" in note.message and note.severity == types.DiagnosticSeverity.Error
     (where,) = note.related_information or []
     assert where.location.uri == (tmp_path / "pyproject.toml").as_uri()
     assert where.location.range.start == types.Position(line=5, character=0)

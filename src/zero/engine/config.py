@@ -193,6 +193,9 @@ def _line_of(text: str, table: tuple[str, ...], key: str | None) -> int | None:
     return None
 
 
+_TOML_AT = re.compile(r"\s*\(at line (\d+), column (\d+)\)\s*$")
+
+
 def parse_config(path: Path, text: str | None = None) -> Config | None:
     """Read one configuration file; ``None`` for a pyproject.toml without ``[tool.zero]``."""
     import tomllib  # start-up: only when a configuration file exists
@@ -207,7 +210,11 @@ def parse_config(path: Path, text: str | None = None) -> Config | None:
     try:
         data = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
-        raise ZeroError(f"not valid TOML: {exc}", str(path)) from None
+        at = _TOML_AT.search(str(exc))  # tomllib says where only in its message
+        if at is None:
+            raise ZeroError(f"not valid TOML: {exc}", str(path)) from None
+        raise ZeroError(f"not valid TOML: {str(exc)[:at.start()].rstrip()}", str(path),
+                        int(at.group(1)), int(at.group(2))) from None
     table: tuple[str, ...] = ()
     tool = data.get("tool", {})
     if path.name == "pyproject.toml":

@@ -215,17 +215,11 @@ class Note:
     elsewhere: tuple[Path, int, int] | None = None  # the place in another file it is about (1-based)
 
 
-_TOML_AT = re.compile(r"\(at line (\d+), column (\d+)\)")
-
-
 def _place(exc: ZeroError) -> tuple[Path, int, int] | None:
-    """Where in its file an error is (tomllib says it only in the message)."""
+    """Where in its file an error is (the configuration's TOML errors carry their line and column)."""
     if not exc.path:
         return None
-    if exc.line is not None:
-        return Path(exc.path), exc.line, exc.column or 1
-    m = _TOML_AT.search(exc.message)
-    return (Path(exc.path), int(m.group(1)), int(m.group(2))) if m else (Path(exc.path), 1, 1)
+    return Path(exc.path), exc.line or 1, exc.column or 1
 
 
 @dataclass(slots=True, eq=False)

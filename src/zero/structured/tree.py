@@ -359,7 +359,8 @@ def from_document(doc: Document, registry: Registry, kind: str | None = None) ->
     for key in shadowed:
         eff = last[key]
         assert eff.line is not None
-        e = next(i for i in doc.items if type(i) is Entry and i.line == eff.line)
+        e = doc.items[eff.line - 1]  # one item per line: no scan per shadowed key
+        assert isinstance(e, Entry)
         if doc.lines[e.line - 1] != canonical_line(e.key_text, e.value, eff.after, value_column,
                                                    comment_column):
             layout[key] = _template(doc, e)
