@@ -1,0 +1,127 @@
+#!/usr/bin/env python3
+"""Latency of ``zero server`` through the protocol, whole process, as an editor sees it.
+
+A real client (pytest-lsp's, so ``pip install -e '.[test]'``) starts ``python -m zero server``
+with no debounce, opens a list, then ROUNDS times edits a fault in and out and asks hover,
+completion, symbols, code actions and formatting once each; it prints the median of each step.
+Lists: the 6,208-entry zero-offset list (97 groups x 32 axes x versch/inaktiv, as
+``benchmarks/workloads.py`` builds it) and the vendor's axis list from ``../shared/corpus``
+(skipped where absent). Prints figures; it passes or fails nothing.
+
+usage: python benchmarks/bench_lsp.py [--rounds N]
+"""
+
+from __future__ import annotations
+
+import argparse
+import asyncio
+import statistics
+import sys
+import tempfile
+import time
+from collections.abc import Awaitable, Callable
+from pathlib import Path
+from typing import Any
+
+ROOT = Path(__file__).resolve().parent.parent
+sys.path[:0] = [str(ROOT / "tests" / "server")]  # the protocol helpers the tests use
+
+from lsp_support import (  # noqa: E402
+    change_document,
+    close_document,
+    codes,
+    full_zero_list,
+    open_document,
+    session,
+)
+from lsprotocol import types  # noqa: E402
+from pytest_lsp import LanguageClient  # noqa: E402
+
+CORPUS = ROOT.parent / "shared" / "corpus"
+ROUNDS = 7
+
+
+async def timed(step: Callable[[], Awaitable[Any]]) -> tuple[float, Any]:
+    t0 = time.perf_counter()
+    result = await step()
+    return (time.perf_counter() - t0) * 1000, result
+
+
+def report(name: str, figures: dict[str, list[float]]) -> dict[str, float]:
+    medians = {k: statistics.median(v) for k, v in figures.items()}
+    print(f"\n{name}: " + ", ".join(f"{k} {v:.0f} ms" for k, v in medians.items()))
+    return medians
+
+
+async def measure(client: LanguageClient, path: Path, text: str, line: int, edit: Callable[[str, int], str],
+                  code: str) -> dict[str, float]:
+    """Open, then edit (a fault in, a fault out) and ask every request once per round."""
+    figures: dict[str, list[float]] = {}
+    ms, found = await timed(lambda: open_document(client, path, text))
+    figures["open → findings"] = [ms]
+    ident = types.TextDocumentIdentifier(uri=path.as_uri())
+    position = types.Position(line=line, character=2)
+    version = 1
+    for i in range(ROUNDS):
+        version += 1
+        changed = edit(text, i)
+        ms, found = await timed(lambda v=version, t=changed: change_document(client, path, t, v))  # type: ignore[misc]
+        if code not in {c for _, c in codes(found)}:
+            raise SystemExit(f"{path.name}: the edit did not give {code}")
+        figures.setdefault("edit → findings", []).append(ms)
+        version += 1
+        ms, _ = await timed(lambda v=version: change_document(client, path, text, v))  # type: ignore[misc]
+        figures.setdefault("edit back → findings", []).append(ms)
+        for name, request in (
+            ("hover", lambda: client.text_document_hover_async(types.HoverParams(ident, position))),
+            ("completion", lambda: client.text_document_completion_async(types.CompletionParams(ident, position))),
+            ("symbols", lambda: client.text_document_document_symbol_async(types.DocumentSymbolParams(ident))),
+            ("code actions", lambda: client.text_document_code_action_async(types.CodeActionParams(
+                ident, types.Range(start=position, end=position), types.CodeActionContext(diagnostics=[])))),
+            ("formatting", lambda: client.text_document_formatting_async(types.DocumentFormattingParams(
+                ident, types.FormattingOptions(tab_size=4, insert_spaces=True)))),
+        ):
+            ms, _ = await timed(request)
+            figures.setdefault(name, []).append(ms)
+    close_document(client, path)
+    return report(path.name, figures)
+
+
+
+
+async def main(rounds: int) -> None:
+    global ROUNDS
+    ROUNDS = rounds
+    with tempfile.TemporaryDirectory() as tmp:
+        folder = Path(tmp)
+        async for client in session(folder / "cache", options={"debounce": 0}):
+            text = full_zero_list()
+            lines = text.split("\n")
+            target = next(i for i, x in enumerate(lines) if x.startswith("np_grp[50].achse[7].inaktiv"))
+
+            def zero_edit(_source: str, i: int, lines: list[str] = lines, target: int = target) -> str:
+                changed = list(lines)
+                changed[target] = changed[target].replace(" 0 ", f" {7 + i} ", 1)
+                return "\n".join(changed)
+
+            await measure(client, folder / "nullp.lis", text, target, zero_edit, "R005")
+            source = CORPUS / "isg-sdk" / "listen" / "achsmds1.lis"
+            if not source.is_file():
+                print(f"\n(the vendor's axis list is not at {source}: skipped)")
+                continue
+            axis = source.read_bytes().decode("cp1252")
+            axis_lines = axis.split("\n")
+            at = next(i for i, x in enumerate(axis_lines) if x.startswith("kenngr.swe_pos"))
+
+            def axis_edit(_source: str, _i: int, axis_lines: list[str] = axis_lines, at: int = at) -> str:
+                changed = list(axis_lines)
+                changed[at] = "kenngr.swe_pos -99999999999"
+                return "\n".join(changed)
+
+            await measure(client, folder / "achsmds1.lis", axis, at, axis_edit, "R004")
+
+
+if __name__ == "__main__":
+    a = argparse.ArgumentParser()
+    a.add_argument("--rounds", type=int, default=ROUNDS)
+    asyncio.run(main(a.parse_args().rounds))

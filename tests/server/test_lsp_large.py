@@ -1,0 +1,41 @@
+"""Large files through the protocol: the 6,208-entry zero-offset list (97 groups x 32 axes x
+versch/inaktiv, as ``benchmarks/workloads.py`` builds it) gets its findings on open and after an
+edit, and every request answers on it. How long each takes is measured by
+``benchmarks/bench_lsp.py`` (figures in the README), never asserted here.
+"""
+
+from __future__ import annotations
+
+from collections.abc import AsyncIterator
+from pathlib import Path
+
+import pytest
+import pytest_asyncio
+from lsp_support import change_document, close_document, codes, full_zero_list, open_document, session
+from lsprotocol import types
+from pytest_lsp import LanguageClient
+
+pytestmark = [pytest.mark.slow, pytest.mark.asyncio(loop_scope="module")]
+
+
+@pytest_asyncio.fixture(scope="module", loop_scope="module")
+async def client(tmp_path_factory: pytest.TempPathFactory) -> AsyncIterator[LanguageClient]:
+    async for c in session(tmp_path_factory.mktemp("cache"), options={"debounce": 0}):
+        yield c
+
+
+async def test_the_6208_entry_zero_list_is_served(client: LanguageClient, tmp_path: Path) -> None:
+    text = full_zero_list()
+    assert text.count(".versch ") + text.count(".inaktiv ") == 6208
+    path = tmp_path / "nullp.lis"
+    assert codes(await open_document(client, path, text)) == []
+    lines = text.split("\n")
+    target = next(i for i, x in enumerate(lines) if x.startswith("np_grp[50].achse[7].inaktiv"))
+    lines[target] = lines[target].replace(" 0 ", " 7 ", 1)
+    assert codes(await change_document(client, path, "\n".join(lines), 2)) == [(target + 1, "R005")]
+    ident = types.TextDocumentIdentifier(uri=path.as_uri())
+    at = types.Position(line=target, character=2)
+    assert await client.text_document_hover_async(types.HoverParams(ident, at)) is not None
+    symbols = await client.text_document_document_symbol_async(types.DocumentSymbolParams(ident))
+    assert symbols and len(symbols) >= 97
+    close_document(client, path)
