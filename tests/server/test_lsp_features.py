@@ -216,8 +216,16 @@ async def test_suppress_with_noqa_in_the_lists_own_syntax(client: LanguageClient
     fixed = apply_edits(ytext, edits_of(noqa, yaml))
     assert "versch: 99999999999  # ( noqa: R004 -- reviewed )" in fixed
     assert await change_document(client, yaml, fixed, 2) == []
+    program = tmp_path / "p.nc"  # an NC program: in its own `( … )` comment, also after a `;`
+    ptext = "N10 #MACHINE DATA [AX=X P-AXIS-00209=80000 WAIT] ; probing\n"
+    found = await open_document(client, program, ptext)
+    (noqa,) = [a for a in await actions(client, program, found, 0) if a.title.startswith("Suppress")]
+    fixed = apply_edits(ptext, edits_of(noqa, program))
+    assert fixed.splitlines()[0].endswith("; probing ( noqa: N001 -- reviewed )")
+    assert await change_document(client, program, fixed, 2) == []
     close_document(client, path)
     close_document(client, yaml)
+    close_document(client, program)
 
 
 async def test_fix_all_is_zero_lint_fix(client: LanguageClient, tmp_path: Path) -> None:

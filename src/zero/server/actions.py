@@ -22,7 +22,7 @@ from zero.engine.fixes import fix_bytes
 from zero.engine.formatting import format_bytes
 from zero.engine.lint import LintResult
 from zero.lists.encoding import BOM, decode
-from zero.server.documents import LIST, STRUCTURED, Analysis, Text
+from zero.server.documents import LIST, PROGRAM, STRUCTURED, Analysis, Text
 from zero.server.findings import RuleDocs, span_range, to_lsp
 
 FIX_ALL = "source.fixAll.zero"
@@ -120,6 +120,12 @@ def _noqa_edit(a: Analysis, d: Diagnostic) -> types.TextEdit | None:
         if "#" in old or d.message.startswith("(list line") or not old.strip():
             return None  # a trailing comment there already, or no line of its own
         new = f"{old.rstrip()}  # ( noqa: {d.code} -- reviewed )"
+    elif a.form == PROGRAM and d.code[0] == "N":
+        old = a.text.line(line - 1)
+        if "noqa" in old.lower() or not old.strip():
+            return None  # a suppression there already (it would hide this finding or be Z001)
+        # a `( … )` comment: read as a comment also after a `;`, where everything is comment
+        new = f"{old.rstrip()} ( noqa: {d.code} -- reviewed )"
     else:
         return None
     keep = 0
