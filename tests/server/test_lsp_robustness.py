@@ -188,3 +188,25 @@ async def test_shutdown_then_exit_is_0_and_requests_after_shutdown_are_refused()
     assert code == 1
     code, _ = await _run_server(INITIALIZE)
     assert code == 1
+
+
+async def test_a_refused_formatting_is_answered_without_a_traceback_or_an_error_log() -> None:
+    """A list `zero format` cannot read is refused with its reason (RequestFailed); pygls used to log
+    a traceback on stderr and an error into the client's log for each such refusal."""
+    uri = "file:///tmp/zero-refused/n.lis"
+    opened = {"textDocument": {"uri": uri, "languageId": "plaintext", "version": 1,
+                               "text": "np_grp[1].achse[0].versch 1\n\"quoted key\" 1\n"}}
+    fmt = {"textDocument": {"uri": uri}, "options": {"tabSize": 4, "insertSpaces": True}}
+    messages = [INITIALIZE, {"jsonrpc": "2.0", "method": "initialized", "params": {}},
+                {"jsonrpc": "2.0", "method": "textDocument/didOpen", "params": opened},
+                {"jsonrpc": "2.0", "id": 2, "method": "textDocument/formatting", "params": fmt},
+                {"jsonrpc": "2.0", "id": 3, "method": "shutdown"}, {"jsonrpc": "2.0", "method": "exit"}]
+    process = await asyncio.create_subprocess_exec(*SERVER, stdin=asyncio.subprocess.PIPE,
+                                                   stdout=asyncio.subprocess.PIPE, stderr=asyncio.subprocess.PIPE)
+    out, err = await asyncio.wait_for(process.communicate(b"".join(_message(m) for m in messages)), TIMEOUT)
+    answers = [json.loads(part.split(b"\r\n\r\n", 1)[1]) for part in out.split(b"Content-Length: ")[1:]]
+    refused = next(a for a in answers if a.get("id") == 2)
+    assert refused["error"]["code"] == -32803 and "not formatted" in refused["error"]["message"]
+    assert b"Traceback" not in err and b"not formatted" not in err, err.decode("utf-8", "replace")
+    logged = [a["params"]["message"] for a in answers if a.get("method") == "window/logMessage"]
+    assert not [m for m in logged if "not formatted" in m]

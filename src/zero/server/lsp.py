@@ -83,6 +83,18 @@ def failed(message: str) -> JsonRpcException:
     return JsonRpcException(message, code=REQUEST_FAILED)
 
 
+def expected(error: BaseException | None) -> bool:
+    """A refusal zero answers on purpose (``RequestFailed``), not a fault of the server."""
+    return isinstance(error, JsonRpcException) and error.code == REQUEST_FAILED
+
+
+class _QuietRefusals(logging.Filter):
+    """pygls logs every error answer with its traceback; a refusal is no error: dropped."""
+
+    def filter(self, record: logging.LogRecord) -> bool:
+        return not (record.exc_info is not None and expected(record.exc_info[1]))
+
+
 class ZeroServer(LanguageServer):
     def __init__(self, registries: Registries, param_desc: Path | None = None) -> None:
         super().__init__("zero", __version__, text_document_sync_kind=types.TextDocumentSyncKind.Incremental,
@@ -97,7 +109,11 @@ class ZeroServer(LanguageServer):
         self.shut_down = False  # the client asked to shut down (exit then ends the process with 0, else 1)
 
     def report_server_error(self, error: Exception, source: Any) -> None:
-        """Errors outside a request go to the client's log, not into pop-ups."""
+        """Errors outside a request go to the client's log, not into pop-ups. A request zero refuses
+        on purpose (``RequestFailed``: a list `zero format` cannot read) is answered with its reason
+        and is no error of the server: not logged."""
+        if expected(error):
+            return
         logger.error("%s", error)
         with contextlib.suppress(Exception):  # the client is gone: nothing to tell
             self.window_log_message(types.LogMessageParams(types.MessageType.Error, f"zero server: {error}"))
@@ -334,6 +350,7 @@ def serve(registries: Registries, param_desc: Path | None = None) -> None:
     sys.stdout = sys.stderr  # nothing but the protocol may reach the client's stream
     handler = logging.StreamHandler(sys.stderr)
     handler.setFormatter(logging.Formatter("zero server: %(levelname)s %(name)s: %(message)s"))
+    handler.addFilter(_QuietRefusals())
     root = logging.getLogger()
     root.addHandler(handler)
     root.setLevel(logging.WARNING)
