@@ -264,6 +264,27 @@ async def test_formatting_is_zero_format(client: LanguageClient, tmp_path: Path)
     close_document(client, program)
 
 
+async def test_range_formatting_lays_out_only_the_lines_of_the_range(client: LanguageClient,
+                                                                     tmp_path: Path) -> None:
+    """The selection's lines get zero format's layout (columns of the whole list); the others stay."""
+    path = tmp_path / "nullp.lis"
+    text = "g53_verfuegbar 1 ( on\nnp_grp[1].achse[0].versch   100   # G54\nnp_grp[1].achse[1].versch 5\nEnde"
+    await open_document(client, path, text)
+    whole = apply_edits(text, await client.text_document_formatting_async(types.DocumentFormattingParams(
+        doc(path), types.FormattingOptions(tab_size=4, insert_spaces=True))))
+    assert whole.split("\n")[0] != text.split("\n")[0] and whole.split("\n")[2] != text.split("\n")[2]
+    selected = types.Range(start=at(1, 4), end=at(2, 0))  # line 1 only (the end is the start of line 2)
+    edits = await client.text_document_range_formatting_async(types.DocumentRangeFormattingParams(
+        doc(path), selected, types.FormattingOptions(tab_size=4, insert_spaces=True)))
+    assert edits and {e.range.start.line for e in edits} == {1}
+    partly = apply_edits(text, edits).split("\n")
+    assert partly[1] == whole.split("\n")[1] and partly[0] == text.split("\n")[0] and partly[2:] == text.split("\n")[2:]
+    last = types.Range(start=at(3, 0), end=at(3, 4))  # `Ende` without a newline: nothing to lay out
+    assert not await client.text_document_range_formatting_async(types.DocumentRangeFormattingParams(
+        doc(path), last, types.FormattingOptions(tab_size=4, insert_spaces=True)))
+    close_document(client, path)
+
+
 async def test_the_outline_goes_by_group_and_axis(client: LanguageClient, tmp_path: Path) -> None:
     path = tmp_path / "nullp.lis"
     shutil.copy(FIXTURES / "seed" / "nullp_3achsen.lis", path)

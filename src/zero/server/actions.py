@@ -36,6 +36,16 @@ def _split(text: str) -> list[str]:
     return _LINES.findall(text)
 
 
+def _line_start(text: Text, old_lines: list[str], i: int) -> types.Position:
+    """Where line ``i`` of the document starts (its end, for the line after the last)."""
+    if i < len(old_lines):
+        return types.Position(i, 0)
+    if not old_lines or old_lines[-1].endswith("\n"):
+        return types.Position(len(old_lines), 0)
+    last = len(old_lines) - 1
+    return types.Position(last, text.character(last, len(old_lines[-1])))
+
+
 def line_edits(text: Text, new: str) -> list[types.TextEdit]:
     """The edits that turn the document into ``new``: one per run of changed lines (line by line
     where the number of lines stays, as ``zero format`` keeps it; else a diff of the lines between
@@ -43,12 +53,7 @@ def line_edits(text: Text, new: str) -> list[types.TextEdit]:
     old_lines, new_lines = _split(text.source), _split(new)
 
     def start_of(i: int) -> types.Position:
-        if i < len(old_lines):
-            return types.Position(i, 0)
-        if not old_lines or old_lines[-1].endswith("\n"):
-            return types.Position(len(old_lines), 0)
-        last = len(old_lines) - 1
-        return types.Position(last, text.character(last, len(old_lines[-1])))
+        return _line_start(text, old_lines, i)
 
     head = 0
     while head < min(len(old_lines), len(new_lines)) and old_lines[head] == new_lines[head]:
@@ -96,6 +101,26 @@ def formatting(a: Analysis) -> list[types.TextEdit]:
         return []
     encoding = a.result.document.encoding if a.result is not None else None
     return line_edits(a.text, _decoded(new, encoding))
+
+
+def range_formatting(a: Analysis, rng: types.Range) -> list[types.TextEdit]:
+    """``zero format`` of the lines a range touches: the list is laid out as a whole (its value and
+    comment columns are the list's), and only the changes on those lines are given."""
+    if a.form != LIST:
+        return []
+    new = format_bytes(a.data, a.name, a.registry)
+    if new == a.data:
+        return []
+    encoding = a.result.document.encoding if a.result is not None else None
+    decoded = _decoded(new, encoding)
+    first = rng.start.line
+    last = rng.end.line - 1 if rng.end.character == 0 and rng.end.line > first else rng.end.line
+    old_lines, new_lines = _split(a.text.source), _split(decoded)
+    if len(old_lines) != len(new_lines):  # zero format keeps the lines; should it not: the runs in range
+        return [e for e in line_edits(a.text, decoded) if e.range.start.line <= last and e.range.end.line >= first]
+    return [types.TextEdit(types.Range(_line_start(a.text, old_lines, i), _line_start(a.text, old_lines, i + 1)),
+                           new_lines[i])
+            for i in range(max(first, 0), min(last + 1, len(old_lines))) if old_lines[i] != new_lines[i]]
 
 
 def _fix_edits(a: Analysis, d: Diagnostic) -> list[types.TextEdit]:

@@ -308,6 +308,14 @@ def create_server(registries: Registries, param_desc: Path | None = None) -> Zer
         except ZeroError as exc:
             raise failed(f"zero format: {exc} (not formatted)") from None
 
+    @server.feature(types.TEXT_DOCUMENT_RANGE_FORMATTING)
+    def on_range_formatting(params: types.DocumentRangeFormattingParams) -> list[types.TextEdit]:
+        a = server.analysis(params.text_document.uri)
+        try:
+            return actions.range_formatting(a, params.range)
+        except ZeroError as exc:
+            raise failed(f"zero format: {exc} (not formatted)") from None
+
     @server.feature(types.TEXT_DOCUMENT_DOCUMENT_SYMBOL)
     def on_symbols(params: types.DocumentSymbolParams) -> list[types.DocumentSymbol]:
         return outline.document_symbols(server.analysis(params.text_document.uri))
