@@ -89,7 +89,7 @@ def comment_style(comment: str) -> CommentStyle:
 
 
 def _skip_ws(s: str, i: int, n: int) -> int:
-    return n - len(s[i:].lstrip(_WS)) if i < n else i
+    return n - len(s[i:n].lstrip(_WS)) if i < n else i
 
 
 def _skip_token(s: str, i: int, n: int) -> int:
