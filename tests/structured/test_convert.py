@@ -10,12 +10,16 @@ from typing import Any
 
 import pytest
 import yaml
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from conftest import FIXTURES, builtin_registry
 from zero.catalog.registry import Registry
 from zero.engine.convert import convert
+from zero.engine.lint import lint_file
 from zero.errors import ZeroError
 from zero.structured.formats import read_tree, write_tree
+from zero.structured.json import scan_json
 from zero.structured.tree import Tree, nest
 
 FORMATS = ("yaml", "toml", "json")
@@ -385,3 +389,45 @@ def test_mixed_line_endings_are_said_plainly(registry: Registry) -> None:
     assert any("mixed line endings" in n for n in c.notes)
     back = convert(c.output, "yaml", "lis", registry, "t.yaml", check=False).output
     assert back == b"k.a 1\nk.b 2\nk.c 3\nEnde\n"
+
+
+_JSON_KEYS = st.text(st.characters(codec="utf-8", exclude_categories=("Cs",)), min_size=1, max_size=6)
+_JSON_LEAVES = st.one_of(st.integers(-10**12, 10**12), st.text(st.characters(codec="utf-8", exclude_categories=("Cs",)),
+                                                                max_size=8))
+_JSON_TREES = st.recursive(st.dictionaries(_JSON_KEYS, _JSON_LEAVES, min_size=1, max_size=4),
+                           lambda inner: st.dictionaries(_JSON_KEYS, inner | _JSON_LEAVES, min_size=1, max_size=4),
+                           max_leaves=20)
+
+
+@given(_JSON_TREES, st.sampled_from([None, 2, 0]), st.booleans())
+@settings(max_examples=300, deadline=None)
+def test_every_json_value_is_located_where_it_is_written(data: dict[str, Any], indent: int | None,
+                                                          ascii_only: bool) -> None:
+    """scan_json gives each value's line and column: the text there is the value (after a string's
+    quote), however the JSON is laid out, escaped or nested."""
+    text = json.dumps(data, indent=indent, ensure_ascii=ascii_only)
+    lines = text.split("\n")
+    found = scan_json(text)
+    leaves: list[tuple[tuple[str, ...], Any]] = []
+    stack: list[tuple[tuple[str, ...], Any]] = [((), data)]
+    while stack:
+        here, node = stack.pop()
+        for k, v in node.items():
+            (stack.append(((*here, k), v)) if isinstance(v, dict) else leaves.append(((*here, k), v)))
+    assert set(found) == {p for p, _ in leaves}
+    for where, value in leaves:
+        at = found[where]
+        line = lines[at.line - 1]
+        if isinstance(value, str):  # the column is the first character after the opening quote
+            token = re.match(r'"(?:[^"\\]|\\.)*"', line[at.column - 2:])
+            assert token is not None and json.loads(token.group()) == value
+        else:
+            assert line[at.column - 1:].startswith(str(value))
+
+
+def test_findings_in_a_json_file_are_located_at_their_value(registry: Registry, tmp_path: Path) -> None:
+    path = tmp_path / "n.json"
+    path.write_text('{\n  "np_grp": {"1": {"achse": {"0": {"versch": 99999999999, "inaktiv": 7}}}},\n'
+                    '  "_zero": {"zero": 1, "kind": "ZERO"}\n}\n')
+    found = [(d.span.line, d.span.column, d.span.end_column, d.code) for d in lint_file(path, registry).diagnostics]
+    assert found == [(2, 46, 57, "R004"), (2, 70, 71, "R005")]

@@ -154,7 +154,7 @@ def lint_structured(data: bytes, fmt: str, registry: Registry, path: str = "-",
 
     tree = read_tree(data, fmt, registry, path)
     source = data.decode("utf-8", "replace").lstrip("\ufeff")
-    return lint_tree(tree, registry, options, source if fmt in ("yaml", "toml") else None)
+    return lint_tree(tree, registry, options, source)
 
 
 def lint_program(data: bytes, registry: Registry, path: str = "-", options: LintOptions | None = None,

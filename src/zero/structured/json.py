@@ -5,11 +5,14 @@ one object are refused (JSON readers keep only the last).
 
 from __future__ import annotations
 
+import bisect
 import json
+import re
 from typing import Any
 
 from zero.errors import ZeroError
 from zero.structured.common import (
+    Found,
     emit_items,
     finish,
     number_too_long,
@@ -57,6 +60,49 @@ def _no_duplicates(pairs: list[tuple[str, Any]]) -> dict[str, Any]:
     return out
 
 
+_TOKEN = re.compile(r'"(?:[^"\\]|\\.)*"|[{}\[\]:,]|[^\s{}\[\]:,"]+')
+
+
+def scan_json(text: str) -> dict[tuple[str, ...], Found]:
+    """The line and column (1-based; a string's first character after its quote) of every value,
+    by its key path: JSON readers give none, and findings belong where the value is written.
+    For text ``json.loads`` has read (so its tokens are well formed)."""
+    found: dict[tuple[str, ...], Found] = {}
+    newlines = [m.start() for m in re.finditer("\n", text)]
+    # each open container: [its path, "{" or "[", the key read and not yet given a value, next index]
+    frames: list[list[Any]] = []
+    expect_key = False
+    for m in _TOKEN.finditer(text):
+        tok = m.group()
+        top = frames[-1] if frames else None
+        if tok in ",:":
+            expect_key = tok == "," and top is not None and top[1] == "{"
+            continue
+        if tok in "}]":
+            frames.pop()
+            expect_key = False
+            continue
+        if top is not None and top[1] == "{" and expect_key:
+            top[2] = json.loads(tok)  # a key
+            expect_key = False
+            continue
+        if top is None:
+            here: tuple[str, ...] = ()
+        elif top[1] == "{":
+            here = (*top[0], top[2])
+        else:
+            here = (*top[0], str(top[3]))
+            top[3] += 1
+        if tok in "{[":
+            frames.append([here, tok, None, 0])
+            expect_key = tok == "{"
+            continue
+        at = m.start() + (tok[0] == '"')
+        line = bisect.bisect_left(newlines, at)
+        found[here] = Found(line + 1, at - (newlines[line - 1] + 1 if line else 0) + 1)
+    return found
+
+
 def read_json(text: str, path: str = "-") -> Tree:
     try:
         data = json.loads(text, object_pairs_hook=_no_duplicates)
@@ -71,7 +117,7 @@ def read_json(text: str, path: str = "-") -> Tree:
     if not isinstance(data, dict):
         raise ZeroError("the top level must be an object of keys, not a "
                            + type(data).__name__, path)
-    leaves, meta = walk_mapping(data, path, None)
+    leaves, meta = walk_mapping(data, path, scan_json(text))
     tail: list[str] = []
     if isinstance(meta, dict):
         comments = meta.pop("comments", None)
