@@ -172,6 +172,29 @@ async def test_the_machine_findings_follow_the_open_lists(client: LanguageClient
     close_document(client, zero_list)
 
 
+async def test_the_start_up_list_being_edited_shapes_the_machine(client: LanguageClient, tmp_path: Path) -> None:
+    """The start-up list's unsaved text is read as the machine's (X findings as you type in it), and
+    so are the other lists the machine is then made of."""
+    listen = _machine(tmp_path)
+    startup = listen / "hochlauf.lis"
+    saved = startup.read_text()
+    found = codes(await open_document(client, startup))
+    assert found == _cli_machine(listen.parent) == [(7, "X005"), (12, "X005"), (13, "X008")]
+    text = saved.replace("./listen/SoE/achse_c.lis", "./listen/achse_z.lis").replace("zahl_mds" + " " * 46 + "3",
+                                                                                    "zahl_mds" + " " * 46 + "4")
+    text = text.replace("achs_mds[3]                                           ./listen/achse_z.lis",
+                        "achs_mds[3]                                           ./listen/achse_q.lis")
+    found = codes(await change_document(client, startup, text, 2))
+    assert found == [(7, "X005"), (13, "X005")]  # achse_c fixed, the count raised, achse_q missing: unsaved
+    assert startup.read_text() == saved
+    close_document(client, startup)
+
+
+def _cli_machine(root: Path) -> list[tuple[int, str]]:
+    run = zero_cli("lint", "--output-format", "json", "--machine", "listen/hochlauf.lis", cwd=root)
+    return [(f["line"], f["code"]) for f in json.loads(run.stdout) if f["path"].endswith("hochlauf.lis")]
+
+
 async def test_an_nc_program_is_checked_against_the_machine(client: LanguageClient, tmp_path: Path) -> None:
     listen = _machine(tmp_path)
     program = listen.parent / "part.nc"

@@ -19,6 +19,7 @@ not there is missing, never replaced by a same-named file elsewhere.
 from __future__ import annotations
 
 import os
+from collections.abc import Callable
 from dataclasses import dataclass, field
 from pathlib import Path
 
@@ -248,8 +249,8 @@ def _inside(path: Path, root: Path) -> bool:
 
 
 def _read(key: str, path: Path, line: int, registry: Registry, kind: str,
-          base: ListValues | None = None) -> ListFile:
-    doc = tokenize(read_file(path), str(path))
+          base: ListValues | None = None, reader: Callable[[Path], bytes] = read_file) -> ListFile:
+    doc = tokenize(reader(path), str(path))
     values = ListValues.of(doc, registry, kind)
     values.base = base
     return ListFile(key, path, values, line)
@@ -261,14 +262,16 @@ def _count(startup: ListValues, pid: str) -> int:
 
 
 def load_machine(startup_path: Path, registry: Registry, forced_kind: str | None = None,
-                 overrides: dict[str, Path] | None = None, workdir: Path | None = None) -> Machine:
+                 overrides: dict[str, Path] | None = None, workdir: Path | None = None,
+                 reader: Callable[[Path], bytes] = read_file) -> Machine:
     """Read a start-up list and every list it names, as the controller would.
 
     ``overrides`` (start-up key → path, from ``[tool.zero.machine]``) replace what the
     start-up list names; ``workdir`` fixes the working directory. Each list is read as the
-    kind its key says (``achs_mds`` an axis list, ...), or as ``forced_kind``.
+    kind its key says (``achs_mds`` an axis list, ...), or as ``forced_kind``. ``reader`` gives
+    a list's bytes (an editor passes its unsaved text; :class:`ZeroError` when it cannot).
     """
-    startup = _read("start-up list", startup_path, 0, registry, forced_kind or "STUP")
+    startup = _read("start-up list", startup_path, 0, registry, forced_kind or "STUP", None, reader)
     named: list[Named] = []
     for e in startup.values.doc.entries:
         if e.key is None:
@@ -301,7 +304,7 @@ def load_machine(startup_path: Path, registry: Registry, forced_kind: str | None
                             "own lists; `[tool.zero.machine]` can name it)")
                 return None
         try:
-            lf = _read(n.key, n.path, n.line, registry, forced_kind or n.reference.kind, base)
+            lf = _read(n.key, n.path, n.line, registry, forced_kind or n.reference.kind, base, reader)
         except ZeroError as exc:
             n.status = "missing" if exc.message == "no such file" else "unreadable"
             n.reason = "does not exist" if n.status == "missing" else exc.message

@@ -314,6 +314,7 @@ class Projects:
         self.finder = ConfigFinder()
         self._machines: dict[tuple[object, ...], tuple[tuple[tuple[str, int, int], ...], Machine]] = {}
         self._values: OrderedDict[tuple[str, int, str], ListValues] = OrderedDict()
+        self._shaped: OrderedDict[tuple[object, ...], Machine] = OrderedDict()  # read with unsaved lists
 
     def forget(self) -> None:
         """Configuration files changed (or may have): find and read them again."""
@@ -414,16 +415,45 @@ class Projects:
                 self._values.popitem(last=False)
         return hit
 
+    def _unsaved_machine(self, config: Config, registry: Registry, texts: dict[str, str]) -> Machine:
+        """The machine read with the unsaved text of the lists that shape it (real path → text)."""
+        assert config.machine is not None
+        key = (config.machine, tuple(sorted(config.machine_lists.items())), config.machine_workdir, id(registry),
+               tuple(sorted(texts.items())))
+        hit = self._shaped.get(key)
+        if hit is None:
+            def reader(path: Path) -> bytes:
+                text = texts.get(os.path.realpath(path))
+                return read_file(path) if text is None else source_bytes(path, text)[0]
+
+            hit = load_machine(config.machine, registry, None, config.machine_lists, config.machine_workdir, reader)
+            self._shaped[key] = hit
+            while len(self._shaped) > 4:
+                self._shaped.popitem(last=False)
+        return hit
+
     def _machine_for(self, a: Analysis, buffers: Mapping[str, str]) -> Machine | None:
-        """The machine with the open documents' text in place of their saved lists, where that
-        does not change the machine's shape (the start-up, channel and default lists count as saved)."""
+        """The machine with the open documents' text in place of their saved lists: read again with
+        it where a list that shapes the machine (start-up, channel, default lists) is changed."""
         machine = self.machine(a.config, a.registry)
         if machine is None:
             return None
         me = os.path.realpath(a.path) if a.path is not None else None
+        structural = _structural(machine)
+        texts = {real: buffers[real] for real in structural if real in buffers}
+        if me in structural and a.path is not None:
+            texts[me] = a.text.source
+        texts = {real: t for real, t in texts.items() if not source_bytes(Path(real), t)[1]}  # changed ones
+        if texts:
+            try:
+                machine = self._unsaved_machine(a.config, a.registry, texts)
+            except ZeroError as exc:
+                a.notes.append(Note(f"the machine cannot be read with the unsaved lists: {exc}",
+                                    severity=Severity.WARNING))
+                return None
+            structural = _structural(machine)
         if a.form == LIST and me not in {os.path.realpath(lf.path) for lf in machine.lists}:
             return None  # a list of the project the machine does not read
-        structural = _structural(machine)
         new: dict[int, ListFile] = {}
         for lf in machine.lists:
             real = os.path.realpath(lf.path)
@@ -445,10 +475,6 @@ class Projects:
         assert a.machine is not None and a.path is not None
         me = os.path.realpath(a.path)
         if me not in {os.path.realpath(lf.path) for lf in a.machine.lists}:
-            return []
-        if me in _structural(a.machine) and not a.saved:
-            a.notes.append(Note("the machine's findings (X) are shown for this list as saved: save it to see "
-                                "them again", severity=Severity.INFO))
             return []
         context = MachineContext(a.machine, a.registry, selected_rules(a.options))
         return [replace(d, path=a.name) for d in run_checks(MACHINE_CHECKS, context)
