@@ -79,6 +79,16 @@ class Fix:
 
 
 @dataclass(frozen=True, slots=True)
+class Related:
+    """Another place a finding is about, e.g. the earlier entry a duplicate overwrites; ``path``
+    ``None`` is the finding's own file."""
+
+    span: Span
+    message: str
+    path: str | None = None
+
+
+@dataclass(frozen=True, slots=True)
 class Diagnostic:
     """One finding. ``hint`` is a one-line suggestion shown under the source line."""
 
@@ -90,6 +100,7 @@ class Diagnostic:
     param_id: str | None = None
     fix: Fix | None = None
     hint: str | None = field(default=None, compare=False)
+    related: tuple[Related, ...] = field(default=(), compare=False)
 
     def sort_key(self) -> tuple[str, int, int, str]:
         return (self.path, self.span.line, self.span.column, self.code)

@@ -143,6 +143,22 @@ def test_sarif_validates_against_the_sarif_2_1_0_model() -> None:
         sarif_pydantic.Sarif.model_validate(broken)
 
 
+def test_sarif_related_locations_of_a_duplicate() -> None:
+    """A duplicate (R007) points at the entry it overwrites: a SARIF related location, valid 2.1.0."""
+    sarif_pydantic = pytest.importorskip("sarif_pydantic", reason="pip install -e '.[test]'")
+    fail = str(FIXTURES / "rules" / "R007" / "fail.lis")
+    _, out, _ = run("--output-format", "sarif", fail)
+    log = json.loads(out)
+    sarif_pydantic.Sarif.model_validate(log)
+    (dup, *_) = [r for r in log["runs"][0]["results"] if r["ruleId"] == "R007"]
+    (other,) = dup["relatedLocations"]
+    first = other["physicalLocation"]["region"]["startLine"]
+    assert first < dup["locations"][0]["physicalLocation"]["region"]["startLine"]
+    assert other["message"]["text"].startswith("first set here to ")
+    assert other["physicalLocation"]["artifactLocation"] == dup["locations"][0]["physicalLocation"]["artifactLocation"]
+    assert f"line {first}" in dup["message"]["text"]
+
+
 def test_gitlab_fingerprints_survive_moved_lines(tmp_path: Path) -> None:
     data = Path(SEED).read_bytes()
     first = tmp_path / "a.lis"

@@ -63,10 +63,11 @@ async def test_a_duplicate_points_at_the_other_line(client: LanguageClient, tmp_
     found = await open_document(client, path)
     r007 = [d for d in found if d.code == "R007"]
     assert r007 and all(d.related_information for d in r007)
-    related = r007[0].related_information[0]  # type: ignore[index]
+    (related,) = r007[0].related_information  # type: ignore[misc]  # exactly one: the finding's own
     assert related.location.uri == path.as_uri()
     assert related.location.range.start.line < r007[0].range.start.line
-    assert related.message.startswith("line ")
+    assert related.location.range.start.character == 0 and related.location.range.end.character > 0  # the key
+    assert related.message.startswith("first set here to ")
     close_document(client, path)
 
 

@@ -142,7 +142,7 @@ def lint_tree(tree: Tree, registry: Registry, options: LintOptions | None = None
             col = leaf.column or 1
             span = Span(line, col, line, col + len(str(leaf.value)))
             message = f"{structured_path(leaf.path)}: " + re.sub(r"\bline (\d+)", relocate, d.message)
-        out.append(replace(d, span=span, message=message, fix=None))
+        out.append(replace(d, span=span, message=message, fix=None, related=()))
     out.sort(key=lambda d: d.sort_key())
     return LintResult(tree.path, shown, result.kind, out)
 

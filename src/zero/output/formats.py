@@ -140,6 +140,13 @@ def render_sarif(results: Sequence[LintResult], stream: TextIO) -> None:
                 "region": {"startLine": d.span.line, "startColumn": d.span.column,
                            "endLine": d.span.end_line, "endColumn": d.span.end_column}}}],
         }
+        if d.related:
+            item["relatedLocations"] = [
+                {"id": n, "message": {"text": printable(r.message)}, "physicalLocation": {
+                    "artifactLocation": artifact_uri(r.path or d.path),
+                    "region": {"startLine": r.span.line, "startColumn": r.span.column,
+                               "endLine": r.span.end_line, "endColumn": r.span.end_column}}}
+                for n, r in enumerate(d.related)]
         if d.param_id:
             item["properties"] = {"parameterId": d.param_id}
         res.append(item)

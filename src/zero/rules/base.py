@@ -23,7 +23,7 @@ from typing import TYPE_CHECKING, Generic, Literal, TypeVar
 
 from zero.catalog.registry import Registry
 from zero.catalog.values import ListValues
-from zero.diagnostics import Diagnostic, Fix, Severity, Span
+from zero.diagnostics import Diagnostic, Fix, Related, Severity, Span
 
 if TYPE_CHECKING:  # start-up: a list's lint does not load the machine and program models
     from zero.machine.model import Machine
@@ -72,12 +72,13 @@ class Reporter:
     path: str
 
     def report(self, code: str, span: Span, message: str, *, param_id: str | None = None,
-               fix: Fix | None = None, hint: str | None = None, path: str | None = None) -> Diagnostic:
+               fix: Fix | None = None, hint: str | None = None, path: str | None = None,
+               related: tuple[Related, ...] = ()) -> Diagnostic:
         if len(message) > 300:
             message = _LONG_WORD.sub(_shorten_word, _LONG_QUOTED.sub(_shorten, message))
         severity = self.severities.get(code) or _defaults.get(code, Severity.ERROR)
         return Diagnostic(code, severity, message, span, self.path if path is None else path,
-                          param_id, fix, hint)
+                          param_id, fix, hint, related)
 
 
 _defaults: dict[str, Severity] = {}  # code → default severity, filled as families declare rules

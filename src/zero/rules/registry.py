@@ -8,7 +8,7 @@ from zero.catalog.ids import SOFT_LIMITS
 from zero.catalog.ranges import Bounds, Number, Range, Ref
 from zero.catalog.registry import KINDS, NO_DEFAULT, ParamSpec, Registry
 from zero.catalog.values import Resolved, Value, default_number
-from zero.diagnostics import Diagnostic, Edit, Fix, Span
+from zero.diagnostics import Diagnostic, Edit, Fix, Related, Span
 from zero.lists.model import Entry, format_key
 from zero.rules.base import INFO, Context, E, Family, W
 
@@ -505,6 +505,7 @@ def check_duplicates(ctx: Context) -> Iterator[Diagnostic]:
                 (Edit(Span(first.line, 1, first.line + 1, 1), ""),),
                 safe=False,
             ),
+            related=(Related(_key_span(first), f"first set here to {first.value}, which this entry overwrites"),),
         )
         seen[slot] = e
 

@@ -100,9 +100,20 @@ def line_range(text: Text, index: int) -> types.Range:
 
 def _related(a: Analysis, d: Diagnostic) -> list[types.DiagnosticRelatedInformation]:
     out: list[types.DiagnosticRelatedInformation] = []
+    named: set[int] = set()  # lines the finding itself names as related (exact: no need to read the message)
+    for r in d.related:
+        if r.path is None or r.path == d.path:
+            named.add(r.span.line)
+            out.append(types.DiagnosticRelatedInformation(types.Location(a.uri, span_range(a.text, r.span)),
+                                                          r.message))
+        else:
+            where = Path(r.path)
+            out.append(types.DiagnosticRelatedInformation(
+                types.Location(uri_of(where), lsp_range((r.span.line - 1, 0), (r.span.line - 1, 0))),
+                f"{where.name}:{r.span.line}: {r.message}"))
     for m in _LINE.finditer(d.message):
         n = int(m.group(1))
-        if n != d.span.line and 1 <= n <= len(a.text.lines):
+        if n != d.span.line and n not in named and 1 <= n <= len(a.text.lines):
             shown = a.text.line(n - 1).strip()
             out.append(types.DiagnosticRelatedInformation(
                 types.Location(a.uri, line_range(a.text, n - 1)),
