@@ -216,3 +216,15 @@ def test_a_machine_finding_is_suppressed_in_the_list_it_concerns(registry: Regis
     lines[1] = lines[1].replace("X001", "X002")
     zero_list.write_text("\n".join(lines))
     assert x001() == [2, 2]  # X001 again, and the suppression hides nothing
+
+
+def test_an_offset_outside_its_soft_limits_points_at_the_entries_that_set_them(registry: Registry) -> None:
+    """X001 on the zero-offset list names the soft limits it is measured against: here the default
+    axis list's (the axis list sets none), as related locations."""
+    _, results = lint_machine(LAYERED, registry)
+    (x001,) = [d for r in results for d in r.diagnostics if d.code == "X001"]
+    default = str(LAYERED.parent / "achse_vorgabe.lis")
+    assert [(r.path, r.message.split()[0]) for r in x001.related] == [(default, "kenngr.swe_neg"),
+                                                                     (default, "kenngr.swe_pos")]
+    lines = (LAYERED.parent / "achse_vorgabe.lis").read_text().split("\n")
+    assert all(lines[r.span.line - 1].startswith(r.message.split()[0]) for r in x001.related)

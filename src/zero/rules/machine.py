@@ -7,6 +7,7 @@ lists, zero-offset lists) and report on the line of the list that carries the fa
 from __future__ import annotations
 
 from collections.abc import Iterator
+from typing import TYPE_CHECKING
 
 from zero.catalog.ids import (
     AXIS_LISTS,
@@ -18,13 +19,17 @@ from zero.catalog.ids import (
     G53_AVAILABLE,
     INACTIVE,
     OFFSET,
+    SOFT_LIMITS,
     SPINDLE_AXIS,
     fixed,
     g_code,
 )
 from zero.catalog.ranges import TYPE_LIMITS
-from zero.diagnostics import Diagnostic, Span
+from zero.diagnostics import Diagnostic, Related, Span
 from zero.rules.base import E, Family, MachineContext, W
+
+if TYPE_CHECKING:  # start-up: a list's lint does not load the machine model
+    from zero.machine.model import Axis
 
 FAMILY: Family[MachineContext] = Family("X", "machine (across lists, `zero lint --machine`)", "machine")
 SGN32 = TYPE_LIMITS["SGN32"]
@@ -219,6 +224,20 @@ Fix: check the axis index and the unit; a rotary offset is given in 0.0001°.
 """)
 
 
+def _limit_entries(ax: Axis) -> tuple[Related, ...]:
+    """The entries that set an axis's soft limits (in its list or the default list under it)."""
+    out = []
+    for pid in SOFT_LIMITS:
+        res = ax.list.values.value_of(pid)
+        layer = ax.list.values.layer_of(pid)
+        if res is None or layer is None:  # the catalogue's default: no entry to point at
+            continue
+        e = res.entry
+        out.append(Related(Span.on_line(e.line, e.value_start, e.value_end), f"{e.key_text} {e.value}",
+                           layer.doc.path))
+    return tuple(out)
+
+
 @FAMILY.check(OFFSET_OUTSIDE_SOFT_LIMITS, PCS_LIMIT_OVERFLOW, OFFSET_FOR_MISSING_AXIS, ROTARY_OFFSET_IN_MM)
 def check_offsets(ctx: MachineContext) -> Iterator[Diagnostic]:
     """X001, X002, X003, X006: each applied work offset against the axis it moves."""
@@ -254,13 +273,13 @@ def check_offsets(ctx: MachineContext) -> Iterator[Diagnostic]:
                 if not SGN32[0] <= pcs <= SGN32[1]:
                     yield ctx.report("X002", span, f"offset {where} of axis `{ca.name}` moves the {side} "
                                      f"soft limit to {pcs} in the programming coordinate system, beyond SGN32",
-                                     param_id=OFFSET, path=path)
+                                     param_id=OFFSET, path=path, related=_limit_entries(ax))
             if not ax.swe_neg <= v <= ax.swe_pos:
                 yield ctx.report("X001", span,
                                  f"the work zero of {where} on axis `{ca.name}` ({fixed(v, ax.unit)}) lies outside "
                                  f"its soft limits {fixed(ax.swe_neg, ax.unit)} .. {fixed(ax.swe_pos, ax.unit)} "
                                  f"({ax.list.path.name}): positions near the work zero cannot be reached",
-                                 param_id=OFFSET, path=path)
+                                 param_id=OFFSET, path=path, related=_limit_entries(ax))
             if ax.rotary and abs(v) > FULL_TURN:
                 yield ctx.report("X006", span,
                                  f"offset {where} of rotary axis `{ca.name}` is {fixed(v)}° — more than "

@@ -20,7 +20,6 @@ import attrs
 from lsprotocol import types
 
 from zero import __version__
-from zero.catalog.ids import SOFT_LIMITS
 from zero.diagnostics import Diagnostic, Severity, Span
 from zero.errors import ZeroError
 from zero.files import write_atomic
@@ -31,7 +30,6 @@ SEVERITY = {Severity.ERROR: types.DiagnosticSeverity.Error, Severity.WARNING: ty
             Severity.INFO: types.DiagnosticSeverity.Information}
 _LINE = re.compile(r"(?<!list )\bline (\d+)\b")  # "(list line 5)" is the converted list's
 UNNECESSARY = ("Z001",)  # an unused suppression: shown faded where the editor does
-SOFT_LIMIT_CODES = ("X001", "X002")  # an offset against its axis's soft limits
 
 
 def cache_dir() -> Path:
@@ -124,30 +122,6 @@ def _related(a: Analysis, d: Diagnostic) -> list[types.DiagnosticRelatedInformat
                 out.append(types.DiagnosticRelatedInformation(
                     types.Location(uri_of(lf.path), types.Range(types.Position(0, 0), types.Position(0, 0))),
                     f"{lf.key}: {lf.path.name}"))
-        if d.code in SOFT_LIMIT_CODES:
-            out.extend(_soft_limits(a, d))
-    return out
-
-
-def _soft_limits(a: Analysis, d: Diagnostic) -> list[types.DiagnosticRelatedInformation]:
-    """The soft limits an offset is measured against: the entries of the axis list the message
-    names (or of the default list under it)."""
-    assert a.machine is not None
-    out = []
-    for lf in a.machine.axis_lists:
-        if f"({lf.path.name})" not in d.message:
-            continue
-        for pid in SOFT_LIMITS:
-            res = lf.values.value_of(pid)
-            layer = lf.values.layer_of(pid)
-            if res is None or layer is None:
-                continue
-            where = Path(layer.doc.path)
-            line = res.entry.line - 1
-            out.append(types.DiagnosticRelatedInformation(
-                types.Location(uri_of(where), types.Range(types.Position(line, 0), types.Position(line, 0))),
-                f"{res.entry.key_text} {res.entry.value} ({where.name}:{line + 1})"))
-        break
     return out
 
 
