@@ -87,10 +87,47 @@ def _codes(text: str, known: set[str]) -> tuple[tuple[str, ...] | None, str | No
     return tuple(parts), None
 
 
-def parse_directives(doc: Document, known: set[str]) -> tuple[list[Directive], list[tuple[int, int, int, str]]]:
+Bad = tuple[int, int, int, str]  # a malformed directive: line, start, end, reason
+_IGNORE_RE = re.compile(r"ignore\s*\[(?P<codes>[^\]]*)\]\s*(?:--.*)?", re.IGNORECASE)
+_FILE_NOQA_RE = re.compile(r"noqa\s*(?::(?P<codes>.*))?", re.IGNORECASE)
+
+
+def _zero_directive(body: str, line: int, start: int, end: int, bad_end: int,
+                    known: set[str]) -> Directive | Bad:
+    """The text after ``zero:``: ``ignore[CODE, ...]`` (the next entry; its target is the caller's
+    to set) or ``noqa[: CODE, ...]`` (the whole file)."""
+    im = _IGNORE_RE.fullmatch(body)
+    if im:
+        codes, err = _codes(im.group("codes"), known)
+        if err or codes is None:
+            return (line, start, bad_end, err or "`ignore[...]` names no code")
+        return Directive(line, start, end, codes, "next")
+    nm = _FILE_NOQA_RE.fullmatch(body)
+    if nm:
+        codes, err = _codes(nm.group("codes") or "", known)
+        if err:
+            return (line, start, bad_end, err)
+        return Directive(line, start, end, codes, "file")
+    return (line, start, bad_end, "expected `zero: ignore[CODE, ...]` or `zero: noqa[: CODE, ...]`")
+
+
+def _noqa_directive(rest: str, line: int, start: int, end: int, known: set[str]) -> Directive | Bad:
+    """A ``noqa`` on its line; ``rest`` is what follows the word."""
+    rest = rest.strip()
+    codes: tuple[str, ...] | None = None
+    if rest.startswith(":"):
+        codes, err = _codes(rest[1:], known)
+        if err or codes is None:
+            return (line, start, end, err or "`noqa:` names no code")
+    elif rest and not rest.startswith(("--", "*/")):
+        return (line, start, end, "expected `noqa` or `noqa: CODE, ...`")
+    return Directive(line, start, end, codes, "line", line)
+
+
+def parse_directives(doc: Document, known: set[str]) -> tuple[list[Directive], list[Bad]]:
     """Directives of a document, and malformed ones as (line, start, end, reason)."""
     out: list[Directive] = []
-    bad: list[tuple[int, int, int, str]] = []
+    bad: list[Bad] = []
     pending_next: list[Directive] = []
     for item in doc.items:
         t = type(item)
@@ -100,27 +137,13 @@ def parse_directives(doc: Document, known: set[str]) -> tuple[list[Directive], l
             m = _ZERO_RE.match(text)
             if m is None:
                 continue
-            body = m.group("body")
-            start = m.start("body")
-            im = re.fullmatch(r"ignore\s*\[(?P<codes>[^\]]*)\]\s*(?:--.*)?", body, re.IGNORECASE)
-            nm = re.fullmatch(r"noqa\s*(?::(?P<codes>.*))?", body, re.IGNORECASE)
-            if im:
-                codes, err = _codes(im.group("codes"), known)
-                if err or codes is None:
-                    bad.append((item.line, start, len(text), err or "`ignore[...]` names no code"))
-                    continue
-                d = Directive(item.line, start, len(text.rstrip()), codes, "next")
-                out.append(d)
-                pending_next.append(d)
-            elif nm:
-                codes, err = _codes(nm.group("codes") or "", known)
-                if err:
-                    bad.append((item.line, start, len(text), err))
-                    continue
-                out.append(Directive(item.line, start, len(text.rstrip()), codes, "file"))
+            got = _zero_directive(m.group("body"), item.line, m.start("body"), len(text.rstrip()), len(text), known)
+            if isinstance(got, Directive):
+                out.append(got)
+                if got.scope == "next":
+                    pending_next.append(got)
             else:
-                bad.append((item.line, start, len(text),
-                            "expected `zero: ignore[CODE, ...]` or `zero: noqa[: CODE, ...]`"))
+                bad.append(got)
         elif t is Entry:
             assert isinstance(item, Entry)
             for d in pending_next:
@@ -131,30 +154,22 @@ def parse_directives(doc: Document, known: set[str]) -> tuple[list[Directive], l
             m = _NOQA_RE.search(item.comment)
             if m is None:
                 continue
-            rest = m.group("rest")
-            start = item.comment_start + m.start()
-            end = item.comment_start + m.end()
-            if rest.strip().startswith(":"):
-                codes, err = _codes(rest.strip()[1:], known)
-                if err or codes is None:
-                    bad.append((item.line, start, end, err or "`noqa:` names no code"))
-                    continue
-            elif rest.strip() and not rest.strip().startswith(("--", "*/")):
-                bad.append((item.line, start, end, "expected `noqa` or `noqa: CODE, ...`"))
-                continue
+            got = _noqa_directive(m.group("rest"), item.line, item.comment_start + m.start(),
+                                  item.comment_start + m.end(), known)
+            if isinstance(got, Directive):
+                out.append(got)
             else:
-                codes = None
-            out.append(Directive(item.line, start, end, codes, "line", item.line))
+                bad.append(got)
     return out, bad
 
 
 def parse_comment_directives(comments: Iterable[tuple[int, int, str]], code_lines: Iterable[int],
-                             known: set[str]) -> tuple[list[Directive], list[tuple[int, int, int, str]]]:
+                             known: set[str]) -> tuple[list[Directive], list[Bad]]:
     """Directives in comments given as (line, 0-based column, text with its delimiters) — an NC
     program's ``( … )`` and ``; …`` — and malformed ones. ``zero: ignore[...]`` covers the next of
     ``code_lines`` (lines with more than comments), ``zero: noqa`` the file, ``noqa`` its line."""
     out: list[Directive] = []
-    bad: list[tuple[int, int, int, str]] = []
+    bad: list[Bad] = []
     code = sorted(set(code_lines))
     for line, column, text in comments:
         if "noqa" not in text.lower() and "zero" not in text.lower():
@@ -163,41 +178,19 @@ def parse_comment_directives(comments: Iterable[tuple[int, int, str]], code_line
         body = text[1:].rstrip(")") if text.startswith("(") else text[1:]
         m = re.match(r"\s*zero\s*:\s*(?P<body>.*?)\s*$", body, re.IGNORECASE)
         if m is not None:
-            start, end = body_at + m.start("body"), body_at + len(body.rstrip())
-            im = re.fullmatch(r"ignore\s*\[(?P<codes>[^\]]*)\]\s*(?:--.*)?", m.group("body"), re.IGNORECASE)
-            nm = re.fullmatch(r"noqa\s*(?::(?P<codes>.*))?", m.group("body"), re.IGNORECASE)
-            if im:
-                codes, err = _codes(im.group("codes"), known)
-                if err or codes is None:
-                    bad.append((line, start, end, err or "`ignore[...]` names no code"))
-                    continue
-                target = next((n for n in code if n > line), None)
-                out.append(Directive(line, start, end, codes, "next", target))
-            elif nm:
-                codes, err = _codes(nm.group("codes") or "", known)
-                if err:
-                    bad.append((line, start, end, err))
-                    continue
-                out.append(Directive(line, start, end, codes, "file"))
-            else:
-                bad.append((line, start, end, "expected `zero: ignore[CODE, ...]` or `zero: noqa[: CODE, ...]`"))
-            continue
-        nq = _NOQA_RE.search(body)
-        if nq is None:
-            continue
-        start, end = body_at + nq.start(), body_at + nq.end()
-        rest = nq.group("rest").strip()
-        if rest.startswith(":"):
-            codes, err = _codes(rest[1:], known)
-            if err or codes is None:
-                bad.append((line, start, end, err or "`noqa:` names no code"))
-                continue
-        elif rest and not rest.startswith("--"):
-            bad.append((line, start, end, "expected `noqa` or `noqa: CODE, ...`"))
-            continue
+            end = body_at + len(body.rstrip())
+            got = _zero_directive(m.group("body"), line, body_at + m.start("body"), end, end, known)
+            if isinstance(got, Directive) and got.scope == "next":
+                got.target = next((n for n in code if n > line), None)
         else:
-            codes = None
-        out.append(Directive(line, start, end, codes, "line", line))
+            nq = _NOQA_RE.search(body)
+            if nq is None:
+                continue
+            got = _noqa_directive(nq.group("rest"), line, body_at + nq.start(), body_at + nq.end(), known)
+        if isinstance(got, Directive):
+            out.append(got)
+        else:
+            bad.append(got)
     return out, bad
 
 
@@ -208,7 +201,7 @@ def apply(doc: Document, found: list[Diagnostic], severities: dict[str, Severity
     return apply_directives(doc.path, directives, bad, found, severities)
 
 
-def apply_directives(path: str, directives: list[Directive], bad: list[tuple[int, int, int, str]],
+def apply_directives(path: str, directives: list[Directive], bad: list[Bad],
                      found: list[Diagnostic], severities: dict[str, Severity]) -> list[Diagnostic]:
     """Drop the findings the directives suppress; Z001 for an unused one, Z002 for a malformed one."""
     if not directives and not bad:

@@ -91,28 +91,29 @@ def _decoded(data: bytes, encoding: str | None) -> str:
     return (data[3:] if data.startswith(BOM) else data).decode(encoding, "surrogateescape")
 
 
-def formatting(a: Analysis) -> list[types.TextEdit]:
-    """``zero format`` of the document as edits (:class:`~zero.errors.ZeroError` for a line it cannot
-    read); nothing for NC programs and structured forms, which zero does not reformat."""
+def _formatted(a: Analysis) -> str | None:
+    """``zero format`` of the document as text, or None where nothing changes (:class:`~zero.errors.
+    ZeroError` for a line it cannot read); NC programs and structured forms are not reformatted."""
     if a.form != LIST:
-        return []
+        return None
     new = format_bytes(a.data, a.name, a.registry)
     if new == a.data:
-        return []
-    encoding = a.result.document.encoding if a.result is not None else None
-    return line_edits(a.text, _decoded(new, encoding))
+        return None
+    return _decoded(new, a.result.document.encoding if a.result is not None else None)
+
+
+def formatting(a: Analysis) -> list[types.TextEdit]:
+    """``zero format`` of the document as edits."""
+    decoded = _formatted(a)
+    return [] if decoded is None else line_edits(a.text, decoded)
 
 
 def range_formatting(a: Analysis, rng: types.Range) -> list[types.TextEdit]:
     """``zero format`` of the lines a range touches: the list is laid out as a whole (its value and
     comment columns are the list's), and only the changes on those lines are given."""
-    if a.form != LIST:
+    decoded = _formatted(a)
+    if decoded is None:
         return []
-    new = format_bytes(a.data, a.name, a.registry)
-    if new == a.data:
-        return []
-    encoding = a.result.document.encoding if a.result is not None else None
-    decoded = _decoded(new, encoding)
     first = rng.start.line
     last = rng.end.line - 1 if rng.end.character == 0 and rng.end.line > first else rng.end.line
     old_lines, new_lines = _split(a.text.source), _split(decoded)
