@@ -234,7 +234,7 @@ def diff_sides(a: Side, b: Side, registry: Registry, options: DiffOptions | None
         if (ea is not None and eb is not None and ea.value == eb.value
                 and (same_comments or a.comments.get(key) == b.comments.get(key))):
             continue  # the same text is the same value, whatever the parameter
-        spec = spec_for(key, kind, registry, (ea or eb).key)  # type: ignore[union-attr]
+        spec = spec_for(key, kind, registry, ea.key if ea is not None else eb.key if eb is not None else None)
         pid = spec.id if spec else None
         va = effective(ea, spec) if ea is not None else None
         vb = effective(eb, spec) if eb is not None else None
