@@ -36,6 +36,7 @@ from zero.rules.suppress import apply_directives, parse_comment_directives
 
 if TYPE_CHECKING:  # start-up: linting a list loads neither the machine model nor the structured forms
     from zero.machine.model import Machine
+    from zero.structured.common import Found
     from zero.structured.tree import Tree
 
 LIST_SUFFIXES = (".lis", ".lst")
@@ -109,8 +110,9 @@ def lint_bytes(data: bytes, registry: Registry, path: str = "-",
 
 
 def lint_tree(tree: Tree, registry: Registry, options: LintOptions | None = None,
-              source: str | None = None) -> LintResult:
-    """Lint the list a tree makes; findings point at the structured file where known."""
+              source: str | None = None, json_source: bool = False) -> LintResult:
+    """Lint the list a tree makes; findings point at the structured file where known (in JSON,
+    which its reader does not locate, found in ``source`` when there are findings)."""
     from zero.structured.tree import encode_list, structured_path, to_list_text  # start-up: not for lists
 
     written = to_list_text(tree)
@@ -131,9 +133,18 @@ def lint_tree(tree: Tree, registry: Registry, options: LintOptions | None = None
         at = f"line {other.line}" if other.line else "the entry"
         return f"{at} (`{structured_path(other.path)}`)"
 
+    positions: dict[tuple[str, ...], Found] | None = None
     out = []
     for d in result.diagnostics:
         leaf = written.lines_of.get(d.span.line)
+        if leaf is not None and leaf.line is None and json_source and source is not None:
+            if positions is None:
+                from zero.structured.json import scan_json  # start-up: only a JSON file with findings
+
+                positions = scan_json(source)
+            at = positions.get(leaf.path)
+            if at is not None:
+                leaf = replace(leaf, line=at.line, column=at.column)
         if leaf is None:
             span = Span(1, 1, 1, 1)
             message = f"(list line {d.span.line}) {d.message}"
@@ -154,7 +165,7 @@ def lint_structured(data: bytes, fmt: str, registry: Registry, path: str = "-",
 
     tree = read_tree(data, fmt, registry, path)
     source = data.decode("utf-8", "replace").lstrip("\ufeff")
-    return lint_tree(tree, registry, options, source)
+    return lint_tree(tree, registry, options, source, fmt == "json")
 
 
 def lint_program(data: bytes, registry: Registry, path: str = "-", options: LintOptions | None = None,

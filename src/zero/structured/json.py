@@ -66,7 +66,8 @@ _TOKEN = re.compile(r'"(?:[^"\\]|\\.)*"|[{}\[\]:,]|[^\s{}\[\]:,"]+')
 def scan_json(text: str) -> dict[tuple[str, ...], Found]:
     """The line and column (1-based; a string's first character after its quote) of every value,
     by its key path: JSON readers give none, and findings belong where the value is written.
-    For text ``json.loads`` has read (so its tokens are well formed)."""
+    For text ``json.loads`` has read (so its tokens are well formed). A pass over every token (as
+    long as reading the file): only for a file that has findings to place."""
     found: dict[tuple[str, ...], Found] = {}
     newlines = [m.start() for m in re.finditer("\n", text)]
     # each open container: [its path, "{" or "[", the key read and not yet given a value, next index]
@@ -117,7 +118,7 @@ def read_json(text: str, path: str = "-") -> Tree:
     if not isinstance(data, dict):
         raise ZeroError("the top level must be an object of keys, not a "
                            + type(data).__name__, path)
-    leaves, meta = walk_mapping(data, path, scan_json(text))
+    leaves, meta = walk_mapping(data, path, None)  # positions: scan_json, when a finding needs them
     tail: list[str] = []
     if isinstance(meta, dict):
         comments = meta.pop("comments", None)
