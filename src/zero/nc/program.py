@@ -41,34 +41,6 @@ def _blank_strings(line: str) -> str:
     return re.sub(r'"[^"]*"?', lambda m: '"' + " " * (len(m.group()) - 1), line)
 
 
-def strip_comments(line: str) -> str:
-    """The line with ``( … )`` and ``; …`` comments blanked (columns kept), strings kept."""
-    out = []
-    depth = 0
-    in_str = False
-    for ch in line:
-        if in_str:
-            out.append(ch)
-            in_str = ch != '"'
-            continue
-        if depth:
-            depth += ch == "("
-            depth -= ch == ")"
-            out.append(" ")
-            continue
-        if ch == '"':
-            in_str = True
-            out.append(ch)
-        elif ch == "(":
-            depth = 1
-            out.append(" ")
-        elif ch == ";":
-            break
-        else:
-            out.append(ch)
-    return "".join(out)
-
-
 def comment_spans(line: str) -> list[tuple[int, str]]:
     """The comments of a program line as (0-based column, text with its delimiters): ``( … )``
     (nested parentheses inside), and ``; …`` to the end; what is in double quotes is no comment."""
@@ -93,6 +65,13 @@ def comment_spans(line: str) -> list[tuple[int, str]]:
     if depth:  # not closed: to the end of the line
         out.append((start, line[start:]))
     return out
+
+
+def strip_comments(line: str) -> str:
+    """The line with ``( … )`` and ``; …`` comments blanked (columns kept), strings kept."""
+    for start, text in reversed(comment_spans(line)):
+        line = line[:start] if text.startswith(";") else line[:start] + " " * len(text) + line[start + len(text):]
+    return line
 
 
 def _closing(text: str, start: int) -> int:
