@@ -30,12 +30,12 @@ from lsp_support import (  # noqa: E402
     change_document,
     close_document,
     codes,
-    full_zero_list,
     open_document,
     session,
 )
 from lsprotocol import types  # noqa: E402
 from pytest_lsp import LanguageClient  # noqa: E402
+from workloads import full_zero_list  # noqa: E402
 
 CORPUS = ROOT.parent / "shared" / "corpus"
 ROUNDS = 7
@@ -95,7 +95,7 @@ async def main(rounds: int) -> None:
     with tempfile.TemporaryDirectory() as tmp:
         folder = Path(tmp)
         async for client in session(folder / "cache", options={"debounce": 0}):
-            text = full_zero_list()
+            text = full_zero_list().decode()
             lines = text.split("\n")
             target = next(i for i, x in enumerate(lines) if x.startswith("np_grp[50].achse[7].inaktiv"))
 

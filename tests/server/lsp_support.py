@@ -177,18 +177,3 @@ def apply_edits(text: str, edits: list[types.TextEdit]) -> str:
         text = text[: offset(e.range.start)] + e.new_text + text[offset(e.range.end):]
         lines = text.split("\n")
     return text
-
-
-def full_zero_list() -> str:
-    """97 groups x 32 axes x (versch, inaktiv) = 6,208 entries (+2), in the vendor's layout with every
-    comment style: the list ``benchmarks/workloads.py`` builds for the benchmarks."""
-    lines = ["# zero-offset list (generated)", "#", "g53_verfuegbar".ljust(54) + "1", "default_index".ljust(54) + "1"]
-    for i in range(97):
-        lines.append(f"# G159 = {i}")
-        for j in range(32):
-            lines.append(f"np_grp[{i}].achse[{j}].versch".ljust(54) + f"{i * 1000 + j}".ljust(14)
-                         + "( P-ZERO-00003 : offset")
-            style = ("# active", "/* 0 */ ( on", "( P-ZERO-00004")[j % 3]
-            lines.append(f"np_grp[{i}].achse[{j}].inaktiv".ljust(54) + "0".ljust(14) + style)
-    lines.append("Ende")
-    return "\n".join(lines) + "\n"

@@ -6,14 +6,20 @@ edit, and every request answers on it. How long each takes is measured by
 
 from __future__ import annotations
 
+import sys
 from collections.abc import AsyncIterator
 from pathlib import Path
 
 import pytest
 import pytest_asyncio
-from lsp_support import change_document, close_document, codes, full_zero_list, open_document, session
+from lsp_support import change_document, close_document, codes, open_document, session
 from lsprotocol import types
 from pytest_lsp import LanguageClient
+
+from conftest import ROOT
+
+sys.path.insert(0, str(ROOT / "benchmarks"))
+from workloads import full_zero_list
 
 pytestmark = [pytest.mark.slow, pytest.mark.asyncio(loop_scope="module")]
 
@@ -25,7 +31,7 @@ async def client(tmp_path_factory: pytest.TempPathFactory) -> AsyncIterator[Lang
 
 
 async def test_the_6208_entry_zero_list_is_served(client: LanguageClient, tmp_path: Path) -> None:
-    text = full_zero_list()
+    text = full_zero_list().decode()
     assert text.count(".versch ") + text.count(".inaktiv ") == 6208
     path = tmp_path / "nullp.lis"
     assert codes(await open_document(client, path, text)) == []
