@@ -8,7 +8,8 @@ character), so a span of width zero marks a position between two characters.
 from __future__ import annotations
 
 import enum
-from dataclasses import dataclass, field
+
+from zero.records import field, record
 
 
 class Severity(enum.IntEnum):
@@ -30,7 +31,7 @@ class Severity(enum.IntEnum):
             raise ValueError(f"unknown severity {text!r} (use error, warning or info)") from None
 
 
-@dataclass(frozen=True, slots=True)
+@record(frozen=True)
 class Span:
     """A region of a file: 1-based line and column, end column exclusive."""
 
@@ -45,7 +46,7 @@ class Span:
         return cls(line, start + 1, line, max(end, start) + 1)
 
 
-@dataclass(frozen=True, slots=True)
+@record(frozen=True)
 class Edit:
     """Replace the text of ``span`` with ``replacement``."""
 
@@ -53,7 +54,7 @@ class Edit:
     replacement: str
 
 
-@dataclass(frozen=True, slots=True)
+@record(frozen=True)
 class Fix:
     """A change that resolves a finding. ``safe`` fixes keep what the controller reads."""
 
@@ -78,7 +79,7 @@ class Fix:
         }
 
 
-@dataclass(frozen=True, slots=True)
+@record(frozen=True)
 class Related:
     """Another place a finding is about, e.g. the earlier entry a duplicate overwrites; ``path``
     ``None`` is the finding's own file."""
@@ -88,7 +89,7 @@ class Related:
     path: str | None = None
 
 
-@dataclass(frozen=True, slots=True)
+@record(frozen=True)
 class Diagnostic:
     """One finding. ``hint`` is a one-line suggestion shown under the source line."""
 

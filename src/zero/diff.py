@@ -10,7 +10,6 @@ has the same effective value and is shown only with ``strict``.
 from __future__ import annotations
 
 import re
-from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
@@ -20,13 +19,14 @@ from zero.catalog.values import default_number, parse_int, read_value
 from zero.errors import ZeroError
 from zero.lists.model import Comment, Entry, Key, ValueKind, parse_key
 from zero.lists.tokenizer import tokenize
+from zero.records import field, record
 from zero.structured.formats import read_tree
 from zero.structured.tree import encode_list, to_list_text
 
 ADDED, REMOVED, CHANGED, SAME, COMMENT = "added", "removed", "changed", "same", "comment"
 
 
-@dataclass(slots=True)
+@record
 class Side:
     """One file as the controller reads it: effective entries by key."""
 
@@ -36,7 +36,7 @@ class Side:
     comments: dict[str, tuple[str, ...]] = field(default_factory=dict)  # key → comments near it
 
 
-@dataclass(slots=True)
+@record
 class Change:
     key: str
     param_id: str | None
@@ -198,7 +198,7 @@ def _sort_key(key: str) -> tuple[Any, ...]:
 # ----------------------------------------------------------------- the diff
 
 
-@dataclass(slots=True)
+@record
 class DiffOptions:
     strict: bool = False  # also show default vs absent and respelled equal values
     comments: bool = False  # comment changes count

@@ -21,7 +21,8 @@ from __future__ import annotations
 
 import re
 from collections.abc import Callable
-from dataclasses import dataclass
+
+from zero.records import record
 
 TYPE_LIMITS: dict[str, tuple[float, float]] = {
     "BOOLEAN": (0, 1),
@@ -43,7 +44,7 @@ Number = int | float
 Resolver = Callable[[str, "int | None"], "Number | None"]
 
 
-@dataclass(frozen=True, slots=True)
+@record(frozen=True)
 class Num:
     value: Number
 
@@ -54,7 +55,7 @@ class Num:
         return str(self.value)
 
 
-@dataclass(frozen=True, slots=True)
+@record(frozen=True)
 class Limit:
     """``MIN(TYPE)`` or ``MAX(TYPE)``."""
 
@@ -71,7 +72,7 @@ class Limit:
         return f"{self.which}({self.type})"
 
 
-@dataclass(frozen=True, slots=True)
+@record(frozen=True)
 class Ref:
     """Another parameter's value: ``P-AXIS-00008`` or ``P-AXIS-00209.1``."""
 
@@ -85,7 +86,7 @@ class Ref:
         return self.id if self.index is None else f"{self.id}.{self.index}"
 
 
-@dataclass(frozen=True, slots=True)
+@record(frozen=True)
 class BinOp:
     op: str
     left: Expr
@@ -106,7 +107,7 @@ class BinOp:
         return f"{self.left}{self.op}{self.right}"
 
 
-@dataclass(frozen=True, slots=True)
+@record(frozen=True)
 class Neg:
     operand: Expr
 
@@ -121,7 +122,7 @@ class Neg:
 Expr = Num | Limit | Ref | BinOp | Neg
 
 
-@dataclass(frozen=True, slots=True)
+@record(frozen=True)
 class Bounds:
     """Evaluated limits: ``None`` where a side is open or could not be resolved."""
 
@@ -138,7 +139,7 @@ class Bounds:
         )
 
 
-@dataclass(frozen=True, slots=True)
+@record(frozen=True)
 class Range:
     """A parsed range: bounds, or an explicit set of allowed values."""
 

@@ -15,11 +15,11 @@ from __future__ import annotations
 import json
 from collections import Counter
 from collections.abc import Iterable, Iterator, Mapping
-from dataclasses import dataclass, field
 from pathlib import Path
 from typing import Any
 
 from zero.catalog.ranges import Range, parse_range
+from zero.records import field, record
 
 _DATA = Path(__file__).resolve().parent / "data"
 NO_DEFAULT = ("", "-", "--", "----")  # how the catalogue writes "no default documented"
@@ -65,7 +65,7 @@ def kind_from_name(text: str) -> str | None:
     return _NAME_TO_KIND.get(t.lower())
 
 
-@dataclass(slots=True)
+@record
 class ParamSpec:
     """Everything zero knows about one parameter."""
 
@@ -163,7 +163,7 @@ class SpecTable(Mapping[str, "ParamSpec"]):
                 yield pid, row["kind"], row["key"]
 
 
-@dataclass(slots=True)
+@record
 class Registry:
     """Lookup by ID and by concrete key, per list kind."""
 

@@ -10,17 +10,17 @@ and ``zero diff`` all read values through this module.
 
 from __future__ import annotations
 
-from dataclasses import dataclass, field
 from typing import TypeVar
 
 from zero.catalog.ranges import TYPE_LIMITS, Number
 from zero.catalog.registry import INTEGER_TYPES, NO_DEFAULT, ParamSpec, Registry
 from zero.lists.model import Document, Entry, ValueKind
+from zero.records import field, record
 
 __all__ = ["NO_DEFAULT", "ListValues", "Resolved", "Value", "default_number", "parse_int", "read_value"]
 
 
-@dataclass(slots=True)
+@record
 class Value:
     """An entry's value as the controller reads it for its parameter."""
 
@@ -31,7 +31,7 @@ class Value:
     detail: str = ""
 
 
-@dataclass(slots=True)
+@record
 class Resolved:
     """An entry bound to its parameter."""
 
@@ -165,7 +165,7 @@ def read_value(spec: ParamSpec, entry: Entry) -> Value:
 _V = TypeVar("_V", bound="ListValues")
 
 
-@dataclass(slots=True)
+@record
 class ListValues:
     """The entries of one list bound to their parameters, and the values the controller uses."""
 

@@ -10,14 +10,15 @@ gives the same result or the error message.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
 from pathlib import Path
 from typing import Literal
+
+from zero.records import record
 
 OUTPUT_FORMATS = ("text", "concise", "json", "github", "gitlab", "junit", "sarif")
 
 
-@dataclass(frozen=True, slots=True)
+@record(frozen=True)
 class Option:
     dest: str  # the keyword of zero.cli.run.lint
     flags: tuple[str, ...]  # long name first

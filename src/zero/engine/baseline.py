@@ -11,18 +11,18 @@ be suppressed on their line and are counted, not hidden.
 from __future__ import annotations
 
 import re
-from dataclasses import dataclass
 
 from zero.engine.lint import LintResult
 from zero.lists.encoding import document_bytes
 from zero.lists.model import CommentStyle, Entry
+from zero.records import record
 
 _NOQA_CODES = re.compile(r"noqa\s*:\s*([A-Z][0-9A-Z]*(?:[\s,]+[A-Z][0-9A-Z]*)*)", re.IGNORECASE)
 
 NOT_RECORDED = ("Z001", "Z002")  # findings about suppressions themselves
 
 
-@dataclass(slots=True)
+@record
 class Baseline:
     data: bytes
     added: int  # lines that got a directive

@@ -10,7 +10,6 @@ works (a patch, "3 fixes applied") goes through an :class:`Echo`.
 from __future__ import annotations
 
 from collections.abc import Callable, Sequence
-from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING
 
@@ -32,6 +31,7 @@ from zero.engine.lint import (
 from zero.engine.parallel import lint_many
 from zero.errors import ZeroError
 from zero.files import read_file, write_atomic
+from zero.records import field, record
 from zero.rules import RULES
 
 if TYPE_CHECKING:  # start-up: `zero lint` of lists loads no machine model, fixer or formatter
@@ -41,7 +41,7 @@ Registries = Callable[[Path | None], Registry]
 Progress = Callable[[int, int], None]
 
 
-@dataclass(slots=True)
+@record
 class Echo:
     """Where a command's streamed text goes (standard output and error on the command line)."""
 
@@ -80,7 +80,7 @@ def param_desc_of(config: Config, given: str | Path | None) -> Path | None:
 # ------------------------------------------------------------------------------ lint
 
 
-@dataclass(slots=True)
+@record
 class LintRequest:
     """What ``zero lint`` was asked to do (option names as on the command line)."""
 
@@ -106,7 +106,7 @@ class LintRequest:
         return paths in ([], ["-"]) and (self.stdin_filename is not None or paths == ["-"])
 
 
-@dataclass(slots=True)
+@record
 class LintRun:
     results: list[LintResult] = field(default_factory=list)
     report: bool = True  # False: nothing to report (standard input excluded by the configuration)
@@ -271,7 +271,7 @@ def _add_noqa(path: Path, result: LintResult, options: LintOptions, registry: Re
 # ---------------------------------------------------------------------------- format
 
 
-@dataclass(slots=True)
+@record
 class FormatRun:
     files: int = 0
     changed: int = 0

@@ -36,7 +36,6 @@ from __future__ import annotations
 import functools
 import os
 import re
-from dataclasses import dataclass, field
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
@@ -46,6 +45,7 @@ from zero.engine.lint import LintOptions
 from zero.errors import ZeroError
 from zero.files import read_file
 from zero.lists.model import parse_key
+from zero.records import field, record
 from zero.rules import RULES
 
 if TYPE_CHECKING:
@@ -91,7 +91,7 @@ def _resolved(file: Path) -> Path:
     return file.parent.resolve() / file.name
 
 
-@dataclass(slots=True)
+@record
 class Config:
     path: Path | None = None  # the file it came from; None: defaults
     select: tuple[str, ...] = ()

@@ -9,7 +9,6 @@ writes the results (atomically, never over an input) once every input converted.
 from __future__ import annotations
 
 from collections.abc import Callable, Sequence
-from dataclasses import dataclass, field
 from pathlib import Path
 
 from zero.catalog.registry import Registry
@@ -17,11 +16,12 @@ from zero.diagnostics import Severity
 from zero.engine.lint import LintResult, lint_tree
 from zero.errors import ZeroError
 from zero.files import read_file, write_atomic
+from zero.records import field, record
 from zero.structured.formats import EXTENSION, format_of, read_tree, write_tree
 from zero.structured.tree import Tree
 
 
-@dataclass(slots=True)
+@record
 class Conversion:
     output: bytes
     tree: Tree
@@ -72,7 +72,7 @@ def source_format(given: str | None, path: str) -> str:
     return fmt
 
 
-@dataclass(slots=True)
+@record
 class ConvertItem:
     """One input of ``zero convert``: its output, or why there is none."""
 

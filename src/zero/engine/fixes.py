@@ -9,7 +9,6 @@ from __future__ import annotations
 
 import difflib
 import os
-from dataclasses import dataclass
 
 from zero.catalog.registry import Registry
 from zero.diagnostics import Diagnostic, Edit
@@ -17,6 +16,7 @@ from zero.engine.lint import LintOptions, LintResult, lint_document
 from zero.lists.encoding import document_bytes
 from zero.lists.model import Document
 from zero.lists.tokenizer import tokenize
+from zero.records import record
 
 MAX_PASSES = 8
 
@@ -49,7 +49,7 @@ def _fixable(diagnostics: list[Diagnostic], unsafe: bool) -> list[Edit]:
     return [e for d in diagnostics if d.fix is not None and (d.fix.safe or unsafe) for e in d.fix.edits]
 
 
-@dataclass(slots=True)
+@record
 class FixResult:
     original: bytes
     fixed: bytes

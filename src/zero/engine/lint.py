@@ -12,7 +12,6 @@ from __future__ import annotations
 
 import re
 from collections.abc import Sequence
-from dataclasses import dataclass, field, replace
 from pathlib import Path
 from typing import TYPE_CHECKING
 
@@ -22,6 +21,7 @@ from zero.errors import ZeroError
 from zero.files import read_file
 from zero.lists.model import Document
 from zero.lists.tokenizer import tokenize
+from zero.records import field, record, replace
 from zero.rules import (
     MACHINE_CHECKS,
     PROGRAM_CHECKS,
@@ -44,7 +44,7 @@ PROGRAM_SUFFIXES = (".nc", ".mpf", ".spf")  # NC programs (zero.nc)
 STRUCTURED_SUFFIXES = {".yaml": "yaml", ".yml": "yaml", ".toml": "toml", ".json": "json"}
 
 
-@dataclass(slots=True)
+@record
 class LintOptions:
     select: tuple[str, ...] = ()  # code prefixes; empty = all
     ignore: tuple[str, ...] = ()
@@ -53,7 +53,7 @@ class LintOptions:
     extend_select: tuple[str, ...] = ()  # codes or prefixes added to the selection
 
 
-@dataclass(slots=True)
+@record
 class LintResult:
     path: str
     document: Document

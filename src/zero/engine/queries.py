@@ -8,7 +8,6 @@ path does not load what only these commands need.
 from __future__ import annotations
 
 from collections.abc import Callable, Sequence
-from dataclasses import dataclass, field
 from pathlib import Path
 
 from zero.catalog.registry import Registry
@@ -21,6 +20,7 @@ from zero.files import read_file
 from zero.machine.effective import Scope, effective, entries_of, summary
 from zero.machine.limits import Ip247Violation, LimitRow, ip247, pcs_limits
 from zero.machine.model import Machine, load_machine
+from zero.records import field, record
 
 
 def load_side(name: str, fmt: str | None, kind: str | None, registry: Registry,
@@ -31,7 +31,7 @@ def load_side(name: str, fmt: str | None, kind: str | None, registry: Registry,
     return read_side(data, src, name, registry, kind)
 
 
-@dataclass(slots=True)
+@record
 class DiffRun:
     changes: list[Change]
     header: str
@@ -94,7 +94,7 @@ def _diff_machines(a: Path, b: Path, registry: Registry, options: DiffOptions) -
 # ---------------------------------------------------------------------------- limits
 
 
-@dataclass(slots=True)
+@record
 class LimitsRun:
     rows: list[LimitRow]
     violations: list[Ip247Violation] = field(default_factory=list)
@@ -123,7 +123,7 @@ def run_limits(machine: Path | None, registries: Registries, all_groups: bool = 
     return LimitsRun(pcs_limits(m, all_groups), ip247(m) if profile == "ip247" else [])
 
 
-@dataclass(slots=True)
+@record
 class EffectiveRun:
     summary: dict[str, object]
     scopes: list[Scope]

@@ -9,7 +9,8 @@ from __future__ import annotations
 
 import enum
 import re
-from dataclasses import dataclass, field
+
+from zero.records import field, record
 
 # An index with more digits than this is not converted to an int: it is clamped
 # to HUGE_INDEX, which lies beyond every array size, and reported as such.
@@ -39,13 +40,13 @@ class CommentStyle(enum.Enum):
     TEXT = "text"  # plain words after a value
 
 
-@dataclass(slots=True, unsafe_hash=True)
+@record(unsafe_hash=True)
 class Key:
     """A parameter key such as ``np_grp[5].achse[2].versch``.
 
     ``pattern`` has the indices removed (``np_grp[].achse[].versch``), which is
     how the registry spells keys; ``indices`` holds them in order. Treat it as immutable
-    (not frozen only because a frozen dataclass costs three times as much to build, and a
+    (not frozen only because a frozen record costs three times as much to build, and a
     big list builds one per entry).
     """
 
@@ -109,7 +110,7 @@ def format_key(pattern: str, indices: tuple[int, ...] | list[int]) -> str:
     return "".join(out)
 
 
-@dataclass(slots=True, eq=False)
+@record(eq=False)
 class Entry:
     """``KEY VALUE [COMMENT]`` on one line.
 
@@ -136,7 +137,7 @@ class Entry:
     after_end: bool = False
 
 
-@dataclass(slots=True, eq=False)
+@record(eq=False)
 class Comment:
     """A full-line comment. ``commented_out`` holds a ``#key value`` entry."""
 
@@ -145,12 +146,12 @@ class Comment:
     commented_out: Entry | None = None
 
 
-@dataclass(slots=True, eq=False)
+@record(eq=False)
 class Blank:
     line: int
 
 
-@dataclass(slots=True, eq=False)
+@record(eq=False)
 class End:
     """The ``Ende`` line: the controller stops reading here."""
 
@@ -158,7 +159,7 @@ class End:
     start: int
 
 
-@dataclass(slots=True, eq=False)
+@record(eq=False)
 class Invalid:
     """A line that is no entry, comment or blank line."""
 
@@ -169,7 +170,7 @@ class Invalid:
 Item = Entry | Comment | Blank | End | Invalid
 
 
-@dataclass(frozen=True, slots=True)
+@record(frozen=True)
 class Problem:
     """A fault the tokenizer saw, named by ``kind``; :mod:`zero.rules` gives it a code."""
 
@@ -180,7 +181,7 @@ class Problem:
     detail: str = ""
 
 
-@dataclass(slots=True, eq=False)
+@record(eq=False)
 class Document:
     """A whole list file as read: its lines, items, encoding and line endings."""
 
@@ -214,7 +215,7 @@ class Document:
         return 1 <= line <= len(self.lines)
 
 
-@dataclass(slots=True, eq=False)
+@record(eq=False)
 class Excerpt(Document):
     """A document reduced to the lines its findings show: what a report of many files keeps of
     each, so that memory grows with the findings, not with the files' lines."""

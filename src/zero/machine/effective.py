@@ -11,17 +11,17 @@ from __future__ import annotations
 
 import fnmatch
 from collections.abc import Sequence
-from dataclasses import dataclass, field
 
 from zero.catalog.registry import NO_DEFAULT, ParamSpec
 from zero.catalog.values import ListValues
 from zero.lists.model import Entry, format_key, parse_key
 from zero.machine.model import ListFile, Machine
+from zero.records import field, record
 
 LIST, DEFAULT_LIST, CATALOGUE, NOT_SET = "list", "default list", "catalogue default", "not set"
 
 
-@dataclass(frozen=True, slots=True)
+@record(frozen=True)
 class Origin:
     """Where a value comes from: a line of a list, or the catalogue."""
 
@@ -39,7 +39,7 @@ class Origin:
         return {"source": self.source, "path": self.path, "line": self.line}
 
 
-@dataclass(frozen=True, slots=True)
+@record(frozen=True)
 class Value:
     key: str
     param_id: str | None
@@ -55,7 +55,7 @@ class Value:
         return out
 
 
-@dataclass(slots=True)
+@record
 class Scope:
     """One list of the machine and its effective values."""
 

@@ -8,8 +8,6 @@ limits and soft limits plus tool offsets to ±99.999999 m.
 
 from __future__ import annotations
 
-from dataclasses import dataclass
-
 from zero.catalog.ids import (
     G53_AVAILABLE,
     INACTIVE,
@@ -24,9 +22,10 @@ from zero.catalog.ids import (
     in_units,
 )
 from zero.machine.model import Machine
+from zero.records import record
 
 
-@dataclass(slots=True)
+@record
 class LimitRow:
     channel: int
     group: int
@@ -86,7 +85,7 @@ def pcs_limits(machine: Machine, all_groups: bool = False) -> list[LimitRow]:
     return rows
 
 
-@dataclass(slots=True)
+@record
 class Ip247Violation:
     what: str
     value: Number

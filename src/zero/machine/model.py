@@ -20,7 +20,6 @@ from __future__ import annotations
 
 import os
 from collections.abc import Callable
-from dataclasses import dataclass, field
 from pathlib import Path
 
 from zero.catalog.ids import (
@@ -44,13 +43,14 @@ from zero.errors import ZeroError
 from zero.files import read_file
 from zero.lists.model import Entry
 from zero.lists.tokenizer import tokenize
+from zero.records import field, record
 
 # Soft limits the controller uses when no list sets them (±10 m, the catalogue default).
 DEFAULT_SOFT_LIMIT = 100_000_000
 MAX_ANCESTORS = 4  # how far above the start-up list the working directory is looked for
 
 
-@dataclass(frozen=True, slots=True)
+@record(frozen=True)
 class Reference:
     """A start-up key that names a list, as the catalogue documents it."""
 
@@ -82,7 +82,7 @@ BY_KEY = {r.key: r for r in REFERENCES}
 COUNT_KEYS = {CHANNELS: "kanal_anzahl", AXIS_LISTS: "zahl_mds", COMP_LISTS: "zahl_kw"}
 
 
-@dataclass(slots=True)
+@record
 class ListFile:
     """One list of the machine with the values the controller takes from it (the default
     list's under this list's, where there is one)."""
@@ -104,7 +104,7 @@ class ListFile:
         return layer.entry_of(pid, indices) if layer is self.values else None
 
 
-@dataclass(slots=True)
+@record
 class Named:
     """A list reference of the start-up list and what became of it."""
 
@@ -118,7 +118,7 @@ class Named:
     reason: str = ""
 
 
-@dataclass(slots=True)
+@record
 class Axis:
     nr: int  # logical axis number (kopf.achs_nr)
     name: str
@@ -132,7 +132,7 @@ class Axis:
         return "°" if self.rotary else "mm"
 
 
-@dataclass(slots=True)
+@record
 class ChannelAxis:
     index: int  # j in np_grp[i].achse[j]
     log_nr: int
@@ -141,7 +141,7 @@ class ChannelAxis:
     source: Path | None = None  # the list that entry is in (the channel list or its default list)
 
 
-@dataclass(slots=True)
+@record
 class Channel:
     index: int
     lists: ListFile | None  # the channel list
@@ -151,7 +151,7 @@ class Channel:
     others: dict[str, ListFile] = field(default_factory=dict)  # pzv_data, ve_var by key pattern
 
 
-@dataclass(slots=True)
+@record
 class Missing:
     key: str
     raw: str  # the path as written
@@ -160,7 +160,7 @@ class Missing:
     consequence: str = ""
 
 
-@dataclass(slots=True)
+@record
 class Machine:
     startup: ListFile
     workdir: Path = Path(".")

@@ -17,11 +17,11 @@ not) and ``; …`` are skipped, strings in double quotes are kept whole.
 from __future__ import annotations
 
 import re
-from dataclasses import dataclass, field
 
 from zero.catalog.registry import Registry
 from zero.lists.encoding import decode
 from zero.lists.model import Document
+from zero.records import field, record
 
 _MACHINE_DATA_RE = re.compile(r"#\s*MACHINE\s+DATA\b", re.IGNORECASE)
 _WORD_RE = re.compile(r"(?<![A-Za-z_#$.])([A-Z])\s*(=?)\s*([+-]?(?:[0-9]+\.?[0-9]*|\.[0-9]+))", re.IGNORECASE)
@@ -87,7 +87,7 @@ def _closing(text: str, start: int) -> int:
     return -1
 
 
-@dataclass(slots=True)
+@record
 class MachineData:
     line: int
     start: int
@@ -166,7 +166,7 @@ def parse_machine_data(text: str, line: int, start: int, registry: Registry) -> 
     return md
 
 
-@dataclass(slots=True)
+@record
 class SoftLimit:
     line: int
     start: int
@@ -177,7 +177,7 @@ class SoftLimit:
     value: float  # programmed, in mm / degrees
 
 
-@dataclass(slots=True)
+@record
 class Program:
     """An NC program as zero reads it: its lines (for reports) and the constructs it checks."""
 

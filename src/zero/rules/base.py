@@ -18,12 +18,12 @@ from __future__ import annotations
 
 import re
 from collections.abc import Callable, Iterator
-from dataclasses import dataclass, field
 from typing import TYPE_CHECKING, Generic, Literal, TypeVar
 
 from zero.catalog.registry import Registry
 from zero.catalog.values import ListValues
 from zero.diagnostics import Diagnostic, Fix, Related, Severity, Span
+from zero.records import field, record
 
 if TYPE_CHECKING:  # start-up: a list's lint does not load the machine and program models
     from zero.machine.model import Machine
@@ -33,7 +33,7 @@ Scope = Literal["list", "machine", "program", "suppression", "file"]
 E, W, INFO = Severity.ERROR, Severity.WARNING, Severity.INFO
 
 
-@dataclass(frozen=True, slots=True)
+@record(frozen=True)
 class Rule:
     code: str
     name: str
@@ -89,7 +89,7 @@ def declared_codes() -> set[str]:
     return set(_defaults)
 
 
-@dataclass(slots=True)
+@record
 class Context(ListValues, Reporter):
     """One list as its checks see it: its values (:class:`ListValues`) and the selected codes."""
 
@@ -100,7 +100,7 @@ class Context(ListValues, Reporter):
         return self.doc.path
 
 
-@dataclass(slots=True)
+@record
 class MachineContext(Reporter):
     """A machine: its lists and axes; findings carry the path of the list they are about."""
 
@@ -110,7 +110,7 @@ class MachineContext(Reporter):
     path: str = "-"
 
 
-@dataclass(slots=True)
+@record
 class ProgramContext(Reporter):
     """An NC program, and the machine it runs on when one is known (N003/N004 need it)."""
 
@@ -124,7 +124,7 @@ class ProgramContext(Reporter):
 C = TypeVar("C", Context, MachineContext, ProgramContext)
 
 
-@dataclass(frozen=True, slots=True)
+@record(frozen=True)
 class Check(Generic[C]):
     """A check and the rules it reports (the engine skips it when none of them is selected)."""
 

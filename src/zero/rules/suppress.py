@@ -19,10 +19,10 @@ from __future__ import annotations
 
 import re
 from collections.abc import Iterable
-from dataclasses import dataclass, field
 
 from zero.diagnostics import Diagnostic, Severity, Span
 from zero.lists.model import Comment, Document, Entry
+from zero.records import field, record
 from zero.rules.base import Context, Family, W
 
 FAMILY: Family[Context] = Family("Z", "suppressions", "suppression")
@@ -58,7 +58,7 @@ _ZERO_RE = re.compile(r"^\s*#\s*zero\s*:\s*(?P<body>.*?)\s*$", re.IGNORECASE)
 _CODE_RE = re.compile(r"[A-Z][0-9]{0,3}")
 
 
-@dataclass(slots=True, eq=False)
+@record(eq=False)
 class Directive:
     line: int  # where it is written
     start: int  # 0-based columns of the directive text

@@ -18,7 +18,6 @@ import os
 import re
 from collections import OrderedDict
 from collections.abc import Mapping
-from dataclasses import dataclass, field, replace
 from pathlib import Path
 from urllib.parse import unquote, urlparse
 from urllib.request import url2pathname
@@ -43,6 +42,7 @@ from zero.files import max_file_bytes, read_file
 from zero.lists.encoding import decode
 from zero.lists.tokenizer import tokenize
 from zero.machine.model import ListFile, Machine, load_machine
+from zero.records import field, record, replace
 from zero.rules import MACHINE_CHECKS, MachineContext, run_checks
 
 LIST, PROGRAM, STRUCTURED = "list", "program", "structured"
@@ -53,7 +53,7 @@ _ZERO_RECORD = re.compile(r'^(?:_zero\s*:|\[\s*_zero\s*\]|\s*"_zero"\s*:)', re.M
 CLIENT_KEYS = ("path", "args", "trace")  # the editor extension's own settings, sent along
 
 
-@dataclass(slots=True)
+@record
 class Settings:
     """What the editor may set (``initializationOptions`` or ``workspace/didChangeConfiguration``,
     section ``zero``)."""
@@ -203,7 +203,7 @@ def source_bytes(path: Path | None, text: str) -> tuple[bytes, bool]:
     return data, data == disk
 
 
-@dataclass(slots=True)
+@record
 class Note:
     """Something to show that is no rule's finding: a configuration that cannot be read, a
     structured form that is not a list, a machine that cannot be built."""
@@ -222,7 +222,7 @@ def _place(exc: ZeroError) -> tuple[Path, int, int] | None:
     return Path(exc.path), exc.line or 1, exc.column or 1
 
 
-@dataclass(slots=True, eq=False)
+@record(eq=False)
 class Analysis:
     uri: str
     version: int | None

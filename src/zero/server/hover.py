@@ -14,7 +14,6 @@ from __future__ import annotations
 
 import os
 import re
-from dataclasses import dataclass
 from pathlib import Path
 
 from lsprotocol import types
@@ -26,6 +25,7 @@ from zero.catalog.values import ListValues, read_value
 from zero.lists.model import Comment, Entry, format_key, parse_key
 from zero.machine.effective import Origin, canonical, scope_values
 from zero.output.docs import param_text
+from zero.records import record
 from zero.server.documents import LIST, PROGRAM, STRUCTURED, Analysis
 
 _ID = re.compile(r"P-[A-Z]{4}-[0-9]{5}(?:\.([0-9]+))?")
@@ -39,7 +39,7 @@ MACHINE_DATA_TEXT = (
     "`AXPARAM` key and value valid for the axis list, `WAIT` only with `SYN` (rule N001).")
 
 
-@dataclass(slots=True)
+@record
 class Target:
     """What the cursor is on: a parameter, as a key (with indices) and maybe an entry."""
 

@@ -14,7 +14,6 @@ parameter (``P-AXIS-00212.0``) the entry that sets it, in this list or the defau
 from __future__ import annotations
 
 import os
-from dataclasses import dataclass, field
 from pathlib import Path
 
 import attrs
@@ -23,13 +22,14 @@ from lsprotocol import types
 from zero.catalog.ids import g_code_with_index
 from zero.lists.model import Entry, ValueKind, parse_key
 from zero.machine.model import BY_KEY, working_directory
+from zero.records import field, record
 from zero.server.documents import LIST, PROGRAM, STRUCTURED, Analysis, uri_of
 from zero.server.findings import line_range
 
 _KINDS = (types.SymbolKind.Namespace, types.SymbolKind.Object)
 
 
-@dataclass(slots=True)
+@record
 class _Group:
     name: str
     detail: str | None

@@ -9,10 +9,10 @@ import json
 import math
 import re
 from collections.abc import Iterator
-from dataclasses import dataclass, field
 from typing import Any
 
 from zero.errors import ZeroError
+from zero.records import field, record
 from zero.structured.tree import (
     FORMAT_VERSION,
     META_KEY,
@@ -61,7 +61,7 @@ def comment_suffix(after: str | None) -> str:
 
 
 
-@dataclass(slots=True)
+@record
 class Found:
     """Comments and position of one leaf, as a text scanner saw them."""
 

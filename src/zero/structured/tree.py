@@ -23,13 +23,13 @@ from __future__ import annotations
 import re
 from collections import Counter
 from collections.abc import Iterator
-from dataclasses import dataclass, field
 from typing import Any
 
 from zero.catalog.registry import Registry
 from zero.errors import ZeroError
 from zero.lists.model import Blank, Comment, Document, End, Entry, Invalid
 from zero.lists.tokenizer import scan_line
+from zero.records import field, record
 
 Scalar = int | float | str
 
@@ -47,7 +47,7 @@ _FRAGMENT_RE = re.compile(r"([A-Za-z_][A-Za-z0-9_]*)((?:\[[0-9]+\])*)")
 _UNCARRIABLE_RE = re.compile(r"[\x00-\x08\x0a-\x1f\x7f-\x9f\u2028\u2029\ud800-\udfff]")
 
 
-@dataclass(slots=True, eq=False)
+@record(eq=False)
 class Leaf:
     """One parameter in the structured form."""
 
@@ -61,7 +61,7 @@ class Leaf:
     native: str = "str"  # the reader's own type: int, float, str ("plain": YAML text without quotes)
 
 
-@dataclass(slots=True, eq=False)
+@record(eq=False)
 class Tree:
     leaves: list[Leaf]
     meta: dict[str, Any] = field(default_factory=dict)
@@ -145,7 +145,7 @@ def structured_path(path: tuple[str, ...]) -> str:
 # ------------------------------------------------------------------ nesting order
 
 
-@dataclass(slots=True)
+@record
 class _Node:
     children: dict[str, _Node | Leaf] = field(default_factory=dict)
 
@@ -472,7 +472,7 @@ def list_sequence(tree: Tree) -> list[Leaf | list[str]]:
     return out
 
 
-@dataclass(slots=True)
+@record
 class ListText:
     text: str
     lines_of: dict[int, Leaf]  # list line number → the leaf written there

@@ -1,0 +1,238 @@
+"""Record classes: the part of :mod:`dataclasses` zero uses, built without importing it.
+
+``dataclasses`` imports :mod:`inspect` (and with it ``ast``, ``dis`` and ``tokenize``: about
+10 ms) and compiles each method of each class. ``zero lint`` declares some forty records
+before it reads the first line, so a pre-commit run spent a third of its start-up there.
+:func:`record` compiles only ``__init__`` (which must be as fast as a dataclass's: a big list
+builds one record per line) and makes the other methods closures. It is marked
+``dataclass_transform``, so type checkers read a record exactly as they read a dataclass.
+
+What it builds, as ``@dataclass(slots=True, ...)`` does: ``__slots__`` (always),
+``__init__`` (calling ``__post_init__`` when the class has one), ``__repr__``, ``__eq__``
+(``eq=True``) over the fields that compare, ``__hash__`` (``frozen`` or ``unsafe_hash``;
+``None`` for a mutable record that compares), ``__setattr__``/``__delattr__`` refusing
+assignment with ``AttributeError`` (``frozen``, with pickle support), and
+``__match_args__``. A method the class writes itself is kept. Fields of record base classes
+come first, in order, as in dataclasses. :func:`replace` and :func:`fields` work on records.
+"""
+
+from __future__ import annotations
+
+from collections.abc import Callable
+from operator import attrgetter
+from typing import Any, TypeVar, dataclass_transform, overload
+
+__all__ = ["Field", "field", "fields", "record", "replace"]
+
+_T = TypeVar("_T")
+_FIELDS = "__record_fields__"
+
+
+class _Missing:
+    __slots__ = ()
+
+    def __repr__(self) -> str:
+        return "MISSING"
+
+
+MISSING: Any = _Missing()
+
+
+class Field:
+    """A field's declaration: its default (or factory) and whether it shows and compares."""
+
+    __slots__ = ("compare", "default", "default_factory", "name", "repr")
+
+    def __init__(self, default: Any = MISSING, default_factory: Any = MISSING, repr: bool = True,
+                 compare: bool = True) -> None:
+        self.name = ""
+        self.default = default
+        self.default_factory = default_factory
+        self.repr = repr
+        self.compare = compare
+
+    @property
+    def required(self) -> bool:
+        return self.default is MISSING and self.default_factory is MISSING
+
+    def __repr__(self) -> str:
+        return f"Field(name={self.name!r}, default={self.default!r}, factory={self.default_factory!r})"
+
+
+@overload
+def field(*, default: _T, repr: bool = ..., compare: bool = ...) -> _T: ...
+@overload
+def field(*, default_factory: Callable[[], _T], repr: bool = ..., compare: bool = ...) -> _T: ...
+@overload
+def field(*, repr: bool = ..., compare: bool = ...) -> Any: ...
+def field(*, default: Any = MISSING, default_factory: Any = MISSING, repr: bool = True,
+          compare: bool = True) -> Any:
+    """A field with a default, a default factory, or one that does not show or compare."""
+    if default is not MISSING and default_factory is not MISSING:
+        raise ValueError("a field cannot have both a default and a default factory")
+    return Field(default, default_factory, repr, compare)
+
+
+def fields(obj_or_cls: Any) -> tuple[Field, ...]:
+    """The fields of a record (class or instance), in ``__init__`` order."""
+    got: tuple[Field, ...] | None = getattr(obj_or_cls, _FIELDS, None)
+    if got is None:
+        raise TypeError(f"{obj_or_cls!r} is no record")
+    return got
+
+
+def replace(obj: _T, /, **changes: Any) -> _T:
+    """A copy of the record ``obj`` with ``changes`` applied, built through ``__init__``."""
+    for f in fields(obj):
+        if f.name not in changes:
+            changes[f.name] = getattr(obj, f.name)
+    return obj.__class__(**changes)
+
+
+def _is_classvar(annotation: object) -> bool:
+    text = annotation if isinstance(annotation, str) else getattr(annotation, "_name", "") or ""
+    return text.startswith(("ClassVar", "typing.ClassVar"))
+
+
+def _frozen_setattr(cls: type, names: frozenset[str]) -> tuple[Callable[..., None], Callable[..., None]]:
+    def __setattr__(self: Any, name: str, value: Any) -> None:
+        if type(self) is cls or name in names:
+            raise AttributeError(f"cannot assign to field {name!r} of a frozen record")
+        object.__setattr__(self, name, value)
+
+    def __delattr__(self: Any, name: str) -> None:
+        if type(self) is cls or name in names:
+            raise AttributeError(f"cannot delete field {name!r} of a frozen record")
+        object.__delattr__(self, name)
+
+    return __setattr__, __delattr__
+
+
+def _frozen_getstate(self: Any) -> tuple[Any, ...]:
+    return tuple(getattr(self, f.name) for f in fields(self))
+
+
+def _frozen_setstate(self: Any, state: tuple[Any, ...]) -> None:
+    for f, value in zip(fields(self), state, strict=True):
+        object.__setattr__(self, f.name, value)
+
+
+def _methods(shown: tuple[str, ...], compared: tuple[str, ...]) -> dict[str, Callable[..., Any]]:
+    """``__repr__``, ``__eq__`` and ``__hash__`` as closures: compiling them per class (what
+    dataclasses does) costs four times what compiling ``__init__`` alone costs."""
+    values = attrgetter(*compared) if compared else (lambda _: ())
+
+    def __repr__(self: Any) -> str:
+        inner = ", ".join(f"{name}={getattr(self, name)!r}" for name in shown)
+        return f"{self.__class__.__qualname__}({inner})"
+
+    def __eq__(self: Any, other: object) -> bool:
+        if other.__class__ is self.__class__:
+            return bool(values(self) == values(other))
+        return NotImplemented
+
+    def __hash__(self: Any) -> int:
+        return hash(values(self))
+
+    return {"__repr__": __repr__, "__eq__": __eq__, "__hash__": __hash__}
+
+
+def _build(cls: type, frozen: bool, eq: bool, unsafe_hash: bool) -> type:
+    own = cls.__dict__.get("__annotations__", {})  # noqa: RUF063 - inspect is what this module avoids
+    by_name: dict[str, Field] = {}
+    for base in reversed(cls.__mro__[1:]):
+        for f in base.__dict__.get(_FIELDS, ()):
+            by_name[f.name] = f
+    for name, annotation in own.items():
+        if _is_classvar(annotation):
+            continue
+        declared = cls.__dict__.get(name, MISSING)
+        f = declared if isinstance(declared, Field) else Field(default=declared)
+        f.name = name
+        by_name.pop(name, None)
+        by_name[name] = f
+    all_fields = tuple(by_name.values())
+    seen_default = False
+    for f in all_fields:
+        if f.required and seen_default:
+            raise TypeError(f"{cls.__name__}: field {f.name!r} without a default follows one with a default")
+        seen_default = seen_default or not f.required
+
+    body = dict(cls.__dict__)
+    for name, annotation in own.items():
+        if not _is_classvar(annotation):
+            body.pop(name, None)
+    body.pop("__dict__", None)
+    body.pop("__weakref__", None)
+    inherited = {s for base in cls.__mro__[1:-1] for s in base.__dict__.get("__slots__", ())}
+    body["__slots__"] = tuple(f.name for f in all_fields if f.name not in inherited)
+    body[_FIELDS] = all_fields
+    body["__match_args__"] = tuple(f.name for f in all_fields)
+
+    # The methods, written out and compiled in one go; defaults and factories are passed by name.
+    scope: dict[str, Any] = {"MISSING": MISSING, "__set": object.__setattr__}
+    params: list[str] = []
+    lines: list[str] = []
+    for f in all_fields:
+        n = f.name
+        if f.default_factory is not MISSING:
+            scope[f"__factory_{n}"] = f.default_factory
+            params.append(f"{n}=MISSING")
+            value = f"__factory_{n}() if {n} is MISSING else {n}"
+        elif f.default is not MISSING:
+            scope[f"__default_{n}"] = f.default
+            params.append(f"{n}=__default_{n}")
+            value = n
+        else:
+            params.append(n)
+            value = n
+        lines.append(f"    __set(self, {n!r}, {value})" if frozen else f"    self.{n} = {value}")
+    if "__post_init__" in body or any(hasattr(b, "__post_init__") for b in cls.__mro__[1:]):
+        lines.append("    self.__post_init__()")
+    source = [f"def __init__(self, {', '.join(params)}) -> None:", *(lines or ["    pass"])]
+    exec("\n".join(source), scope)  # the text is built above from field names only
+    methods = _methods(tuple(f.name for f in all_fields if f.repr),
+                       tuple(f.name for f in all_fields if f.compare))
+
+    def put(name: str, value: Any) -> None:
+        if name not in cls.__dict__:
+            body[name] = value
+
+    put("__init__", scope["__init__"])
+    put("__repr__", methods["__repr__"])
+    if eq:
+        put("__eq__", methods["__eq__"])
+    explicit_hash = "__hash__" in cls.__dict__ and not (
+        cls.__dict__["__hash__"] is None and "__eq__" in cls.__dict__)
+    if not explicit_hash:
+        if unsafe_hash or (eq and frozen):
+            body["__hash__"] = methods["__hash__"]
+        elif eq:
+            body["__hash__"] = None
+    if frozen:
+        put("__getstate__", _frozen_getstate)
+        put("__setstate__", _frozen_setstate)
+
+    new = type(cls)(cls.__name__, cls.__bases__, body)
+    new.__qualname__ = cls.__qualname__
+    if frozen:
+        setter, deleter = _frozen_setattr(new, frozenset(f.name for f in all_fields))
+        if "__setattr__" not in cls.__dict__:
+            new.__setattr__ = setter  # type: ignore[method-assign]
+        if "__delattr__" not in cls.__dict__:
+            new.__delattr__ = deleter  # type: ignore[method-assign]
+    return new
+
+
+@overload
+def record(cls: type[_T], /) -> type[_T]: ...
+@overload
+def record(*, frozen: bool = ..., eq: bool = ..., unsafe_hash: bool = ...) -> Callable[[type[_T]], type[_T]]: ...
+@dataclass_transform(field_specifiers=(field, Field))
+def record(cls: type[_T] | None = None, /, *, frozen: bool = False, eq: bool = True,
+           unsafe_hash: bool = False) -> type[_T] | Callable[[type[_T]], type[_T]]:
+    """Make ``cls`` a record with slots: ``@record`` or ``@record(frozen=True, ...)``."""
+    def wrap(c: type[_T]) -> type[_T]:
+        return _build(c, frozen, eq, unsafe_hash)
+
+    return wrap if cls is None else wrap(cls)

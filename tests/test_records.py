@@ -1,0 +1,148 @@
+"""zero.records behaves as the dataclasses it replaces: each case is declared both ways and
+compared, so a difference in semantics fails here rather than somewhere in a rule."""
+
+from __future__ import annotations
+
+import copy
+import dataclasses
+import pickle
+import subprocess
+import sys
+from typing import ClassVar
+
+import pytest
+
+from zero.records import field, fields, record, replace
+
+
+@record
+class Point:
+    x: int
+    y: int = 0
+    tags: list[str] = field(default_factory=list)
+    note: str | None = field(default=None, compare=False)
+    hidden: int = field(default=0, repr=False)
+    LIMIT: ClassVar[int] = 3
+
+
+@dataclasses.dataclass(slots=True)
+class PointDC:
+    x: int
+    y: int = 0
+    tags: list[str] = dataclasses.field(default_factory=list)
+    note: str | None = dataclasses.field(default=None, compare=False)
+    hidden: int = dataclasses.field(default=0, repr=False)
+    LIMIT: ClassVar[int] = 3
+
+
+@record(frozen=True)
+class Span:
+    line: int
+    column: int
+
+
+@record(eq=False)
+class Node:
+    name: str
+
+
+@record(unsafe_hash=True)
+class Key:
+    text: str
+    indices: tuple[int, ...] = ()
+
+
+@record
+class Base:
+    a: int
+    b: int = 1
+
+
+@record
+class Child(Base):
+    c: int = 2
+
+
+@record
+class Checked:
+    low: int
+    high: int
+    width: int = 0
+
+    def __post_init__(self) -> None:
+        self.width = self.high - self.low
+
+
+@record
+class Custom:
+    value: int
+
+    def __repr__(self) -> str:
+        return f"<{self.value}>"
+
+
+def test_init_defaults_and_factories_as_dataclasses() -> None:
+    ours, theirs = Point(1), PointDC(1)
+    assert (ours.x, ours.y, ours.tags, ours.note, ours.hidden) == (theirs.x, theirs.y, theirs.tags, theirs.note,
+                                                                     theirs.hidden)
+    assert Point(1).tags is not Point(1).tags  # a fresh list each time
+    assert Point(x=2, y=3, tags=["a"]).tags == ["a"]
+    assert Point.LIMIT == 3 and "LIMIT" not in [f.name for f in fields(Point)]
+    assert Point.__match_args__ == PointDC.__match_args__
+
+
+def test_repr_and_equality_as_dataclasses() -> None:
+    assert repr(Point(1, 2, ["t"], "n", 9)) == repr(PointDC(1, 2, ["t"], "n", 9)).replace("PointDC", "Point")
+    assert Point(1, note="a") == Point(1, note="b")  # note does not compare
+    assert Point(1) != Point(2)
+    assert Point(1) != PointDC(1)  # type: ignore[comparison-overlap]  # another class never compares equal
+    assert Point.__hash__ is None and PointDC.__hash__ is None  # mutable and compared: unhashable
+    assert Node("a") != Node("a") and len({Node("a"), Node("a")}) == 2  # eq=False: identity
+    assert Key("k", (1,)) == Key("k", (1,)) and len({Key("k", (1,)), Key("k", (1,))}) == 1
+    assert repr(Custom(3)) == "<3>"  # a method the class writes is kept
+
+
+def test_slots_and_no_dict() -> None:
+    p = Point(1)
+    assert not hasattr(p, "__dict__")
+    with pytest.raises(AttributeError):
+        p.other = 1  # type: ignore[attr-defined]
+
+
+def test_frozen_refuses_assignment_hashes_and_pickles() -> None:
+    s = Span(1, 2)
+    with pytest.raises(AttributeError):
+        s.line = 3  # type: ignore[misc]
+    with pytest.raises(AttributeError):
+        del s.line
+    assert hash(s) == hash(Span(1, 2)) and {s: 1}[Span(1, 2)] == 1
+    assert pickle.loads(pickle.dumps(s)) == s
+    assert copy.deepcopy(s) == s and copy.copy(s) == s
+    assert pickle.loads(pickle.dumps(Point(1, tags=["a"]))) == Point(1, tags=["a"])
+
+
+def test_inheritance_post_init_and_replace() -> None:
+    assert [f.name for f in fields(Child)] == ["a", "b", "c"]
+    assert Child(5) == Child(5, 1, 2) and Child(5) != Base(5)
+    assert repr(Child(5)) == "Child(a=5, b=1, c=2)"
+    assert Checked(2, 7).width == 5
+    moved = replace(Child(5), c=9)
+    assert moved == Child(5, 1, 9)
+    with pytest.raises(TypeError):
+        fields(object())
+
+
+def test_a_required_field_after_a_default_is_refused() -> None:
+    with pytest.raises(TypeError, match="without a default"):
+        @record
+        class Bad:
+            a: int = 0
+            b: int  # type: ignore[misc]
+
+
+def test_the_lint_path_never_imports_dataclasses_or_inspect() -> None:
+    """Start-up: zero lint's import chain stays free of dataclasses and inspect (~10 ms)."""
+    code = ("import sys, zero.cli.lean, zero.cli.run, zero.engine.lint; "
+            "print(sorted(m for m in ('dataclasses', 'inspect', 'ast') if m in sys.modules))")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout
+    assert out.strip() == "[]"
