@@ -61,6 +61,8 @@ _KIND_OF = {"int": ValueKind.INT, "hex": ValueKind.HEX, "ref": ValueKind.REF, "r
 _STYLE_OF = {"#": CommentStyle.HASH, "(": CommentStyle.PAREN}
 # Control characters other than tab; \r only counts when it is not a CRLF ending.
 _CONTROL_RE = re.compile(r"[\x00-\x08\x0b-\x1f\x7f-\x9f\udc80-\udcff]")
+# Every ASCII byte _CONTROL_RE does not match: deleting them leaves the control characters.
+_NOT_CONTROL = bytes(b for b in range(128) if not (b <= 0x08 or 0x0B <= b <= 0x1F or b == 0x7F))
 
 
 def classify_value(value: str) -> ValueKind:
@@ -211,6 +213,13 @@ def _scan_controls(lines: list[str], problems: list[Problem]) -> None:
                 )
 
 
+def _control_count(text: str) -> int:
+    """How many characters of the text ``_CONTROL_RE`` matches (each CRLF's \\r among them)."""
+    if text.isascii():  # one pass in C, ten times faster than the regex over a big list
+        return len(text.encode("ascii").translate(None, _NOT_CONTROL))
+    return len(_CONTROL_RE.findall(text))
+
+
 def tokenize_text(text: str, path: str = "-", encoding: str = "utf-8", bom: bool = False,
                   use_fast: bool = True) -> Document:
     """Tokenize already decoded text."""
@@ -291,12 +300,10 @@ def tokenize_text(text: str, path: str = "-", encoding: str = "utf-8", bom: bool
             end_line = number
         append(item)
 
-    if _CONTROL_RE.search(text):
-        # the \r of each CRLF ending is no control character of a line
-        controls = len(_CONTROL_RE.findall(text)) - (endings.count("\r\n") if "\r" in text else 0)
-        if controls == 0:
-            pass
-        elif controls >= BINARY_MIN_CONTROLS and controls > len(text) * BINARY_SHARE:
+    # the \r of each CRLF ending is no control character of a line
+    controls = _control_count(text) - (endings.count("\r\n") if "\r" in text else 0)
+    if controls:
+        if controls >= BINARY_MIN_CONTROLS and controls > len(text) * BINARY_SHARE:
             problems.append(Problem("binary", 1, 0, len(lines[0]) if lines else 0, str(controls)))
         else:
             _scan_controls(lines, problems)
