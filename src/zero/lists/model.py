@@ -68,6 +68,10 @@ _CACHE_LIMIT = 200_000
 # across a list (a few thousand heads, a few dozen tails), so each is parsed once.
 _part_cache: dict[str, tuple[str, tuple[int, ...]]] = {}
 _patterns: dict[str, str] = {}
+# Whole keys: the lists of a fleet, and the two sides of a diff, repeat each other's keys. A key is
+# never changed after parsing, so entries share it.
+_KEY_CACHE_LIMIT = 65_536
+_keys: dict[str, Key] = {}
 
 
 def _part(text: str) -> tuple[str, tuple[int, ...]]:
@@ -87,6 +91,9 @@ def parse_key(text: str, trusted: bool = False) -> Key | None:
     ``trusted``: the caller has matched the key form already (the tokenizer's fast path).
     Patterns are interned: a million keys share a handful of pattern strings.
     """
+    got = _keys.get(text)
+    if got is not None:
+        return got
     if not trusted and not _KEY_RE.fullmatch(text):
         return None
     cut = text.find("]") + 1
@@ -97,7 +104,10 @@ def parse_key(text: str, trusted: bool = False) -> Key | None:
     pattern = head + tail
     pattern = _patterns.get(pattern) or (
         _patterns.setdefault(pattern, pattern) if len(_patterns) < _CACHE_LIMIT else pattern)
-    return Key(text, pattern, head_indices + tail_indices)
+    key = Key(text, pattern, head_indices + tail_indices)
+    if len(_keys) < _KEY_CACHE_LIMIT:
+        _keys[text] = key
+    return key
 
 
 def format_key(pattern: str, indices: tuple[int, ...] | list[int]) -> str:
