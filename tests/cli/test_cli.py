@@ -150,6 +150,34 @@ def test_subprocess_usage_error_is_one_line() -> None:
     assert proc.stderr.strip().count("\n") == 0 and "Traceback" not in proc.stderr
 
 
+def test_the_console_entry_ends_without_teardown_but_says_everything(tmp_path: Path) -> None:
+    """``zero.cli.lean.end`` skips the interpreter's teardown: output far beyond a pipe's buffer
+    still arrives whole, and exit codes and messages of both command lines are kept."""
+    big = tmp_path / "unknown.lis"
+    big.write_text("".join(f"made_up_key_{i} {i}\n" for i in range(3000)), encoding="utf-8")
+    proc = _run("lint", "--output-format", "json", str(big))
+    assert proc.returncode == 1 and len(json.loads(proc.stdout)) == 3000  # ~1 MB through the pipe
+    proc = _run("lint", "--output-format", "concise", str(big), env={"NO_COLOR": "1"})
+    assert proc.returncode == 1 and proc.stdout.count("R001") == 3000 and proc.stderr == ""
+    proc = _run("lint", str(big), env={"NO_COLOR": "1"})
+    assert proc.returncode == 1 and proc.stderr == "1 file checked (0 clean): 3000 errors, 0 warnings, 0 infos\n"
+    a, b = tmp_path / "a.lis", tmp_path / "b.lis"
+    a.write_text("kopf.achs_nr 1\n", encoding="utf-8")
+    b.write_text("kopf.achs_nr 2\n", encoding="utf-8")
+    proc = _run("diff", str(a), str(b))  # the typer command line
+    assert proc.returncode == 1 and "kopf.achs_nr" in proc.stdout
+    proc = _run("rule", "Q999")
+    assert proc.returncode == 2 and "Q999" in proc.stderr
+
+
+def test_end_flushes_what_is_buffered_and_keeps_the_code() -> None:
+    code = "import sys; from zero.cli.lean import end; [sys.stdout.write('x' * 99) for _ in range(1000)]; end(3)"
+    env = {k: v for k, v in os.environ.items() if k != "PYTHONUNBUFFERED"}  # buffered, as users run it
+    proc = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, timeout=60, check=False,
+                          env=env)
+    assert (proc.returncode, len(proc.stdout)) == (3, 99_000)
+
+
 @pytest.mark.slow
 def test_progress_bar_only_on_a_terminal(tmp_path: Path) -> None:
     import pty
