@@ -198,8 +198,9 @@ def readme_tree() -> set[str]:
 
 def test_the_readme_layout_matches_the_tree() -> None:
     shown = readme_tree()
+    data = SRC / "zero" / "catalog" / "data"  # generated tables: the README's `data/` line names them
     actual = {str(p.relative_to(SRC / "zero")) for p in MODULES.values()
-              if p.name != "__init__.py" or p.parent == SRC / "zero"}
+              if (p.name != "__init__.py" or p.parent == SRC / "zero") and p.parent != data}
     actual |= {str(p.relative_to(SRC / "zero")) for p in (SRC / "zero").iterdir() if (p / "__init__.py").is_file()}
     actual.add("catalog/data")
     assert shown == actual

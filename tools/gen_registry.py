@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Regenerate ``src/zero/catalog/data/registry.json`` from a ``CncParaDesc.xml``.
+"""Regenerate ``src/zero/catalog/data/table.py`` from a ``CncParaDesc.xml``.
 
 Usage: python tools/gen_registry.py [PATH/TO/CncParaDesc.xml]
 
@@ -10,17 +10,18 @@ Without an argument it reads ../shared/corpus/isg-sdk/meta-data/CncParaDesc.xml.
 
 from __future__ import annotations
 
-import json
 import sys
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT / "src"))
 
+from pydata import write_module  # noqa: E402
+
 from zero.catalog.paramdesc import read_param_desc  # noqa: E402
 
 DEFAULT_XML = ROOT.parent / "shared" / "corpus" / "isg-sdk" / "meta-data" / "CncParaDesc.xml"
-OUT = ROOT / "src" / "zero" / "catalog" / "data" / "registry.json"
+OUT = ROOT / "src" / "zero" / "catalog" / "data" / "table.py"
 
 
 def compact(row: dict[str, object]) -> dict[str, object]:
@@ -36,13 +37,9 @@ def main(argv: list[str]) -> int:
         if "default" not in r:
             r["default"] = ""
     rows.sort(key=lambda r: str(r["id"]))
-    data = {
-        "format": 1,
-        "generated_from": "CncParaDesc.xml (ISG CNC Kernel SDK V1.5.0.0, kernel V4.13.0.0)",
-        "params": rows,
-    }
-    text = json.dumps(data, ensure_ascii=False, indent=0, separators=(",", ":"))
-    OUT.write_text(text + "\n", encoding="utf-8")
+    write_module(OUT, "The facts of every parameter of the vendor's CncParaDesc.xml (no description texts).",
+                 {"GENERATED_FROM": "CncParaDesc.xml (ISG CNC Kernel SDK V1.5.0.0, kernel V4.13.0.0)",
+                  "ROWS": rows}, rows_name="ROWS")
     print(f"wrote {len(rows)} parameters to {OUT.relative_to(ROOT)}")
     return 0
 

@@ -2,7 +2,7 @@
 
 Produces plain rows (dicts) of facts: ID, list kind, key pattern, type,
 default, range, array sizes, symbols, units, restart flag. The committed
-registry table (``data/registry.json``) is generated from these rows by
+registry table (``data/table.py``) is generated from these rows by
 ``tools/gen_registry.py``; ``zero --param-desc PATH`` builds the same rows from
 a user's own file at run time, and then also carries the vendor's English
 descriptions (``with_text=True``), which are never committed to this project.

@@ -1,8 +1,9 @@
 """The parameter registry: one table of facts keyed by parameter ID.
 
-The table is data (``data/registry.json``, generated from the vendor's
-``CncParaDesc.xml`` by ``tools/gen_registry.py``) plus ``data/seeds.toml`` (the
-parameters the manuals define, with descriptions in our words). Rules read a
+The table is data (``data/table.py``, generated from the vendor's ``CncParaDesc.xml`` by
+``tools/gen_registry.py``) plus ``data/seeds.toml`` (the parameters the manuals define, with
+descriptions in our words; ``tools/gen_seeds.py`` compiles it to ``data/seeds.py``). Both are
+Python modules so that they load from bytecode, not parsed at every start-up. Rules read a
 :class:`ParamSpec` generically; adding a parameter never means adding code.
 
 A :class:`Registry` is data that callers pass in: :func:`load_registry` builds one
@@ -12,7 +13,6 @@ line keeps a process-wide registry.
 
 from __future__ import annotations
 
-import json
 from collections import Counter
 from collections.abc import Iterable, Iterator, Mapping
 from pathlib import Path
@@ -21,7 +21,6 @@ from typing import Any
 from zero.catalog.ranges import Range, parse_range
 from zero.records import field, record
 
-_DATA = Path(__file__).resolve().parent / "data"
 NO_DEFAULT = ("", "-", "--", "----")  # how the catalogue writes "no default documented"
 BUILTIN_SOURCE = "built-in (CncParaDesc.xml facts + seeds)"
 
@@ -336,10 +335,11 @@ def _spec_from_row(row: dict[str, Any], index_base: dict[str, int]) -> ParamSpec
 
 
 def _overlay() -> dict[str, Any]:
-    """``data/seeds.toml`` as ``tools/gen_seeds.py`` compiled it to JSON (no TOML parser at
-    start-up; a test holds the two equal)."""
-    data: dict[str, Any] = json.loads((_DATA / "seeds.json").read_text(encoding="utf-8"))
-    return data
+    """``data/seeds.toml`` as ``tools/gen_seeds.py`` compiled it (no TOML parser at start-up; a
+    test holds the two equal)."""
+    from zero.catalog.data.seeds import SEEDS  # start-up: only where the built-in overlay is used
+
+    return SEEDS
 
 
 def build_registry(rows: list[dict[str, Any]], source: str) -> Registry:
@@ -367,10 +367,9 @@ def build_registry(rows: list[dict[str, Any]], source: str) -> Registry:
 
 def load_table() -> list[dict[str, Any]]:
     """The committed table rows (generated facts, no vendor texts)."""
-    text = (_DATA / "registry.json").read_text(encoding="utf-8")
-    data = json.loads(text)
-    rows: list[dict[str, Any]] = data["params"]
-    return rows
+    from zero.catalog.data.table import ROWS  # start-up: the 1766 rows only for the built-in registry
+
+    return ROWS
 
 
 def load_registry(param_desc: str | Path | None = None) -> Registry:

@@ -1,0 +1,25 @@
+"""Write JSON-like data as a Python module: zero reads its built-in tables by ``import``, so
+that they load from the compiled bytecode (3 ms) instead of being parsed at every start-up
+(JSON: 9 ms with the ``json`` import)."""
+
+from __future__ import annotations
+
+import json
+from pathlib import Path
+from typing import Any
+
+
+def write_module(path: Path, doc: str, constants: dict[str, Any], rows_name: str | None = None) -> None:
+    """``constants`` as module-level names, in order; ``rows_name`` (a list) one item per line.
+    The values go through JSON first, so the module holds exactly what a JSON file held."""
+    out = [f'"""{doc}\n\nGenerated: do not edit."""', "", "from typing import Any", ""]
+    for name, value in constants.items():
+        value = json.loads(json.dumps(value, ensure_ascii=False))
+        if name == rows_name:
+            out.append(f"{name}: list[dict[str, Any]] = [")
+            out.extend(f"    {row!r}," for row in value)
+            out.append("]")
+        else:
+            kind = "dict[str, Any]" if isinstance(value, dict) else type(value).__name__
+            out.append(f"{name}: {kind} = {value!r}")
+    path.write_text("\n".join(out) + "\n", encoding="utf-8")
