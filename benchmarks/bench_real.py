@@ -12,6 +12,7 @@ usage: python benchmarks/bench_real.py [--quick] [--tools N] [--machines M] [--k
 from __future__ import annotations
 
 import argparse
+import os
 import shutil
 import subprocess
 import sys
@@ -22,6 +23,8 @@ ROOT = Path(__file__).resolve().parent.parent
 SHARED = ROOT.parent / "shared" / "bench" / "workloads_real.py"
 PY = sys.executable
 ZERO = [PY, "-m", "zero"]
+# As engineers run it: a PYTHONUNBUFFERED left in the environment would make every write a system call.
+_ENV = {k: v for k, v in os.environ.items() if k != "PYTHONUNBUFFERED"}
 
 # Run a command in a child; print its wall time (s) and peak resident memory (KiB).
 _PEAK = ("import resource, subprocess, sys, time; t = time.perf_counter(); "
@@ -33,7 +36,7 @@ def measure(cmd: list[str], repeat: int = 1, cwd: Path | None = None) -> tuple[f
     """Best wall time (s) over ``repeat`` runs and the peak memory (MiB) of the last."""
     best, peak = float("inf"), 0.0
     for _ in range(repeat):
-        out = subprocess.run([PY, "-c", _PEAK, *cmd], capture_output=True, text=True, cwd=cwd, check=False)
+        out = subprocess.run([PY, "-c", _PEAK, *cmd], capture_output=True, text=True, cwd=cwd, check=False, env=_ENV)
         seconds, kib = out.stdout.strip().splitlines()[-1].split()
         best, peak = min(best, float(seconds)), int(kib) / 1024
     return best, peak

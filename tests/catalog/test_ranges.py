@@ -71,3 +71,21 @@ def test_explicit_sets() -> None:
 )
 def test_prose_is_rejected(text: str) -> None:
     assert parse_range(text) is None
+
+
+def test_refs_left_to_right_and_no_cycle_left_behind() -> None:
+    """``refs`` is asked for every value whose range names another parameter: it must leave no
+    reference cycle (garbage only the cycle collector frees; a fleet's lint grew by megabytes)."""
+    import gc
+
+    r = parse_range("-P-AXIS-00001 < x < P-AXIS-00003 + P-AXIS-00004", "P-AXIS-00009")  # Neg, BinOp, Ref
+    assert r is not None
+    assert [ref.id for ref in r.refs] == ["P-AXIS-00001", "P-AXIS-00003", "P-AXIS-00004"]
+    gc.collect()
+    gc.disable()
+    try:
+        for _ in range(100):
+            r.refs  # noqa: B018 - asked for its side effects on the heap
+        assert gc.collect() == 0
+    finally:
+        gc.enable()

@@ -151,19 +151,19 @@ class Range:
 
     @property
     def refs(self) -> list[Ref]:
+        """The parameters the bounds refer to, left to right. Walked with a stack: a recursive
+        inner function is a reference cycle, garbage only the cycle collector frees, and a
+        fleet's lint asks this for every value whose range refers to another parameter."""
         out: list[Ref] = []
-
-        def walk(e: Expr | None) -> None:
+        stack: list[Expr | None] = [self.high, self.low]
+        while stack:
+            e = stack.pop()
             if isinstance(e, Ref):
                 out.append(e)
             elif isinstance(e, BinOp):
-                walk(e.left)
-                walk(e.right)
+                stack += (e.right, e.left)
             elif isinstance(e, Neg):
-                walk(e.operand)
-
-        walk(self.low)
-        walk(self.high)
+                stack.append(e.operand)
         return out
 
     def evaluate(self, resolve: Resolver) -> Bounds:
