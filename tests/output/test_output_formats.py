@@ -19,7 +19,7 @@ from zero.cli.app import app
 from zero.diagnostics import Diagnostic, Edit, Fix, Severity, Span
 from zero.engine.lint import LintResult
 from zero.lists.model import Document
-from zero.output.formats import render_json
+from zero.output.formats import indented_json, render_json
 
 SEED = str(FIXTURES / "seed" / "nullp_3achsen.lis")
 CLEAN = str(FIXTURES / "rules" / "M006" / "pass.lis")
@@ -204,3 +204,33 @@ def test_json_written_object_by_object_is_json_dumps_of_all(files: list[list[tup
     render_json(results, out)
     expected = json.dumps([d.to_json() for r in results for d in r.diagnostics], indent=2) + "\n"
     assert out.getvalue() == expected
+
+
+_JSON = st.recursive(
+    st.none() | st.booleans() | st.integers() | st.floats(allow_nan=False) | st.text(),
+    lambda inner: st.lists(inner, max_size=4)
+    | st.dictionaries(st.text() | st.integers() | st.booleans() | st.none(), inner, max_size=4),
+    max_leaves=20)
+
+
+@given(_JSON, st.integers(min_value=0, max_value=3))
+def test_indented_json_is_what_json_dumps_writes(value: object, level: int) -> None:
+    expected = json.dumps(value, indent=2).replace("\n", "\n" + "  " * level)
+    assert indented_json(value, level) == expected
+
+
+def test_the_json_report_leaves_no_reference_cycles() -> None:
+    """A fleet's report writes one object per finding: none may leave garbage for the cycle
+    collector (json.dumps(indent=2) left one cycle per call)."""
+    import gc
+
+    d = Diagnostic("R001", Severity.ERROR, "x", Span(1, 1, 1, 2), "a.lis",
+                   fix=Fix("f", (Edit(Span(1, 1, 1, 2), "y"),)))
+    results = [LintResult("a.lis", Document("a.lis", "utf-8", [], [], []), None, [d] * 50)]
+    gc.collect()
+    gc.disable()
+    try:
+        render_json(results, io.StringIO())
+        assert gc.collect() == 0
+    finally:
+        gc.enable()

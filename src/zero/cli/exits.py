@@ -12,10 +12,10 @@ from __future__ import annotations
 import gc
 import os
 import sys
-from collections.abc import Callable, Iterable
+from collections.abc import Callable
 
 from zero.diagnostics import Severity
-from zero.engine.lint import LintResult
+from zero.engine.lint import Totals
 from zero.errors import ZeroError
 
 OK, FINDINGS, USAGE, INTERRUPTED, BROKEN_PIPE = 0, 1, 2, 130, 141
@@ -27,11 +27,11 @@ def fail(message: str) -> int:
     return USAGE
 
 
-def lint_exit(results: Iterable[LintResult], strict: bool, exit_zero: bool) -> int:
+def lint_exit(totals: Totals, strict: bool, exit_zero: bool) -> int:
     """1 when a finding is an error (a warning too with ``strict``), unless ``exit_zero``."""
     if exit_zero:
         return OK
-    worst = max((r.worst for r in results if r.worst is not None), default=None)
+    worst = totals.worst
     threshold = Severity.WARNING if strict else Severity.ERROR
     return FINDINGS if worst is not None and worst >= threshold else OK
 

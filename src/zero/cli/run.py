@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import io
 import sys
-from collections.abc import Sequence
+from collections.abc import Iterable, Sequence
 from pathlib import Path
 from typing import TextIO
 
@@ -18,7 +18,7 @@ from zero.catalog.registry import Registry, load_registry
 from zero.cli import exits
 from zero.cli.options import OUTPUT_FORMATS
 from zero.engine.commands import Echo, LintRequest, run_lint
-from zero.engine.lint import LIST_SUFFIXES, PROGRAM_SUFFIXES, LintResult
+from zero.engine.lint import LIST_SUFFIXES, PROGRAM_SUFFIXES, LintResult, Totals, tallied
 from zero.errors import ZeroError
 from zero.files import max_file_bytes, read_stream, write_atomic
 from zero.output.text import ProgressBar, render_text, statistics
@@ -65,15 +65,23 @@ def read_stdin() -> bytes:
     return read_stream(sys.stdin.buffer)
 
 
-def render_lint(results: Sequence[LintResult], output_format: str, stream: TextIO,
+# The formats written finding by finding (``zero.output.formats.STREAMED`` and text): with one of
+# them, a run's results are rendered as they come and not kept.
+STREAMED_FORMATS = ("text", "json", "concise", "github")
+
+
+def render_lint(results: Iterable[LintResult], output_format: str, stream: TextIO,
                 color: bool | None = None) -> None:
     """The findings in one of the output formats; the text summary goes to stderr."""
     if output_format == "text":
         render_text(results, stream, color=color, summary_stream=sys.stderr)
     else:
-        from zero.output.formats import RENDERERS  # start-up: only for machine-readable reports
+        from zero.output.formats import RENDERERS, STREAMED  # start-up: only for machine-readable reports
 
-        RENDERERS[output_format](results, stream)
+        if output_format in STREAMED:
+            STREAMED[output_format](results, stream)
+        else:
+            RENDERERS[output_format](results if isinstance(results, Sequence) else list(results), stream)
 
 
 def lint(paths: Sequence[str | Path] = (), output_format: str = "text", output_file: str | Path | None = None,
@@ -94,7 +102,8 @@ def lint(paths: Sequence[str | Path] = (), output_format: str = "text", output_f
         raise ZeroError("give list files or directories (or - with --stdin-filename)")
     request = LintRequest([str(p) for p in paths], tuple(select), tuple(ignore), kind, param_desc, jobs,
                           config, isolated, fix, show_diff, unsafe_fixes, stdin_filename, machine,
-                          tuple(extend_select), add_noqa)
+                          tuple(extend_select), add_noqa,
+                          stream=output_file is None and output_format in STREAMED_FORMATS)
     bar = ProgressBar()
     try:
         run = run_lint(request, REGISTRIES, echo(), read_stdin, bar.start)
@@ -102,22 +111,25 @@ def lint(paths: Sequence[str | Path] = (), output_format: str = "text", output_f
         bar.finish()
     if not run.report:
         return exits.OK
+    totals = Totals()
     if output_file is not None:
+        results = list(run.results)
         buffer = io.StringIO()
-        render_lint(run.results, output_format, buffer, color=False)
+        render_lint(tallied(results, totals), output_format, buffer, color=False)
         target = Path(output_file)
         if target.suffix.lower() in REPORT_REFUSED:
             raise ZeroError("looks like a list or NC program, not a report: not replaced", str(target))
-        inputs = tuple(Path(r.path) for r in run.results if r.path != "-")
+        inputs = tuple(Path(r.path) for r in results if r.path != "-")
         write_atomic(target, buffer.getvalue().encode("utf-8", "surrogateescape"), force=True, inputs=inputs)
     else:
-        render_lint(run.results, output_format, sys.stderr if run.findings_to_stderr else sys.stdout)
+        render_lint(tallied(run.results, totals), output_format,
+                    sys.stderr if run.findings_to_stderr else sys.stdout)
     if show_statistics:
-        sys.stderr.write(statistics(run.results))
-    if run.unreadable:
+        sys.stderr.write(statistics(totals))
+    if totals.unreadable:
         return exits.USAGE  # a file could not be read: something went wrong, whatever else
     if show_diff:
         if run.changed and not exit_zero:
             sys.stderr.write(f"zero: fixes would change {run.changed} file{'s' if run.changed != 1 else ''}\n")
         return exits.OK if exit_zero else exits.found(bool(run.changed))
-    return exits.lint_exit(run.results, strict, exit_zero)
+    return exits.lint_exit(totals, strict, exit_zero)

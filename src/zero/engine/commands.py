@@ -9,7 +9,7 @@ works (a patch, "3 fixes applied") goes through an :class:`Echo`.
 
 from __future__ import annotations
 
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Iterable, Sequence
 from pathlib import Path
 from typing import TYPE_CHECKING
 
@@ -28,7 +28,7 @@ from zero.engine.lint import (
     lint_machine,
     lint_program,
 )
-from zero.engine.parallel import lint_many
+from zero.engine.parallel import iter_lint_many, lint_many
 from zero.errors import ZeroError
 from zero.files import read_file, write_atomic
 from zero.records import field, record
@@ -99,6 +99,9 @@ class LintRequest:
     machine: str | Path | None = None
     extend_select: Sequence[str] = ()
     add_noqa: bool = False
+    # The results may come as a stream, each made as it is read: for a report written as it goes,
+    # which then keeps no result (used only where the order and the results are the same).
+    stream: bool = False
 
     @property
     def reads_stdin(self) -> bool:
@@ -108,14 +111,11 @@ class LintRequest:
 
 @record
 class LintRun:
-    results: list[LintResult] = field(default_factory=list)
+    # A list, or with ``LintRequest.stream`` an iterator to read once (count with ``Totals``)
+    results: Iterable[LintResult] = field(default_factory=list)
     report: bool = True  # False: nothing to report (standard input excluded by the configuration)
     findings_to_stderr: bool = False  # standard output holds the fixed list or the patch
     changed: int = 0  # files a fix changes (or, with --diff, would change)
-
-    @property
-    def unreadable(self) -> int:
-        return sum(1 for r in self.results if is_unreadable(r))
 
 
 def run_lint(request: LintRequest, registries: Registries, echo: Echo,
@@ -136,8 +136,16 @@ def run_lint(request: LintRequest, registries: Registries, echo: Echo,
     groups: dict[Path | None, list[Path]] = {}
     for f in files:  # files sharing a parameter description share a registry
         groups.setdefault(param_desc_of(finder.for_path(f), request.param_desc), []).append(f)
-    by_file: dict[Path, LintResult] = {}
     bar = progress(len(files)) if progress is not None else None
+    machines: dict[Path, Machine] = {}
+    if (request.stream and bar is None and len(groups) == 1
+            and not (request.fix or request.show_diff or request.add_noqa)):
+        desc = next(iter(groups))  # one group: its files are all the files, in their order
+        stream = iter_lint_many(files, registries(desc), lambda f: finder.for_path(f).options_for(f, cli),
+                                request.jobs)
+        return LintRun(_with_machine(f, r, finder.for_path(f), cli, request.param_desc, registries, machines)
+                       for f, r in zip(files, stream, strict=True))
+    by_file: dict[Path, LintResult] = {}
     done = 0
     for desc, members in groups.items():
         def step(n: int, total: int, base: int = done) -> None:
@@ -149,7 +157,6 @@ def run_lint(request: LintRequest, registries: Registries, echo: Echo,
                                            step if bar is not None else None), strict=True):
             by_file[f] = r
         done += len(members)
-    machines: dict[Path, Machine] = {}
     results = [_with_machine(f, by_file[f], finder.for_path(f), cli, request.param_desc, registries, machines)
                for f in files]
     run = LintRun(results, findings_to_stderr=request.show_diff)

@@ -11,7 +11,7 @@ passed in.
 from __future__ import annotations
 
 import re
-from collections.abc import Sequence
+from collections.abc import Iterable, Iterator, Sequence
 from pathlib import Path
 from typing import TYPE_CHECKING
 
@@ -63,6 +63,46 @@ class LintResult:
     @property
     def worst(self) -> Severity | None:
         return max((d.severity for d in self.diagnostics), default=None)
+
+
+@record
+class Totals:
+    """What a report says at its end (the summary line, ``--statistics``, the exit code), counted
+    as the results pass: a report of many files need not keep them to say it."""
+
+    files: int = 0
+    clean: int = 0
+    unreadable: int = 0
+    by_severity: dict[Severity, int] = field(default_factory=dict)
+    by_code: dict[str, int] = field(default_factory=dict)
+    worst: Severity | None = None
+
+    def add(self, result: LintResult) -> None:
+        self.files += 1
+        if not result.diagnostics:
+            self.clean += 1
+            return
+        for d in result.diagnostics:
+            self.by_severity[d.severity] = self.by_severity.get(d.severity, 0) + 1
+            self.by_code[d.code] = self.by_code.get(d.code, 0) + 1
+            if self.worst is None or d.severity > self.worst:
+                self.worst = d.severity
+        if is_unreadable(result):
+            self.unreadable += 1
+
+    @classmethod
+    def of(cls, results: Iterable[LintResult]) -> Totals:
+        totals = cls()
+        for r in results:
+            totals.add(r)
+        return totals
+
+
+def tallied(results: Iterable[LintResult], totals: Totals) -> Iterator[LintResult]:
+    """``results``, each added to ``totals`` as it passes."""
+    for r in results:
+        totals.add(r)
+        yield r
 
 
 _selected: dict[tuple[object, ...], dict[str, Severity]] = {}
@@ -253,6 +293,7 @@ __all__ = [
     "STRUCTURED_SUFFIXES",
     "LintOptions",
     "LintResult",
+    "Totals",
     "ZeroError",
     "is_unreadable",
     "lint_bytes",
@@ -264,5 +305,6 @@ __all__ = [
     "lint_structured",
     "lint_tree",
     "selected_rules",
+    "tallied",
     "unreadable",
 ]

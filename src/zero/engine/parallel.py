@@ -5,7 +5,7 @@ results in the order of the files whatever the number of processes.
 from __future__ import annotations
 
 import os
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
 from pathlib import Path
 
 from zero.catalog.registry import Registry
@@ -42,6 +42,14 @@ def lint_many(files: list[Path], registry: Registry,
     """Lint files, in parallel across ``jobs`` processes (default: all cores) when there are
     many; results come back in the order of ``files`` whatever the number of processes.
     ``options`` may be a function giving each file its own options (configuration)."""
+    return list(iter_lint_many(files, registry, options, jobs, progress))
+
+
+def iter_lint_many(files: list[Path], registry: Registry,
+                   options: LintOptions | OptionsFor | None = None, jobs: int | None = None,
+                   progress: Callable[[int, int], None] | None = None) -> Iterator[LintResult]:
+    """:func:`lint_many` as a stream: each result as soon as it and those before it are done,
+    so that a report can be written while the files are linted and need not keep them."""
     global _worker_state
     fixed = options or LintOptions()
     options_for: OptionsFor = fixed if callable(fixed) else (lambda _p: fixed)
@@ -49,31 +57,28 @@ def lint_many(files: list[Path], registry: Registry,
     jobs = cores if jobs is None or jobs <= 0 else jobs
     jobs = min(jobs, cores * 4, max(1, len(files) // 16))
     if jobs <= 1 or len(files) < PARALLEL_MIN_FILES:
-        serial = []
         keep = (lambda r: r) if len(files) == 1 else _slim  # many files: memory does not grow with them
         for n, f in enumerate(files, 1):
-            serial.append(keep(lint_file(f, registry, options_for(f))))
+            yield keep(lint_file(f, registry, options_for(f)))
             if progress is not None and (n % 50 == 0 or n == len(files)):
                 progress(n, len(files))
-        return serial
+        return
     import multiprocessing as mp  # start-up: only when many files are linted
 
     try:
         ctx = mp.get_context("fork")
     except ValueError:  # pragma: no cover - platforms without fork lint in one process
-        return [lint_file(f, registry, options_for(f)) for f in files]
+        yield from (lint_file(f, registry, options_for(f)) for f in files)
+        return
     _worker_state = (registry, options_for)
     try:
         with ctx.Pool(jobs) as pool:
-            out = []
             for n, r in enumerate(pool.imap(_lint_in_worker, files,
                                             chunksize=max(1, min(64, len(files) // (jobs * 8)))), 1):
-                out.append(r)
+                if isinstance(r, ZeroError):
+                    raise r
+                yield r
                 if progress is not None and (n % 50 == 0 or n == len(files)):
                     progress(n, len(files))
     finally:
         _worker_state = None
-    for r in out:
-        if isinstance(r, ZeroError):
-            raise r
-    return out  # type: ignore[return-value]

@@ -8,9 +8,9 @@ import hashlib
 import json
 import os
 import urllib.parse
-from collections.abc import Callable, Sequence
+from collections.abc import Callable, Iterable, Iterator, Sequence
 from pathlib import Path
-from typing import TextIO
+from typing import Any, TextIO
 
 from zero import __version__
 from zero.diagnostics import Diagnostic, Severity
@@ -23,22 +23,48 @@ def _all(results: Sequence[LintResult]) -> list[Diagnostic]:
     return [d for r in results for d in r.diagnostics]
 
 
-def render_json(results: Sequence[LintResult], stream: TextIO) -> None:
+def _each(results: Iterable[LintResult]) -> Iterator[Diagnostic]:
+    """The findings of results read once, in order (they may be made as they are read)."""
+    for r in results:
+        yield from r.diagnostics
+
+
+def indented_json(value: Any, level: int = 0) -> str:
+    """``json.dumps(value, indent=2)``, byte for byte, at nesting ``level``. The standard library
+    writes indented JSON through nested closures that call each other: every call leaves a
+    reference cycle that only the cycle collector frees, and the report of a fleet made one per
+    finding. Scalars still go through :func:`json.dumps`."""
+    pad = "\n" + "  " * (level + 1)
+    if isinstance(value, dict):
+        if not value:
+            return "{}"
+        items = (f"{json.dumps(k if isinstance(k, str) else json.dumps(k))}: {indented_json(v, level + 1)}"
+                 for k, v in value.items())
+        return "{" + pad + ("," + pad).join(items) + "\n" + "  " * level + "}"
+    if isinstance(value, (list, tuple)):
+        if not value:
+            return "[]"
+        return "[" + pad + ("," + pad).join(indented_json(v, level + 1) for v in value) + "\n" + "  " * level + "]"
+    return json.dumps(value)
+
+
+def render_json(results: Iterable[LintResult], stream: TextIO) -> None:
     """The JSON contract of ``--output-format json``: one object per finding. Written object by
     object (the bytes ``json.dumps(all, indent=2)`` gives, without holding them all: JSON escapes
     every newline inside a string, so each object's lines can be indented on their own)."""
     opened = False
-    for r in results:
-        for d in r.diagnostics:
+    try:
+        for d in _each(results):
             stream.write(",\n  " if opened else "[\n  ")
-            stream.write(json.dumps(d.to_json(), indent=2).replace("\n", "\n  "))
+            stream.write(indented_json(d.to_json(), 1))
             opened = True
-    stream.write("\n]\n" if opened else "[]\n")
+    finally:  # results made as they are read may stop with an error (exit 2): the JSON stays whole
+        stream.write("\n]\n" if opened else "[]\n")
 
 
-def render_concise(results: Sequence[LintResult], stream: TextIO) -> None:
+def render_concise(results: Iterable[LintResult], stream: TextIO) -> None:
     """One line per finding: ``path:line:col: CODE severity message``."""
-    for d in _all(results):
+    for d in _each(results):
         stream.write(f"{d.path}:{d.span.line}:{d.span.column}: {d.code} {d.severity.label} "
                      f"{printable(d.message)}\n")
 
@@ -48,10 +74,10 @@ def _gh_escape(text: str, prop: bool = False) -> str:
     return text.replace(":", "%3A").replace(",", "%2C") if prop else text
 
 
-def render_github(results: Sequence[LintResult], stream: TextIO) -> None:
+def render_github(results: Iterable[LintResult], stream: TextIO) -> None:
     """GitHub Actions workflow commands: an annotation per finding."""
     level = {Severity.ERROR: "error", Severity.WARNING: "warning", Severity.INFO: "notice"}
-    for d in _all(results):
+    for d in _each(results):
         props = (f"file={_gh_escape(d.path, True)},line={d.span.line},col={d.span.column},"
                  f"endLine={d.span.end_line},endColumn={d.span.end_column},"
                  f"title={_gh_escape(f'zero {d.code}', True)}")
@@ -158,6 +184,9 @@ def render_sarif(results: Sequence[LintResult], stream: TextIO) -> None:
     stream.write(json.dumps(log, indent=2) + "\n")
 
 
+# The formats written finding by finding as the results come: a report of many files in one of
+# them (or in text) does not hold the files' results, so its memory does not grow with them.
+STREAMED: dict[str, Callable[[Iterable[LintResult], TextIO], None]] = {
+    "json": render_json, "concise": render_concise, "github": render_github}
 RENDERERS: dict[str, Callable[[Sequence[LintResult], TextIO], None]] = {
-    "json": render_json, "concise": render_concise, "github": render_github, "gitlab": render_gitlab,
-    "junit": render_junit, "sarif": render_sarif}
+    **STREAMED, "gitlab": render_gitlab, "junit": render_junit, "sarif": render_sarif}

@@ -8,11 +8,11 @@ from __future__ import annotations
 import os
 import sys
 from collections import Counter
-from collections.abc import Iterable, Sequence
+from collections.abc import Iterable
 from typing import TextIO
 
 from zero.diagnostics import Diagnostic, Severity
-from zero.engine.lint import LintResult
+from zero.engine.lint import LintResult, Totals, tallied
 from zero.rules import RULES
 
 Segment = tuple[str, str]  # (text, rich style)
@@ -79,20 +79,14 @@ def diagnostic_lines(d: Diagnostic, source: str | None) -> list[list[Segment]]:
     return out
 
 
-def summary_line(results: Sequence[LintResult]) -> str:
-    counts = {s: 0 for s in Severity}
-    for r in results:
-        for d in r.diagnostics:
-            counts[d.severity] += 1
-    files = len(results)
-    clean = sum(1 for r in results if not r.diagnostics)
-
+def summary_line(totals: Totals) -> str:
     def n(count: int, word: str) -> str:
         return f"{count} {word}{'' if count == 1 else 's'}"
 
+    counts = totals.by_severity
     return (
-        f"{n(files, 'file')} checked ({clean} clean): {n(counts[Severity.ERROR], 'error')}, "
-        f"{n(counts[Severity.WARNING], 'warning')}, {n(counts[Severity.INFO], 'info')}"
+        f"{n(totals.files, 'file')} checked ({totals.clean} clean): {n(counts.get(Severity.ERROR, 0), 'error')}, "
+        f"{n(counts.get(Severity.WARNING, 0), 'warning')}, {n(counts.get(Severity.INFO, 0), 'info')}"
     )
 
 
@@ -117,14 +111,16 @@ class TextWriter:
         self.console.print(Text.assemble(*[(t, s) if s else t for t, s in segments]))
 
 
-def render_text(results: Sequence[LintResult], stream: TextIO | None = None,
+def render_text(results: Iterable[LintResult], stream: TextIO | None = None,
                 color: bool | None = None, summary: bool = True,
                 summary_stream: TextIO | None = None) -> None:
     """Findings with their source line; the summary line to ``summary_stream`` (default: the
-    same stream; the CLI sends it to stderr so that standard output holds findings only)."""
+    same stream; the CLI sends it to stderr so that standard output holds findings only).
+    ``results`` is read once, in order: it may be a stream of results made as it is read."""
     stream = stream or sys.stdout
     writer = TextWriter(stream, use_color(stream) if color is None else color)
-    for r in results:
+    totals = Totals()
+    for r in tallied(results, totals):
         shown: Counter[str] = Counter()
         for d in r.diagnostics:
             shown[d.code] += 1
@@ -139,17 +135,17 @@ def render_text(results: Sequence[LintResult], stream: TextIO | None = None,
                               "(every one is in --output-format json or concise)", "bold")])
                 writer.line([("", "")])
     if summary:
-        worst = max((r.worst for r in results if r.worst is not None), default=None)
+        worst = totals.worst
         style = _SEVERITY_STYLE[worst] if worst is not None else "bold green"
         target = writer
         if summary_stream is not None and summary_stream is not stream:
             target = TextWriter(summary_stream, use_color(summary_stream) if color is None else color)
-        target.line([(summary_line(results), style)])
+        target.line([(summary_line(totals), style)])
 
 
-def statistics(results: Sequence[LintResult]) -> str:
+def statistics(totals: Totals) -> str:
     """Counts per code, most frequent first (``--statistics``)."""
-    counts = Counter(d.code for r in results for d in r.diagnostics)
+    counts = totals.by_code
     lines = [f"{n:>7}  {code}  {RULES[code].name if code in RULES else ''}"
              for code, n in sorted(counts.items(), key=lambda kv: (-kv[1], kv[0]))]
     return "\n".join(lines) + ("\n" if lines else "")
