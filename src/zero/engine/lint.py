@@ -90,13 +90,6 @@ class Totals:
         if is_unreadable(result):
             self.unreadable += 1
 
-    @classmethod
-    def of(cls, results: Iterable[LintResult]) -> Totals:
-        totals = cls()
-        for r in results:
-            totals.add(r)
-        return totals
-
 
 def tallied(results: Iterable[LintResult], totals: Totals) -> Iterator[LintResult]:
     """``results``, each added to ``totals`` as it passes."""
