@@ -64,6 +64,11 @@ class Child(Base):
 
 
 @record
+class Same(Base):
+    """No field of its own: the base's fields, not its annotations read twice."""
+
+
+@record
 class Checked:
     low: int
     high: int
@@ -123,6 +128,7 @@ def test_frozen_refuses_assignment_hashes_and_pickles() -> None:
 
 def test_inheritance_post_init_and_replace() -> None:
     assert [f.name for f in fields(Child)] == ["a", "b", "c"]
+    assert [f.name for f in fields(Same)] == ["a", "b"] and Same(1) == Same(1, 1) and Same(1) != Base(1)
     assert Child(5) == Child(5, 1, 2) and Child(5) != Base(5)
     assert repr(Child(5)) == "Child(a=5, b=1, c=2)"
     assert Checked(2, 7).width == 5

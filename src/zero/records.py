@@ -138,7 +138,9 @@ def _methods(shown: tuple[str, ...], compared: tuple[str, ...]) -> dict[str, Cal
 
 
 def _build(cls: type, frozen: bool, eq: bool, unsafe_hash: bool) -> type:
-    own = cls.__dict__.get("__annotations__", {})  # noqa: RUF063 - inspect is what this module avoids
+    # The class's own annotations (3.10 and later answer for the class alone; strings here, as
+    # every zero module imports annotations from __future__); inspect is what this module avoids.
+    own: dict[str, Any] = getattr(cls, "__annotations__", {})
     by_name: dict[str, Field] = {}
     for base in reversed(cls.__mro__[1:]):
         for f in base.__dict__.get(_FIELDS, ()):
