@@ -32,6 +32,22 @@ _PEAK = ("import resource, subprocess, sys, time; t = time.perf_counter(); "
          "print(time.perf_counter() - t, resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss)")
 
 
+def with_changes(data: bytes, every: int = 100) -> bytes:
+    """A tool list as it comes back from a machine: the length of every ``every``-th tool
+    re-measured (one changed entry in 3,300), the rest the same. (This run used to diff a list
+    with itself, which measured nothing a user waits for.)"""
+    lines = data.split(b"\n")
+    seen = 0
+    for i, line in enumerate(lines):
+        if b".laenge " in line:
+            seen += 1
+            if seen % every == 0:
+                key, value = line.split(None, 2)[:2]
+                at = line.index(value, len(key))
+                lines[i] = line[:at] + str(int(value) + 10).encode() + line[at + len(value):]
+    return b"\n".join(lines)
+
+
 def measure(cmd: list[str], repeat: int = 1, cwd: Path | None = None) -> tuple[float, float]:
     """Best wall time (s) over ``repeat`` runs and the peak memory (MiB) of the last."""
     best, peak = float("inf"), 0.0
@@ -105,7 +121,7 @@ def main() -> None:
     row(f"zero convert tools.lis --to yaml ({n_tools / conv_s:,.0f}/s)", conv_s, conv_m, "entries/s",
         n_tools / conv_s / 300_000, "≥ 300k entries/s (ratio ≥ 1)")
     changed = out / "tools2.lis"
-    changed.write_bytes((out / "tools.lis").read_bytes().replace(b"wz[7].", b"wz[7].", 1))
+    changed.write_bytes(with_changes((out / "tools.lis").read_bytes()))
     diff_s, diff_m = measure([*ZERO, "diff", str(out / "tools.lis"), str(changed)], r)
     row(f"zero diff tools.lis tools2.lis ({n_tools / diff_s:,.0f}/s)", diff_s, diff_m, "entries/s",
         n_tools / diff_s / 300_000, "≥ 300k entries/s (ratio ≥ 1)")
