@@ -171,7 +171,7 @@ def _build(cls: type, frozen: bool, eq: bool, unsafe_hash: bool) -> type:
     body[_FIELDS] = all_fields
     body["__match_args__"] = tuple(f.name for f in all_fields)
 
-    # The methods, written out and compiled in one go; defaults and factories are passed by name.
+    # __init__, written out and compiled; defaults and factories are passed to it by name.
     scope: dict[str, Any] = {"MISSING": MISSING, "__set": object.__setattr__}
     params: list[str] = []
     lines: list[str] = []

@@ -60,3 +60,11 @@ def test_run_lint_streams_only_when_asked(tree: Path) -> None:
     lazy, kept = run(True), run(False)
     assert isinstance(kept, list) and not isinstance(lazy, list)
     assert [(r.path, r.diagnostics) for r in lazy] == [(r.path, r.diagnostics) for r in kept]  # type: ignore[attr-defined]
+
+
+def test_the_command_line_knows_which_formats_stream() -> None:
+    """The lean command line names them without importing the renderers (start-up)."""
+    from zero.cli.run import STREAMED_FORMATS
+    from zero.output.formats import STREAMED
+
+    assert set(STREAMED_FORMATS) == {"text", *STREAMED}

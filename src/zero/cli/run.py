@@ -70,18 +70,20 @@ def read_stdin() -> bytes:
 STREAMED_FORMATS = ("text", "json", "concise", "github")
 
 
-def render_lint(results: Iterable[LintResult], output_format: str, stream: TextIO,
+def render_lint(results: Iterable[LintResult], output_format: str, stream: TextIO, totals: Totals,
                 color: bool | None = None) -> None:
-    """The findings in one of the output formats; the text summary goes to stderr."""
+    """The findings in one of the output formats, each result counted into ``totals``; the text
+    summary goes to stderr."""
     if output_format == "text":
-        render_text(results, stream, color=color, summary_stream=sys.stderr)
-    else:
-        from zero.output.formats import RENDERERS, STREAMED  # start-up: only for machine-readable reports
+        render_text(results, stream, color=color, summary_stream=sys.stderr, totals=totals)
+        return
+    from zero.output.formats import RENDERERS, STREAMED  # start-up: only for machine-readable reports
 
-        if output_format in STREAMED:
-            STREAMED[output_format](results, stream)
-        else:
-            RENDERERS[output_format](results if isinstance(results, Sequence) else list(results), stream)
+    counted = tallied(results, totals)
+    if output_format in STREAMED:
+        STREAMED[output_format](counted, stream)
+    else:
+        RENDERERS[output_format](list(counted), stream)
 
 
 def lint(paths: Sequence[str | Path] = (), output_format: str = "text", output_file: str | Path | None = None,
@@ -115,15 +117,14 @@ def lint(paths: Sequence[str | Path] = (), output_format: str = "text", output_f
     if output_file is not None:
         results = list(run.results)
         buffer = io.StringIO()
-        render_lint(tallied(results, totals), output_format, buffer, color=False)
+        render_lint(results, output_format, buffer, totals, color=False)
         target = Path(output_file)
         if target.suffix.lower() in REPORT_REFUSED:
             raise ZeroError("looks like a list or NC program, not a report: not replaced", str(target))
         inputs = tuple(Path(r.path) for r in results if r.path != "-")
         write_atomic(target, buffer.getvalue().encode("utf-8", "surrogateescape"), force=True, inputs=inputs)
     else:
-        render_lint(tallied(run.results, totals), output_format,
-                    sys.stderr if run.findings_to_stderr else sys.stdout)
+        render_lint(run.results, output_format, sys.stderr if run.findings_to_stderr else sys.stdout, totals)
     if show_statistics:
         sys.stderr.write(statistics(totals))
     if totals.unreadable:

@@ -138,13 +138,16 @@ def run_lint(request: LintRequest, registries: Registries, echo: Echo,
         groups.setdefault(param_desc_of(finder.for_path(f), request.param_desc), []).append(f)
     bar = progress(len(files)) if progress is not None else None
     machines: dict[Path, Machine] = {}
+
+    def finish(f: Path, r: LintResult) -> LintResult:
+        return _with_machine(f, r, finder.for_path(f), cli, request.param_desc, registries, machines)
+
     if (request.stream and bar is None and len(groups) == 1
             and not (request.fix or request.show_diff or request.add_noqa)):
         desc = next(iter(groups))  # one group: its files are all the files, in their order
         stream = iter_lint_many(files, registries(desc), lambda f: finder.for_path(f).options_for(f, cli),
                                 request.jobs)
-        return LintRun(_with_machine(f, r, finder.for_path(f), cli, request.param_desc, registries, machines)
-                       for f, r in zip(files, stream, strict=True))
+        return LintRun(finish(f, r) for f, r in zip(files, stream, strict=True))
     by_file: dict[Path, LintResult] = {}
     done = 0
     for desc, members in groups.items():
@@ -157,8 +160,7 @@ def run_lint(request: LintRequest, registries: Registries, echo: Echo,
                                            step if bar is not None else None), strict=True):
             by_file[f] = r
         done += len(members)
-    results = [_with_machine(f, by_file[f], finder.for_path(f), cli, request.param_desc, registries, machines)
-               for f in files]
+    results = [finish(f, by_file[f]) for f in files]
     run = LintRun(results, findings_to_stderr=request.show_diff)
     if request.add_noqa:
         run.results = [_add_noqa(f, r, finder.for_path(f).options_for(f, cli),

@@ -19,10 +19,6 @@ from zero.output.text import printable
 from zero.rules import RULES
 
 
-def _all(results: Sequence[LintResult]) -> list[Diagnostic]:
-    return [d for r in results for d in r.diagnostics]
-
-
 def _each(results: Iterable[LintResult]) -> Iterator[Diagnostic]:
     """The findings of results read once, in order (they may be made as they are read)."""
     for r in results:
@@ -150,14 +146,14 @@ def artifact_uri(path: str) -> dict[str, str]:
 def render_sarif(results: Sequence[LintResult], stream: TextIO) -> None:
     """SARIF 2.1.0: the rules that fired and one result per finding."""
     level = {Severity.ERROR: "error", Severity.WARNING: "warning", Severity.INFO: "note"}
-    used = sorted({d.code for d in _all(results)})
+    used = sorted({d.code for d in _each(results)})
     rules = [{"id": c, "name": RULES[c].name, "shortDescription": {"text": RULES[c].summary},
               "fullDescription": {"text": RULES[c].explanation.strip()},
               "defaultConfiguration": {"level": level[RULES[c].severity]},
               "help": {"text": RULES[c].explanation.strip()}} for c in used if c in RULES]
     index = {c: i for i, c in enumerate(used)}
     res = []
-    for d in _all(results):
+    for d in _each(results):
         item: dict[str, object] = {
             "ruleId": d.code, "ruleIndex": index[d.code], "level": level[d.severity],
             "message": {"text": printable(d.message)},

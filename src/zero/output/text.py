@@ -113,13 +113,14 @@ class TextWriter:
 
 def render_text(results: Iterable[LintResult], stream: TextIO | None = None,
                 color: bool | None = None, summary: bool = True,
-                summary_stream: TextIO | None = None) -> None:
+                summary_stream: TextIO | None = None, totals: Totals | None = None) -> None:
     """Findings with their source line; the summary line to ``summary_stream`` (default: the
     same stream; the CLI sends it to stderr so that standard output holds findings only).
-    ``results`` is read once, in order: it may be a stream of results made as it is read."""
+    ``results`` is read once, in order: it may be a stream of results made as it is read. Each
+    is counted into ``totals`` (the caller's, when it needs them afterwards)."""
     stream = stream or sys.stdout
     writer = TextWriter(stream, use_color(stream) if color is None else color)
-    totals = Totals()
+    totals = Totals() if totals is None else totals
     for r in tallied(results, totals):
         shown: Counter[str] = Counter()
         for d in r.diagnostics:
