@@ -15,7 +15,7 @@ from typing import Any
 
 from zero.catalog.ids import AXIS_UNITS, g_code_with_index, in_units
 from zero.catalog.registry import NO_DEFAULT, ParamSpec, Registry
-from zero.catalog.values import default_number, parse_int, read_value
+from zero.catalog.values import canonical_key, default_number, parse_int, read_value
 from zero.errors import ZeroError
 from zero.lists.model import Comment, Entry, Key, ValueKind, parse_key
 from zero.lists.tokenizer import tokenize
@@ -68,6 +68,8 @@ def read_side(data: bytes, fmt: str, path: str, registry: Registry, kind: str | 
         doc = tokenize(encode_list(tree, to_list_text(tree).text), path)
         if kind is None and isinstance(tree.meta.get("kind"), str):
             kind = tree.meta["kind"]
+    if kind is None:
+        kind = registry.detect_kind((e.key.pattern for e in doc.entries if e.key), path)
     entries: dict[str, Entry] = {}
     comments: dict[str, tuple[str, ...]] = {}
     pending: list[str] = []
@@ -75,11 +77,10 @@ def read_side(data: bytes, fmt: str, path: str, registry: Registry, kind: str | 
         if type(item) is Comment:
             pending.append(doc.lines[item.line - 1].strip())
         elif type(item) is Entry and not item.after_end:
-            entries[item.key_text] = item  # the later value wins, as on the controller
-            comments[item.key_text] = (*pending, item.comment.strip() if item.comment else "")
+            key = canonical_key(registry, kind, item)  # one element: `[01]` is `[1]`, an alias its key
+            entries[key] = item  # the later value wins, as on the controller
+            comments[key] = (*pending, item.comment.strip() if item.comment else "")
             pending = []
-    if kind is None:
-        kind = registry.detect_kind((e.key.pattern for e in entries.values() if e.key), path)
     return Side(path, kind, entries, comments)
 
 

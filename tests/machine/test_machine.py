@@ -22,7 +22,7 @@ CLEAN = FIXTURES / "machine-clean" / "listen" / "hochlauf.lis"
 
 
 def x_findings(startup: Path) -> list[dict[str, object]]:
-    _, results = lint_machine(startup, builtin_registry())
+    results = lint_machine(load_machine(startup, builtin_registry()), builtin_registry())
     return [{"file": Path(d.path).name, "line": d.span.line, "code": d.code, "severity": d.severity.label}
             for r in results for d in r.diagnostics]
 
@@ -46,7 +46,7 @@ def test_corpus_start_up_lists_resolve_their_machine(registry: Registry, corpus:
         assert m.missing == [], startup
         assert len(m.axis_lists) == 4 and len(m.channels) == 1
         assert [(a.index, a.log_nr, a.name) for a in m.channels[0].axes] == [(0, 1, "X"), (1, 2, "Y"), (2, 3, "Z")]
-        _, results = lint_machine(startup, registry)
+        results = lint_machine(load_machine(startup, registry), registry)
         assert not [d for r in results for d in r.diagnostics if d.code.startswith("X")]
 
 

@@ -15,6 +15,7 @@ import pytest
 from conftest import FIXTURES, ROOT, golden
 from zero.catalog.registry import Registry
 from zero.engine.lint import LintOptions, lint_machine
+from zero.engine.project import Project
 from zero.machine.effective import effective
 from zero.machine.limits import pcs_limits
 from zero.machine.model import REFERENCES, load_machine
@@ -51,7 +52,7 @@ def test_default_lists_lie_under_the_specific_lists(registry: Registry) -> None:
 
 
 def test_layered_machine_findings_golden(registry: Registry, request: pytest.FixtureRequest) -> None:
-    _, results = lint_machine(LAYERED, registry)
+    results = lint_machine(load_machine(LAYERED, registry), registry)
     lines = [f"{os.path.relpath(d.path, ROOT)}:{d.span.line}:{d.span.column}: {d.code} "
              + d.message.replace(f"{ROOT}{os.sep}", "") for r in results for d in r.diagnostics]
     expected = golden(FIXTURES / "machine-layered" / "expected.json", lines,
@@ -111,7 +112,7 @@ def test_corpus_machines_load_every_list_they_name(registry: Registry, corpus: P
         assert len(m.lists) == 15
         scopes = effective(m)
         assert len(scopes) == 13 and all(s.values for s in scopes)  # every list but the two default lists
-        _, results = lint_machine(startup, registry)
+        results = lint_machine(load_machine(startup, registry), registry)
         assert len(results) == 15
 
 
@@ -149,12 +150,13 @@ def test_diff_of_two_machines_compares_effective_values(tmp_path: Path, registry
     default = other / "listen" / "achse_vorgabe.lis"
     default.write_text(default.read_text().replace("kenngr.swe_neg                                        -1000000",
                                                    "kenngr.swe_neg                                        -2000000"))
-    run = run_diff(str(LAYERED), str(other / "listen" / "hochlauf.lis"), registry, lambda: b"", machine=True)
+    run = run_diff(str(LAYERED), str(other / "listen" / "hochlauf.lis"), Project(lambda _d: registry), lambda: b"",
+                   machine=True)
     changed = [(c.group, c.key, c.old, c.new, c.delta) for c in run.changes]
     # the axis lists are the same files: the change comes from the default list under both
     assert changed == [("axis 1 (achs_mds[0]): kenngr", "kenngr.swe_neg", "-1000000", "-2000000", -100.0),
                        ("axis 2 (achs_mds[1]): kenngr", "kenngr.swe_neg", "-1000000", "-2000000", -100.0)]
-    same = run_diff(str(LAYERED), str(LAYERED), registry, lambda: b"", machine=True)
+    same = run_diff(str(LAYERED), str(LAYERED), Project(lambda _d: registry), lambda: b"", machine=True)
     assert same.changes == []
 
 
@@ -169,12 +171,12 @@ def test_diff_of_two_lists_names_the_machines_default_list(tmp_path: Path, regis
     old = machine / "listen" / "achse_y.lis"
     new = machine / "listen" / "achse_y_neu.lis"
     new.write_text(old.read_text().replace("kenngr.swe_pos                                        2000000\n", ""))
-    run = run_diff(str(old), str(new), registry, lambda: b"")
+    run = run_diff(str(old), str(new), Project(lambda _d: registry), lambda: b"")
     [change] = run.changes
     assert (change.key, change.kind, change.delta) == ("kenngr.swe_pos", "removed", -100.0)
     assert change.note == "now the default list's 1000000 (achse_vorgabe.lis:4)"
     (machine / "pyproject.toml").unlink()
-    [plain] = run_diff(str(old), str(new), registry, lambda: b"").changes
+    [plain] = run_diff(str(old), str(new), Project(lambda _d: registry), lambda: b"").changes
     assert plain.note == "now the default 100000000" and plain.delta == 9800.0
 
 
@@ -204,7 +206,7 @@ def test_a_machine_finding_is_suppressed_in_the_list_it_concerns(registry: Regis
     zero_list = tmp_path / "m" / "listen" / "nullp.lis"
 
     def x001() -> list[int]:
-        _, results = lint_machine(startup, registry, LintOptions(extend_select=("Z",)))
+        results = lint_machine(load_machine(startup, registry), registry, LintOptions(extend_select=("Z",)))
         found = [d for r in results for d in r.diagnostics if r.path == str(zero_list)]
         return [d.span.line for d in found if d.code in ("X001", "Z001")]
 
@@ -221,7 +223,7 @@ def test_a_machine_finding_is_suppressed_in_the_list_it_concerns(registry: Regis
 def test_an_offset_outside_its_soft_limits_points_at_the_entries_that_set_them(registry: Registry) -> None:
     """X001 on the zero-offset list names the soft limits it is measured against: here the default
     axis list's (the axis list sets none), as related locations."""
-    _, results = lint_machine(LAYERED, registry)
+    results = lint_machine(load_machine(LAYERED, registry), registry)
     (x001,) = [d for r in results for d in r.diagnostics if d.code == "X001"]
     default = str(LAYERED.parent / "achse_vorgabe.lis")
     assert [(r.path, r.message.split()[0]) for r in x001.related] == [(default, "kenngr.swe_neg"),

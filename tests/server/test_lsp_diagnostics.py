@@ -158,7 +158,7 @@ async def test_the_machine_findings_follow_the_open_lists(client: LanguageClient
     found = await open_document(client, zero_list)
     assert (2, "X001") in codes(found)  # G54 X at 500 mm, outside the default list's +-100 mm
     x001 = next(d for d in found if d.code == "X001")
-    assert "achse_x.lis" in x001.message
+    assert "(achse_vorgabe.lis:3,4)" in x001.message  # where the limits are set, as `zero explain` says
     related = {(r.location.uri.rsplit("/", 1)[-1], r.location.range.start.line) for r in x001.related_information or []}
     assert {name for name, _ in related} == {"achse_vorgabe.lis"}  # the soft limits come from the default list
     # the offset moved inside the limits in the editor, not saved: the finding goes

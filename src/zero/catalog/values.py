@@ -14,10 +14,37 @@ from typing import TypeVar
 
 from zero.catalog.ranges import TYPE_LIMITS, Number
 from zero.catalog.registry import INTEGER_TYPES, NO_DEFAULT, ParamSpec, Registry
-from zero.lists.model import Document, Entry, ValueKind
+from zero.lists.model import Document, Entry, ValueKind, format_key
 from zero.records import field, record
 
-__all__ = ["NO_DEFAULT", "ListValues", "Resolved", "Value", "default_number", "parse_int", "read_value"]
+__all__ = ["NO_DEFAULT", "ListValues", "Resolved", "Slot", "Value", "canonical_key", "default_number", "parse_int",
+           "read_value", "slot_of"]
+
+# One element of a parameter: its ID and indices (``("P-AXIS-00178", ())``); an entry whose key the
+# catalogue does not know is its key pattern behind a `?` (``("?a.b[]", (1,))``). `[01]` and `[1]`
+# are one element, and so are an alias and the key it stands for.
+Slot = tuple[str, tuple[int, ...]]
+
+
+def slot_of(registry: Registry, kind: str | None, entry: Entry) -> tuple[Slot, ParamSpec | None]:
+    """The element an entry sets, and its parameter where the catalogue knows it."""
+    key = entry.key
+    if key is None:
+        return ("?" + entry.key_text, ()), None
+    spec = registry.by_pattern(key.pattern, kind) or registry.alias(key.pattern, kind)
+    if spec is None:
+        return ("?" + key.pattern, key.indices), None
+    return (spec.id, key.indices), spec
+
+
+def canonical_key(registry: Registry, kind: str | None, entry: Entry) -> str:
+    """The documented key of the element an entry sets, its indices as numbers: an alias
+    (`kenngr.homing_type`) as the key it stands for (`kenngr.homing.homing_type`), `[01]` as `[1]`."""
+    key = entry.key
+    if key is None:
+        return entry.key_text
+    spec = registry.by_pattern(key.pattern, kind) or registry.alias(key.pattern, kind)
+    return format_key(spec.key if spec is not None and spec.key else key.pattern, key.indices)
 
 
 @record

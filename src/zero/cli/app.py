@@ -25,8 +25,8 @@ from zero.cli.run import REGISTRIES, echo, read_stdin, render_lint
 from zero.cli.run import lint as run_lint_command
 from zero.diff import SAME, DiffOptions, show_lines
 from zero.engine.commands import parse_kind, run_format
-from zero.engine.config import ConfigFinder
 from zero.engine.convert import check_convert_options, convert_inputs, write_outputs
+from zero.engine.project import Project
 from zero.engine.queries import load_side, run_diff, run_effective, run_limits
 from zero.errors import ZeroError
 from zero.files import write_atomic
@@ -78,8 +78,15 @@ ParamDesc = Annotated[Path | None, typer.Option(
 state = _State()
 
 
-def _registry() -> Registry:
-    return REGISTRIES(state.param_desc)
+def _project(machine: Path | None = None, config: Path | None = None, isolated: bool = False) -> Project:
+    """The resolver of this run: the configuration, catalogue and machine of each file."""
+    return Project(REGISTRIES, config=config, isolated=isolated, param_desc=state.param_desc, machine=machine)
+
+
+def _registry(path: str | Path | None = None) -> Registry:
+    """The catalogue of a file (its configuration's `param-desc`, `--param-desc` over it); of the
+    current directory where there is no file."""
+    return _project().registry(Path(path) if path is not None and str(path) != "-" else None)
 
 
 def _run(command: Callable[[], int]) -> None:
@@ -184,7 +191,8 @@ def convert(
     def body() -> int:
         forced = parse_kind(kind)
         check_convert_options(inputs, output, out_dir)
-        items = convert_inputs(inputs, _registry(), read_stdin, src=from_.value if from_ else None,
+        registry = _registry(inputs[0] if len(inputs) == 1 else None)
+        items = convert_inputs(inputs, registry, read_stdin, src=from_.value if from_ else None,
                                to=to.value if to else None, output=output, kind=forced, check=check,
                                strict=strict)
         for item in items:
@@ -235,7 +243,7 @@ def diff(
 
     def body() -> int:
         forced = parse_kind(kind)
-        run = run_diff(a, b, _registry(), read_stdin, defaults=defaults,
+        run = run_diff(a, b, _project(), read_stdin, defaults=defaults,
                        options=DiffOptions(strict=strict, comments=comments),
                        fmt=from_.value if from_ else None, kind=forced, machine=machine)
         if output_format is OutputFormat.json:
@@ -271,7 +279,7 @@ def show(
             return _effective(machine, args or [], effective_, False, output_format)
         if not args or len(args) != 1:
             raise ZeroError("give one file to show (or --machine STARTUP [KEY...])")
-        registry = _registry()
+        registry = _registry(args[0])
         side = load_side(args[0], from_.value if from_ else None, parse_kind(kind), registry, read_stdin)
         sys.stdout.write("\n".join(show_lines(side, registry)) + "\n")
         return exits.OK
@@ -281,7 +289,7 @@ def show(
 
 def _effective(machine: Path | None, keys: list[str], with_defaults: bool, explain: bool,
                output_format: OutputFormat) -> int:
-    run = run_effective(machine, REGISTRIES, keys, with_defaults, explain, state.param_desc)
+    run = run_effective(_project(machine), keys, with_defaults, explain)
     if output_format is OutputFormat.json:
         sys.stdout.write(json.dumps(run.to_json(), indent=2, ensure_ascii=False) + "\n")
     else:
@@ -352,7 +360,7 @@ def limits(
     """Soft limits in the programming coordinate system, per work offset (G53..G59, G159=n) and axis."""
 
     def body() -> int:
-        run = run_limits(machine, REGISTRIES, all_groups, profile, state.param_desc)
+        run = run_limits(_project(machine), all_groups, profile)
         if output_format is OutputFormat.json:
             data: dict[str, object] = {"limits": [r.to_json() for r in run.rows]}
             if profile:
@@ -439,7 +447,7 @@ def config_cmd(
     """Show the configuration that applies to PATH ([tool.zero], zero.toml, .zero.toml)."""
 
     def body() -> int:
-        cfg = ConfigFinder(config, isolated).for_path(path)
+        cfg = _project(config=config, isolated=isolated).config(path, directory=path.is_dir())
         if show:
             sys.stdout.write(cfg.show())
         return exits.OK

@@ -11,10 +11,8 @@ from __future__ import annotations
 
 from collections.abc import Callable, Iterable, Sequence
 from pathlib import Path
-from typing import TYPE_CHECKING
 
 from zero.catalog.registry import KINDS, Registry, kind_from_name
-from zero.engine.config import Config, ConfigFinder
 from zero.engine.discovery import collect_files
 from zero.engine.lint import (
     PROGRAM_SUFFIXES,
@@ -27,17 +25,15 @@ from zero.engine.lint import (
     lint_file,
     lint_machine,
     lint_program,
+    unreadable,
 )
 from zero.engine.parallel import iter_lint_many, lint_many
+from zero.engine.project import Project, Registries
 from zero.errors import ZeroError
 from zero.files import read_file, write_atomic
 from zero.records import field, record
 from zero.rules import RULES
 
-if TYPE_CHECKING:  # start-up: `zero lint` of lists loads no machine model, fixer or formatter
-    from zero.machine.model import Machine
-
-Registries = Callable[[Path | None], Registry]
 Progress = Callable[[int, int], None]
 
 
@@ -68,13 +64,6 @@ def parse_kind(kind: str | None) -> str | None:
         names = ", ".join(v[0] for v in KINDS.values())
         raise ZeroError(f"unknown list kind {kind!r} (use one of: {names})")
     return forced
-
-
-def param_desc_of(config: Config, given: str | Path | None) -> Path | None:
-    """The command line's --param-desc, else the configuration's."""
-    if given:
-        return Path(given)
-    return config.param_desc
 
 
 # ------------------------------------------------------------------------------ lint
@@ -123,30 +112,28 @@ def run_lint(request: LintRequest, registries: Registries, echo: Echo,
     """``zero lint``: lint files, a machine or standard input; apply or show fixes."""
     cli = LintOptions(select=parse_codes(request.select), ignore=parse_codes(request.ignore),
                       kind=parse_kind(request.kind), extend_select=parse_codes(request.extend_select))
-    finder = ConfigFinder(Path(request.config) if request.config else None, request.isolated)
+    project = Project(registries, config=request.config, isolated=request.isolated, param_desc=request.param_desc,
+                      cli=cli, machine=request.machine)
     if request.machine is not None:
-        return LintRun(_lint_machine(request, Path(request.machine), cli, finder, registries))
+        return LintRun(_lint_machine(request, project))
     if request.reads_stdin:
-        return _lint_stdin(request, cli, finder, registries, echo, read_stdin())
+        return _lint_stdin(request, project, echo, read_stdin())
     named = [Path(p) for p in request.paths]
-    files = collect_files(named, include=lambda f: finder.for_path(f).included(f),
-                          exclude=lambda f: finder.for_path(f).excluded(f))
+    files = collect_files(named, include=project.included, exclude=project.excluded)
     if not files and any(p.is_dir() for p in named):
         raise ZeroError("no list files or NC programs found (looked for *.lis, *.lst, *.nc, *.mpf, *.spf)")
     groups: dict[Path | None, list[Path]] = {}
     for f in files:  # files sharing a parameter description share a registry
-        groups.setdefault(param_desc_of(finder.for_path(f), request.param_desc), []).append(f)
+        groups.setdefault(project.param_desc(f), []).append(f)
     bar = progress(len(files)) if progress is not None else None
-    machines: dict[Path, Machine] = {}
 
     def finish(f: Path, r: LintResult) -> LintResult:
-        return _with_machine(f, r, finder.for_path(f), cli, request.param_desc, registries, machines)
+        return _with_machine(f, r, project)
 
     if (request.stream and bar is None and len(groups) == 1
             and not (request.fix or request.show_diff or request.add_noqa)):
         desc = next(iter(groups))  # one group: its files are all the files, in their order
-        stream = iter_lint_many(files, registries(desc), lambda f: finder.for_path(f).options_for(f, cli),
-                                request.jobs)
+        stream = iter_lint_many(files, registries(desc), project.options, request.jobs)
         return LintRun(finish(f, r) for f, r in zip(files, stream, strict=True))
     by_file: dict[Path, LintResult] = {}
     done = 0
@@ -155,70 +142,64 @@ def run_lint(request: LintRequest, registries: Registries, echo: Echo,
             if bar is not None:
                 bar(base + n, len(files))
 
-        for f, r in zip(members, lint_many(members, registries(desc),
-                                           lambda f: finder.for_path(f).options_for(f, cli), request.jobs,
+        for f, r in zip(members, lint_many(members, registries(desc), project.options, request.jobs,
                                            step if bar is not None else None), strict=True):
             by_file[f] = r
         done += len(members)
     results = [finish(f, by_file[f]) for f in files]
     run = LintRun(results, findings_to_stderr=request.show_diff)
     if request.add_noqa:
-        run.results = [_add_noqa(f, r, finder.for_path(f).options_for(f, cli),
-                                 registries(param_desc_of(finder.for_path(f), request.param_desc)), echo, run)
+        run.results = [_add_noqa(f, r, project.options(f), project.registry(f), echo, run)
                        for f, r in zip(files, results, strict=True)]
         return run
     if request.fix or request.show_diff:
-        run.results = [_fix_one(f, r, finder.for_path(f).options_for(f, cli),
-                                registries(param_desc_of(finder.for_path(f), request.param_desc)),
-                                request, echo, run) for f, r in zip(files, results, strict=True)]
+        run.results = [_fix_one(f, r, project.options(f), project.registry(f), request, echo, run)
+                       for f, r in zip(files, results, strict=True)]
     return run
 
 
-def _lint_machine(request: LintRequest, startup: Path, cli: LintOptions, finder: ConfigFinder,
-                  registries: Registries) -> list[LintResult]:
-    """``--machine``: every list of the machine and the X rules, plus the files named."""
-    registry = registries(Path(request.param_desc) if request.param_desc else None)
-    cfg = finder.for_path(startup)
-    machine, results = lint_machine(startup, registry, cli, cfg.machine_lists, cfg.machine_workdir)
-    require_startup(machine, registry)
-    for f in collect_files([Path(p) for p in request.paths]):  # programs and lists named as well
+def _lint_machine(request: LintRequest, project: Project) -> list[LintResult]:
+    """``--machine``: every list of the machine and the X rules, each list with its own configuration
+    (selection, per-file ignores), plus the files named, checked against the machine."""
+    machine = project.machine(required=True)
+    assert machine is not None and project.machine_given is not None
+    results = lint_machine(machine, project.registry(project.machine_given), project.options)
+    for f in collect_files([Path(p) for p in request.paths], exclude=project.excluded):
         if f.suffix.lower() in PROGRAM_SUFFIXES:
-            results.append(lint_program(read_file(f), registry, str(f), cli, machine))
+            try:
+                data = read_file(f)
+            except ZeroError as exc:
+                results.append(unreadable(str(f), exc, project.options(f)))
+                continue
+            results.append(lint_program(data, project.registry(f), str(f), project.options(f), machine))
         else:
-            results.append(lint_file(f, registry, cli))
+            results.append(lint_file(f, project.registry(f), project.options(f)))
     return results
 
 
-def _with_machine(path: Path, result: LintResult, cfg: Config, cli: LintOptions, param_desc: str | Path | None,
-                  registries: Registries, machines: dict[Path, Machine], data: bytes | None = None) -> LintResult:
+def _with_machine(path: Path, result: LintResult, project: Project, data: bytes | None = None) -> LintResult:
     """An NC program in a project whose configuration names the machine: lint it against it."""
-    if cfg.machine is None or path.suffix.lower() not in PROGRAM_SUFFIXES or is_unreadable(result):
+    if path.suffix.lower() not in PROGRAM_SUFFIXES or is_unreadable(result):
         return result
-    from zero.machine.model import load_machine  # start-up: only with a machine
-
-    registry = registries(param_desc_of(cfg, param_desc))
-    m = machines.get(cfg.machine)
-    if m is None:
-        m = machines[cfg.machine] = load_machine(cfg.machine, registry, cli.kind, cfg.machine_lists,
-                                                 cfg.machine_workdir)
+    machine = project.machine(path)
+    if machine is None:
+        return result
     source = read_file(path) if data is None else data
-    return lint_program(source, registry, str(path), cfg.options_for(path, cli), m)
+    return lint_program(source, project.registry(path), str(path), project.options(path), machine)
 
 
-def _lint_stdin(request: LintRequest, cli: LintOptions, finder: ConfigFinder, registries: Registries,
-                echo: Echo, data: bytes) -> LintRun:
+def _lint_stdin(request: LintRequest, project: Project, echo: Echo, data: bytes) -> LintRun:
     """Standard input as the file ``--stdin-filename`` names: read as that file would be (a list,
     an NC program, YAML/TOML/JSON), its configuration applied. With ``--fix`` the fixed text goes
     to standard output, with ``--diff`` the patch; the findings then go to standard error."""
     name = request.stdin_filename or "-"
-    cfg = finder.for_path(Path(name))
     passthrough = request.fix and not request.show_diff
-    if name != "-" and cfg.excluded(Path(name)):
+    if name != "-" and project.excluded(Path(name)):
         if passthrough:
             echo.out_bytes(data)
         return LintRun(report=False)
-    options = cfg.options_for(Path(name), cli)
-    registry = registries(param_desc_of(cfg, request.param_desc))
+    options = project.options(Path(name))
+    registry = project.registry(Path(name))
     if (request.fix or request.show_diff) and is_list(name):
         from zero.engine.fixes import fix_bytes, unified_diff  # start-up: only with --fix/--diff
 
@@ -231,7 +212,7 @@ def _lint_stdin(request: LintRequest, cli: LintOptions, finder: ConfigFinder, re
         echo.out_bytes(fixed.fixed)
         return LintRun([fixed.result], findings_to_stderr=True, changed=int(fixed.fixed != data))
     result = lint_data(data, name, registry, options)
-    result = _with_machine(Path(name), result, cfg, cli, request.param_desc, registries, {}, data)
+    result = _with_machine(Path(name), result, project, data)
     if passthrough:
         echo.out_bytes(data)  # nothing to fix in an NC program or a structured file
     return LintRun([result], findings_to_stderr=request.fix or request.show_diff)
@@ -296,14 +277,12 @@ def run_format(paths: Sequence[str | Path], registries: Registries, echo: Echo, 
     report (never write). ``-`` formats standard input to standard output."""
     from zero.engine.fixes import unified_diff  # start-up: `zero lint` does not format
 
-    finder = ConfigFinder(Path(config) if config else None, isolated)
+    project = Project(registries, config=config, isolated=isolated, param_desc=param_desc)
     if [str(p) for p in paths] == ["-"]:
         if read_stdin is None:
             raise ZeroError("standard input is not available here")
-        return _format_stdin(read_stdin(), stdin_filename or "-", finder, registries, echo, check, show_diff,
-                             param_desc)
-    files = collect_files([Path(p) for p in paths], include=lambda f: finder.for_path(f).included(f),
-                          exclude=lambda f: finder.for_path(f).excluded(f))
+        return _format_stdin(read_stdin(), stdin_filename or "-", project, echo, check, show_diff)
+    files = collect_files([Path(p) for p in paths], include=project.included, exclude=project.excluded)
     lists = [f for f in files if is_list(str(f))]  # NC programs and structured forms are not reformatted
     run = FormatRun(len(lists))
     for f in lists:
@@ -313,8 +292,7 @@ def run_format(paths: Sequence[str | Path], registries: Registries, echo: Echo, 
             echo.err(f"zero: {exc} (not formatted)\n")
             run.unreadable += 1
             continue
-        registry = registries(param_desc_of(finder.for_path(f), param_desc))
-        new = _formatted(data, str(f), registry, echo, run)
+        new = _formatted(data, str(f), project.registry(f), echo, run)
         if new is None or new == data:
             continue
         run.changed += 1
@@ -338,18 +316,16 @@ def _formatted(data: bytes, name: str, registry: Registry, echo: Echo, run: Form
         return None
 
 
-def _format_stdin(data: bytes, name: str, finder: ConfigFinder, registries: Registries, echo: Echo,
-                  check: bool, show_diff: bool, param_desc: str | Path | None) -> FormatRun:
+def _format_stdin(data: bytes, name: str, project: Project, echo: Echo, check: bool, show_diff: bool) -> FormatRun:
     from zero.engine.fixes import unified_diff  # start-up: `zero lint` does not format
 
     run = FormatRun(1)
-    cfg = finder.for_path(Path(name))
     if not is_list(name):  # an NC program or a structured form passes through unchanged
         if not (check or show_diff):
             echo.out_bytes(data)
         return run
-    new = None if name != "-" and cfg.excluded(Path(name)) else \
-        _formatted(data, name, registries(param_desc_of(cfg, param_desc)), echo, run)
+    new = None if name != "-" and project.excluded(Path(name)) else \
+        _formatted(data, name, project.registry(Path(name)), echo, run)
     if new is not None and new != data:
         run.changed = 1
     if show_diff:
@@ -362,15 +338,5 @@ def _format_stdin(data: bytes, name: str, finder: ConfigFinder, registries: Regi
     return run
 
 
-def require_startup(machine: Machine, registry: Registry) -> Machine:
-    """A machine question needs a start-up list: refuse another kind of list plainly."""
-    doc = machine.startup.values.doc
-    kind = registry.detect_kind((e.key.pattern for e in doc.entries if e.key), doc.path)
-    if not machine.named and kind not in (None, "STUP"):
-        raise ZeroError(f"not a start-up list: it reads as a {KINDS[kind][1]} and names no other list; "
-                        "give the start-up list (hochlauf.lis)", doc.path)
-    return machine
-
-
-__all__ = ["Echo", "FormatRun", "LintRequest", "LintRun", "param_desc_of", "parse_codes", "parse_kind",
-           "require_startup", "run_format", "run_lint"]
+__all__ = ["Echo", "FormatRun", "LintRequest", "LintRun", "Registries", "parse_codes", "parse_kind", "run_format",
+           "run_lint"]

@@ -340,19 +340,25 @@ class ConfigFinder:
         self._by_name: dict[str, Config] = {}  # the directory as written → its configuration
         self._default = Config()
 
-    def for_path(self, file: Path) -> Config:
+    def for_path(self, path: Path, directory: bool | None = None) -> Config:
+        """The configuration of a file (found from its directory up) or of a directory (found from
+        the directory itself up). ``directory`` says which ``path`` is; ``None`` asks the file system.
+        Cached by the directory the search starts from, as written: a file and the folder of the
+        same name never share an entry."""
         if self.isolated:
             return self._default
         if self.explicit is not None:
             return self.explicit
-        key = os.path.dirname(str(file))
+        if directory is None:
+            directory = path.is_dir()
+        key = str(path) if directory else os.path.dirname(str(path))
         hit = self._by_name.get(key)
         if hit is None:
-            hit = self._by_name[key] = self._lookup(file)
+            start = path.resolve() if directory else _resolved(path).parent
+            hit = self._by_name[key] = self._lookup(start)
         return hit
 
-    def _lookup(self, file: Path) -> Config:
-        start = _resolved(file).parent if not file.is_dir() else file.resolve()
+    def _lookup(self, start: Path) -> Config:
         walked: list[Path] = []
         d: Path | None = start
         found = self._default

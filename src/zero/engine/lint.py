@@ -11,7 +11,7 @@ passed in.
 from __future__ import annotations
 
 import re
-from collections.abc import Iterable, Iterator, Sequence
+from collections.abc import Callable, Iterable, Iterator, Sequence
 from pathlib import Path
 from typing import TYPE_CHECKING
 
@@ -32,7 +32,8 @@ from zero.rules import (
     run_checks,
 )
 from zero.rules.base import declared_codes
-from zero.rules.suppress import apply_directives, parse_comment_directives
+from zero.rules.funnel import funnel
+from zero.rules.suppress import parse_comment_directives
 
 if TYPE_CHECKING:  # start-up: linting a list loads neither the machine model nor the structured forms
     from zero.machine.model import Machine
@@ -210,15 +211,14 @@ def lint_program(data: bytes, registry: Registry, path: str = "-", options: Lint
     severities = selected_rules(options or LintOptions())
     ctx = ProgramContext(program, registry, machine, severities, path)
     found = run_checks(PROGRAM_CHECKS, ctx)
-    found.sort(key=Diagnostic.sort_key)
     lines = program.doc.lines  # suppressions in the program's own comments: `( noqa: N003 )`, `; noqa`
     comments = [(n, col, text) for n, line in enumerate(lines, 1) if "(" in line or ";" in line
                  for col, text in comment_spans(line)]
+    directives = None
     if comments:
         code = [n for n, line in enumerate(lines, 1) if strip_comments(line).strip()]
-        directives, bad = parse_comment_directives(comments, code, declared_codes())
-        found = apply_directives(path, directives, bad, found, severities)
-    return LintResult(path, program.doc, "PROGRAM", found)
+        directives = parse_comment_directives(comments, code, declared_codes())
+    return LintResult(path, program.doc, "PROGRAM", funnel(path, found, severities, directives))
 
 
 def is_list(path: str | Path) -> bool:
@@ -238,11 +238,13 @@ def lint_data(data: bytes, path: str, registry: Registry, options: LintOptions |
     return lint_structured(data, fmt, registry, path, options)
 
 
-def unreadable(path: str, error: ZeroError) -> LintResult:
-    """The result for a file that could not be read: one F001 finding, nothing checked."""
+def unreadable(path: str, error: ZeroError, options: LintOptions | None = None) -> LintResult:
+    """The result for a file that could not be read: one F001 finding (through the funnel, so
+    ``--ignore F001`` leaves the file out in silence), nothing checked."""
     message = f"{error.message}: not checked"
     finding = Diagnostic("F001", RULES["F001"].severity, message, Span(1, 1, 1, 1), path)
-    return LintResult(path, Document(path, "utf-8", [], [], []), None, [finding])
+    found = funnel(path, [finding], selected_rules(options or LintOptions()))
+    return LintResult(path, Document(path, "utf-8", [], [], []), None, found)
 
 
 def is_unreadable(result: LintResult) -> bool:
@@ -254,30 +256,32 @@ def lint_file(path: str | Path, registry: Registry, options: LintOptions | None 
     try:
         data = read_file(path)
     except ZeroError as exc:
-        return unreadable(str(path), exc)
+        return unreadable(str(path), exc, options)
     return lint_data(data, str(path), registry, options)
 
 
-def lint_machine(startup_path: Path, registry: Registry, options: LintOptions | None = None,
-                 overrides: dict[str, Path] | None = None,
-                 workdir: Path | None = None) -> tuple[Machine, list[LintResult]]:
-    """Every list of the machine with its own findings, plus the X findings on the file they
-    concern (the start-up list, a channel list, a zero-offset list or an axis list)."""
-    from zero.machine.model import load_machine  # start-up: not for a single list
-
-    opts = options or LintOptions()
-    machine = load_machine(startup_path, registry, opts.kind, overrides, workdir)
-    severities = selected_rules(opts)
+def lint_machine(machine: Machine, registry: Registry,
+                 options: LintOptions | Callable[[Path], LintOptions] | None = None) -> list[LintResult]:
+    """Every list of a machine (loaded by :mod:`zero.engine.project`) with its own findings, plus the
+    X findings on the list they concern (the start-up list, a channel list, a zero-offset list or an
+    axis list). ``options`` may give each list its own options (its configuration): the X checks run
+    for every code any list selects, and each finding then passes the funnel of the list it lands in."""
+    fixed = options or LintOptions()
+    options_for: Callable[[Path], LintOptions] = fixed if callable(fixed) else (lambda _p: fixed)
+    per_list = [(lf, options_for(lf.path)) for lf in machine.lists]
+    wanted: dict[str, Severity] = {}
+    for _, opts in per_list:
+        wanted.update(selected_rules(opts))
     across: dict[str, list[Diagnostic]] = {}  # the X findings, by the list they concern
-    for d in run_checks(MACHINE_CHECKS, MachineContext(machine, registry, severities)):
+    for d in run_checks(MACHINE_CHECKS, MachineContext(machine, registry, wanted)):
         across.setdefault(d.path, []).append(d)
     results: dict[str, LintResult] = {}
-    for lf in machine.lists:
+    for lf, opts in per_list:
         if str(lf.path) not in results:
             kind = lf.values.kind
             results[str(lf.path)] = lint_document(lf.values.doc, registry, replace(opts, kind=kind) if kind else opts,
                                                   across.get(str(lf.path), ()))
-    return machine, list(results.values())
+    return list(results.values())
 
 
 __all__ = [

@@ -12,14 +12,13 @@ from pathlib import Path
 
 from zero.catalog.registry import Registry
 from zero.diff import Change, DiffOptions, Side, diff_defaults, diff_sides, read_side
-from zero.engine.commands import Registries, require_startup
-from zero.engine.config import ConfigFinder
 from zero.engine.convert import source_format
+from zero.engine.project import Project
 from zero.errors import ZeroError
 from zero.files import read_file
 from zero.machine.effective import Scope, effective, entries_of, summary
 from zero.machine.limits import Ip247Violation, LimitRow, ip247, pcs_limits
-from zero.machine.model import Machine, load_machine
+from zero.machine.model import Machine
 from zero.records import field, record
 
 
@@ -37,11 +36,17 @@ class DiffRun:
     header: str
 
 
-def run_diff(a: str, b: str | None, registry: Registry, read_stdin: Callable[[], bytes], *,
+def _named(name: str) -> Path | None:
+    return None if name == "-" else Path(name)
+
+
+def run_diff(a: str, b: str | None, project: Project, read_stdin: Callable[[], bytes], *,
              defaults: bool = False, options: DiffOptions | None = None, fmt: str | None = None,
              kind: str | None = None, machine: bool = False) -> DiffRun:
-    """``zero diff A B``, ``zero diff --defaults A`` or ``zero diff --machine A B`` (two start-up lists)."""
+    """``zero diff A B``, ``zero diff --defaults A`` or ``zero diff --machine A B`` (two start-up lists).
+    Both sides are read with the catalogue of A's configuration."""
     options = options or DiffOptions()
+    registry = project.registry(_named(a))
     if defaults:
         if b is not None:
             raise ZeroError("--defaults compares one file with the registry; give one file")
@@ -53,32 +58,33 @@ def run_diff(a: str, b: str | None, registry: Registry, read_stdin: Callable[[],
     if a == "-" and b == "-":
         raise ZeroError("only one side can be standard input")
     if machine:
-        return _diff_machines(Path(a), Path(b), registry, options)
+        return _diff_machines(a, b, project, registry, options)
     side_a = load_side(a, fmt, kind, registry, read_stdin)
     side_b = load_side(b, fmt, kind or side_a.kind, registry, read_stdin)
-    under = _default_list_side(Path(b if b != "-" else a), side_b.kind or side_a.kind, registry)
+    under = _default_list_side(_named(b) or _named(a), side_b.kind or side_a.kind, project)
     return DiffRun(diff_sides(side_a, side_b, registry, options, under), f"--- {a}\n+++ {b}")
 
 
-def _default_list_side(path: Path, kind: str | None, registry: Registry) -> Side | None:
-    """The default list that lies under lists of ``kind`` on the machine the configuration of
-    ``path`` names (``[tool.zero.machine]``), if there is one."""
-    cfg = ConfigFinder().for_path(path)
-    if cfg.machine is None or kind is None:
+def _default_list_side(path: Path | None, kind: str | None, project: Project) -> Side | None:
+    """The default list that lies under lists of ``kind`` on the machine ``path`` belongs to
+    (``[tool.zero.machine]``), if there is one."""
+    if kind is None:
         return None
     try:
-        machine = load_machine(cfg.machine, registry, None, cfg.machine_lists, cfg.machine_workdir)
+        machine = project.machine(path)
     except ZeroError:
         return None  # a machine that cannot be read: the catalogue's defaults, as without one
-    lf = machine.defaults.get(kind)
+    lf = machine.defaults.get(kind) if machine is not None else None
     return Side(str(lf.path), kind, entries_of(lf.values)) if lf is not None else None
 
 
-def _diff_machines(a: Path, b: Path, registry: Registry, options: DiffOptions) -> DiffRun:
+def _diff_machines(a: str, b: str, project: Project, registry: Registry, options: DiffOptions) -> DiffRun:
     """Two machines' effective configurations, list by list (a value a default list supplies
-    counts as the machine's value; a removed one falls back to the catalogue default)."""
-    def sides(startup: Path) -> dict[str, Side]:
-        m = load_machine(startup, registry)
+    counts as the machine's value; a removed one falls back to the catalogue default); each
+    machine with the list overrides of its own configuration."""
+    def sides(startup: str) -> dict[str, Side]:
+        m = project.machine(Path(startup), startup=startup, required=True)
+        assert m is not None
         return {name: Side(str(lf.path), lf.values.kind, entries_of(lf.values)) for name, lf in m.scopes()}
 
     left, right = sides(a), sides(b)
@@ -103,23 +109,24 @@ class LimitsRun:
 PROFILES = ("ip247",)
 
 
-def machine_of(startup: Path | None, registries: Registries, param_desc: str | Path | None = None) -> Machine:
-    """The machine of a start-up list (the configuration's ``[tool.zero.machine]`` when not
-    named), with the configuration's list overrides."""
-    cfg = ConfigFinder().for_path(startup if startup is not None else Path.cwd())
-    path = startup or cfg.machine
-    if path is None:
-        raise ZeroError("name the start-up list with --machine (or [tool.zero.machine] startup)")
-    registry = registries(Path(param_desc) if param_desc else None)
-    return require_startup(load_machine(path, registry, None, cfg.machine_lists, cfg.machine_workdir), registry)
+def machine_of(project: Project) -> Machine:
+    """The machine a command about a machine is asked about: ``--machine``, else the
+    configuration's ``[tool.zero.machine]`` (of the current directory)."""
+    m = project.machine(required=True)
+    assert m is not None
+    return m
 
 
-def run_limits(machine: Path | None, registries: Registries, all_groups: bool = False,
-               profile: str | None = None, param_desc: str | Path | None = None) -> LimitsRun:
+def run_limits(project: Project, all_groups: bool = False, profile: str | None = None) -> LimitsRun:
     """``zero limits``: PCS soft limits of the machine (the configuration's when not named)."""
     if profile not in (None, *PROFILES):
         raise ZeroError(f"unknown profile {profile!r} (known: {', '.join(PROFILES)})")
-    m = machine_of(machine, registries, param_desc)
+    m = machine_of(project)
+    if not m.axes():
+        read = sum(1 for n in m.named if n.status in ("loaded", "overridden"))
+        raise ZeroError(f"no axis list of the machine could be read ({read} of {len(m.named)} named lists read, "
+                        f"working directory {m.workdir}): no soft limits to compute; `zero lint --machine` says why",
+                        str(m.startup.path))
     return LimitsRun(pcs_limits(m, all_groups), ip247(m) if profile == "ip247" else [])
 
 
@@ -132,11 +139,10 @@ class EffectiveRun:
         return {**self.summary, "scopes": [s.to_json() for s in self.scopes]}
 
 
-def run_effective(machine: Path | None, registries: Registries, keys: Sequence[str] = (),
-                  with_defaults: bool = False, explain: bool = False,
-                  param_desc: str | Path | None = None) -> EffectiveRun:
+def run_effective(project: Project, keys: Sequence[str] = (), with_defaults: bool = False,
+                  explain: bool = False) -> EffectiveRun:
     """``zero show --machine`` / ``zero explain``: effective values and where they come from."""
-    m = machine_of(machine, registries, param_desc)
+    m = machine_of(project)
     scopes = effective(m, keys, with_defaults, explain)
     if keys and not scopes:
         raise ZeroError(f"no list of the machine has or documents {', '.join(keys)}")

@@ -1,7 +1,8 @@
 """Effective values with their origin: what the controller uses, and where it comes from.
 
-For every list the machine loads, a parameter's value comes from the list itself, else
-from the default list under it (``default_achs_mds`` under each axis list,
+For every list the machine loads, an element of a parameter (its ID and indices: `[01]` and
+`[1]` are one element, an alias is the key it stands for) takes its value from the list itself,
+else from the default list under it (``default_achs_mds`` under each axis list,
 ``default_sda_mds`` under each channel list), else from the catalogue's default. This is
 ``zero show --machine`` (one line per parameter, like ``git config --show-origin``) and
 ``zero explain KEY --machine`` (every layer for one key).
@@ -13,10 +14,10 @@ import fnmatch
 from collections.abc import Sequence
 
 from zero.catalog.registry import NO_DEFAULT, ParamSpec
-from zero.catalog.values import ListValues
+from zero.catalog.values import ListValues, Slot, canonical_key, slot_of
 from zero.lists.model import Entry, format_key, parse_key
 from zero.machine.model import ListFile, Machine
-from zero.records import field, record
+from zero.records import field, record, replace
 
 LIST, DEFAULT_LIST, CATALOGUE, NOT_SET = "list", "default list", "catalogue default", "not set"
 
@@ -74,30 +75,32 @@ class Scope:
 
 
 def canonical(values: ListValues, entry: Entry) -> str:
-    """The documented key an entry sets: an alias (`kenngr.homing_type`) counts as the key it
-    stands for (`kenngr.homing.homing_type`), with the entry's indices."""
-    if entry.key is None or values.registry.by_pattern(entry.key.pattern, values.kind) is not None:
-        return entry.key_text
-    spec = values.registry.alias(entry.key.pattern, values.kind)
-    return format_key(spec.key, entry.key.indices) if spec is not None and spec.key else entry.key_text
+    """The documented key an entry sets (an alias as the key it stands for, `[01]` as `[1]`)."""
+    return canonical_key(values.registry, values.kind, entry)
 
 
-def _entries(values: ListValues) -> dict[str, tuple[Entry, Origin]]:
-    """Documented key → (entry that wins, its origin): the default list first, the list over it."""
-    out: dict[str, tuple[Entry, Origin]] = {}
+@record(frozen=True)
+class Setting:
+    """The entry that gives one element its value, in the list or a default list under it."""
+
+    key: str  # the documented key, indices as numbers
+    spec: ParamSpec | None
+    entry: Entry
+    origin: Origin
+
+
+def settings(values: ListValues) -> dict[Slot, Setting]:
+    """Element (parameter ID and indices) → the entry the controller uses: the default list's,
+    then this list's over it (the later entry wins within a list)."""
+    out: dict[Slot, Setting] = {}
     if values.base is not None:
-        out.update({k: (e, Origin(DEFAULT_LIST, o.path, o.line)) for k, (e, o) in _entries(values.base).items()})
+        for slot, s in settings(values.base).items():
+            out[slot] = replace(s, origin=Origin(DEFAULT_LIST, s.origin.path, s.origin.line))
     for e in values.doc.entries:
-        out[canonical(values, e)] = (e, Origin(LIST, values.doc.path, e.line))
+        slot, spec = slot_of(values.registry, values.kind, e)
+        out[slot] = Setting(canonical_key(values.registry, values.kind, e), spec, e,
+                            Origin(LIST, values.doc.path, e.line))
     return out
-
-
-def _spec(values: ListValues, key: str) -> ParamSpec | None:
-    parsed = parse_key(key)
-    if parsed is None:
-        return None
-    return values.registry.by_pattern(parsed.pattern, values.kind) or values.registry.alias(parsed.pattern,
-                                                                                             values.kind)
 
 
 def _catalogue(spec: ParamSpec | None) -> str | None:
@@ -109,18 +112,26 @@ def _catalogue(spec: ParamSpec | None) -> str | None:
 def _matches(key: str, spec: ParamSpec | None, wanted: Sequence[str]) -> bool:
     if not wanted:
         return True
-    pattern = parse_key(key).pattern if parse_key(key) is not None else key  # type: ignore[union-attr]
-    # a key as written first: `[1]` is an index, not fnmatch's character class
-    return any(w in (key, pattern) or fnmatch.fnmatchcase(key, w) or (spec is not None and w.upper() == spec.id)
-               for w in wanted)
+    parsed = parse_key(key)
+    pattern = parsed.pattern if parsed is not None else key
+    for w in wanted:
+        given = parse_key(w)
+        # a key as written first: `[1]` is an index, not fnmatch's character class; `[01]` is `[1]`
+        if w in (key, pattern) or (given is not None and parsed is not None and given.indices
+                                   and (given.pattern, given.indices) == (parsed.pattern, parsed.indices)):
+            return True
+        if fnmatch.fnmatchcase(key, w) or (spec is not None and w.upper() == spec.id):
+            return True
+    return False
 
 
-def _layers(values: ListValues, key: str, spec: ParamSpec | None) -> tuple[tuple[str | None, Origin], ...]:
+def _layers(values: ListValues, slot: Slot, spec: ParamSpec | None) -> tuple[tuple[str | None, Origin], ...]:
     out: list[tuple[str | None, Origin]] = []
     layer: ListValues | None = values
     source = LIST
     while layer is not None:
-        hit = next((e for e in reversed(layer.doc.entries) if canonical(layer, e) == key), None)
+        hit = next((e for e in reversed(layer.doc.entries)
+                    if slot_of(layer.registry, layer.kind, e)[0] == slot), None)
         out.append((hit.value, Origin(source, layer.doc.path, hit.line)) if hit is not None
                    else (None, Origin(NOT_SET, layer.doc.path)))
         layer, source = layer.base, DEFAULT_LIST
@@ -130,33 +141,34 @@ def _layers(values: ListValues, key: str, spec: ParamSpec | None) -> tuple[tuple
 
 def scope_values(name: str, lf: ListFile, keys: Sequence[str] = (), with_defaults: bool = False,
                  explain: bool = False) -> Scope:
-    """The effective values of one list: every key it or its default list sets (matching ``keys``,
+    """The effective values of one list: every element it or its default list sets (matching ``keys``,
     IDs or key patterns); with ``with_defaults`` also the catalogue defaults of what neither sets;
     with ``explain`` every layer of each value."""
     scope = Scope(name, lf)
     values = lf.values
-    seen: set[str] = set()
-    for key, (entry, origin) in sorted(_entries(values).items()):
-        spec = _spec(values, key)
-        if not _matches(key, spec, keys):
+    seen: set[Slot] = set()
+    for slot, s in sorted(settings(values).items(), key=lambda item: item[1].key):
+        if not _matches(s.key, s.spec, keys):
             continue
-        seen.add(key)
-        scope.values.append(Value(key, spec.id if spec else None, entry.value, origin,
-                                  _layers(values, key, spec) if explain else ()))
+        seen.add(slot)
+        scope.values.append(Value(s.key, s.spec.id if s.spec else None, s.entry.value, s.origin,
+                                  _layers(values, slot, s.spec) if explain else ()))
     if with_defaults or keys:
         registry = values.registry
         for spec in (registry.get(pid) for pid in registry.specs):
             if spec is None or spec.kind != values.kind or not spec.key:
                 continue
             key = spec.key
-            shown = key.replace("[]", "[0]") if not keys else next(
-                (w for w in keys if parse_key(w) is not None and parse_key(w).pattern == key), key)  # type: ignore[union-attr]
-            if shown in seen or (keys and not _matches(shown, spec, keys)) or (not keys and not with_defaults):
+            wanted = next((given for w in keys if (given := parse_key(w)) is not None and given.pattern == key), None)
+            indices = wanted.indices if wanted is not None else (0,) * key.count("[]")
+            shown = format_key(key, indices)
+            slot = (spec.id, indices)
+            if slot in seen or (keys and not _matches(shown, spec, keys)) or (not keys and not with_defaults):
                 continue
             if not keys and spec.dims:
                 continue  # arrays: only the elements a list sets are shown
             scope.values.append(Value(shown, spec.id, _catalogue(spec), Origin(CATALOGUE),
-                                      _layers(values, shown, spec) if explain else ()))
+                                      _layers(values, slot, spec) if explain else ()))
     return scope
 
 
@@ -178,5 +190,5 @@ def summary(machine: Machine) -> dict[str, object]:
 
 
 def entries_of(values: ListValues) -> dict[str, Entry]:
-    """Key → the entry the controller uses (this list's, else the default list's)."""
-    return {key: entry for key, (entry, _) in _entries(values).items()}
+    """Documented key → the entry the controller uses (this list's, else the default list's)."""
+    return {s.key: s.entry for s in settings(values).values()}

@@ -229,8 +229,14 @@ def _clean(raw: str) -> str:
 
 def working_directory(startup: Path, raws: list[str]) -> Path:
     """The controller's working directory: the start-up list's directory or the nearest
-    ancestor in which the most of ``raws`` exist (the directory itself when none does)."""
-    base = startup.parent
+    ancestor in which the most of ``raws`` exist (the directory itself when none does).
+
+    The ancestors are those of the start-up list's absolute path, however it was typed
+    (``hochlauf.lis`` from inside ``listen/`` has the same ancestors as ``listen/hochlauf.lis``);
+    the answer is said the way the start-up list was given: relative to the current directory
+    when it was given relative and the answer lies below the current directory, else absolute."""
+    absolute = Path(os.path.abspath(startup))
+    base = absolute.parent
     candidates = [base, *list(base.parents)[:MAX_ANCESTORS]]
     relative = [Path(_clean(r)) for r in raws if _clean(r) and not Path(_clean(r)).is_absolute()]
     best, hits = base, 0
@@ -238,7 +244,17 @@ def working_directory(startup: Path, raws: list[str]) -> Path:
         n = sum(1 for r in relative if (d / r).is_file())
         if n > hits:
             best, hits = d, n
-    return best
+    return shown(best, relative_to_cwd=not startup.is_absolute())
+
+
+def shown(path: Path, relative_to_cwd: bool) -> Path:
+    """``path`` (absolute) as zero names it: relative to the current directory where asked for and
+    it lies below it (``.`` for the directory itself), else absolute."""
+    if relative_to_cwd:
+        rel = os.path.relpath(path)
+        if rel != ".." and not rel.startswith(".." + os.sep):
+            return Path(rel)
+    return path
 
 
 def _inside(path: Path, root: Path) -> bool:

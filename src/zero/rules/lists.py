@@ -12,6 +12,7 @@ from zero.diagnostics import Diagnostic, Severity
 from zero.lists.model import Document
 from zero.rules import meaning, registry, suppress, syntax
 from zero.rules.base import Check, Context, declared_codes, run_checks
+from zero.rules.funnel import funnel
 
 FAMILIES = (syntax.FAMILY, registry.FAMILY, meaning.FAMILY)
 CHECKS: list[Check[Context]] = [c for family in FAMILIES for c in family.checks]
@@ -21,13 +22,12 @@ def check_document(doc: Document, registry: Registry, kind: str | None,
                    severities: dict[str, Severity],
                    extra: Sequence[Diagnostic] = ()) -> tuple[Context, list[Diagnostic]]:
     """The list's context (kind detected when ``None``) and its findings, sorted, suppressions applied.
-    ``extra``: findings about this list from elsewhere (the X rules of its machine), which the
-    list's own suppressions cover as they cover its own findings."""
+    ``extra``: findings about this list from elsewhere (the X rules of its machine), which pass the
+    same funnel (:mod:`zero.rules.funnel`): this list's selection, severities and suppressions."""
     ctx = Context.of(doc, registry, kind)
     ctx.severities = severities
     if any(p.kind == "binary" for p in doc.problems):  # one root cause, one finding
-        return ctx, [d for d in syntax.check_problems(ctx) if d.code == "S013" and d.code in severities]
+        return ctx, funnel(doc.path, [d for d in syntax.check_problems(ctx) if d.code == "S013"], severities)
     found = run_checks(CHECKS, ctx)
     found.extend(extra)
-    found.sort(key=Diagnostic.sort_key)
-    return ctx, suppress.apply(doc, found, severities, declared_codes())
+    return ctx, funnel(doc.path, found, severities, suppress.parse_directives(doc, declared_codes()))

@@ -7,6 +7,7 @@ lists, zero-offset lists) and report on the line of the list that carries the fa
 from __future__ import annotations
 
 from collections.abc import Iterator
+from pathlib import Path
 from typing import TYPE_CHECKING
 
 from zero.catalog.ids import (
@@ -238,6 +239,20 @@ def _limit_entries(ax: Axis) -> tuple[Related, ...]:
     return tuple(out)
 
 
+def _limits_origin(ax: Axis) -> str:
+    """Where an axis's soft limits come from, as `zero explain` says it: `achse_vorgabe.lis:3,4` for
+    both from the default list, `achse_x.lis:7, catalogue default` for one from the catalogue."""
+    by_file: dict[str, list[str]] = {}
+    for pid in SOFT_LIMITS:
+        layer = ax.list.values.layer_of(pid)
+        entry = layer.entry_of(pid) if layer is not None else None
+        if layer is None or entry is None:
+            by_file.setdefault("catalogue default", [])
+        else:
+            by_file.setdefault(Path(layer.doc.path).name, []).append(str(entry.line))
+    return ", ".join(f"{name}:{','.join(lines)}" if lines else name for name, lines in by_file.items())
+
+
 @FAMILY.check(OFFSET_OUTSIDE_SOFT_LIMITS, PCS_LIMIT_OVERFLOW, OFFSET_FOR_MISSING_AXIS, ROTARY_OFFSET_IN_MM)
 def check_offsets(ctx: MachineContext) -> Iterator[Diagnostic]:
     """X001, X002, X003, X006: each applied work offset against the axis it moves."""
@@ -278,7 +293,7 @@ def check_offsets(ctx: MachineContext) -> Iterator[Diagnostic]:
                 yield ctx.report("X001", span,
                                  f"the work zero of {where} on axis `{ca.name}` ({fixed(v, ax.unit)}) lies outside "
                                  f"its soft limits {fixed(ax.swe_neg, ax.unit)} .. {fixed(ax.swe_pos, ax.unit)} "
-                                 f"({ax.list.path.name}): positions near the work zero cannot be reached",
+                                 f"({_limits_origin(ax)}): positions near the work zero cannot be reached",
                                  param_id=OFFSET, path=path, related=_limit_entries(ax))
             if ax.rotary and abs(v) > FULL_TURN:
                 yield ctx.report("X006", span,

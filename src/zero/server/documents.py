@@ -25,8 +25,7 @@ from urllib.request import url2pathname
 from zero.catalog.registry import Registry
 from zero.catalog.values import ListValues
 from zero.diagnostics import Diagnostic, Severity, Span
-from zero.engine.commands import Registries, param_desc_of
-from zero.engine.config import Config, ConfigFinder
+from zero.engine.config import Config
 from zero.engine.lint import (
     PROGRAM_SUFFIXES,
     STRUCTURED_SUFFIXES,
@@ -37,11 +36,12 @@ from zero.engine.lint import (
     lint_program,
     selected_rules,
 )
+from zero.engine.project import Project, Registries
 from zero.errors import ZeroError
 from zero.files import max_file_bytes, read_file
 from zero.lists.encoding import decode
 from zero.lists.tokenizer import tokenize
-from zero.machine.model import ListFile, Machine, load_machine
+from zero.machine.model import ListFile, Machine
 from zero.records import field, record, replace
 from zero.rules import MACHINE_CHECKS, MachineContext, run_checks
 
@@ -270,19 +270,6 @@ def _structural(machine: Machine) -> set[str]:
     return out
 
 
-def _signature(machine: Machine) -> tuple[tuple[str, int, int], ...]:
-    """What the machine was read from: every named file's size and modification time."""
-    paths = [machine.startup.path, *(n.path for n in machine.named if n.path is not None)]
-    out = []
-    for p in paths:
-        try:
-            st = os.stat(p)
-            out.append((str(p), st.st_mtime_ns, st.st_size))
-        except OSError:
-            out.append((str(p), -1, -1))
-    return tuple(out)
-
-
 def _swap(machine: Machine, new: dict[int, ListFile]) -> Machine:
     """The machine with some of its lists replaced (by ``id`` of the list they replace)."""
     if not new:
@@ -309,35 +296,23 @@ class Projects:
     def __init__(self, registries: Registries, param_desc: Path | None = None,
                  settings: Settings | None = None) -> None:
         self.registries = registries
-        self.param_desc = param_desc
         self.settings = settings or Settings()
-        self.finder = ConfigFinder()
-        self._machines: dict[tuple[object, ...], tuple[tuple[tuple[str, int, int], ...], Machine]] = {}
+        self.project = Project(registries, param_desc=param_desc)  # the resolver `zero lint` uses
         self._values: OrderedDict[tuple[str, int, str], ListValues] = OrderedDict()
-        self._shaped: OrderedDict[tuple[object, ...], Machine] = OrderedDict()  # read with unsaved lists
 
     def forget(self) -> None:
         """Configuration files changed (or may have): find and read them again."""
-        self.finder = ConfigFinder()
+        self.project.forget()
 
     def config(self, path: Path | None) -> Config:
         """The configuration that applies to ``path`` (:class:`ZeroError` when it cannot be read)."""
-        return self.finder.for_path(path) if path is not None else Config()
+        return self.project.config(path) if path is not None else Config()
 
-    def registry(self, config: Config) -> Registry:
-        return self.registries(param_desc_of(config, self.param_desc))
-
-    def machine(self, config: Config, registry: Registry) -> Machine | None:
-        """The machine the configuration names, as saved (:class:`ZeroError` when it cannot be read)."""
-        if config.machine is None or not self.settings.machine:
+    def machine(self, path: Path | None) -> Machine | None:
+        """The machine the file's configuration names, as saved (:class:`ZeroError` when it cannot be read)."""
+        if path is None or not self.settings.machine:
             return None
-        key = (config.machine, tuple(sorted(config.machine_lists.items())), config.machine_workdir, id(registry))
-        hit = self._machines.get(key)
-        if hit is not None and hit[0] == _signature(hit[1]):
-            return hit[1]
-        machine = load_machine(config.machine, registry, None, config.machine_lists, config.machine_workdir)
-        self._machines[key] = (_signature(machine), machine)
-        return machine
+        return self.project.machine(path)
 
     def analyse(self, uri: str, version: int | None, text: str, encoding: str = "utf-16",
                 buffers: Mapping[str, str] | None = None) -> Analysis:
@@ -352,12 +327,16 @@ class Projects:
             config = Config()
             notes.append(Note(f"the configuration cannot be read, nothing is checked: {exc}", elsewhere=_place(exc)))
         try:
-            registry = self.registry(config)
+            if path is not None and not notes:
+                registry = self.project.registry(path)
+            else:  # an untitled document, or a configuration that cannot be read: no param-desc of its own
+                registry = self.registries(self.project.param_desc_given)
         except ZeroError as exc:
             registry = self.registries(None)
             notes.append(Note(f"the parameter description cannot be read, nothing is checked: {exc}"))
         data, saved = source_bytes(path, text)
-        options = config.options_for(path if path is not None else Path(name), LintOptions())
+        options = self.project.options(path) if path is not None and not notes else \
+            config.options_for(Path(name), LintOptions())
         a = Analysis(uri, version, path, name, form_of(name), Text(text, encoding), data, saved, registry, config,
                      options, notes=notes)
         if notes or (path is not None and config.excluded(path)):
@@ -391,7 +370,7 @@ class Projects:
         try:
             return self._machine_for(a, buffers)
         except ZeroError as exc:
-            startup = a.config.machine
+            startup = self.project.startup(a.path) if a.path is not None else None
             if a.form == PROGRAM or (startup is not None and a.path is not None
                                      and os.path.realpath(startup) == os.path.realpath(a.path)):
                 a.notes.append(Note(f"the machine of [tool.zero.machine] cannot be read: {exc}",
@@ -415,27 +394,10 @@ class Projects:
                 self._values.popitem(last=False)
         return hit
 
-    def _unsaved_machine(self, config: Config, registry: Registry, texts: dict[str, str]) -> Machine:
-        """The machine read with the unsaved text of the lists that shape it (real path → text)."""
-        assert config.machine is not None
-        key = (config.machine, tuple(sorted(config.machine_lists.items())), config.machine_workdir, id(registry),
-               tuple(sorted(texts.items())))
-        hit = self._shaped.get(key)
-        if hit is None:
-            def reader(path: Path) -> bytes:
-                text = texts.get(os.path.realpath(path))
-                return read_file(path) if text is None else source_bytes(path, text)[0]
-
-            hit = load_machine(config.machine, registry, None, config.machine_lists, config.machine_workdir, reader)
-            self._shaped[key] = hit
-            while len(self._shaped) > 4:
-                self._shaped.popitem(last=False)
-        return hit
-
     def _machine_for(self, a: Analysis, buffers: Mapping[str, str]) -> Machine | None:
         """The machine with the open documents' text in place of their saved lists: read again with
         it where a list that shapes the machine (start-up, channel, default lists) is changed."""
-        machine = self.machine(a.config, a.registry)
+        machine = self.machine(a.path)
         if machine is None:
             return None
         me = os.path.realpath(a.path) if a.path is not None else None
@@ -446,11 +408,17 @@ class Projects:
         texts = {real: t for real, t in texts.items() if not source_bytes(Path(real), t)[1]}  # changed ones
         if texts:
             try:
-                machine = self._unsaved_machine(a.config, a.registry, texts)
+                def reader(path: Path) -> bytes:
+                    text = texts.get(os.path.realpath(path))
+                    return read_file(path) if text is None else source_bytes(path, text)[0]
+
+                shaped = self.project.machine(a.path, reader=reader, reader_key=tuple(sorted(texts.items())))
             except ZeroError as exc:
                 a.notes.append(Note(f"the machine cannot be read with the unsaved lists: {exc}",
                                     severity=Severity.WARNING))
                 return None
+            assert shaped is not None  # the project names its machine: it was read above
+            machine = shaped
             structural = _structural(machine)
         if a.form == LIST and me not in {os.path.realpath(lf.path) for lf in machine.lists}:
             return None  # a list of the project the machine does not read

@@ -277,7 +277,7 @@ def create_server(registries: Registries, param_desc: Path | None = None) -> Zer
     def on_completion_resolve(item: types.CompletionItem) -> types.CompletionItem:
         uri = item.data.get("uri") if isinstance(item.data, dict) else None
         registry = server.analysis(uri).registry if isinstance(uri, str) else \
-            server.projects.registries(server.projects.param_desc)
+            server.projects.registries(server.projects.project.param_desc_given)
         return completion.resolve(item, registry)
 
     @server.feature(types.TEXT_DOCUMENT_SIGNATURE_HELP,
