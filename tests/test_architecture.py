@@ -204,3 +204,39 @@ def test_the_readme_layout_matches_the_tree() -> None:
     actual |= {str(p.relative_to(SRC / "zero")) for p in (SRC / "zero").iterdir() if (p / "__init__.py").is_file()}
     actual.add("catalog/data")
     assert shown == actual
+
+
+RESOLVER = "zero.engine.project"
+# name → the module that defines it: only the resolver may use it (issue 22: the machine was loaded,
+# and the configuration read, in six places that disagreed)
+RESOLVED_ONLY = {"load_machine": "zero.machine.model", "ConfigFinder": "zero.engine.config",
+                 "parse_config": "zero.engine.config"}
+
+
+def _names_used(path: Path) -> set[str]:
+    """Every name a module imports or refers to (``x`` and ``m.x``)."""
+    tree = ast.parse(path.read_text(encoding="utf-8"))
+    out: set[str] = set()
+    for node in ast.walk(tree):
+        if isinstance(node, ast.ImportFrom):
+            out.update(a.name for a in node.names)
+        elif isinstance(node, ast.Name):
+            out.add(node.id)
+        elif isinstance(node, ast.Attribute):
+            out.add(node.attr)
+    return out
+
+
+def test_only_the_resolver_loads_a_machine_or_reads_configuration() -> None:
+    """No command, no server module, no other engine module answers "which configuration, which
+    machine" on its own: they ask zero.engine.project."""
+    wrong = sorted(f"{m} uses {name}" for m, path in MODULES.items() if m != RESOLVER
+                   for name in _names_used(path) & set(RESOLVED_ONLY) if RESOLVED_ONLY[name] != m)
+    assert wrong == []
+    assert set(RESOLVED_ONLY) <= _names_used(MODULES[RESOLVER]) | {"parse_config"}
+
+
+def test_the_architecture_check_sees_a_machine_loaded_elsewhere(tmp_path: Path) -> None:
+    bad = tmp_path / "bad.py"
+    bad.write_text("from zero.machine.model import load_machine\nm = load_machine(p, r)\n")
+    assert "load_machine" in _names_used(bad)

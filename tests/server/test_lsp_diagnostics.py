@@ -247,3 +247,35 @@ async def test_a_broken_pyproject_points_at_its_line(client: LanguageClient, tmp
     assert "tool.zero.select" in note.message
     assert note.related_information and note.related_information[0].location.range.start.line == 1
     close_document(client, path)
+
+
+async def test_the_server_and_the_command_line_give_identical_findings(client: LanguageClient,
+                                                                       tmp_path: Path) -> None:
+    """The same file, configuration and machine: the same findings from `zero lint FILE`, from
+    `zero lint --machine` (for that list) and from the server: one resolver, one funnel."""
+    root = tmp_path / "m"
+    shutil.copytree(FIXTURES / "machine-layered", root, ignore=shutil.ignore_patterns("*.json", "*.txt"))
+    (root / "zero.toml").write_text('ignore = ["M004"]\nextend-select = ["S012"]\n'
+                                    '[per-file-ignores]\n"listen/achse_y.lis" = ["X"]\n'
+                                    '[severity]\nX001 = "error"\nR = "info"\n'
+                                    '[machine]\nstartup = "listen/hochlauf.lis"\n')
+    nullp = root / "listen" / "nullp.lis"
+    nullp.write_text(nullp.read_text().replace("Ende", "#np_grp[2].achse[0].versch 1\nnp_grp[3].achse[0].inaktiv 7\nEnde"))
+    machine = zero_cli("lint", "--machine", "listen/hochlauf.lis", "--output-format", "json", cwd=root)
+    by_list: dict[str, list[tuple[int, str, str]]] = {}
+    for f in json.loads(machine.stdout):
+        by_list.setdefault(Path(f["path"]).name, []).append((f["line"], f["code"], f["severity"]))
+    severities = {types.DiagnosticSeverity.Error: "error", types.DiagnosticSeverity.Warning: "warning",
+                  types.DiagnosticSeverity.Information: "info"}
+    seen = set()
+    for path in sorted((root / "listen").glob("*.lis")):
+        if path.name == "achse_c.lis":  # beside the start-up list, but not the file it names
+            continue
+        served = [(d.range.start.line + 1, str(d.code), severities[d.severity])  # type: ignore[index]
+                  for d in await open_document(client, path)]
+        close_document(client, path)
+        alone = [(f["line"], f["code"], f["severity"]) for f in json.loads(
+            zero_cli("lint", str(path.relative_to(root)), "--output-format", "json", cwd=root).stdout)]
+        assert served == alone == by_list.get(path.name, []), path.name
+        seen.update(code for _, code, _ in served)
+    assert {"X001", "X005", "S012", "R005"} <= seen

@@ -13,6 +13,7 @@ from collections.abc import Callable, Iterable, Sequence
 from pathlib import Path
 
 from zero.catalog.registry import KINDS, Registry, kind_from_name
+from zero.diagnostics import Diagnostic, Severity
 from zero.engine.discovery import collect_files
 from zero.engine.lint import (
     PROGRAM_SUFFIXES,
@@ -23,8 +24,10 @@ from zero.engine.lint import (
     lint_bytes,
     lint_data,
     lint_file,
+    lint_in_machine,
     lint_machine,
     lint_program,
+    machine_findings,
     unreadable,
 )
 from zero.engine.parallel import iter_lint_many, lint_many
@@ -127,8 +130,10 @@ def run_lint(request: LintRequest, registries: Registries, echo: Echo,
         groups.setdefault(project.param_desc(f), []).append(f)
     bar = progress(len(files)) if progress is not None else None
 
+    across: dict[int, dict[str, list[Diagnostic]]] = {}  # the X findings of each machine, found once
+
     def finish(f: Path, r: LintResult) -> LintResult:
-        return _with_machine(f, r, project)
+        return _with_machine(f, r, project, found=across)
 
     if (request.stream and bar is None and len(groups) == 1
             and not (request.fix or request.show_diff or request.add_noqa)):
@@ -177,15 +182,39 @@ def _lint_machine(request: LintRequest, project: Project) -> list[LintResult]:
     return results
 
 
-def _with_machine(path: Path, result: LintResult, project: Project, data: bytes | None = None) -> LintResult:
-    """An NC program in a project whose configuration names the machine: lint it against it."""
-    if path.suffix.lower() not in PROGRAM_SUFFIXES or is_unreadable(result):
+def _with_machine(path: Path, result: LintResult, project: Project, data: bytes | None = None,
+                  found: dict[int, dict[str, list[Diagnostic]]] | None = None) -> LintResult:
+    """A file of a project whose configuration names its machine, checked against it: an NC program
+    (N003/N004), and a list the machine reads as ``zero lint --machine`` checks it (its kind, the X
+    findings on it). ``found`` keeps each machine's X findings for the run."""
+    if is_unreadable(result):
         return result
-    machine = project.machine(path)
+    program = path.suffix.lower() in PROGRAM_SUFFIXES
+    if not program and (not is_list(path) or data is not None or project.startup(path) is None):
+        return result  # standard input: not the file the machine reads
+    try:
+        machine = project.machine(path)
+    except ZeroError:
+        if program:
+            raise  # the program's checks need it: said, as for a program named with --machine
+        return result  # a list is checked as without a machine; `zero lint --machine` says why
     if machine is None:
         return result
-    source = read_file(path) if data is None else data
-    return lint_program(source, project.registry(path), str(path), project.options(path), machine)
+    registry, options = project.registry(path), project.options(path)
+    if program:
+        source = read_file(path) if data is None else data
+        return lint_program(source, registry, str(path), options, machine)
+    if found is None:
+        found = {}
+    across = found.get(id(machine))
+    if across is None:
+        across = found[id(machine)] = machine_findings(machine, registry, _every_code())
+    linted = lint_in_machine(str(path), machine, registry, options, across=across)
+    return linted if linted is not None else result
+
+
+def _every_code() -> dict[str, Severity]:
+    return {code: rule.severity for code, rule in RULES.items()}
 
 
 def _lint_stdin(request: LintRequest, project: Project, echo: Echo, data: bytes) -> LintRun:

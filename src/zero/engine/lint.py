@@ -10,6 +10,7 @@ passed in.
 
 from __future__ import annotations
 
+import os
 import re
 from collections.abc import Callable, Iterable, Iterator, Sequence
 from pathlib import Path
@@ -36,7 +37,7 @@ from zero.rules.funnel import funnel
 from zero.rules.suppress import parse_comment_directives
 
 if TYPE_CHECKING:  # start-up: linting a list loads neither the machine model nor the structured forms
-    from zero.machine.model import Machine
+    from zero.machine.model import ListFile, Machine
     from zero.structured.common import Found
     from zero.structured.tree import Tree
 
@@ -260,6 +261,15 @@ def lint_file(path: str | Path, registry: Registry, options: LintOptions | None 
     return lint_data(data, str(path), registry, options)
 
 
+def machine_findings(machine: Machine, registry: Registry, wanted: dict[str, Severity]) -> dict[str, list[Diagnostic]]:
+    """The X findings of a machine for the codes in ``wanted``, by the real path of the list they
+    concern (each still to pass the funnel of that list)."""
+    across: dict[str, list[Diagnostic]] = {}
+    for d in run_checks(MACHINE_CHECKS, MachineContext(machine, registry, wanted)):
+        across.setdefault(os.path.realpath(d.path), []).append(d)
+    return across
+
+
 def lint_machine(machine: Machine, registry: Registry,
                  options: LintOptions | Callable[[Path], LintOptions] | None = None) -> list[LintResult]:
     """Every list of a machine (loaded by :mod:`zero.engine.project`) with its own findings, plus the
@@ -272,16 +282,38 @@ def lint_machine(machine: Machine, registry: Registry,
     wanted: dict[str, Severity] = {}
     for _, opts in per_list:
         wanted.update(selected_rules(opts))
-    across: dict[str, list[Diagnostic]] = {}  # the X findings, by the list they concern
-    for d in run_checks(MACHINE_CHECKS, MachineContext(machine, registry, wanted)):
-        across.setdefault(d.path, []).append(d)
+    across = machine_findings(machine, registry, wanted)
     results: dict[str, LintResult] = {}
     for lf, opts in per_list:
         if str(lf.path) not in results:
-            kind = lf.values.kind
-            results[str(lf.path)] = lint_document(lf.values.doc, registry, replace(opts, kind=kind) if kind else opts,
-                                                  across.get(str(lf.path), ()))
+            results[str(lf.path)] = _in_machine(lf, lf.values.doc, registry, opts,
+                                                across.get(os.path.realpath(lf.path), []))
     return list(results.values())
+
+
+def _in_machine(lf: ListFile, doc: Document, registry: Registry, options: LintOptions,
+                found: list[Diagnostic]) -> LintResult:
+    kind = lf.values.kind
+    extra = [d if d.path == doc.path else replace(d, path=doc.path) for d in found]
+    return lint_document(doc, registry, replace(options, kind=kind) if kind else options, extra)
+
+
+def lint_in_machine(path: str, machine: Machine, registry: Registry, options: LintOptions,
+                    doc: Document | None = None,
+                    across: dict[str, list[Diagnostic]] | None = None) -> LintResult | None:
+    """A list of the machine linted as ``zero lint --machine`` lints it: as the kind the start-up list
+    reads it as, with the X findings that concern it (``across``: the machine's, when already
+    found); ``None`` when the machine does not read this file. ``doc`` is the list as read here (an
+    editor's unsaved text); by default the file as the machine read it, under the name ``path``."""
+    me = os.path.realpath(path)
+    lf = next((lf for lf in machine.lists if os.path.realpath(lf.path) == me), None)
+    if lf is None:
+        return None
+    if doc is None:
+        doc = lf.values.doc if lf.values.doc.path == path else replace(lf.values.doc, path=path)
+    if across is None:
+        across = machine_findings(machine, registry, selected_rules(options))
+    return _in_machine(lf, doc, registry, options, across.get(me, []))
 
 
 __all__ = [
@@ -297,10 +329,12 @@ __all__ = [
     "lint_data",
     "lint_document",
     "lint_file",
+    "lint_in_machine",
     "lint_machine",
     "lint_program",
     "lint_structured",
     "lint_tree",
+    "machine_findings",
     "selected_rules",
     "tallied",
     "unreadable",

@@ -32,9 +32,8 @@ from zero.engine.lint import (
     LintOptions,
     LintResult,
     lint_data,
-    lint_document,
+    lint_in_machine,
     lint_program,
-    selected_rules,
 )
 from zero.engine.project import Project, Registries
 from zero.errors import ZeroError
@@ -43,7 +42,6 @@ from zero.lists.encoding import decode
 from zero.lists.tokenizer import tokenize
 from zero.machine.model import ListFile, Machine
 from zero.records import field, record, replace
-from zero.rules import MACHINE_CHECKS, MachineContext, run_checks
 
 LIST, PROGRAM, STRUCTURED = "list", "program", "structured"
 # A YAML/TOML/JSON file is a list's structured form when it carries zero's record.
@@ -359,9 +357,9 @@ class Projects:
             return a
         if a.form == LIST:
             a.machine = self._try_machine(a, buffers or {})
-            found = self._machine_findings(a) if a.machine is not None else []
-            if found:  # linted again with them: the list's suppressions cover them, as in `zero lint --machine`
-                a.result = lint_document(a.result.document, registry, options, found)
+            if a.machine is not None and a.path is not None:  # as `zero lint` and `zero lint --machine` lint it
+                linted = lint_in_machine(name, a.machine, registry, options, a.result.document)
+                a.result = linted if linted is not None else a.result
         return a
 
     def _try_machine(self, a: Analysis, buffers: Mapping[str, str]) -> Machine | None:
@@ -437,13 +435,3 @@ class Projects:
                 continue
             new[id(lf)] = replace(lf, values=replace(values, base=lf.values.base))
         return _swap(machine, new)
-
-    def _machine_findings(self, a: Analysis) -> list[Diagnostic]:
-        """The X findings of the machine that concern this list."""
-        assert a.machine is not None and a.path is not None
-        me = os.path.realpath(a.path)
-        if me not in {os.path.realpath(lf.path) for lf in a.machine.lists}:
-            return []
-        context = MachineContext(a.machine, a.registry, selected_rules(a.options))
-        return [replace(d, path=a.name) for d in run_checks(MACHINE_CHECKS, context)
-                if os.path.realpath(d.path) == me]
