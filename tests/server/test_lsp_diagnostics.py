@@ -260,7 +260,8 @@ async def test_the_server_and_the_command_line_give_identical_findings(client: L
                                     '[severity]\nX001 = "error"\nR = "info"\n'
                                     '[machine]\nstartup = "listen/hochlauf.lis"\n')
     nullp = root / "listen" / "nullp.lis"
-    nullp.write_text(nullp.read_text().replace("Ende", "#np_grp[2].achse[0].versch 1\nnp_grp[3].achse[0].inaktiv 7\nEnde"))
+    added = "#np_grp[2].achse[0].versch 1\nnp_grp[3].achse[0].inaktiv 7\nEnde"  # S012, R005
+    nullp.write_text(nullp.read_text().replace("Ende", added))
     machine = zero_cli("lint", "--machine", "listen/hochlauf.lis", "--output-format", "json", cwd=root)
     by_list: dict[str, list[tuple[int, str, str]]] = {}
     for f in json.loads(machine.stdout):
