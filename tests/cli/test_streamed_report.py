@@ -64,7 +64,8 @@ def test_run_lint_streams_only_when_asked(tree: Path) -> None:
 
 def test_the_command_line_knows_which_formats_stream() -> None:
     """The lean command line names them without importing the renderers (start-up)."""
-    from zero.cli.run import STREAMED_FORMATS
-    from zero.output.formats import STREAMED
+    from zero.output import OUTPUT_FORMATS, STREAMED_FORMATS
+    from zero.output.formats import RENDERERS, STREAMED
 
     assert set(STREAMED_FORMATS) == {"text", *STREAMED}
+    assert set(OUTPUT_FORMATS) == {"text", *RENDERERS}  # the formats are named once, in zero.output

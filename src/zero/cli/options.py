@@ -13,9 +13,8 @@ from __future__ import annotations
 from pathlib import Path
 from typing import Literal
 
+from zero.output import OUTPUT_FORMATS
 from zero.records import record
-
-OUTPUT_FORMATS = ("text", "concise", "json", "github", "gitlab", "junit", "sarif")
 
 
 @record(frozen=True)

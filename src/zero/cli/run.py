@@ -16,11 +16,12 @@ from typing import TextIO
 
 from zero.catalog.registry import Registry, load_registry
 from zero.cli import exits
-from zero.cli.options import OUTPUT_FORMATS
 from zero.engine.commands import Echo, LintRequest, run_lint
-from zero.engine.lint import LIST_SUFFIXES, PROGRAM_SUFFIXES, LintResult, Totals, tallied
+from zero.engine.lint import LintResult, Totals, tallied
 from zero.errors import ZeroError
 from zero.files import max_file_bytes, read_stream, write_atomic
+from zero.forms import LIST_SUFFIXES, PROGRAM_SUFFIXES
+from zero.output import OUTPUT_FORMATS, STREAMED_FORMATS
 from zero.output.text import ProgressBar, render_text, statistics
 
 
@@ -65,9 +66,6 @@ def read_stdin() -> bytes:
     return read_stream(sys.stdin.buffer)
 
 
-# The formats written finding by finding (``zero.output.formats.STREAMED`` and text): with one of
-# them, a run's results are rendered as they come and not kept.
-STREAMED_FORMATS = ("text", "json", "concise", "github")
 
 
 def render_lint(results: Iterable[LintResult], output_format: str, stream: TextIO, totals: Totals,

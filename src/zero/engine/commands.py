@@ -16,10 +16,8 @@ from zero.catalog.registry import KINDS, Registry, kind_from_name
 from zero.diagnostics import Diagnostic, Severity
 from zero.engine.discovery import collect_files
 from zero.engine.lint import (
-    PROGRAM_SUFFIXES,
     LintOptions,
     LintResult,
-    is_list,
     is_unreadable,
     lint_bytes,
     lint_data,
@@ -34,6 +32,7 @@ from zero.engine.parallel import iter_lint_many, lint_many
 from zero.engine.project import Project, Registries
 from zero.errors import ZeroError
 from zero.files import read_file, write_atomic
+from zero.forms import PROGRAM_SUFFIXES, is_list
 from zero.records import field, record
 from zero.rules import RULES
 

@@ -44,6 +44,7 @@ from zero.diagnostics import Severity
 from zero.engine.lint import LintOptions
 from zero.errors import ZeroError
 from zero.files import read_file
+from zero.forms import DEFAULT_INCLUDE
 from zero.lists.model import parse_key
 from zero.records import field, record
 from zero.rules import RULES
@@ -52,7 +53,6 @@ if TYPE_CHECKING:
     from pathspec import GitIgnoreSpec
 
 CONFIG_NAMES = ("zero.toml", ".zero.toml", "pyproject.toml")
-DEFAULT_INCLUDE = ("*.lis", "*.lst", "*.nc", "*.mpf", "*.spf")  # lists and NC programs
 _KEYS = ("select", "extend-select", "ignore", "per-file-ignores", "severity", "kind", "include",
          "exclude", "param-desc", "machine")
 

@@ -16,8 +16,9 @@ from zero.diagnostics import Severity
 from zero.engine.lint import LintResult, lint_tree
 from zero.errors import ZeroError
 from zero.files import read_file, write_atomic
+from zero.forms import EXTENSION, format_of
 from zero.records import field, record
-from zero.structured.formats import EXTENSION, format_of, read_tree, write_tree
+from zero.structured.formats import read_tree, write_tree
 from zero.structured.tree import Tree
 
 

@@ -8,9 +8,9 @@ import os
 from collections.abc import Callable, Iterable
 from pathlib import Path
 
-from zero.engine.lint import LIST_SUFFIXES, PROGRAM_SUFFIXES
 from zero.errors import ZeroError
 from zero.files import check_regular
+from zero.forms import LIST_SUFFIXES, PROGRAM_SUFFIXES
 
 
 def git_visible(directory: Path) -> set[str] | None:

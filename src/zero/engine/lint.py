@@ -20,6 +20,7 @@ from zero.catalog.registry import Registry, kind_from_name
 from zero.diagnostics import Diagnostic, Severity, Span
 from zero.errors import ZeroError
 from zero.files import read_file
+from zero.forms import LIST_SUFFIXES, PROGRAM_SUFFIXES, STRUCTURED_SUFFIXES
 from zero.lists.model import Document
 from zero.lists.tokenizer import tokenize
 from zero.records import field, record, replace
@@ -41,9 +42,6 @@ if TYPE_CHECKING:  # start-up: linting a list loads neither the machine model no
     from zero.structured.common import Found
     from zero.structured.tree import Tree
 
-LIST_SUFFIXES = (".lis", ".lst")
-PROGRAM_SUFFIXES = (".nc", ".mpf", ".spf")  # NC programs (zero.nc)
-STRUCTURED_SUFFIXES = {".yaml": "yaml", ".yml": "yaml", ".toml": "toml", ".json": "json"}
 
 
 @record
@@ -220,12 +218,6 @@ def lint_program(data: bytes, registry: Registry, path: str = "-", options: Lint
         code = [n for n, line in enumerate(lines, 1) if strip_comments(line).strip()]
         directives = parse_comment_directives(comments, code, declared_codes())
     return LintResult(path, program.doc, "PROGRAM", funnel(path, found, severities, directives))
-
-
-def is_list(path: str | Path) -> bool:
-    """A parameter list by its name (not an NC program, not a YAML/TOML/JSON form)."""
-    suffix = Path(path).suffix.lower()
-    return suffix not in PROGRAM_SUFFIXES and suffix not in STRUCTURED_SUFFIXES
 
 
 def lint_data(data: bytes, path: str, registry: Registry, options: LintOptions | None = None) -> LintResult:

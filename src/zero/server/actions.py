@@ -21,8 +21,9 @@ from zero.engine.baseline import NOT_RECORDED, add_noqa
 from zero.engine.fixes import fix_bytes
 from zero.engine.formatting import format_bytes
 from zero.engine.lint import LintResult
+from zero.forms import LIST, PROGRAM, STRUCTURED
 from zero.lists.encoding import BOM, decode
-from zero.server.documents import LIST, PROGRAM, STRUCTURED, Analysis, Text
+from zero.server.documents import Analysis, Text
 from zero.server.findings import RuleDocs, span_range, to_lsp
 
 FIX_ALL = "source.fixAll.zero"

@@ -18,9 +18,10 @@ import re
 from lsprotocol import types
 
 from zero.catalog.registry import ParamSpec, Registry
+from zero.forms import LIST, PROGRAM
 from zero.lists.model import Entry, parse_key
 from zero.output.docs import param_text
-from zero.server.documents import LIST, PROGRAM, Analysis
+from zero.server.documents import Analysis
 
 _KEY_TYPED = re.compile(r"([ \t]*)([A-Za-z0-9_\[\].]*)")
 _VALUE_TYPED = re.compile(r"[ \t]*([A-Za-z_][A-Za-z0-9_\[\].]*)[ \t]+([^\s|]*)")

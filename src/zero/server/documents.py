@@ -27,8 +27,6 @@ from zero.catalog.values import ListValues
 from zero.diagnostics import Diagnostic, Severity, Span
 from zero.engine.config import Config
 from zero.engine.lint import (
-    PROGRAM_SUFFIXES,
-    STRUCTURED_SUFFIXES,
     LintOptions,
     LintResult,
     lint_data,
@@ -38,12 +36,12 @@ from zero.engine.lint import (
 from zero.engine.project import Project, Registries
 from zero.errors import ZeroError
 from zero.files import max_file_bytes, read_file
+from zero.forms import LIST, PROGRAM, STRUCTURED, form_of
 from zero.lists.encoding import decode
 from zero.lists.tokenizer import tokenize
 from zero.machine.model import ListFile, Machine
 from zero.records import field, record, replace
 
-LIST, PROGRAM, STRUCTURED = "list", "program", "structured"
 # A YAML/TOML/JSON file is a list's structured form when it carries zero's record.
 _ZERO_RECORD = re.compile(r'^(?:_zero\s*:|\[\s*_zero\s*\]|\s*"_zero"\s*:)', re.MULTILINE)
 
@@ -97,16 +95,6 @@ def path_of(uri: str) -> Path | None:
 
 def uri_of(path: Path) -> str:
     return Path(os.path.abspath(path)).as_uri()
-
-
-def form_of(name: str) -> str:
-    """A list, an NC program or a structured form, by the file name (as ``zero lint`` decides)."""
-    suffix = Path(name).suffix.lower()
-    if suffix in PROGRAM_SUFFIXES:
-        return PROGRAM
-    if suffix in STRUCTURED_SUFFIXES:
-        return STRUCTURED
-    return LIST
 
 
 def _units(text: str, encoding: str) -> int:

@@ -22,11 +22,12 @@ from zero.catalog.ids import AXIS_TYPE, ROTARY_TYPES, length_text
 from zero.catalog.ranges import Number
 from zero.catalog.registry import KINDS, ParamSpec, Registry
 from zero.catalog.values import ListValues, read_value
+from zero.forms import LIST, PROGRAM, STRUCTURED, format_of
 from zero.lists.model import Comment, Entry, format_key, parse_key
 from zero.machine.effective import Origin, canonical, scope_values
 from zero.output.docs import param_text
 from zero.records import record
-from zero.server.documents import LIST, PROGRAM, STRUCTURED, Analysis
+from zero.server.documents import Analysis
 
 _ID = re.compile(r"P-[A-Z]{4}-[0-9]{5}(?:\.([0-9]+))?")
 _AXPARAM = re.compile(r'AXPARAM\s*=?\s*"([^"\s]*)', re.IGNORECASE)
@@ -120,7 +121,7 @@ def target_at(a: Analysis, line: int, col: int) -> Target | None:
 
 def _structured_target(a: Analysis, line: int) -> Target | None:
     """The parameter on a line of a YAML/TOML form (the leaf read there)."""
-    from zero.structured.formats import format_of, read_tree  # start-up: only for hovers in YAML/TOML
+    from zero.structured.formats import read_tree  # start-up: only for hovers in YAML/TOML
 
     fmt = format_of(a.name)
     if fmt is None:

@@ -20,10 +20,11 @@ import attrs
 from lsprotocol import types
 
 from zero.catalog.ids import g_code_with_index
+from zero.forms import LIST, PROGRAM, STRUCTURED, format_of
 from zero.lists.model import Entry, ValueKind, parse_key
 from zero.machine.model import BY_KEY, working_directory
 from zero.records import field, record
-from zero.server.documents import LIST, PROGRAM, STRUCTURED, Analysis, uri_of
+from zero.server.documents import Analysis, uri_of
 from zero.server.findings import line_range
 
 _KINDS = (types.SymbolKind.Namespace, types.SymbolKind.Object)
@@ -99,7 +100,7 @@ def _list_rows(a: Analysis) -> list[tuple[str, str, types.Range, types.Range]]:
 
 
 def _structured_rows(a: Analysis) -> list[tuple[str, str, types.Range, types.Range]]:
-    from zero.structured.formats import format_of, read_tree  # start-up: only for outlines of YAML/TOML
+    from zero.structured.formats import read_tree  # start-up: only for outlines of YAML/TOML
 
     fmt = format_of(a.name)
     if fmt is None or a.result is None:

@@ -21,23 +21,10 @@ from zero.structured import toml as toml_form
 from zero.structured import yaml as yaml_form
 from zero.structured.tree import Tree, encode_list, from_document, structured_path, to_list_text
 
-FORMATS = ("lis", "yaml", "toml", "json")
-SUFFIXES = {".lis": "lis", ".lst": "lis", ".yaml": "yaml", ".yml": "yaml", ".toml": "toml",
-            ".json": "json"}
-EXTENSION = {"lis": ".lis", "yaml": ".yaml", "toml": ".toml", "json": ".json"}
 READERS: dict[str, Callable[[str, str], Tree]] = {
     "yaml": yaml_form.read_yaml, "toml": toml_form.read_toml, "json": json_form.read_json}
 WRITERS: dict[str, Callable[[Tree], str]] = {
     "yaml": yaml_form.write_yaml, "toml": toml_form.write_toml, "json": json_form.write_json}
-
-
-def format_of(name: str) -> str | None:
-    """The format a file name implies (``None`` when the suffix says nothing)."""
-    lower = name.lower()
-    for suffix, fmt in SUFFIXES.items():
-        if lower.endswith(suffix):
-            return fmt
-    return None
 
 
 def decode_structured(data: bytes, path: str) -> str:
