@@ -180,3 +180,16 @@ def test_enumerations_and_bit_masks_get_no_arithmetic(registry: Registry) -> Non
 def test_a_default_in_exponent_notation_is_shown_as_a_number(registry: Registry) -> None:
     spec = registry.get("P-AXIS-00067")
     assert spec is not None and spec.default == "3.000000e+001" and spec.default_display == "30"
+
+
+@pytest.mark.parametrize("axis_type", ["2", "ACHSTYP_ROTATOR", "0x2", "4"])
+def test_the_unit_of_a_rotary_axis_is_degrees_however_its_type_is_written(registry: Registry, axis_type: str) -> None:
+    """One decision for rotary or linear (zero.catalog.ids.is_rotary): diff, hover, the rules and
+    the machine model read `kenngr.achs_typ` alike, its symbols included."""
+    old = read_side(f"kenngr.achs_typ {axis_type}\nkenngr.swe_pos 3600000\nEnde\n".encode(), "lis", "a.lis", registry)
+    new = read_side(f"kenngr.achs_typ {axis_type}\nkenngr.swe_pos 1800000\nEnde\n".encode(), "lis", "b.lis", registry)
+    [change] = diff_sides(old, new, registry)
+    assert (change.unit, change.delta) == ("°", -180.0)
+    [linear] = diff_sides(read_side(b"kenngr.achs_typ ACHSTYP_TRANSLATOR\nkenngr.swe_pos 1\nEnde\n", "lis", "a", registry),
+                          read_side(b"kenngr.achs_typ 1\nkenngr.swe_pos 2\nEnde\n", "lis", "b", registry), registry)
+    assert linear.unit == "mm"

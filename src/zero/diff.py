@@ -13,7 +13,7 @@ import re
 from pathlib import Path
 from typing import Any
 
-from zero.catalog.ids import AXIS_UNITS, g_code_with_index, in_units
+from zero.catalog.ids import AXIS_TYPE, axis_unit, g_code_with_index, in_units
 from zero.catalog.registry import NO_DEFAULT, ParamSpec, Registry
 from zero.catalog.values import canonical_key, default_number, parse_int, read_value
 from zero.errors import ZeroError
@@ -127,17 +127,15 @@ def default_effective(spec: ParamSpec | None) -> tuple[str, Any] | None:
 
 # ----------------------------------------------------------------- units and groups
 
-_UNIT_OF_TYPE = {str(axis_type): unit for axis_type, unit in AXIS_UNITS.items()}
-
-
-def axis_unit(side: Side | None) -> str | None:
-    """mm or ° from the axis type where a list states it (``kenngr.achs_typ``)."""
-    if side is None:
+def side_unit(side: Side | None, registry: Registry) -> str | None:
+    """mm or ° from the axis type where a list states it (``kenngr.achs_typ``, a number or a symbol);
+    ``None`` where it does not (a single list does not know the default list under it)."""
+    spec = registry.get(AXIS_TYPE)
+    e = side.entries.get(spec.key) if side is not None and spec is not None and spec.key else None
+    if e is None or spec is None:
         return None
-    e = side.entries.get("kenngr.achs_typ")
-    if e is None:
-        return None
-    return _UNIT_OF_TYPE.get(e.value.strip())
+    value = read_value(spec, e)
+    return axis_unit(value.number) if value.problem is None and value.number is not None else None
 
 
 def unit_and_delta(spec: ParamSpec | None, old: tuple[str, Any] | None, new: tuple[str, Any] | None,
@@ -224,7 +222,7 @@ def diff_sides(a: Side, b: Side, registry: Registry, options: DiffOptions | None
     catalogue's) is what an absent entry means."""
     options = options or DiffOptions()
     kind = b.kind or a.kind
-    unit_a, unit_b = axis_unit(a), axis_unit(b)
+    unit_a, unit_b = side_unit(a, registry), side_unit(b, registry)
     length_unit = unit_b or unit_a
     out: list[Change] = []
     # Keys in plain order here (the changes are put in key order at the end): most keys of two
@@ -286,7 +284,7 @@ def _grouped(changes: list[Change]) -> list[Change]:
 def diff_defaults(side: Side, registry: Registry, options: DiffOptions | None = None) -> list[Change]:
     """The parameters of one file that differ from the registry defaults."""
     options = options or DiffOptions()
-    length_unit = axis_unit(side)
+    length_unit = side_unit(side, registry)
     out: list[Change] = []
     for key in sorted(side.entries, key=_sort_key):
         e = side.entries[key]
@@ -312,7 +310,7 @@ def diff_defaults(side: Side, registry: Registry, options: DiffOptions | None = 
 
 def show_lines(side: Side, registry: Registry) -> list[str]:
     """A list as one line per parameter, grouped: the view ``git diff`` compares (textconv)."""
-    length_unit = axis_unit(side)
+    length_unit = side_unit(side, registry)
     out: list[str] = [f"# zero: {side.path} ({side.kind or 'unknown kind'}), "
                       f"{len(side.entries)} parameters as the controller reads them"]
     current = None

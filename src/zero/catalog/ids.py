@@ -24,7 +24,16 @@ SWE_BEHAVIOUR = "P-AXIS-00554"  # kenngr.swe_behaviour
 SWE_CHECK = "P-AXIS-00705"  # kenngr.swe_check
 SOFT_LIMITS = (SWE_NEG, SWE_POS)
 ROTARY_TYPES = (2, 4)  # kenngr.achs_typ of a rotary axis and of a spindle
-AXIS_UNITS = {1: "mm", 2: "°", 4: "°"}  # kenngr.achs_typ → the unit of its lengths
+
+
+def is_rotary(axis_type: float | None) -> bool:
+    """The one decision "rotary or linear" from the value of ``kenngr.achs_typ``: rotary axes and
+    spindles measure their lengths in 0.0001°, everything else (and an unknown type) in 0.1 µm."""
+    return axis_type is not None and axis_type in ROTARY_TYPES
+
+
+def axis_unit(axis_type: float | None) -> str:
+    return "°" if is_rotary(axis_type) else "mm"
 
 # Channel list (P-CHAN-…)
 CH_COUNT = "P-CHAN-00003"  # gruppe[0].achs_anzahl

@@ -88,6 +88,25 @@ class ParamSpec:
     enum_flags: bool = False  # the listed values are bits: any combination of them is allowed
     enum_labels: tuple[str, ...] = ()  # their meaning (only from a user's CncParaDesc.xml)
 
+    def index_first(self, pos: int) -> int:
+        """The first index of slot ``pos`` (the catalogue counts some arrays from 1)."""
+        return self.index_base if pos == 0 else 0
+
+    def valid_indices(self, pos: int) -> str:
+        """The indices of slot ``pos`` as said to people: ``0..5``, or ``1..`` where the first slot
+        counts from 1 (its end is then not documented)."""
+        base = self.index_first(pos)
+        size = self.dims[pos] if pos < len(self.dims) else 0
+        return f"{base}.." if base else f"0..{size - 1}"
+
+    def index_outside(self, indices: tuple[int, ...]) -> tuple[int, int] | None:
+        """The first (slot, index) that lies outside its array (the element does not exist: R003)."""
+        for pos, (idx, size) in enumerate(zip(indices, self.dims, strict=False)):
+            base = self.index_first(pos)
+            if idx < base or (base == 0 and size > 0 and idx >= size):
+                return pos, idx
+        return None
+
     def enum_allows(self, value: int) -> bool:
         if self.enum_flags:
             mask = 0

@@ -12,6 +12,7 @@ from __future__ import annotations
 
 from typing import TypeVar
 
+from zero.catalog.ids import AXIS_TYPE, is_rotary
 from zero.catalog.ranges import TYPE_LIMITS, Number
 from zero.catalog.registry import INTEGER_TYPES, NO_DEFAULT, ParamSpec, Registry
 from zero.lists.model import Document, Entry, ValueKind, format_key
@@ -24,6 +25,15 @@ __all__ = ["NO_DEFAULT", "ListValues", "Resolved", "Slot", "Value", "canonical_k
 # catalogue does not know is its key pattern behind a `?` (``("?a.b[]", (1,))``). `[01]` and `[1]`
 # are one element, and so are an alias and the key it stands for.
 Slot = tuple[str, tuple[int, ...]]
+
+
+def rotary(values: ListValues) -> bool | None:
+    """Whether the lengths of a list are degrees: ``None`` for a list that is not an axis list, else
+    from its axis type (``kenngr.achs_typ``: the list's, the default list's under it, else the
+    catalogue's, linear)."""
+    if values.kind != "AXIS":
+        return None
+    return is_rotary(values.number_of(AXIS_TYPE))
 
 
 def slot_of(registry: Registry, kind: str | None, entry: Entry) -> tuple[Slot, ParamSpec | None]:

@@ -521,12 +521,11 @@ def param(
 
 def _outside(spec: ParamSpec, indices: tuple[int, ...]) -> str:
     """A note when an index lies outside its array (what R003 reports in a list)."""
-    for pos, (idx, size) in enumerate(zip(indices, spec.dims, strict=False)):
-        base = spec.index_base if pos == 0 else 0
-        if idx < base or (base == 0 and size > 0 and idx >= size):
-            valid = f"{base}.." if base else f"0..{size - 1}"
-            return f"  (index {idx} is outside {valid}: no such element, R003)"
-    return ""
+    outside = spec.index_outside(indices)
+    if outside is None:
+        return ""
+    pos, idx = outside
+    return f"  (index {idx} is outside {spec.valid_indices(pos)}: no such element, R003)"
 
 
 def main() -> None:

@@ -32,10 +32,10 @@ from zero.catalog.ids import (
     CH_NAME,
     CHANNELS,
     COMP_LISTS,
-    ROTARY_TYPES,
     SWE_NEG,
     SWE_POS,
     Number,
+    is_rotary,
 )
 from zero.catalog.registry import Registry
 from zero.catalog.values import ListValues
@@ -129,7 +129,7 @@ class Axis:
 
     @property
     def unit(self) -> str:
-        return "°" if self.rotary else "mm"
+        return "°" if self.rotary else "mm"  # the unit of its lengths, as is_rotary decided
 
 
 @record
@@ -219,7 +219,7 @@ def axis_of(lf: ListFile) -> Axis | None:
         return None
     kind = lf.number(AXIS_TYPE)
     neg, pos = lf.number(SWE_NEG), lf.number(SWE_POS)
-    return Axis(int(nr), lf.text(AXIS_NAME) or f"axis {nr}", kind in ROTARY_TYPES,
+    return Axis(int(nr), lf.text(AXIS_NAME) or f"axis {nr}", is_rotary(kind),
                 neg if neg is not None else -DEFAULT_SOFT_LIMIT, pos if pos is not None else DEFAULT_SOFT_LIMIT, lf)
 
 

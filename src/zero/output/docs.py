@@ -37,10 +37,9 @@ def param_text(spec: ParamSpec, registry: Registry) -> str:
     if spec.dims:
         names = spec.key.split("[]") if spec.key else []
         parts = []
-        for i, size in enumerate(spec.dims):
+        for i in range(len(spec.dims)):
             member = names[i].rsplit(".", 1)[-1] if i < len(names) else "?"
-            base = spec.index_base if i == 0 else 0
-            parts.append(f"{member}[{base}..]" if base else f"{member}[0..{size - 1}]")
+            parts.append(f"{member}[{spec.valid_indices(i)}]")
         dims = ", ".join(parts)
     rows = [
         ("ID", spec.id),

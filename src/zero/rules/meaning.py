@@ -5,14 +5,12 @@ from __future__ import annotations
 from collections.abc import Iterator
 
 from zero.catalog.ids import (
-    AXIS_TYPE,
     DEFAULT_INDEX,
     G53_AVAILABLE,
     INACTIVE,
     OFFSET,
     OFFSET_NEG,
     OFFSET_POS,
-    ROTARY_TYPES,
     SWE_BEHAVIOUR,
     SWE_CHECK,
     SWE_NEG,
@@ -22,7 +20,7 @@ from zero.catalog.ids import (
     length_text,
 )
 from zero.catalog.ranges import TYPE_LIMITS
-from zero.catalog.values import Resolved
+from zero.catalog.values import Resolved, rotary
 from zero.diagnostics import Diagnostic, Span
 from zero.rules.base import INFO, Context, E, Family, W
 
@@ -30,10 +28,7 @@ FAMILY: Family[Context] = Family("M", "meaning", "list")
 
 
 def _rotary(ctx: Context) -> bool | None:
-    res = ctx.value_of(AXIS_TYPE)
-    if res is None or res.value.number is None:
-        return None if ctx.kind != "AXIS" else False
-    return int(res.value.number) in ROTARY_TYPES
+    return rotary(ctx)
 
 
 def _span(res: Resolved) -> Span:

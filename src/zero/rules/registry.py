@@ -119,26 +119,20 @@ def check_keys(ctx: Context) -> Iterator[Diagnostic]:
             continue
         if not key.indices:
             continue
-        dims = spec.dims
-        for pos, idx in enumerate(key.indices):
-            if pos >= len(dims):
-                break
-            size = dims[pos]
-            base = spec.index_base if pos == 0 else 0
-            if idx < base or (base == 0 and size > 0 and idx >= size):
-                members = key.members
-                member = members[pos] if pos < len(members) else "?"
-                name = key.pattern.split("[]")[pos].rsplit(".", 1)[-1] or member
-                shown = str(idx) if idx < 10**18 else f"{str(idx)[:6]}…"
-                valid = f"{base}.." if base else f"0..{size - 1}"
-                yield ctx.report(
-                    "R003",
-                    _key_span(e),
-                    f"index {shown} of `{name}` is outside {valid}: the element does not exist "
-                    "and the controller does not take the entry over",
-                    param_id=spec.id,
-                )
-                break
+        outside = spec.index_outside(key.indices)
+        if outside is not None:
+            pos, idx = outside
+            members = key.members
+            member = members[pos] if pos < len(members) else "?"
+            name = key.pattern.split("[]")[pos].rsplit(".", 1)[-1] or member
+            shown = str(idx) if idx < 10**18 else f"{str(idx)[:6]}…"
+            yield ctx.report(
+                "R003",
+                _key_span(e),
+                f"index {shown} of `{name}` is outside {spec.valid_indices(pos)}: the element does not exist "
+                "and the controller does not take the entry over",
+                param_id=spec.id,
+            )
 
 
 def _vendor_key(ctx: Context, e: Entry, source: str, near: str) -> Diagnostic:

@@ -77,7 +77,7 @@ def _fill(spec: ParamSpec, typed: list[int | None], previous: tuple[int, ...], t
     slots = spec.key.count("[]")
     values: list[int] = []
     for i in range(slots):
-        base = spec.index_base if i == 0 else 0
+        base = spec.index_first(i)
         given = typed[i] if i < len(typed) else None
         values.append(given if given is not None else (previous[i] if i < len(previous) else base))
     fixed = {i for i in range(slots) if i < len(typed) and typed[i] is not None}
@@ -99,7 +99,7 @@ def _fill(spec: ParamSpec, typed: list[int | None], previous: tuple[int, ...], t
     if free:  # a key set already: the next element of the last slot not typed
         last = free[-1]
         size = spec.dims[last] if last < len(spec.dims) else 0
-        end = size + (spec.index_base if last == 0 else 0)
+        end = size + spec.index_first(last)
         for _ in range(64):
             if text(values, False) not in taken or (size and values[last] + 1 >= end):
                 break

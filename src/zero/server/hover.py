@@ -18,10 +18,10 @@ from pathlib import Path
 
 from lsprotocol import types
 
-from zero.catalog.ids import AXIS_TYPE, ROTARY_TYPES, length_text
+from zero.catalog.ids import length_text
 from zero.catalog.ranges import Number
 from zero.catalog.registry import KINDS, ParamSpec, Registry
-from zero.catalog.values import ListValues, read_value
+from zero.catalog.values import ListValues, read_value, rotary
 from zero.forms import LIST, PROGRAM, STRUCTURED, format_of
 from zero.lists.model import Comment, Entry, format_key, parse_key
 from zero.machine.effective import Origin, canonical, scope_values
@@ -141,10 +141,7 @@ def _structured_target(a: Analysis, line: int) -> Target | None:
 
 def _rotary(values: ListValues | None) -> bool | None:
     """Whether lengths of this list are degrees: known in an axis list from `kenngr.achs_typ`."""
-    if values is None or values.kind != "AXIS":
-        return None
-    kind = values.number_of(AXIS_TYPE)
-    return None if kind is None else kind in ROTARY_TYPES
+    return rotary(values) if values is not None else None
 
 
 def _value_lines(t: Target, values: ListValues | None) -> list[str]:
