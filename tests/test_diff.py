@@ -190,6 +190,7 @@ def test_the_unit_of_a_rotary_axis_is_degrees_however_its_type_is_written(regist
     new = read_side(f"kenngr.achs_typ {axis_type}\nkenngr.swe_pos 1800000\nEnde\n".encode(), "lis", "b.lis", registry)
     [change] = diff_sides(old, new, registry)
     assert (change.unit, change.delta) == ("°", -180.0)
-    [linear] = diff_sides(read_side(b"kenngr.achs_typ ACHSTYP_TRANSLATOR\nkenngr.swe_pos 1\nEnde\n", "lis", "a", registry),
-                          read_side(b"kenngr.achs_typ 1\nkenngr.swe_pos 2\nEnde\n", "lis", "b", registry), registry)
+    translator = read_side(b"kenngr.achs_typ ACHSTYP_TRANSLATOR\nkenngr.swe_pos 1\nEnde\n", "lis", "a", registry)
+    [linear] = diff_sides(translator, read_side(b"kenngr.achs_typ 1\nkenngr.swe_pos 2\nEnde\n", "lis", "b", registry),
+                          registry)
     assert linear.unit == "mm"

@@ -163,7 +163,7 @@ def _code_note(spec: ParamSpec | None, old: tuple[str, Any] | None, new: tuple[s
         return ""
     a, b = old[1], new[1]
     if spec is not None and spec.enum and not spec.enum_flags:
-        labels = dict(zip(spec.enum, spec.enum_labels, strict=False))
+        labels = dict(spec.enum_items())
         if labels.get(a) and labels.get(b):
             return f"{labels[a]} → {labels[b]}"
         return ""

@@ -15,7 +15,6 @@ LIST_SUFFIXES = (".lis", ".lst")
 PROGRAM_SUFFIXES = (".nc", ".mpf", ".spf")  # NC programs (zero.nc)
 STRUCTURED_SUFFIXES = {".yaml": "yaml", ".yml": "yaml", ".toml": "toml", ".json": "json"}
 DEFAULT_INCLUDE = tuple(f"*{s}" for s in (*LIST_SUFFIXES, *PROGRAM_SUFFIXES))  # what a directory walk picks up
-FORMATS = ("lis", "yaml", "toml", "json")  # the forms `zero convert` reads and writes
 EXTENSION = {"lis": ".lis", "yaml": ".yaml", "toml": ".toml", "json": ".json"}
 
 

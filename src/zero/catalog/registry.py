@@ -107,6 +107,16 @@ class ParamSpec:
                 return pos, idx
         return None
 
+    def enum_items(self) -> tuple[tuple[int, str], ...]:
+        """The listed values with their meaning ("" where the catalogue gives none, or gives a
+        different number of meanings than values: then none is trusted)."""
+        labels = self.enum_labels if len(self.enum_labels) == len(self.enum) else ("",) * len(self.enum)
+        return tuple(zip(self.enum, labels, strict=True))
+
+    def enum_listed(self) -> str:
+        """The listed values as said to people: ``0 off, 1 on, 2``."""
+        return ", ".join(f"{v} {label}".strip() for v, label in self.enum_items())
+
     def enum_allows(self, value: int) -> bool:
         if self.enum_flags:
             mask = 0

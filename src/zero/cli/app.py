@@ -18,7 +18,7 @@ from typing import Annotated, Any
 import typer
 
 from zero import __version__
-from zero.catalog.registry import KINDS, ParamSpec, Registry, kind_from_name
+from zero.catalog.registry import KINDS, ParamSpec, Registry
 from zero.cli import exits
 from zero.cli.options import LINT_OPTIONS, PATHS_HELP, Option
 from zero.cli.run import REGISTRIES, echo, read_stdin, render_lint
@@ -27,10 +27,9 @@ from zero.diff import SAME, DiffOptions, show_lines
 from zero.engine.commands import parse_kind, run_format
 from zero.engine.convert import check_convert_options, convert_inputs, write_outputs
 from zero.engine.project import Project
-from zero.engine.queries import load_side, run_diff, run_effective, run_limits
+from zero.engine.queries import find_param, load_side, run_diff, run_effective, run_limits
 from zero.errors import ZeroError
 from zero.files import write_atomic
-from zero.lists.model import parse_key
 from zero.output.docs import param_text, rule_text, rules_overview
 from zero.output.tables import render_diff, render_effective, render_limits
 from zero.output.text import render_text
@@ -487,32 +486,18 @@ def param(
 
     def body() -> int:
         registry = _registry()
-        spec = registry.get(name.strip().upper()) if name.upper().startswith("P-") else None
-        indices: tuple[int, ...] = ()
-        if spec is None:
-            key = parse_key(name.strip())
-            if key is not None:
-                forced = kind_from_name(kind) if kind else None
-                spec = registry.by_pattern(key.pattern, forced) or registry.alias(key.pattern, forced)
-                indices = key.indices
-        if spec is None:
-            found = registry.search(name)
-            if len(found) == 1:
-                spec = found[0]
-                sys.stdout.write(f"(the one parameter matching {name.strip()!r})\n")
-            elif found:
-                sys.stdout.write(f"{len(found)} parameters match {name.strip()!r}"
-                                 f"{' (the first 20)' if len(found) == 20 else ''}; `zero param ID` shows one:\n")
-                for match in found:
-                    sys.stdout.write(f"  {match.id}  {match.key or '(no key)'}  ({KINDS[match.kind][1]})\n")
-                return exits.OK
-            else:
-                near = registry.suggest(name.strip(), None)
-                hint = f" (did you mean {near[0]}?)" if near else ""
-                raise ZeroError(f"unknown parameter {name!r}{hint}; no key, ID or description contains it")
-        text = param_text(spec, registry)
-        if indices:
-            text = f"{'element':<7}  {name.strip()}{_outside(spec, indices)}\n" + text
+        found = find_param(registry, name, parse_kind(kind))
+        if found.spec is None:
+            sys.stdout.write(f"{len(found.matches)} parameters match {name.strip()!r}"
+                             f"{' (the first 20)' if len(found.matches) == 20 else ''}; `zero param ID` shows one:\n")
+            for match in found.matches:
+                sys.stdout.write(f"  {match.id}  {match.key or '(no key)'}  ({KINDS[match.kind][1]})\n")
+            return exits.OK
+        if found.searched:
+            sys.stdout.write(f"(the one parameter matching {name.strip()!r})\n")
+        text = param_text(found.spec, registry)
+        if found.indices:
+            text = f"{'element':<7}  {name.strip()}{_outside(found.spec, found.indices)}\n" + text
         sys.stdout.write(text)
         return exits.OK
 

@@ -32,7 +32,7 @@ from zero.engine.parallel import iter_lint_many, lint_many
 from zero.engine.project import Project, Registries
 from zero.errors import ZeroError
 from zero.files import read_file, write_atomic
-from zero.forms import PROGRAM_SUFFIXES, is_list
+from zero.forms import is_list, is_program
 from zero.records import field, record
 from zero.rules import RULES
 
@@ -169,7 +169,7 @@ def _lint_machine(request: LintRequest, project: Project) -> list[LintResult]:
     assert machine is not None and project.machine_given is not None
     results = lint_machine(machine, project.registry(project.machine_given), project.options)
     for f in collect_files([Path(p) for p in request.paths], exclude=project.excluded):
-        if f.suffix.lower() in PROGRAM_SUFFIXES:
+        if is_program(f):
             try:
                 data = read_file(f)
             except ZeroError as exc:
@@ -188,7 +188,7 @@ def _with_machine(path: Path, result: LintResult, project: Project, data: bytes 
     findings on it). ``found`` keeps each machine's X findings for the run."""
     if is_unreadable(result):
         return result
-    program = path.suffix.lower() in PROGRAM_SUFFIXES
+    program = is_program(path)
     if not program and (not is_list(path) or data is not None or project.startup(path) is None):
         return result  # standard input: not the file the machine reads
     try:

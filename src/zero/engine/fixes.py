@@ -51,7 +51,6 @@ def _fixable(diagnostics: list[Diagnostic], unsafe: bool) -> list[Edit]:
 
 @record
 class FixResult:
-    original: bytes
     fixed: bytes
     applied: int
     result: LintResult  # the findings left after fixing
@@ -75,7 +74,7 @@ def fix_bytes(data: bytes, path: str, registry: Registry,
         current = document_bytes(doc, lines)
         doc = tokenize(current, path)
         result = lint_document(doc, registry, options)
-    return FixResult(data, current, total, result)
+    return FixResult(current, total, result)
 
 
 def _lines(data: bytes) -> list[bytes]:

@@ -10,12 +10,13 @@ from __future__ import annotations
 from collections.abc import Callable, Sequence
 from pathlib import Path
 
-from zero.catalog.registry import Registry
+from zero.catalog.registry import ParamSpec, Registry
 from zero.diff import Change, DiffOptions, Side, diff_defaults, diff_sides, read_side
 from zero.engine.convert import source_format
 from zero.engine.project import Project
 from zero.errors import ZeroError
 from zero.files import read_file
+from zero.lists.model import parse_key
 from zero.machine.effective import Scope, effective, entries_of, summary
 from zero.machine.limits import Ip247Violation, LimitRow, ip247, pcs_limits
 from zero.machine.model import Machine
@@ -95,6 +96,42 @@ def _diff_machines(a: str, b: str, project: Project, registry: Registry, options
             c.group = f"{name}: {c.group}"
             changes.append(c)
     return DiffRun(changes, f"--- {a} (machine)\n+++ {b} (machine)")
+
+
+# ---------------------------------------------------------------------------- param
+
+
+@record
+class ParamLookup:
+    """What ``zero param NAME`` found: one parameter (with the indices the name gave), or the
+    parameters whose key, ID or description contain the word."""
+
+    spec: ParamSpec | None = None
+    indices: tuple[int, ...] = ()
+    matches: list[ParamSpec] = field(default_factory=list)
+    searched: bool = False  # the one parameter a search found (not named by ID or key)
+
+
+def find_param(registry: Registry, name: str, kind: str | None = None) -> ParamLookup:
+    """A parameter by ID (``P-AXIS-00178``), key or alias (``kenngr.swe_pos``, ``np_grp[1]...``),
+    else by a word of its key or description; :class:`ZeroError` when nothing matches."""
+    text = name.strip()
+    spec = registry.get(text.upper()) if text.upper().startswith("P-") else None
+    if spec is not None:
+        return ParamLookup(spec)
+    key = parse_key(text)
+    if key is not None:
+        spec = registry.by_pattern(key.pattern, kind) or registry.alias(key.pattern, kind)
+        if spec is not None:
+            return ParamLookup(spec, key.indices)
+    found = registry.search(name)
+    if len(found) == 1:
+        return ParamLookup(found[0], searched=True)
+    if found:
+        return ParamLookup(matches=list(found))
+    near = registry.suggest(text, None)
+    hint = f" (did you mean {near[0]}?)" if near else ""
+    raise ZeroError(f"unknown parameter {name!r}{hint}; no key, ID or description contains it")
 
 
 # ---------------------------------------------------------------------------- limits

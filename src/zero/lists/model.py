@@ -58,10 +58,6 @@ class Key:
     def members(self) -> list[str]:
         return self.pattern.replace("[]", "").split(".")
 
-    @property
-    def huge_index(self) -> bool:
-        return any(i >= HUGE_INDEX for i in self.indices)
-
 
 _CACHE_LIMIT = 200_000
 # A key split after its first index: ``wz[17]`` + ``.kinematic.param[3]``. Both halves repeat

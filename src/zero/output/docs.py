@@ -23,8 +23,7 @@ def param_text(spec: ParamSpec, registry: Registry) -> str:
     if rng is not None:
         range_text = f"{spec.range_text}  (checked)"
     elif spec.enum:
-        labels = spec.enum_labels if len(spec.enum_labels) == len(spec.enum) else ("",) * len(spec.enum)
-        listed = ", ".join(f"{v} {label}".strip() for v, label in zip(spec.enum, labels, strict=True))
+        listed = spec.enum_listed()
         kind = "bits, any combination" if spec.enum_flags else "values"
         range_text = f"{listed}  ({kind} the catalogue lists in its text; checked)"
     elif spec.range_note:

@@ -419,13 +419,10 @@ def _check_enum(ctx: Context, e: Entry, spec: ParamSpec, number: Number) -> Iter
     """R005 for a value the catalogue's listed values (or bits) do not allow."""
     if isinstance(number, int) and spec.enum_allows(number):
         return
-    labels = spec.enum_labels if len(spec.enum_labels) == len(spec.enum) else ()
-    listed = [f"{v} {label}" if label else str(v) for v, label in zip(spec.enum, labels or [""] * len(spec.enum),
-                                                                          strict=True)]
     what = "any combination of the bits" if spec.enum_flags else "one of the values"
     yield ctx.report(
         "R005", _value_span(e),
-        f"{e.value} is not {what} the catalogue lists for `{e.key_text}` ({', '.join(listed)}): "
+        f"{e.value} is not {what} the catalogue lists for `{e.key_text}` ({spec.enum_listed()}): "
         f"{_default_phrase(spec, ctx.registry)}",
         param_id=spec.id,
     )

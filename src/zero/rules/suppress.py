@@ -11,8 +11,8 @@ In an NC program the same directives are written in its comments, ``( noqa: N003
 
 A reason may follow after `` -- ``. Codes may be prefixes (``R``, ``M00``). A
 directive that suppresses nothing is reported (Z001), a directive zero cannot read
-is reported (Z002): none is ever silently ignored. The engine applies them to the
-findings of the other rules (:func:`apply`), so these rules have no check of their own.
+is reported (Z002): none is ever silently ignored. The funnel (:mod:`zero.rules.funnel`)
+applies them to the findings of the other rules, so these rules have no check of their own.
 """
 
 from __future__ import annotations
@@ -192,13 +192,6 @@ def parse_comment_directives(comments: Iterable[tuple[int, int, str]], code_line
         else:
             bad.append(got)
     return out, bad
-
-
-def apply(doc: Document, found: list[Diagnostic], severities: dict[str, Severity],
-          known: set[str]) -> list[Diagnostic]:
-    """Drop suppressed findings; add Z001 for unused and Z002 for malformed directives."""
-    directives, bad = parse_directives(doc, known)
-    return apply_directives(doc.path, directives, bad, found, severities)
 
 
 def apply_directives(path: str, directives: list[Directive], bad: list[Bad],

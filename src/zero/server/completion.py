@@ -176,8 +176,7 @@ def _spec_values(items: _Items, spec: ParamSpec, registry: Registry) -> None:
 
     for name, value in spec.symbols:
         add(name, f"{spec.id}: symbol" + (f" = {value}" if value is not None else ""), "0")
-    labels = spec.enum_labels if len(spec.enum_labels) == len(spec.enum) else ("",) * len(spec.enum)
-    for value, label in zip(spec.enum, labels, strict=True):
+    for value, label in spec.enum_items():
         add(str(value), f"{spec.id}: " + (label or "a value the catalogue lists")
             + (" (bits: any combination)" if spec.enum_flags else ""), "1")
     rng = registry.range_of(spec)

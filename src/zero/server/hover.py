@@ -170,12 +170,11 @@ def _value_lines(t: Target, values: ListValues | None) -> list[str]:
         elif e.value in spec.symbol_names and not e.value.lstrip("-").isdigit():
             out.append(f"= {_fmt(number)}")
     if isinstance(number, int) and spec.enum:
-        labels = spec.enum_labels if len(spec.enum_labels) == len(spec.enum) else ("",) * len(spec.enum)
         if spec.enum_flags:
-            bits = [f"{v} {label}".strip() for v, label in zip(spec.enum, labels, strict=True) if v and number & v]
+            bits = [f"{v} {label}".strip() for v, label in spec.enum_items() if v and number & v]
             out.append("— bits set: " + (", ".join(bits) if bits else "none"))
         else:
-            meaning = next((label for v, label in zip(spec.enum, labels, strict=True) if v == number), None)
+            meaning = next((label for v, label in spec.enum_items() if v == number), None)
             if meaning:
                 out.append(f"= {meaning}")
             elif meaning is None:
