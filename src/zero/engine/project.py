@@ -35,6 +35,7 @@ from zero.errors import ZeroError
 from zero.files import read_file
 
 if TYPE_CHECKING:  # start-up: `zero lint` of lists loads no machine model
+    from zero.lists.model import Document
     from zero.machine.model import Machine
 
 Registries = Callable[[Path | None], Registry]
@@ -134,32 +135,53 @@ class Project:
                 raise ZeroError("name the start-up list with --machine (or [tool.zero.machine] startup)")
             return None
         registry = self.registry(path if path is not None else start)
-        cfg = self.config(start)
-        key = (start, tuple(sorted(cfg.machine_lists.items())), cfg.machine_workdir, id(registry), self.cli.kind)
+        overrides, workdir = self._layout(start)
+        key = (start, tuple(sorted(overrides.items())), workdir, id(registry), self.cli.kind)
+        layout = (overrides, workdir)
         if reader is not None:
-            return self._read_with(key, reader_key, shown, registry, cfg, reader, required)
+            return self._read_with(key, reader_key, shown, registry, layout, reader, required)
         hit = self._machines.get(key)
         if hit is not None and hit[0] == _signature(hit[1]):
             return hit[1]
-        machine = self._load(shown, registry, cfg, read_file, required)
+        machine = self._load(shown, registry, layout, read_file, required)
         self._machines[key] = (_signature(machine), machine)
         return machine
 
-    def _read_with(self, key: Hashable, reader_key: Hashable, shown: Path, registry: Registry, cfg: Config,
-                   reader: Reader, required: bool) -> Machine:
+    def _read_with(self, key: Hashable, reader_key: Hashable, shown: Path, registry: Registry,
+                   layout: tuple[dict[str, Path], Path | None], reader: Reader, required: bool) -> Machine:
         full = (key, reader_key)
         hit = self._shaped.get(full)
         if hit is None:
-            hit = self._shaped[full] = self._load(shown, registry, cfg, reader, required)
+            hit = self._shaped[full] = self._load(shown, registry, layout, reader, required)
             while len(self._shaped) > 4:
                 self._shaped.popitem(last=False)
         return hit
 
-    def _load(self, startup: Path, registry: Registry, cfg: Config, reader: Reader, required: bool) -> Machine:
+    def _load(self, startup: Path, registry: Registry, layout: tuple[dict[str, Path], Path | None], reader: Reader,
+              required: bool) -> Machine:
         from zero.machine.model import load_machine  # start-up: only with a machine
 
-        machine = load_machine(startup, registry, self.cli.kind, cfg.machine_lists, cfg.machine_workdir, reader)
+        machine = load_machine(startup, registry, self.cli.kind, layout[0], layout[1], reader)
         return require_startup(machine, registry) if required else machine
+
+    def references(self, startup: Path, doc: Document) -> dict[str, Path]:
+        """The lists a start-up list names (key as written → the path the controller opens), resolved
+        as its machine is (list overrides and working directory of its configuration); nothing is
+        read. A reference zero would not read (outside the working directory, empty) has none."""
+        from zero.machine.model import named_lists  # start-up: only for a start-up list
+
+        overrides, workdir = self._layout(startup)
+        _, named = named_lists(startup, doc, overrides, workdir)
+        return {n.key: n.path for n in named if n.path is not None and n.status != "unreadable"}
+
+    def _layout(self, startup: Path) -> tuple[dict[str, Path], Path | None]:
+        """The list overrides and working directory of ``[tool.zero.machine]`` that apply to a start-up
+        list: those of the configuration that applies to it, where that configuration names this
+        start-up list or none (overrides written for another machine's start-up list never apply)."""
+        cfg = self.config(startup)
+        if cfg.machine is not None and os.path.realpath(cfg.machine) != os.path.realpath(startup):
+            return {}, None
+        return cfg.machine_lists, cfg.machine_workdir
 
     def forget(self) -> None:
         """Configuration files changed (or may have): find and read them again."""

@@ -41,7 +41,7 @@ from zero.catalog.registry import Registry
 from zero.catalog.values import ListValues
 from zero.errors import ZeroError
 from zero.files import read_file
-from zero.lists.model import Entry
+from zero.lists.model import Document, Entry
 from zero.lists.tokenizer import tokenize
 from zero.records import field, record
 
@@ -277,6 +277,37 @@ def _count(startup: ListValues, pid: str) -> int:
     return int(n) if n is not None else 0
 
 
+def named_lists(startup_path: Path, doc: Document, overrides: dict[str, Path] | None = None,
+                workdir: Path | None = None) -> tuple[Path, list[Named]]:
+    """The working directory and every list reference of a start-up list, each with the path the
+    controller opens (``path``; status ``overridden`` where ``[tool.zero.machine]`` names it,
+    ``missing`` for an empty one, ``unreadable`` for one outside the working directory). Only
+    paths: nothing is read. :func:`load_machine` reads them; the editor links them."""
+    named: list[Named] = []
+    for e in doc.entries:
+        if e.key is None:
+            continue
+        ref = BY_KEY.get(e.key.pattern)
+        if ref is None or len(e.key.indices) != ref.key.count("[]"):
+            continue
+        named.append(Named(e.key_text, ref, e.key.indices[0] if e.key.indices else None, e.value, e.line))
+    root = workdir if workdir is not None else working_directory(startup_path, [n.raw for n in named])
+    for n in named:
+        override = (overrides or {}).get(n.key)
+        text = _clean(n.raw)
+        if override is not None:
+            n.path, n.status = override, "overridden"
+        elif not text:
+            n.status, n.reason = "missing", "is empty"
+        else:
+            n.path = Path(text) if Path(text).is_absolute() else root / text
+            if not _inside(n.path, root):
+                n.status = "unreadable"
+                n.reason = (f"lies outside the working directory {root}: not read (zero reads only the machine's "
+                            "own lists; `[tool.zero.machine]` can name it)")
+    return root, named
+
+
 def load_machine(startup_path: Path, registry: Registry, forced_kind: str | None = None,
                  overrides: dict[str, Path] | None = None, workdir: Path | None = None,
                  reader: Callable[[Path], bytes] = read_file) -> Machine:
@@ -288,15 +319,7 @@ def load_machine(startup_path: Path, registry: Registry, forced_kind: str | None
     a list's bytes (an editor passes its unsaved text; :class:`ZeroError` when it cannot).
     """
     startup = _read("start-up list", startup_path, 0, registry, forced_kind or "STUP", None, reader)
-    named: list[Named] = []
-    for e in startup.values.doc.entries:
-        if e.key is None:
-            continue
-        ref = BY_KEY.get(e.key.pattern)
-        if ref is None or len(e.key.indices) != ref.key.count("[]"):
-            continue
-        named.append(Named(e.key_text, ref, e.key.indices[0] if e.key.indices else None, e.value, e.line))
-    root = workdir if workdir is not None else working_directory(startup_path, [n.raw for n in named])
+    root, named = named_lists(startup_path, startup.values.doc, overrides, workdir)
     machine = Machine(startup, root, named)
     counts = {pid: _count(startup.values, pid) for pid in COUNT_KEYS}
     loaded: dict[str, ListFile] = {}
@@ -305,20 +328,8 @@ def load_machine(startup_path: Path, registry: Registry, forced_kind: str | None
         if n.reference.count is not None and n.index is not None and n.index >= counts[n.reference.count]:
             n.status = "beyond-count"
             return None
-        override = (overrides or {}).get(n.key)
-        text = _clean(n.raw)
-        if override is not None:
-            n.path, n.status = override, "overridden"
-        elif not text:
-            n.status, n.reason = "missing", "is empty"
-            return None
-        else:
-            n.path = Path(text) if Path(text).is_absolute() else root / text
-            if not _inside(n.path, root):
-                n.status = "unreadable"
-                n.reason = (f"lies outside the working directory {root}: not read (zero reads only the machine's "
-                            "own lists; `[tool.zero.machine]` can name it)")
-                return None
+        if n.path is None or n.status == "unreadable":
+            return None  # empty, or outside the working directory: said by named_lists
         try:
             lf = _read(n.key, n.path, n.line, registry, forced_kind or n.reference.kind, base, reader)
         except ZeroError as exc:

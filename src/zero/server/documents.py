@@ -224,6 +224,7 @@ class Analysis:
     result: LintResult | None = None  # None: not linted (excluded, not a list's form, config error)
     notes: list[Note] = field(default_factory=list)
     machine: Machine | None = None
+    references: dict[str, Path] = field(default_factory=dict)  # a start-up list: key → the list it opens
     cache: dict[str, object] = field(default_factory=dict)  # answers that depend on the text only
     _values: ListValues | None = None
 
@@ -343,6 +344,8 @@ class Projects:
         except ZeroError as exc:  # a YAML/TOML/JSON form that does not make a list
             a.notes.append(Note(exc.message, exc.line or 1, exc.column or 1))
             return a
+        if a.form == LIST and a.result.kind == "STUP" and path is not None:
+            a.references = self.project.references(path, a.result.document)
         if a.form == LIST:
             a.machine = self._try_machine(a, buffers or {})
             if a.machine is not None and a.path is not None:  # as `zero lint` and `zero lint --machine` lint it

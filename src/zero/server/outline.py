@@ -13,7 +13,6 @@ parameter (``P-AXIS-00212.0``) the entry that sets it, in this list or the defau
 
 from __future__ import annotations
 
-import os
 from pathlib import Path
 
 import attrs
@@ -22,7 +21,6 @@ from lsprotocol import types
 from zero.catalog.ids import g_code_with_index
 from zero.forms import LIST, PROGRAM, STRUCTURED, format_of
 from zero.lists.model import Entry, ValueKind, parse_key
-from zero.machine.model import BY_KEY, working_directory
 from zero.records import field, record
 from zero.server.documents import Analysis, uri_of
 from zero.server.findings import line_range
@@ -162,26 +160,9 @@ def _document_symbols(a: Analysis) -> list[types.DocumentSymbol]:
 
 
 def _reference_target(a: Analysis, entry: Entry) -> Path | None:
-    """The list file a start-up list's entry names, where the controller would look for it."""
-    if entry.key is None or a.path is None:
-        return None
-    ref = BY_KEY.get(entry.key.pattern)
-    if ref is None or len(entry.key.indices) != ref.key.count("[]"):
-        return None
-    cfg = a.config
-    own = cfg.machine is not None and os.path.realpath(cfg.machine) == os.path.realpath(a.path)
-    if own and entry.key_text in cfg.machine_lists:
-        return cfg.machine_lists[entry.key_text]
-    text = entry.value.strip().strip('"')
-    if not text:
-        return None
-    if Path(text).is_absolute():
-        return Path(text)
-    values = a.values()
-    raws = [e.value for e in (values.doc.entries if values is not None else [])
-            if e.key is not None and e.key.pattern in BY_KEY]
-    root = cfg.machine_workdir if own and cfg.machine_workdir is not None else working_directory(a.path, raws)
-    return root / text
+    """The list file a start-up list's entry names, where the controller would look for it (as the
+    resolver resolves the machine: its working directory and list overrides)."""
+    return a.references.get(entry.key_text)
 
 
 def definition(a: Analysis, line: int, character: int) -> list[types.Location]:
