@@ -13,21 +13,11 @@ from lsprotocol import types
 
 from conftest import builtin_registry
 from zero.diagnostics import Span
+from zero.forms import LIST, PROGRAM, STRUCTURED, form_of
 from zero.server import actions, completion, findings, hover, outline
-from zero.server.documents import (
-    LIST,
-    PROGRAM,
-    STRUCTURED,
-    Analysis,
-    Projects,
-    Settings,
-    Text,
-    encode_text,
-    form_of,
-    path_of,
-    source_bytes,
-    uri_of,
-)
+from zero.server.documents import Analysis, Projects
+from zero.server.positions import Text, encode_text, path_of, source_bytes, uri_of
+from zero.server.settings import Settings
 
 
 def projects() -> Projects:

@@ -23,8 +23,9 @@ from zero.engine.formatting import format_bytes
 from zero.engine.lint import LintResult
 from zero.forms import LIST, PROGRAM, STRUCTURED
 from zero.lists.encoding import BOM, decode
-from zero.server.documents import Analysis, Text
+from zero.server.documents import Analysis
 from zero.server.findings import RuleDocs, span_range, to_lsp
+from zero.server.positions import Text
 
 FIX_ALL = "source.fixAll.zero"
 FIX_ALL_UNSAFE = "source.zero.fixAllUnsafe"  # not below source.fixAll: never applied on save unasked

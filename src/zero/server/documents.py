@@ -8,8 +8,8 @@ of the machine's lists and the N findings of NC programs against it. The text th
 holds is linted, not the file: where it equals the file as zero decodes it, the file's own
 bytes are linted (its encoding, BOM and line endings, exactly as on the command line).
 
-Positions: zero counts 1-based lines and code points; the client counts 0-based lines in
-UTF-16 code units (or UTF-8/UTF-32, as negotiated). :class:`Text` converts both ways.
+Positions between zero and the client are :mod:`zero.server.positions`; what the client may
+set is :mod:`zero.server.settings`.
 """
 
 from __future__ import annotations
@@ -19,12 +19,10 @@ import re
 from collections import OrderedDict
 from collections.abc import Mapping
 from pathlib import Path
-from urllib.parse import unquote, urlparse
-from urllib.request import url2pathname
 
 from zero.catalog.registry import Registry
 from zero.catalog.values import ListValues
-from zero.diagnostics import Diagnostic, Severity, Span
+from zero.diagnostics import Diagnostic, Severity
 from zero.engine.config import Config
 from zero.engine.lint import (
     LintOptions,
@@ -37,156 +35,14 @@ from zero.engine.project import Project, Registries
 from zero.errors import ZeroError
 from zero.files import max_file_bytes, read_file
 from zero.forms import LIST, PROGRAM, STRUCTURED, form_of
-from zero.lists.encoding import decode
 from zero.lists.tokenizer import tokenize
 from zero.machine.model import ListFile, Machine
 from zero.records import field, record, replace
+from zero.server.positions import Text, path_of, source_bytes
+from zero.server.settings import Settings
 
 # A YAML/TOML/JSON file is a list's structured form when it carries zero's record.
 _ZERO_RECORD = re.compile(r'^(?:_zero\s*:|\[\s*_zero\s*\]|\s*"_zero"\s*:)', re.MULTILINE)
-
-
-CLIENT_KEYS = ("path", "args", "trace")  # the editor extension's own settings, sent along
-
-
-@record
-class Settings:
-    """What the editor may set (``initializationOptions`` or ``workspace/didChangeConfiguration``,
-    section ``zero``)."""
-
-    debounce: float = 0.25  # seconds of quiet after a change before the document is linted again
-    rule_docs: str | None = None  # URL of a rule's text, `{code}` replaced; None: rendered files
-    structured: str = "zero"  # "zero": YAML/TOML/JSON with a `_zero` record or matched by `include`; "all"
-    machine: bool = True  # X findings and NC program checks against [tool.zero.machine]
-
-    def update(self, given: object) -> list[str]:
-        """Take the known keys of a settings object; the names of values that were refused."""
-        if not isinstance(given, dict):
-            return []
-        given = given.get("zero", given) if isinstance(given.get("zero"), dict) else given
-        refused = []
-        for key, value in given.items():
-            if key in CLIENT_KEYS:
-                continue
-            if key == "debounce" and isinstance(value, (int, float)) and not isinstance(value, bool) \
-                    and 0 <= value <= 10_000:
-                self.debounce = value / 1000
-            elif key == "ruleDocs" and (value is None or (isinstance(value, str) and "{code}" in value)):
-                self.rule_docs = value or None
-            elif key == "structured" and value in ("zero", "all"):
-                self.structured = value
-            elif key == "machine" and isinstance(value, bool):
-                self.machine = value
-            else:
-                refused.append(key)
-        return refused
-
-
-def path_of(uri: str) -> Path | None:
-    """The file a ``file:`` URI names; ``None`` for any other scheme (``untitled:``)."""
-    parsed = urlparse(uri)
-    if parsed.scheme != "file":
-        return None
-    local = url2pathname(unquote(parsed.path))
-    if parsed.netloc and parsed.netloc != "localhost":
-        local = f"//{parsed.netloc}{local}"
-    return Path(local)
-
-
-def uri_of(path: Path) -> str:
-    return Path(os.path.abspath(path)).as_uri()
-
-
-def _units(text: str, encoding: str) -> int:
-    if text.isascii():
-        return len(text)
-    if encoding == "utf-8":
-        return len(text.encode("utf-8", "surrogatepass"))
-    if encoding == "utf-32":
-        return len(text)
-    return len(text) + sum(1 for ch in text if ord(ch) > 0xFFFF)
-
-
-class Text:
-    """A document's text as zero splits it into lines, and positions in the client's units."""
-
-    def __init__(self, text: str, encoding: str = "utf-16") -> None:
-        self.source = text
-        self.encoding = encoding
-        self.lines = [line[:-1] if line.endswith("\r") else line for line in text.split("\n")]
-        self.bom = text.startswith("\ufeff")  # zero reads past a BOM: line 1 starts one later
-
-    def line(self, index: int) -> str:
-        """The text of 0-based line ``index`` ("" beyond the end)."""
-        return self.lines[index] if 0 <= index < len(self.lines) else ""
-
-    def character(self, line: int, column: int) -> int:
-        """Client units of 0-based code-point ``column`` on 0-based ``line`` (clamped to the line)."""
-        text = self.line(line)
-        if line == 0 and self.bom:
-            column += 1
-        return _units(text[: max(0, min(column, len(text)))], self.encoding)
-
-    def column(self, line: int, character: int) -> int:
-        """The 0-based code-point column of a client position (as zero counts it)."""
-        text = self.line(line)
-        if text.isascii() and not (line == 0 and self.bom):
-            return min(character, len(text))
-        units = 0
-        col = 0
-        for ch in text:
-            if units >= character:
-                break
-            units += _units(ch, self.encoding)
-            col += 1
-        if line == 0 and self.bom:
-            col = max(0, col - 1)
-        return col
-
-    def position(self, line: int, column: int) -> tuple[int, int]:
-        """A zero position (1-based line and column) as a client (line, character)."""
-        line = max(1, min(line, len(self.lines)))
-        return line - 1, self.character(line - 1, column - 1)
-
-    def span(self, span: Span) -> tuple[tuple[int, int], tuple[int, int]]:
-        start = self.position(span.line, span.column)
-        end = self.position(span.end_line, span.end_column)
-        return start, max(start, end)
-
-    def end(self) -> tuple[int, int]:
-        """The position after the last character."""
-        last = len(self.lines) - 1
-        return last, _units(self.lines[last], self.encoding)
-
-
-_NOT_A_BYTE = re.compile(r"[\ud800-\udc7f\udd00-\udfff]")
-
-
-def encode_text(text: str) -> bytes:
-    """The editor's text as the bytes zero lints: UTF-8, with the bytes the client could not decode
-    (``\udc80``–``\udcff``, as zero and the server's input keep them) as they were, so that zero
-    reports them (S007) where they are; any other lone surrogate becomes `?`."""
-    try:
-        return text.encode("utf-8")
-    except UnicodeEncodeError:
-        return _NOT_A_BYTE.sub("?", text).encode("utf-8", "surrogateescape")
-
-
-def source_bytes(path: Path | None, text: str) -> tuple[bytes, bool]:
-    """The bytes to lint and whether they are the file's own: the file when the editor's text
-    is the file as zero decodes it (so its encoding and endings count as on the command line),
-    else the editor's text."""
-    disk = None
-    if path is not None:
-        try:
-            size = os.stat(path).st_size
-            disk = read_file(path) if size <= 4 * len(text) + 8 else None  # far larger: not this text
-        except (OSError, ZeroError):
-            disk = None
-        if disk is not None and decode(disk)[0] == text:
-            return disk, True
-    data = encode_text(text)
-    return data, data == disk
 
 
 @record

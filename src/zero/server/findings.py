@@ -24,7 +24,8 @@ from zero.diagnostics import Diagnostic, Severity, Span
 from zero.errors import ZeroError
 from zero.files import write_atomic
 from zero.rules import RULES
-from zero.server.documents import Analysis, Note, Text, uri_of
+from zero.server.documents import Analysis, Note
+from zero.server.positions import Text, uri_of
 
 SEVERITY = {Severity.ERROR: types.DiagnosticSeverity.Error, Severity.WARNING: types.DiagnosticSeverity.Warning,
             Severity.INFO: types.DiagnosticSeverity.Information}

@@ -33,15 +33,17 @@ from pygls.workspace import TextDocument
 
 from zero import __version__
 from zero.engine.commands import Registries
+from zero.engine.config import CONFIG_NAMES
 from zero.errors import ZeroError
 from zero.files import read_file
 from zero.lists.encoding import decode
 from zero.server import actions, completion, findings, hover, outline
-from zero.server.documents import Analysis, Projects, Settings, path_of
+from zero.server.documents import Analysis, Projects
+from zero.server.positions import path_of
+from zero.server.settings import Settings
 
 REQUEST_FAILED = -32803  # LSP ErrorCodes.RequestFailed
-CONFIG_NAMES = ("pyproject.toml", "zero.toml", ".zero.toml")
-WATCHED = "**/{pyproject.toml,zero.toml,.zero.toml}"
+WATCHED = "**/{" + ",".join(CONFIG_NAMES) + "}"  # the configuration files, as the resolver finds them
 logger = logging.getLogger("zero.server")
 
 

@@ -22,8 +22,9 @@ from zero.catalog.ids import g_code_with_index
 from zero.forms import LIST, PROGRAM, STRUCTURED, format_of
 from zero.lists.model import Entry, ValueKind, parse_key
 from zero.records import field, record
-from zero.server.documents import Analysis, uri_of
+from zero.server.documents import Analysis
 from zero.server.findings import line_range
+from zero.server.positions import uri_of
 
 _KINDS = (types.SymbolKind.Namespace, types.SymbolKind.Object)
 
