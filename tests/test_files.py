@@ -375,3 +375,113 @@ def test_read_file_refuses_what_is_not_a_regular_file(tmp_path: Path) -> None:
         read_file(tmp_path)
     with pytest.raises(ZeroError, match="no such file"):
         read_file(tmp_path / "missing.lis")
+
+
+# ------------------------------------------------------------- containment (issue 23)
+
+_WRITER = """
+import os, sys, time
+from pathlib import Path
+import zero.files
+
+def slow_write_all(fd, data):  # a slow disk: the kill lands inside a write, often the in-place copy
+    view = memoryview(data)
+    while view:
+        n = os.write(fd, view[:65536])
+        view = view[n:]
+        time.sleep(0.0005)
+
+zero.files._write_all = slow_write_all
+sys.stdout.write("ready\\n")
+sys.stdout.flush()
+zero.files.write_atomic(Path(sys.argv[1]), Path(sys.argv[2]).read_bytes(), force=True)
+"""
+
+
+def test_a_hard_linked_file_killed_half_way_is_completed_never_mixed(tmp_path: Path) -> None:
+    """SIGKILL at random moments of an in-place rewrite (the file has a second hard link): the next
+    zero that reads the file finds it old or new, never mixed, and the complete new text is never
+    thrown away (it was: the next run deleted it as a stale temporary file)."""
+    import random
+
+    old = b"".join(b"np_grp[%d].achse[0].versch %d\n" % (i % 97, i) for i in range(300_000))  # ~9 MB
+    new = old.replace(b"versch", b"versch ").replace(b"achse[0]", b"achse[1]")
+    source = tmp_path / "new.bin"
+    source.write_bytes(new)
+    rng = random.Random(23)
+    outcomes = {"old": 0, "new": 0}
+    for attempt in range(12):
+        target = tmp_path / f"list{attempt}.lis"
+        target.write_bytes(old)
+        os.link(target, tmp_path / f"other{attempt}.lis")
+        child = subprocess.Popen([sys.executable, "-c", _WRITER, str(target), str(source)], stdout=subprocess.PIPE)
+        assert child.stdout is not None and child.stdout.readline() == b"ready\n"
+        threading.Event().wait(rng.uniform(0.05, 0.6))
+        child.kill()
+        child.wait()
+        data = read_file(target)  # this process: the killed writer's journal is completed here
+        assert data in (old, new), f"attempt {attempt}: a mixed file of {len(data)} bytes"
+        outcomes["old" if data == old else "new"] += 1
+        assert (tmp_path / f"other{attempt}.lis").read_bytes() == data  # one inode, both names
+        assert not [p for p in tmp_path.iterdir() if p.name.endswith(".journal")]  # completed, then removed
+    assert outcomes["new"] >= 1 and outcomes["old"] >= 1, outcomes
+
+
+def test_a_stale_journal_is_completed_by_the_next_write_not_deleted(tmp_path: Path) -> None:
+    target = tmp_path / "a.lis"
+    target.write_bytes(b"NEW NEW NEW" + b"old tail")  # what a copy stopped half way leaves
+    os.link(target, tmp_path / "b.lis")
+    dead = subprocess.run([sys.executable, "-c", "import os; print(os.getpid())"], capture_output=True, text=True,
+                          check=True).stdout.strip()
+    journal = tmp_path / f".a.lis.zero-{dead}-0123abcd.journal"
+    journal.write_bytes(b"NEW NEW NEW\n")
+    write_atomic(tmp_path / "unrelated.lis", b"x\n")  # another target: its journal is not touched
+    assert journal.exists()
+    write_atomic(target, b"NEWER\n", force=True)
+    assert target.read_bytes() == b"NEWER\n" and (tmp_path / "b.lis").read_bytes() == b"NEWER\n"
+    assert not journal.exists()
+
+
+def test_a_full_disk_leaves_a_hard_linked_file_as_it_was(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    import errno
+
+    target = tmp_path / "a.lis"
+    target.write_bytes(b"old\n")
+    os.link(target, tmp_path / "b.lis")
+
+    def full(fd: int, offset: int, length: int) -> None:
+        raise OSError(errno.ENOSPC, "No space left on device")
+
+    monkeypatch.setattr(os, "posix_fallocate", full)
+    with pytest.raises(ZeroError, match="No space left"):
+        write_atomic(target, b"a longer new content\n" * 100, force=True)
+    assert target.read_bytes() == b"old\n" == (tmp_path / "b.lis").read_bytes()
+    leftovers = [p.name for p in tmp_path.iterdir() if ".zero-" in p.name]
+    assert len(leftovers) == 1 and leftovers[0].endswith(".journal")  # the new text is kept, said in the error
+
+
+def test_a_file_growing_while_it_is_read_is_refused_without_holding_it(tmp_path: Path) -> None:
+    """The size limit bounds memory: a file that grows while it is read is cut off at the limit."""
+    path = tmp_path / "grows.lis"
+    path.write_bytes(b"a 1\n" * 10)
+    stop = threading.Event()
+
+    def grow() -> None:
+        with path.open("ab") as f:
+            while not stop.is_set():
+                f.write(b"a 1\n" * 4096)
+                f.flush()
+
+    writer = threading.Thread(target=grow)
+    writer.start()
+    try:
+        for _ in range(20):
+            try:
+                data = read_file(path, limit=1 << 20)
+            except ZeroError as exc:
+                assert "larger than" in exc.message
+                continue
+            assert len(data) <= 1 << 20
+    finally:
+        stop.set()
+        writer.join()

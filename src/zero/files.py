@@ -15,7 +15,10 @@ Writing (:func:`write_atomic`)
   fsync) before it replaces anything. A symbolic link is written through to its target
   and stays a link; mode, owner and group are kept; a file with several hard links, or
   whose owner a rename could not keep, is rewritten in place after the new content is
-  safe, so every name and the owner stay. Anything that is not a regular file is never
+  safe, so every name and the owner stay: the complete new content is first kept beside it
+  as a journal (``.NAME.zero-PID-….journal``), and a write that is stopped half way (SIGKILL,
+  a full disk, a power cut) is completed from it by the next zero that reads or writes the
+  file, so the file is never left neither old nor new. Anything that is not a regular file is never
   replaced (``/dev/null`` and a terminal are written to, as meant); a file the user may
   not write is refused even where a rename would be allowed; without ``force`` an
   existing file is never replaced, atomically (a hard link claims the name), so two
@@ -126,14 +129,38 @@ def read_file(path: str | Path, limit: int | None = None) -> bytes:
         if st.st_size > limit:
             raise ZeroError(f"file is {st.st_size} bytes, larger than the {_mib(limit)} zero reads "
                             "(ZERO_MAX_FILE_SIZE raises the limit)", where)
-        data = io.FileIO(fd, closefd=False).readall()  # sized by fstat: one allocation
-        if len(data) > limit:  # the file grew while it was read
-            raise ZeroError(f"file is larger than the {_mib(limit)} zero reads", where)
+        if (st.st_nlink > 1 or (hasattr(os, "getuid") and st.st_uid != os.getuid())) \
+                and recover_journals(Path(path)):  # an in-place rewrite was stopped half way
+            return read_file(path, limit)
+        data = _read_at_most(fd, st.st_size, limit)
+        if data is None:  # the file grew while it was read: never more than the limit is held
+            raise ZeroError(f"file is larger than the {_mib(limit)} zero reads (it grew while it was read)", where)
         return data
     except OSError as exc:
         raise ZeroError(str(exc.strerror or exc), where) from None
     finally:
         os.close(fd)
+
+
+def _read_at_most(fd: int, size: int, limit: int) -> bytes | None:
+    """The file's bytes, read in one allocation of its size where it does not grow; ``None`` as soon
+    as more than ``limit`` bytes come (the memory held never exceeds the limit plus one chunk)."""
+    f = io.FileIO(fd, closefd=False)
+    data = f.read(size + 1) if size else b""  # one read of the size fstat gave, one byte more to see growth
+    if data is None:
+        data = b""
+    if len(data) <= size:
+        return data
+    chunks = [data]
+    total = len(data)
+    while True:
+        if total > limit:
+            return None
+        chunk = f.read(min(1 << 20, limit + 1 - total))
+        if not chunk:
+            return b"".join(chunks)
+        chunks.append(chunk)
+        total += len(chunk)
 
 
 def read_stream(stream: BinaryIO, name: str = "-", limit: int | None = None) -> bytes:
@@ -164,15 +191,15 @@ def temp_name(target: Path) -> Path:
     return target.parent / f".{target.name}.zero-{os.getpid()}-{os.urandom(4).hex()}.tmp"
 
 
-def remove_stale_temps(target: Path) -> list[Path]:
-    """Remove temporary files a killed zero left for ``target``; return what was removed."""
-    pattern = re.compile(r"\." + re.escape(target.name) + r"\.zero-([0-9]+)-[0-9a-f]+\.tmp")
-    removed: list[Path] = []
+def _stale(target: Path, suffix: str) -> list[Path]:
+    """Files a killed zero left beside ``target`` (``.tmp``: incomplete, ``.journal``: complete)."""
+    pattern = re.compile(r"\." + re.escape(target.name) + r"\.zero-([0-9]+)-[0-9a-f]+\." + suffix)
+    out: list[Path] = []
     try:
         names = os.listdir(target.parent if str(target.parent) else ".")
     except OSError:
-        return removed
-    for name in names:
+        return out
+    for name in sorted(names):
         m = pattern.fullmatch(name)
         if m is None or int(m.group(1)) == os.getpid():
             continue
@@ -184,10 +211,39 @@ def remove_stale_temps(target: Path) -> list[Path]:
             with contextlib.suppress(OSError):
                 stale = time.time() - path.stat().st_mtime > _STALE_SECONDS
         if stale:
-            with contextlib.suppress(OSError):
-                path.unlink()
-                removed.append(path)
+            out.append(path)
+    return out
+
+
+def remove_stale_temps(target: Path) -> list[Path]:
+    """Remove temporary files a killed zero left for ``target`` (never complete: a write renames
+    its temporary file to a journal once it holds everything); return what was removed."""
+    removed: list[Path] = []
+    for path in _stale(target, "tmp"):
+        with contextlib.suppress(OSError):
+            path.unlink()
+            removed.append(path)
     return removed
+
+
+def recover_journals(target: Path) -> bool:
+    """Complete an in-place rewrite that a killed zero left half done: its journal holds the whole
+    new content, so ``target`` gets it (in place, every link kept) and the journal goes. ``True``
+    when something was recovered."""
+    recovered = False
+    for journal in _stale(target, "journal"):
+        try:
+            data = journal.read_bytes()
+            _rewrite_in_place(target, data)
+            os.unlink(journal)
+            recovered = True
+        except OSError as exc:
+            raise ZeroError(f"a rewrite stopped half way and cannot be completed from {journal.name}: "
+                            f"{exc.strerror or exc}; copy it over the file by hand", str(target)) from None
+    if recovered:
+        _fsync_directory(target.parent if str(target.parent) else Path("."))
+        sys.stderr.write(f"zero: {target}: an earlier rewrite was stopped half way; completed from its journal\n")
+    return recovered
 
 
 @contextlib.contextmanager
@@ -252,14 +308,42 @@ def _write_to_stream(path: Path, data: bytes) -> bool:
 
 
 def _rewrite_in_place(target: Path, data: bytes) -> None:
-    """Overwrite the file itself (same inode: every hard link and the owner stay)."""
+    """Overwrite the file itself (same inode: every hard link and the owner stay). The blocks a
+    longer content needs are claimed first, so a full disk fails before the first byte is changed."""
     fd = os.open(target, os.O_WRONLY | _O_BINARY)
     try:
+        old = os.fstat(fd).st_size
+        if len(data) > old and hasattr(os, "posix_fallocate"):
+            try:
+                os.posix_fallocate(fd, old, len(data) - old)
+            except OSError as exc:
+                with contextlib.suppress(OSError):
+                    os.ftruncate(fd, old)  # nothing of the old content was changed
+                if exc.errno not in (errno.EINVAL, errno.EOPNOTSUPP, errno.ENOTSUP):
+                    raise
         _write_all(fd, data)
         os.ftruncate(fd, len(data))
         os.fsync(fd)
     finally:
         os.close(fd)
+
+
+@contextlib.contextmanager
+def _signals_held() -> Iterator[None]:
+    """Ctrl-C, SIGTERM and SIGHUP wait until the block is done (an in-place copy is never left half
+    done by them; SIGKILL and power cuts are what the journal is for)."""
+    import signal  # start-up: only a write needs it
+
+    names = [s for s in ("SIGINT", "SIGTERM", "SIGHUP") if hasattr(signal, s)]
+    held = {getattr(signal, s) for s in names}
+    if not hasattr(signal, "pthread_sigmask"):
+        yield
+        return
+    old = signal.pthread_sigmask(signal.SIG_BLOCK, held)
+    try:
+        yield
+    finally:
+        signal.pthread_sigmask(signal.SIG_SETMASK, old)
 
 
 def write_atomic(path: Path, data: bytes, force: bool = False, inputs: tuple[Path, ...] = ()) -> None:
@@ -300,6 +384,7 @@ def write_atomic(path: Path, data: bytes, force: bool = False, inputs: tuple[Pat
             raise ZeroError("not writable (permission denied): not replaced", where)
     directory = target.parent if str(target.parent) else Path(".")
     remove_stale_temps(target)
+    recover_journals(target)
     tmp = temp_name(target)
     try:
         fd = os.open(tmp, os.O_WRONLY | os.O_CREAT | os.O_EXCL | _O_BINARY, 0o600)
@@ -367,7 +452,17 @@ def _replace(tmp: Path, target: Path, st: os.stat_result, data: bytes) -> None:
             except OSError:
                 in_place = True  # a rename would change the owner: rewrite the file itself
     if in_place:
-        _rewrite_in_place(target, data)
-        os.unlink(tmp)
+        # The temporary file is complete and on disk: renamed to a journal, it says so, and the next
+        # zero completes the copy from it if this one dies half way (never deletes it as stale).
+        journal = tmp.with_name(tmp.name[: -len(".tmp")] + ".journal")
+        os.replace(tmp, journal)
+        _fsync_directory(target.parent if str(target.parent) else Path("."))
+        with _signals_held():
+            try:
+                _rewrite_in_place(target, data)
+            except OSError as exc:
+                raise ZeroError(f"not written completely: {exc.strerror or exc}; the next zero that reads or "
+                                f"writes it completes it from {journal.name}", str(target)) from None
+            os.unlink(journal)
     else:
         os.replace(tmp, target)

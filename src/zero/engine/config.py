@@ -337,21 +337,21 @@ class ConfigFinder:
                 raise ZeroError("has no [tool.zero] table", str(explicit))
             self.explicit = cfg
         self._by_dir: dict[Path, Config] = {}
-        self._by_name: dict[str, Config] = {}  # the directory as written → its configuration
+        self._by_name: dict[str, Config] = {}  # the absolute directory → its configuration
         self._default = Config()
 
     def for_path(self, path: Path, directory: bool | None = None) -> Config:
         """The configuration of a file (found from its directory up) or of a directory (found from
         the directory itself up). ``directory`` says which ``path`` is; ``None`` asks the file system.
-        Cached by the directory the search starts from, as written: a file and the folder of the
-        same name never share an entry."""
+        Cached by the absolute directory the search starts from (links not resolved, which costs
+        nothing per file): a file and a folder share an entry only when they mean one directory."""
         if self.isolated:
             return self._default
         if self.explicit is not None:
             return self.explicit
         if directory is None:
             directory = path.is_dir()
-        key = str(path) if directory else os.path.dirname(str(path))
+        key = os.path.abspath(str(path) if directory else os.path.dirname(str(path)) or ".")
         hit = self._by_name.get(key)
         if hit is None:
             start = path.resolve() if directory else _resolved(path).parent
