@@ -485,3 +485,37 @@ def test_a_file_growing_while_it_is_read_is_refused_without_holding_it(tmp_path:
     finally:
         stop.set()
         writer.join()
+
+
+@pytest.mark.parametrize("how", ["symlink", "hardlink", "pyproject", "no-suffix", "symlink-to-config"])
+def test_a_report_never_replaces_a_list_or_a_configuration(tmp_path: Path, how: str) -> None:
+    """`-o` looked at the name only: a link named rep.json replaced the list it points to, and
+    `-o pyproject.toml` or a list without a suffix was replaced without --force."""
+    good = tmp_path / "good.lis"
+    good.write_text("np_grp[1].achse[0].versch 5\nEnde\n")
+    (tmp_path / "pyproject.toml").write_text('[project]\nname = "x"\n')
+    before = {p.name: p.read_bytes() for p in tmp_path.iterdir()}
+    target = {"symlink": "rep.json", "hardlink": "rep.json", "pyproject": "pyproject.toml",
+              "no-suffix": "hochlauf", "symlink-to-config": "rep.sarif"}[how]
+    if how == "symlink":
+        (tmp_path / target).symlink_to(good)
+    elif how == "hardlink":
+        os.link(good, tmp_path / target)
+    elif how == "no-suffix":
+        (tmp_path / target).write_text("# start-up list\nkanal_anzahl 1\nsda_mds[0] ./kanal.lis\nEnde\n")
+        before[target] = (tmp_path / target).read_bytes()
+    elif how == "symlink-to-config":
+        (tmp_path / target).symlink_to(tmp_path / "pyproject.toml")
+    run = zero_cli("lint", "good.lis", "--output-format", "json", "-o", target, cwd=tmp_path)
+    assert run.code == 2 and "not replaced" in run.stderr, run
+    assert {p.name: p.read_bytes() for p in tmp_path.iterdir() if p.name in before} == before
+
+
+def test_a_report_replaces_the_previous_report(tmp_path: Path) -> None:
+    (tmp_path / "a.lis").write_text("np_grp[1].achse[0].versch x\nEnde\n")
+    for fmt, name in (("json", "r.json"), ("sarif", "r.sarif"), ("junit", "r.xml"), ("text", "r.txt"),
+                      ("concise", "r.txt"), ("github", "r.txt"), ("gitlab", "r.json")):
+        for _ in range(2):  # the second run replaces the first report
+            run = zero_cli("lint", "a.lis", "--output-format", fmt, "-o", name, cwd=tmp_path)
+            assert run.code == 1, (fmt, run)
+        assert (tmp_path / name).stat().st_size > 0

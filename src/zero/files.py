@@ -42,6 +42,7 @@ from pathlib import Path
 from typing import BinaryIO
 
 from zero.errors import ZeroError
+from zero.forms import CONFIG_NAMES, NOT_A_REPORT
 
 MAX_FILE_BYTES = 256 * 1024 * 1024
 _UNITS = {"": 1, "B": 1, "K": 1024, "KB": 1000, "KIB": 1024, "M": 1024**2, "MB": 1000**2, "MIB": 1024**2,
@@ -408,6 +409,56 @@ def write_atomic(path: Path, data: bytes, force: bool = False, inputs: tuple[Pat
         if isinstance(exc, OSError):
             raise ZeroError(f"not written: {exc.strerror or exc}", where) from None
         raise
+
+
+_LIST_LINE = re.compile(rb"[A-Za-z_][A-Za-z0-9_]*(?:\[[0-9]+\])*(?:\.[A-Za-z0-9_]+(?:\[[0-9]+\])*)*[ \t]+[^ \t\r\n]")
+
+
+def _looks_like_a_list(path: Path) -> bool:
+    """Does a file read like a parameter list (an entry `key value` among its first lines)? A report
+    never does: its lines start with a path and a colon, `::`, `[`, `{` or `<`."""
+    try:
+        with open(path, "rb") as f:
+            head = f.read(8192)
+    except OSError:
+        return False
+    seen = 0
+    for line in head.splitlines():
+        text = line.strip()
+        if not text or text.startswith((b"#", b"(", b"/*", b";")):
+            continue
+        if _LIST_LINE.match(text) or text == b"Ende":
+            return True
+        seen += 1
+        if seen >= 20:
+            break
+    return False
+
+
+def write_report(path: Path, data: bytes, inputs: tuple[Path, ...] = ()) -> None:
+    """Write a report over a previous report: refused, whatever the name, when ``path`` is (or links
+    to) a list, a program, a structured form, a configuration file, an input, a file with another
+    hard link, or a file whose content reads like a list."""
+    given = Path(path)
+    real = Path(os.path.realpath(given))
+    where = str(given)
+    for name in {given, real}:
+        if name.suffix.lower() in NOT_A_REPORT or name.name in CONFIG_NAMES:
+            what = "a configuration file" if name.name in CONFIG_NAMES else "a list, NC program or list form"
+            link = f" (it links to {real})" if name is real and real != given.absolute() else ""
+            raise ZeroError(f"is {what}{link}, not a report: not replaced", where)
+    try:
+        st = os.stat(given)
+    except OSError:
+        st = None
+    if st is not None and stat.S_ISREG(st.st_mode):
+        if st.st_nlink > 1:
+            raise ZeroError(f"has {st.st_nlink} hard links: replacing it would change another file, not only a "
+                            "report; not replaced", where)
+        if st.st_size and _looks_like_a_list(given):
+            raise ZeroError("reads like a parameter list, not a report: not replaced (give the report a new "
+                            "name, or remove the file first)", where)
+    write_atomic(given, data, force=True, inputs=inputs)
 
 
 def _create(tmp: Path, target: Path, force: bool, where: str) -> None:

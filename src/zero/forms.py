@@ -15,6 +15,9 @@ LIST_SUFFIXES = (".lis", ".lst")
 PROGRAM_SUFFIXES = (".nc", ".mpf", ".spf")  # NC programs (zero.nc)
 STRUCTURED_SUFFIXES = {".yaml": "yaml", ".yml": "yaml", ".toml": "toml", ".json": "json"}
 DEFAULT_INCLUDE = tuple(f"*{s}" for s in (*LIST_SUFFIXES, *PROGRAM_SUFFIXES))  # what a directory walk picks up
+CONFIG_NAMES = ("zero.toml", ".zero.toml", "pyproject.toml")  # nearest wins; in this order within a folder
+# A report (`zero lint -o FILE`) never replaces one of these: lists, programs, list forms, configuration.
+NOT_A_REPORT = (*LIST_SUFFIXES, *PROGRAM_SUFFIXES, ".yaml", ".yml", ".toml")
 EXTENSION = {"lis": ".lis", "yaml": ".yaml", "toml": ".toml", "json": ".json"}
 
 

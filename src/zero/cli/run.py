@@ -19,8 +19,7 @@ from zero.cli import exits
 from zero.engine.commands import Echo, LintRequest, run_lint
 from zero.engine.lint import LintResult, Totals, tallied
 from zero.errors import ZeroError
-from zero.files import max_file_bytes, read_stream, write_atomic
-from zero.forms import LIST_SUFFIXES, PROGRAM_SUFFIXES
+from zero.files import max_file_bytes, read_stream, write_report
 from zero.output import OUTPUT_FORMATS, STREAMED_FORMATS
 from zero.output.text import ProgressBar, render_text, statistics
 
@@ -39,8 +38,6 @@ class RegistryCache:
 
 
 REGISTRIES = RegistryCache()
-# A report (--output-file) replaces a previous report, never a list, a program or an input.
-REPORT_REFUSED = (*LIST_SUFFIXES, *PROGRAM_SUFFIXES)
 
 
 def _write_out(text: str) -> None:
@@ -116,11 +113,8 @@ def lint(paths: Sequence[str | Path] = (), output_format: str = "text", output_f
         results = list(run.results)
         buffer = io.StringIO()
         render_lint(results, output_format, buffer, totals, color=False)
-        target = Path(output_file)
-        if target.suffix.lower() in REPORT_REFUSED:
-            raise ZeroError("looks like a list or NC program, not a report: not replaced", str(target))
         inputs = tuple(Path(r.path) for r in results if r.path != "-")
-        write_atomic(target, buffer.getvalue().encode("utf-8", "surrogateescape"), force=True, inputs=inputs)
+        write_report(Path(output_file), buffer.getvalue().encode("utf-8", "surrogateescape"), inputs)
     else:
         render_lint(run.results, output_format, sys.stderr if run.findings_to_stderr else sys.stdout, totals)
     if show_statistics:

@@ -44,7 +44,7 @@ from zero.diagnostics import Severity
 from zero.engine.lint import LintOptions
 from zero.errors import ZeroError
 from zero.files import read_file
-from zero.forms import DEFAULT_INCLUDE
+from zero.forms import CONFIG_NAMES, DEFAULT_INCLUDE
 from zero.lists.model import parse_key
 from zero.records import field, record
 from zero.rules import RULES
@@ -52,7 +52,6 @@ from zero.rules import RULES
 if TYPE_CHECKING:
     from pathspec import GitIgnoreSpec
 
-CONFIG_NAMES = ("zero.toml", ".zero.toml", "pyproject.toml")
 _KEYS = ("select", "extend-select", "ignore", "per-file-ignores", "severity", "kind", "include",
          "exclude", "param-desc", "machine")
 

@@ -33,9 +33,9 @@ from pygls.workspace import TextDocument
 
 from zero import __version__
 from zero.engine.commands import Registries
-from zero.engine.config import CONFIG_NAMES
 from zero.errors import ZeroError
 from zero.files import read_file
+from zero.forms import CONFIG_NAMES
 from zero.lists.encoding import decode
 from zero.server import actions, completion, findings, hover, outline
 from zero.server.documents import Analysis, Projects
