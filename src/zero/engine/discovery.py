@@ -21,9 +21,17 @@ def git_visible(directory: Path) -> set[str] | None:
 
     if shutil.which("git") is None:
         return None
+    # A repository's own configuration must not make zero run anything: `core.fsmonitor` names a
+    # program git runs for `ls-files` (an untrusted checkout could run its code through zero).
+    # Only the ignore rules are wanted; every setting that can start a program is switched off.
+    safe = ["-c", "core.fsmonitor=false", "-c", "core.untrackedCache=false", "-c", "core.hooksPath=/dev/null"]
+    env = {**os.environ, "GIT_OPTIONAL_LOCKS": "0", "GIT_TERMINAL_PROMPT": "0"}
+    for name in ("GIT_DIR", "GIT_WORK_TREE", "GIT_INDEX_FILE"):  # the folder walked decides, not the caller's shell
+        env.pop(name, None)
     try:
-        proc = subprocess.run(["git", "-C", str(directory), "ls-files", "-z", "--cached", "--others",
-                               "--exclude-standard", "."], capture_output=True, timeout=60, check=False)
+        proc = subprocess.run(["git", *safe, "-C", str(directory), "ls-files", "-z", "--cached", "--others",
+                               "--exclude-standard", "."], capture_output=True, timeout=60, check=False,
+                              stdin=subprocess.DEVNULL, env=env)
     except (OSError, subprocess.SubprocessError):
         return None
     if proc.returncode != 0:
