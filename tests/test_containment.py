@@ -44,3 +44,72 @@ def test_linting_an_untrusted_checkout_runs_none_of_its_code(tmp_path: Path) -> 
     run = zero_cli("lint", str(repo), "--output-format", "concise", env=env)
     assert not marker.exists(), "zero ran a program the repository configured"
     assert "a.lis" in run.stdout and "ignored.lis" not in run.stdout  # .gitignore still applies
+
+
+def _startup(folder: Path, lines: list[str]) -> Path:
+    folder.mkdir(parents=True, exist_ok=True)
+    path = folder / "hochlauf.lis"
+    path.write_text("kanal_anzahl 1\n" + "".join(f"{line}\n" for line in lines) + "Ende\n")
+    return path
+
+
+@pytest.mark.parametrize("reference", ["etc/passwd", "../../../../../../etc/passwd", "/etc/passwd", "/etc/hostname",
+                                       "proc/self/environ", "/proc/self/environ", "C:\\Windows\\win.ini"])
+def test_a_start_up_list_cannot_make_zero_print_a_file_of_this_computer(tmp_path: Path, reference: str) -> None:
+    """README: "a start-up list makes zero read only its own machine's lists": the working
+    directory is never the file system's root nor above the project, absolute paths are not
+    followed (X012), and no line of a file outside the machine appears in any output."""
+    startup = _startup(tmp_path / "m", [f"hand_mds {reference}", "sda_mds[0] ./kanal.lis"])
+    (tmp_path / "m" / "kanal.lis").write_text("gruppe[0].achs_anzahl 0\nEnde\n")
+    secrets = [Path("/etc/passwd").read_text(errors="replace").split(":")[0] + ":x:",
+               os.environ.get("HOME", "/root"), "PATH=/"]
+    for command in (("lint", "--machine", str(startup), "--output-format", "json"),
+                    ("show", "--machine", str(startup), "--effective"),
+                    ("explain", "kanal_anzahl", "--machine", str(startup))):
+        run = zero_cli(*command)
+        shown = run.stdout + run.stderr
+        assert not any(s in shown for s in secrets), (command, shown[:500])
+    lint = zero_cli("lint", "--machine", str(startup), "--output-format", "concise")
+    expected = "X012" if reference.startswith(("/", "C:")) else ("X012" if reference.startswith("..") else "X005")
+    assert f"{expected} " in lint.stdout, lint.stdout
+
+
+def test_a_file_that_is_no_list_is_named_not_printed(tmp_path: Path) -> None:
+    folder = tmp_path / "m"
+    startup = _startup(folder, ["hand_mds ./credentials.txt", "rtconf_lis ./empty.lis"])
+    (folder / "credentials.txt").write_text("user admin\npassword s3cret-value\napi_key AKIA0000SECRET\n")
+    (folder / "empty.lis").write_text("# nothing set yet\nEnde\n")
+    run = zero_cli("lint", "--machine", str(startup), "--output-format", "concise")
+    assert "s3cret" not in run.stdout + run.stderr and "AKIA" not in run.stdout + run.stderr
+    assert "X005 error `hand_mds` names `./credentials.txt`, which is not a parameter list" in run.stdout
+    assert "empty.lis" not in run.stdout  # an empty list is a list
+    shown = zero_cli("show", "--machine", str(startup))
+    assert "s3cret" not in shown.stdout + shown.stderr
+
+
+def test_the_working_directory_stops_at_the_project(tmp_path: Path) -> None:
+    """A start-up list in a project (git work tree or zero configuration) never resolves its lists
+    above it, even where a same-named file lies there."""
+    project = tmp_path / "project"
+    (project / ".git").mkdir(parents=True)
+    (tmp_path / "listen").mkdir()
+    (tmp_path / "listen" / "kanal.lis").write_text("gruppe[0].achs_anzahl 0\nEnde\n")  # above the project
+    startup = _startup(project / "listen", ["sda_mds[0] ./listen/kanal.lis"])
+    run = zero_cli("show", "--machine", str(startup), "--output-format", "json")
+    import json
+
+    data = json.loads(run.stdout)
+    assert data["working_directory"] in (str(project), str(project / "listen")), data
+    assert [entry["status"] for entry in data["lists"]] == ["missing"]
+
+
+@pytest.mark.parametrize("entry", ['startup = "/etc/passwd"', '"hand_mds" = "../../../../etc/passwd"',
+                                   'working-directory = "/"', 'startup = "../outside/hochlauf.lis"'])
+def test_a_received_configuration_names_only_the_projects_files(tmp_path: Path, entry: str) -> None:
+    project = tmp_path / "project"
+    project.mkdir()
+    (project / "zero.toml").write_text(f"[machine]\n{entry}\n")
+    (project / "a.lis").write_text("np_grp[1].achse[0].versch 5\nEnde\n")
+    run = zero_cli("limits", cwd=project)
+    assert run.code == 2 and "lies outside the project" in run.stderr, run
+    assert "root:" not in run.stdout + run.stderr

@@ -84,6 +84,21 @@ def _is_reference(key: str) -> bool:
     return ref is not None and len(parsed.indices) == ref.key.count("[]")  # type: ignore[union-attr]
 
 
+def project_root(folder: Path) -> Path:
+    """The project a configuration belongs to: the git work tree that holds its folder, else the folder."""
+    base = Path(os.path.abspath(folder))
+    for d in (base, *base.parents):
+        if os.path.lexists(d / ".git"):
+            return d
+    return base
+
+
+def _within(path: Path, root: Path) -> bool:
+    """Is ``path`` (links followed) ``root`` or below it?"""
+    real, top = os.path.realpath(path), os.path.realpath(root)
+    return real == top or real.startswith(top.rstrip(os.sep) + os.sep)
+
+
 def _resolved(file: Path) -> Path:
     """The absolute path of a file under its own name: its directory resolved, the name kept (a
     link named `m.lis` is matched as `m.lis`, whatever it points to)."""
@@ -275,9 +290,14 @@ def parse_config(path: Path, text: str | None = None) -> Config | None:
         elif key == "machine":
             if not isinstance(value, dict):
                 raise fail(key, "expected a table: startup = \"listen/hochlauf.lis\" and list overrides")
+            root = project_root(path.parent)
             for mk, mv in value.items():
                 if not isinstance(mv, str) or not mv:
                     raise fail(mk, "expected a path", ("machine",))
+                if not _within(path.parent / mv, root):
+                    raise fail(mk, f"{mv!r} lies outside the project {root}: a configuration names only the "
+                               "project's own files (give a path inside it, or --machine on the command line)",
+                               ("machine",))
                 if mk == "startup":
                     cfg.machine = path.parent / mv
                 elif mk == "working-directory":

@@ -159,20 +159,21 @@ class Project:
 
     def _load(self, startup: Path, registry: Registry, layout: tuple[dict[str, Path], Path | None], reader: Reader,
               required: bool) -> Machine:
-        from zero.machine.model import load_machine  # start-up: only with a machine
+        from zero.machine.model import load_machine, machine_ceiling  # start-up: only with a machine
 
-        machine = load_machine(startup, registry, self.cli.kind, layout[0], layout[1], reader)
+        machine = load_machine(startup, registry, self.cli.kind, layout[0], layout[1], reader,
+                               machine_ceiling(startup))
         return require_startup(machine, registry) if required else machine
 
     def references(self, startup: Path, doc: Document) -> dict[str, Path]:
         """The lists a start-up list names (key as written → the path the controller opens), resolved
         as its machine is (list overrides and working directory of its configuration); nothing is
         read. A reference zero would not read (outside the working directory, empty) has none."""
-        from zero.machine.model import named_lists  # start-up: only for a start-up list
+        from zero.machine.model import machine_ceiling, named_lists  # start-up: only for a start-up list
 
         overrides, workdir = self._layout(startup)
-        _, named = named_lists(startup, doc, overrides, workdir)
-        return {n.key: n.path for n in named if n.path is not None and n.status != "unreadable"}
+        _, named = named_lists(startup, doc, overrides, workdir, machine_ceiling(startup))
+        return {n.key: n.path for n in named if n.path is not None and n.status != "not-checked"}
 
     def _layout(self, startup: Path) -> tuple[dict[str, Path], Path | None]:
         """The list overrides and working directory of ``[tool.zero.machine]`` that apply to a start-up

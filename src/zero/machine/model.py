@@ -41,7 +41,8 @@ from zero.catalog.registry import Registry
 from zero.catalog.values import ListValues
 from zero.errors import ZeroError
 from zero.files import read_file
-from zero.lists.model import Document, Entry
+from zero.forms import CONFIG_NAMES
+from zero.lists.model import Document, Entry, Invalid
 from zero.lists.tokenizer import tokenize
 from zero.records import field, record
 
@@ -172,6 +173,16 @@ class Machine:
     compensation: list[tuple[int, ListFile]] = field(default_factory=list)  # (index i, achs_kw[i])
 
     @property
+    def unchecked(self) -> list[Named]:
+        """The references zero did not follow: absolute paths and paths outside the machine's folder."""
+        return [n for n in self.named if n.status == "not-checked"]
+
+    def complete_axes(self) -> bool:
+        """Were all the axis lists the start-up list names (within `zahl_mds`) followed? When one was
+        not, no "axis without a list" can be claimed."""
+        return not any(n.reference.key == "achs_mds[]" for n in self.unchecked)
+
+    @property
     def missing(self) -> list[Missing]:
         return [Missing(n.key, n.raw, n.line, n.reason, n.reference.missing) for n in self.named
                 if n.status in ("missing", "unreadable")]
@@ -227,9 +238,34 @@ def _clean(raw: str) -> str:
     return raw.strip().strip('"')
 
 
-def working_directory(startup: Path, raws: list[str]) -> Path:
+def machine_ceiling(startup: Path) -> Path | None:
+    """The highest folder a machine's lists may lie in: the nearest folder, from the start-up list's
+    own up, that is a project (holds a zero configuration or ``pyproject.toml``) or a git work tree
+    (holds ``.git``); ``None`` where there is none (the search then stops below the file system's root)."""
+    base = Path(os.path.abspath(startup)).parent
+    for d in (base, *base.parents):
+        if any(os.path.lexists(d / name) for name in (".git", *CONFIG_NAMES)):
+            return d
+    return None
+
+
+def _candidates(base: Path, ceiling: Path | None) -> list[Path]:
+    """The start-up list's folder and the ancestors the vendor's layout needs (at most
+    MAX_ANCESTORS), never above the ceiling, never the file system's root."""
+    out: list[Path] = []
+    for d in (base, *base.parents):
+        if len(out) > MAX_ANCESTORS or d.parent == d:  # `/` (or a drive's root) is never a machine's folder
+            break
+        out.append(d)
+        if ceiling is not None and d == ceiling:
+            break
+    return out or [base]
+
+
+def working_directory(startup: Path, raws: list[str], ceiling: Path | None = None) -> Path:
     """The controller's working directory: the start-up list's directory or the nearest
-    ancestor in which the most of ``raws`` exist (the directory itself when none does).
+    ancestor in which the most of ``raws`` exist (the directory itself when none does), never
+    above ``ceiling`` (:func:`machine_ceiling`) and never the file system's root.
 
     The ancestors are those of the start-up list's absolute path, however it was typed
     (``hochlauf.lis`` from inside ``listen/`` has the same ancestors as ``listen/hochlauf.lis``);
@@ -237,8 +273,8 @@ def working_directory(startup: Path, raws: list[str]) -> Path:
     when it was given relative and the answer lies below the current directory, else absolute."""
     absolute = Path(os.path.abspath(startup))
     base = absolute.parent
-    candidates = [base, *list(base.parents)[:MAX_ANCESTORS]]
-    relative = [Path(_clean(r)) for r in raws if _clean(r) and not Path(_clean(r)).is_absolute()]
+    candidates = _candidates(base, ceiling)
+    relative = [Path(_clean(r)) for r in raws if _clean(r) and not _absolute(_clean(r))]
     best, hits = base, 0
     for d in candidates:
         n = sum(1 for r in relative if (d / r).is_file())
@@ -272,17 +308,44 @@ def _read(key: str, path: Path, line: int, registry: Registry, kind: str,
     return ListFile(key, path, values, line)
 
 
+def _not_a_list(values: ListValues) -> str | None:
+    """Why a file named as a list is no parameter list at all (``None`` when it is one): text whose
+    lines are entries of no parameter the catalogue knows, or not entries at all (``/etc/passwd``).
+    An empty list, or one of comments, is a list."""
+    doc = values.doc
+    if any(p.kind == "binary" for p in doc.problems):
+        return "is not a text file, not a parameter list: not read"
+    if values.resolved:
+        return None
+    registry = values.registry
+    if any(e.key is not None and (registry.by_pattern(e.key.pattern, None) or registry.alias(e.key.pattern, None))
+           for e in doc.entries):
+        return None  # a list of another kind than its key says: a list all the same
+    content = sum(1 for item in doc.items if isinstance(item, (Entry, Invalid)))
+    if not content:
+        return None
+    return (f"is not a parameter list (none of its {content} lines sets a parameter the catalogue knows): "
+            "not read, and none of its lines is shown")
+
+
 def _count(startup: ListValues, pid: str) -> int:
     n = startup.number_of(pid)
     return int(n) if n is not None else 0
 
 
+def _absolute(text: str) -> bool:
+    """An absolute path on the controller: ``/…``, ``C:\\…``, ``C:/…`` or ``\\\\server\\…``."""
+    return text.startswith(("/", "\\")) or (len(text) >= 3 and text[0].isalpha() and text[1] == ":"
+                                            and text[2] in "/\\")
+
+
 def named_lists(startup_path: Path, doc: Document, overrides: dict[str, Path] | None = None,
-                workdir: Path | None = None) -> tuple[Path, list[Named]]:
+                workdir: Path | None = None, ceiling: Path | None = None) -> tuple[Path, list[Named]]:
     """The working directory and every list reference of a start-up list, each with the path the
     controller opens (``path``; status ``overridden`` where ``[tool.zero.machine]`` names it,
-    ``missing`` for an empty one, ``unreadable`` for one outside the working directory). Only
-    paths: nothing is read. :func:`load_machine` reads them; the editor links them."""
+    ``missing`` for an empty one, ``not-checked`` for an absolute path or one outside the
+    machine's folder: zero never reads a file a start-up list points it to outside the machine).
+    Only paths: nothing is read. :func:`load_machine` reads them; the editor links them."""
     named: list[Named] = []
     for e in doc.entries:
         if e.key is None:
@@ -291,7 +354,7 @@ def named_lists(startup_path: Path, doc: Document, overrides: dict[str, Path] | 
         if ref is None or len(e.key.indices) != ref.key.count("[]"):
             continue
         named.append(Named(e.key_text, ref, e.key.indices[0] if e.key.indices else None, e.value, e.line))
-    root = workdir if workdir is not None else working_directory(startup_path, [n.raw for n in named])
+    root = workdir if workdir is not None else working_directory(startup_path, [n.raw for n in named], ceiling)
     for n in named:
         override = (overrides or {}).get(n.key)
         text = _clean(n.raw)
@@ -299,18 +362,19 @@ def named_lists(startup_path: Path, doc: Document, overrides: dict[str, Path] | 
             n.path, n.status = override, "overridden"
         elif not text:
             n.status, n.reason = "missing", "is empty"
+        elif _absolute(text):
+            n.status, n.reason = "not-checked", "is an absolute path on the controller"
         else:
-            n.path = Path(text) if Path(text).is_absolute() else root / text
+            n.path = root / text
             if not _inside(n.path, root):
-                n.status = "unreadable"
-                n.reason = (f"lies outside the working directory {root}: not read (zero reads only the machine's "
-                            "own lists; `[tool.zero.machine]` can name it)")
+                n.status, n.reason = "not-checked", f"lies outside the machine's folder {root}"
+                n.path = None
     return root, named
 
 
 def load_machine(startup_path: Path, registry: Registry, forced_kind: str | None = None,
                  overrides: dict[str, Path] | None = None, workdir: Path | None = None,
-                 reader: Callable[[Path], bytes] = read_file) -> Machine:
+                 reader: Callable[[Path], bytes] = read_file, ceiling: Path | None = None) -> Machine:
     """Read a start-up list and every list it names, as the controller would.
 
     ``overrides`` (start-up key → path, from ``[tool.zero.machine]``) replace what the
@@ -319,7 +383,7 @@ def load_machine(startup_path: Path, registry: Registry, forced_kind: str | None
     a list's bytes (an editor passes its unsaved text; :class:`ZeroError` when it cannot).
     """
     startup = _read("start-up list", startup_path, 0, registry, forced_kind or "STUP", None, reader)
-    root, named = named_lists(startup_path, startup.values.doc, overrides, workdir)
+    root, named = named_lists(startup_path, startup.values.doc, overrides, workdir, ceiling)
     machine = Machine(startup, root, named)
     counts = {pid: _count(startup.values, pid) for pid in COUNT_KEYS}
     loaded: dict[str, ListFile] = {}
@@ -328,13 +392,17 @@ def load_machine(startup_path: Path, registry: Registry, forced_kind: str | None
         if n.reference.count is not None and n.index is not None and n.index >= counts[n.reference.count]:
             n.status = "beyond-count"
             return None
-        if n.path is None or n.status == "unreadable":
-            return None  # empty, or outside the working directory: said by named_lists
+        if n.path is None or n.status == "not-checked":
+            return None  # empty, absolute or outside the machine's folder: said by named_lists
         try:
             lf = _read(n.key, n.path, n.line, registry, forced_kind or n.reference.kind, base, reader)
         except ZeroError as exc:
             n.status = "missing" if exc.message == "no such file" else "unreadable"
-            n.reason = "does not exist" if n.status == "missing" else exc.message
+            n.reason = "does not exist" if n.status == "missing" else f"cannot be read ({exc.message})"
+            return None
+        foreign = _not_a_list(lf.values)
+        if foreign is not None:  # never a line of it in a finding: it is not a list of this machine
+            n.status, n.reason = "unreadable", foreign
             return None
         loaded[n.key] = lf
         return lf

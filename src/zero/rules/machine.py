@@ -27,7 +27,7 @@ from zero.catalog.ids import (
 )
 from zero.catalog.ranges import TYPE_LIMITS
 from zero.diagnostics import Diagnostic, Related, Span
-from zero.rules.base import E, Family, MachineContext, W
+from zero.rules.base import INFO, E, Family, MachineContext, W
 
 if TYPE_CHECKING:  # start-up: a list's lint does not load the machine model
     from zero.machine.model import Axis
@@ -171,7 +171,7 @@ def check_axes(ctx: MachineContext) -> Iterator[Diagnostic]:
         if ch.lists is None:
             continue
         for ca in ch.axes:
-            if ca.log_nr not in axes and ca.entry is not None:
+            if ca.log_nr not in axes and ca.entry is not None and machine.complete_axes():
                 e = ca.entry
                 yield ctx.report("X007", Span.on_line(e.line, e.value_start, e.value_end),
                                  f"channel axis {ca.index} (`{ca.name}`) is logical axis {ca.log_nr}, but no "
@@ -379,7 +379,7 @@ def check_channel_axes(ctx: MachineContext) -> Iterator[Diagnostic]:
             span = Span.on_line(res.entry.line, res.entry.value_start, res.entry.value_end)
             where = f"channel {ch.index} spindle {idx[0] if idx else 0}"
             users.append((int(nr), where, span, path))
-            if int(nr) not in axes:
+            if int(nr) not in axes and machine.complete_axes():
                 yield ctx.report("X011", span, f"{where} is logical axis {int(nr)}, but no axis list of the "
                                  "start-up list has that `kopf.achs_nr`", param_id=SPINDLE_AXIS, path=path)
         for nr, what, span, path in users:
@@ -388,3 +388,34 @@ def check_channel_axes(ctx: MachineContext) -> Iterator[Diagnostic]:
                                  "drive cannot be two channel axes", path=path)
             else:
                 seen[nr] = what
+
+
+LIST_NOT_CHECKED = FAMILY.rule(
+    "X012", "list-not-checked", INFO, "A list zero does not follow: an absolute path, or outside the machine's folder",
+    """
+What it checks: every list the start-up list names is a path inside the machine's folder (the
+controller's working directory, never above the project or git work tree that holds the
+start-up list, never the file system's root). A reference with an absolute path (`/…`,
+`C:\\…`) or one that climbs out of that folder (`../../…`) is not followed.
+
+Why it matters on the machine: the controller opens the file on its own file system, so zero
+cannot know what it holds there; and a start-up list you received must never make zero read,
+and print, a file of your computer. The lists it names are not checked, and no "axis without
+a list" is claimed while an axis list is not followed.
+
+Fix: name the file where it lies in the repository with `[tool.zero.machine]`
+(`"achs_mds[0]" = "listen/achse_x.lis"`), or write the path relative to the working directory.
+""")
+
+
+@FAMILY.check(LIST_NOT_CHECKED)
+def check_unchecked(ctx: MachineContext) -> Iterator[Diagnostic]:
+    """X012: references zero does not follow."""
+    machine = ctx.machine
+    startup = machine.startup
+    for n in machine.unchecked:
+        line = startup.values.doc.line_text(n.line)
+        yield ctx.report("X012", Span.on_line(n.line, 0, len(line)),
+                         f"`{n.key}` names `{n.raw}`, which {n.reason}: zero does not read it, so that list is "
+                         "not checked (`[tool.zero.machine]` can name where it lies in the repository)",
+                         path=str(startup.path))
