@@ -113,3 +113,90 @@ def test_a_received_configuration_names_only_the_projects_files(tmp_path: Path, 
     run = zero_cli("limits", cwd=project)
     assert run.code == 2 and "lies outside the project" in run.stderr, run
     assert "root:" not in run.stdout + run.stderr
+
+
+# ------------------------------------------------------------------- bounded: no internal error
+
+
+def _no_internal_error(run: object) -> None:
+    text = run.stdout + run.stderr  # type: ignore[attr-defined]
+    assert "internal error" not in text, text[:400]
+
+
+@pytest.mark.parametrize("command", [("lint",), ("convert",), ("show",), ("diff", "big.toml")])
+def test_a_toml_integer_of_any_length_is_a_located_refusal(tmp_path: Path, command: tuple[str, ...]) -> None:
+    (tmp_path / "big.toml").write_text('_zero = {kind = "zero"}\n[np_grp.1.achse.0]\nversch = 0x' + "f" * 5000 + "\n")
+    run = zero_cli(*command[:1], "big.toml", *command[1:], cwd=tmp_path)
+    _no_internal_error(run)
+    assert run.code in (1, 2) and "big.toml:3:10:" in run.stderr and "no parameter holds it" in run.stderr, run
+
+
+def test_lengths_beyond_a_float_are_shown_exactly_and_json_stays_json(tmp_path: Path) -> None:
+    import json
+
+    huge_hex = "0x" + "f" * 270
+    nines = "9" * 60
+    (tmp_path / "ax.lis").write_text(f"kenngr.achs_typ 1\nkenngr.swe_pos {huge_hex}\nkenngr.swe_neg -{nines}\nEnde\n")
+    (tmp_path / "ax2.lis").write_text("kenngr.achs_typ 1\nkenngr.swe_pos 1\nkenngr.swe_neg -1\nEnde\n")
+    for command in (("show", "ax.lis"), ("diff", "ax.lis", "ax2.lis"), ("diff", "--defaults", "ax.lis"),
+                    ("diff", "--defaults", "ax.lis", "--output-format", "json"),
+                    ("diff", "ax2.lis", "ax.lis", "--output-format", "json"), ("lint", "ax.lis")):
+        run = zero_cli(*command, cwd=tmp_path)
+        _no_internal_error(run)
+        assert run.code in (0, 1), (command, run)
+        if "json" in command:
+            json.loads(run.stdout)
+    shown = zero_cli("diff", "--defaults", "ax.lis", cwd=tmp_path).stdout
+    assert "-" + "9" * 60 in shown and "9190283508" not in shown  # as written; no float's wrong digits
+    assert "-" + "9" * 56 + ".9999 mm" in zero_cli("show", "ax.lis", cwd=tmp_path).stdout  # exact
+
+
+def test_limits_of_a_machine_with_lengths_beyond_a_float(tmp_path: Path) -> None:
+    import json
+
+    m = tmp_path / "m"
+    m.mkdir()
+    (m / "hochlauf.lis").write_text("kanal_anzahl 1\nsda_mds[0] ./kanal.lis\nnullp_data[0] ./nullp.lis\n"
+                                    "werkz_data[0] ./wz.lis\nzahl_mds 1\nachs_mds[0] ./x.lis\nEnde\n")
+    (m / "kanal.lis").write_text("gruppe[0].achs_anzahl 1\ngruppe[0].achse[0].log_achs_nr 1\n"
+                                 "gruppe[0].achse[0].bezeichnung X\nEnde\n")
+    (m / "x.lis").write_text(f"kopf.achs_nr 1\nkenngr.swe_pos 0x{'f' * 300}\nkenngr.swe_neg -1\nEnde\n")
+    (m / "nullp.lis").write_text("np_grp[1].achse[0].versch 0x" + "7" * 280 + "\nEnde\n")
+    (m / "wz.lis").write_text("wz[1].ax_versatz[0] 5\nEnde\n")
+    for command in (("limits", "--machine", "hochlauf.lis", "--profile", "ip247"),
+                    ("limits", "--machine", "hochlauf.lis", "--output-format", "json"),
+                    ("lint", "--machine", "hochlauf.lis"), ("show", "--machine", "hochlauf.lis")):
+        run = zero_cli(*command, cwd=m)
+        _no_internal_error(run)
+        assert run.code in (0, 1), (command, run)
+        if "json" in command:
+            json.loads(run.stdout)
+
+
+@pytest.mark.parametrize("config", ["ignore = " + "[" * 100_000 + "\n",
+                                    "[tool.zero]\nselect = [\"R\"]\n" + ".".join(["a"] * 30_000) + " = 1\n",
+                                    'exclude = ["' + "a*" * 100 + '"]\n',
+                                    'exclude = ["' + "/".join(["**"] * 50) + '"]\n'])
+def test_a_hostile_configuration_is_refused_before_the_work(tmp_path: Path, config: str) -> None:
+    """Limits enforced before parsing or matching: nesting, dotted keys, pattern complexity."""
+    (tmp_path / "zero.toml").write_text(config)
+    (tmp_path / "a.lis").write_text("np_grp[1].achse[0].versch 5\nEnde\n")
+    run = zero_cli("lint", "a.lis", cwd=tmp_path, memory_mib=400, timeout=20)
+    _no_internal_error(run)
+    assert run.code == 2 and "zero.toml" in run.stderr, run
+    assert run.seconds < 5, run.seconds
+
+
+def test_a_start_up_list_naming_one_list_ten_thousand_times(tmp_path: Path) -> None:
+    """The catalogue's array (achs_mds[0..63]) bounds what is read, and each file is read once."""
+    m = tmp_path / "m"
+    m.mkdir()
+    (m / "x.lis").write_text("kopf.achs_nr 1\n" + "".join(f"getriebe[0].dynamik.vb_max {i}\n" for i in range(20_000))
+                             + "Ende\n")
+    (m / "hochlauf.lis").write_text("kanal_anzahl 1\nzahl_mds 10000\n"
+                                    + "".join(f"achs_mds[{i}] ./x.lis\n" for i in range(10_000)) + "Ende\n")
+    run = zero_cli("lint", "--machine", "hochlauf.lis", "--output-format", "concise", cwd=m, memory_mib=1500,
+                   timeout=120)
+    _no_internal_error(run)
+    assert run.code == 1 and "R003" in run.stdout, run.stderr
+    assert run.seconds < 60, run.seconds

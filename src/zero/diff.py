@@ -9,11 +9,12 @@ has the same effective value and is shown only with ``strict``.
 
 from __future__ import annotations
 
+import math
 import re
 from pathlib import Path
 from typing import Any
 
-from zero.catalog.ids import AXIS_TYPE, axis_unit, g_code_with_index, in_units
+from zero.catalog.ids import AXIS_TYPE, axis_unit, fixed, g_code_with_index, in_units
 from zero.catalog.registry import NO_DEFAULT, ParamSpec, Registry
 from zero.catalog.values import canonical_key, default_number, parse_int, read_value
 from zero.errors import ZeroError
@@ -147,7 +148,10 @@ def unit_and_delta(spec: ParamSpec | None, old: tuple[str, Any] | None, new: tup
         return unit, None
     raw = new[1] - old[1]
     if spec.is_length:
-        return unit, round(in_units(raw), 4)
+        if isinstance(raw, int) and abs(raw) > 2**53:  # a float would show it wrong: no delta at all
+            return unit, None
+        delta = in_units(raw)
+        return unit, round(delta, 4) if math.isfinite(delta) else None
     return unit, raw
 
 
@@ -326,7 +330,7 @@ def show_lines(side: Side, registry: Registry) -> list[str]:
             extra = f"  ({spec.id}"
             v = effective(e, spec)
             if spec.is_length and v[0] == "num":
-                extra += f", {in_units(v[1]):.4f} {length_unit or 'mm or °'}"
+                extra += f", {fixed(v[1])} {length_unit or 'mm or °'}"
             extra += ")"
         out.append(f"{key} = {e.value}{extra}")
     return out

@@ -8,6 +8,8 @@ named here once. Lengths and angles in the lists are integers in 0.1 µm and
 
 from __future__ import annotations
 
+import math
+
 Number = int | float
 
 # Lengths and angles: this many list units per mm or degree.
@@ -64,19 +66,35 @@ IP247_LIMIT = 999_999_990
 
 
 def in_units(value: Number) -> float:
-    """A length or angle in list units as mm or degrees."""
-    return value / LENGTH_UNIT
+    """A length or angle in list units as mm or degrees (±inf beyond a float: a number no
+    parameter holds, which the rules report; the caller shows it with :func:`fixed`)."""
+    try:
+        return value / LENGTH_UNIT
+    except OverflowError:
+        return math.inf if value > 0 else -math.inf
+
+
+def _four_decimals(value: Number) -> str:
+    """``value`` list units in mm or degrees with four decimals, exact for integers of any size
+    (a float would turn 10^40 into 10^36 and overflow beyond 10^308)."""
+    if isinstance(value, int):
+        if value.bit_length() > 4000:  # more digits than Python prints
+            return f"{'-' if value < 0 else ''}(a number of about {int(value.bit_length() * 0.30103)} digits)"
+        whole, part = divmod(abs(value), LENGTH_UNIT)
+        return f"{'-' if value < 0 else ''}{whole}.{part:04d}"
+    return f"{value / LENGTH_UNIT:.4f}"
 
 
 def fixed(value: Number, unit: str = "") -> str:
     """A length or angle with four decimals: ``-1000.0000 mm``."""
-    text = f"{value / LENGTH_UNIT:.4f}"
+    text = _four_decimals(value)
     return f"{text} {unit}" if unit else text
 
 
 def length_text(value: Number, rotary: bool | None = None) -> str:
     """A length or angle, trailing zeros dropped (both units when the axis type is unknown)."""
-    shown = f"{value / LENGTH_UNIT:.4f}".rstrip("0").rstrip(".")
+    shown = _four_decimals(value)
+    shown = shown.rstrip("0").rstrip(".") if "." in shown else shown
     if rotary is None:
         return f"{shown} mm (or °)"
     return f"{shown} °" if rotary else f"{shown} mm"

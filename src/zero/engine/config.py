@@ -52,6 +52,9 @@ from zero.rules import RULES
 if TYPE_CHECKING:
     from pathspec import GitIgnoreSpec
 
+MAX_PATTERN_WILDCARDS = 3  # `*` runs in one segment of a glob pattern, and `**` segments
+MAX_PATTERN_LENGTH = 512
+MAX_CONFIG_BYTES = 1 << 20  # a configuration larger than 1 MiB is no configuration
 _KEYS = ("select", "extend-select", "ignore", "per-file-ignores", "severity", "kind", "include",
          "exclude", "param-desc", "machine")
 
@@ -66,6 +69,16 @@ def patterns(globs: tuple[str, ...]) -> GitIgnoreSpec:
         text = g[2:] if g.startswith("./") else g
         if text.count("[") > text.count("]"):
             raise ZeroError(f"pattern {g!r}: `[` is not closed")
+        segments = text.split("/")
+        stars = max((len(re.findall(r"\*+", s)) for s in segments if s != "**"), default=0)
+        deep = sum(1 for s in segments if s == "**")
+        if len(text) > MAX_PATTERN_LENGTH or stars > MAX_PATTERN_WILDCARDS or deep > MAX_PATTERN_WILDCARDS:
+            # pathspec matches with a backtracking regular expression: the time a name takes grows as
+            # its length to the power of the wildcards in one segment (100: 12 s per file, 8: 20 s on
+            # a 60-character name); 3 keep the worst name of 255 characters below 30 ms
+            raise ZeroError(f"pattern {g[:40]!r}{'…' if len(g) > 40 else ''}: too complex (at most "
+                            f"{MAX_PATTERN_WILDCARDS} `*` in one path segment, {MAX_PATTERN_WILDCARDS} `**` "
+                            f"and {MAX_PATTERN_LENGTH} characters)")
         lines.append(text)
     import pathspec  # start-up: only where a pattern is matched (not for files named with the defaults)
 
@@ -216,11 +229,15 @@ def parse_config(path: Path, text: str | None = None) -> Config | None:
 
     if text is None:
         try:
-            text = read_file(path).decode("utf-8")  # a regular file only: a FIFO or device is refused
+            # a regular file only (a FIFO or device is refused), and no larger than a configuration is
+            text = read_file(path, limit=MAX_CONFIG_BYTES).decode("utf-8")
         except ZeroError as exc:
             raise ZeroError(f"cannot read the configuration: {exc.message}", str(path)) from None
         except UnicodeDecodeError:
             raise ZeroError("the configuration is not UTF-8", str(path)) from None
+    from zero.structured.toml import guard_toml  # start-up: only when a configuration file exists
+
+    guard_toml(text, str(path))
     try:
         data = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
@@ -229,6 +246,10 @@ def parse_config(path: Path, text: str | None = None) -> Config | None:
             raise ZeroError(f"not valid TOML: {exc}", str(path)) from None
         raise ZeroError(f"not valid TOML: {str(exc)[:at.start()].rstrip()}", str(path),
                         int(at.group(1)), int(at.group(2))) from None
+    except RecursionError:  # brackets nested without end
+        raise ZeroError("not valid TOML: nested too deeply", str(path)) from None
+    except ValueError:  # an integer beyond Python's conversion limit (TOMLDecodeError is one too: above)
+        raise ZeroError("not valid TOML: a number too long to read", str(path)) from None
     table: tuple[str, ...] = ()
     tool = data.get("tool", {})
     if path.name == "pyproject.toml":

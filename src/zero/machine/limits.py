@@ -8,6 +8,8 @@ limits and soft limits plus tool offsets to ±99.999999 m.
 
 from __future__ import annotations
 
+import math
+
 from zero.catalog.ids import (
     G53_AVAILABLE,
     INACTIVE,
@@ -42,8 +44,9 @@ class LimitRow:
     note: str = ""
 
     def to_json(self) -> dict[str, object]:
-        def u(x: Number) -> float:
-            return round(in_units(x), 4)
+        def u(x: Number) -> float | None:
+            mm = in_units(x)
+            return round(mm, 4) if math.isfinite(mm) else None  # beyond a float: no JSON number
 
         return {"channel": self.channel, "group": self.group, "g_code": g_code(self.group),
                 "axis": self.axis_index, "name": self.axis_name, "log_nr": self.log_nr, "unit": self.unit,

@@ -44,7 +44,7 @@ from zero.files import read_file
 from zero.forms import CONFIG_NAMES
 from zero.lists.model import Document, Entry, Invalid
 from zero.lists.tokenizer import tokenize
-from zero.records import field, record
+from zero.records import field, record, replace
 
 # Soft limits the controller uses when no list sets them (±10 m, the catalogue default).
 DEFAULT_SOFT_LIMIT = 100_000_000
@@ -301,8 +301,16 @@ def _inside(path: Path, root: Path) -> bool:
 
 
 def _read(key: str, path: Path, line: int, registry: Registry, kind: str,
-          base: ListValues | None = None, reader: Callable[[Path], bytes] = read_file) -> ListFile:
-    doc = tokenize(reader(path), str(path))
+          base: ListValues | None = None, reader: Callable[[Path], bytes] = read_file,
+          docs: dict[str, Document] | None = None) -> ListFile:
+    """One list of the machine; ``docs`` keeps each file read once (a start-up list may name one
+    file many times: each reference costs its binding, never another read)."""
+    real = os.path.realpath(path)
+    doc = docs.get(real) if docs is not None else None
+    if doc is None or doc.path != str(path):
+        doc = tokenize(reader(path), str(path)) if doc is None else replace(doc, path=str(path))
+        if docs is not None:
+            docs.setdefault(real, doc)
     values = ListValues.of(doc, registry, kind)
     values.base = base
     return ListFile(key, path, values, line)
@@ -386,16 +394,22 @@ def load_machine(startup_path: Path, registry: Registry, forced_kind: str | None
     root, named = named_lists(startup_path, startup.values.doc, overrides, workdir, ceiling)
     machine = Machine(startup, root, named)
     counts = {pid: _count(startup.values, pid) for pid in COUNT_KEYS}
+    sizes = {ref.param_id: spec.dims[0] for ref in REFERENCES
+             if (spec := registry.get(ref.param_id)) is not None and spec.dims}  # achs_mds[0..63], ...
+    docs: dict[str, Document] = {}
     loaded: dict[str, ListFile] = {}
 
     def load(n: Named, base: ListValues | None = None) -> ListFile | None:
+        if n.index is not None and n.index >= sizes.get(n.reference.param_id, n.index + 1):
+            n.status, n.reason = "out-of-range", "has an index outside its array (R003): not taken over"
+            return None
         if n.reference.count is not None and n.index is not None and n.index >= counts[n.reference.count]:
             n.status = "beyond-count"
             return None
         if n.path is None or n.status == "not-checked":
             return None  # empty, absolute or outside the machine's folder: said by named_lists
         try:
-            lf = _read(n.key, n.path, n.line, registry, forced_kind or n.reference.kind, base, reader)
+            lf = _read(n.key, n.path, n.line, registry, forced_kind or n.reference.kind, base, reader, docs)
         except ZeroError as exc:
             n.status = "missing" if exc.message == "no such file" else "unreadable"
             n.reason = "does not exist" if n.status == "missing" else f"cannot be read ({exc.message})"

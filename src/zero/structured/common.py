@@ -26,6 +26,7 @@ from zero.structured.tree import (
 )
 
 MAX_NESTING = 64
+MAX_INT_BITS = 128  # beyond every parameter type (the largest is 64 bits), far below Python's print limit
 _LONG_NUMBER_RE = re.compile(r"[0-9][0-9_]{999,}")
 
 
@@ -186,6 +187,9 @@ def walk_mapping(data: dict[str, Any], path: str,
                 raise ZeroError(f"{where}: a boolean; the controller knows 0/1 or symbols like "
                                    "\"TRUE\" — write one of those", path, line, col)
             if isinstance(v, int):
+                if v.bit_length() > MAX_INT_BITS:  # TOML hexadecimal of any length; Python prints 4,300 digits
+                    raise ZeroError(f"{where}: a number of {v.bit_length()} bits: no parameter holds it (the "
+                                    "widest parameter types hold 64)", path, line, col)
                 leaf = make_leaf(here, v, "int", path, line, col)
             elif isinstance(v, float):
                 if not math.isfinite(v):

@@ -11,6 +11,7 @@ from typing import Any
 
 from zero.errors import ZeroError
 from zero.structured.common import (
+    MAX_NESTING,
     Found,
     comment_suffix,
     emit_items,
@@ -163,6 +164,23 @@ def _toml_value_end(s: str, i: int) -> int | None:
     return j
 
 
+# A key of more dotted parts than this is refused before parsing: tomllib builds one table per
+# part and copies the path for each, so memory grows with the square of such a key (64 KB: 4 GB).
+_LONG_DOTTED_KEY = re.compile(r"""(?:(?:[A-Za-z0-9_-]+|"[^"\n]*"|'[^'\n]*')[ \t]*\.[ \t]*){""" + str(MAX_NESTING)
+                              + "}")
+
+
+def guard_toml(text: str, path: str = "-") -> None:
+    """Refuse, before parsing, TOML whose parsing would not be bounded by its size: a key of more
+    than ``MAX_NESTING`` dotted parts. (Brackets nested without end make tomllib recurse; its
+    RecursionError is turned into a located refusal by the callers.)"""
+    m = _LONG_DOTTED_KEY.search(text)
+    if m is not None:
+        line = text.count("\n", 0, m.start()) + 1
+        column = m.start() - (text.rfind("\n", 0, m.start()) + 1) + 1
+        raise ZeroError(f"not read: a key of more than {MAX_NESTING} dotted parts", path, line, column)
+
+
 def scan_toml(text: str) -> tuple[dict[tuple[str, ...], Found], list[str]]:
     """Comments and line of every key/value line, by full key path."""
     found: dict[tuple[str, ...], Found] = {}
@@ -230,6 +248,7 @@ def scan_toml(text: str) -> tuple[dict[tuple[str, ...], Found], list[str]]:
 def read_toml(text: str, path: str = "-") -> Tree:
     import tomllib  # start-up: only when TOML is read
 
+    guard_toml(text, path)
     try:
         data = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
