@@ -210,3 +210,71 @@ async def test_a_refused_formatting_is_answered_without_a_traceback_or_an_error_
     assert b"Traceback" not in err and b"not formatted" not in err, err.decode("utf-8", "replace")
     logged = [a["params"]["message"] for a in answers if a.get("method") == "window/logMessage"]
     assert not [m for m in logged if "not formatted" in m]
+
+
+async def _run_raw(data: bytes, timeout: float = TIMEOUT) -> tuple[int, list[dict[str, Any]], bytes]:
+    """A server process fed raw bytes, then the end of its input."""
+    process = await asyncio.create_subprocess_exec(*SERVER, stdin=asyncio.subprocess.PIPE,
+                                                   stdout=asyncio.subprocess.PIPE, stderr=asyncio.subprocess.PIPE)
+    out, err = await asyncio.wait_for(process.communicate(data), timeout)
+    answers = [json.loads(part.split(b"\r\n\r\n", 1)[1]) for part in out.split(b"Content-Length: ")[1:]]
+    assert process.returncode is not None
+    assert b"Traceback" not in err, err.decode(errors="replace")
+    return process.returncode, answers, err
+
+
+SHUTDOWN = {"jsonrpc": "2.0", "id": 9, "method": "shutdown"}
+EXIT = {"jsonrpc": "2.0", "method": "exit"}
+
+
+@pytest.mark.parametrize("broken", [
+    b"Content-Length: abc\r\n\r\n{\"jsonrpc\": \"2.0\", \"id\": 5, \"method\": \"shutdown\"}",
+    b"\r\n\r\n{\"jsonrpc\": \"2.0\", \"id\": 5, \"method\": \"x\"}",  # no Content-Length
+    b"Content-Type: application/vscode-jsonrpc\r\n\r\n{}",
+    b"Content-Length: 10\r\n\r\n{\"jsonrpc\": \"2.0\", \"id\": 5, \"method\": \"shutdown\"}",  # too short
+    b"Content-Length: 80\r\n\r\n{\"jsonrpc\": \"2.0\", \"id\": 5}",  # too long: it swallows the next header
+    b"Content-Length: 99999999999\r\n\r\n{}",  # over the limit
+    b"garbage without any header at all" * 400,
+])
+async def test_broken_framing_is_answered_and_the_server_goes_on(broken: bytes) -> None:
+    """README: "a malformed message is answered with a parse error and skipped". pygls trusted the
+    framing: a Content-Length that was not a number, missing or wrong left the server reading the
+    next message as a body, and it never answered again, not even `shutdown`."""
+    data = _message(INITIALIZE) + broken + _message(SHUTDOWN) + _message(EXIT)
+    code, answers, err = await _run_raw(data, timeout=20)
+    assert code == 0, err.decode(errors="replace")
+    assert any(a.get("id") == 9 and "result" in a for a in answers), answers
+    assert any(a.get("id") is None and a.get("error", {}).get("code") == -32700 for a in answers), answers
+
+
+async def test_a_uri_with_a_nul_byte_is_checked_as_an_untitled_document(client: LanguageClient) -> None:
+    uri = "file:///tmp/a%00b.lis"
+    found = await diagnostics_after(client, uri, lambda: client.text_document_did_open(
+        types.DidOpenTextDocumentParams(types.TextDocumentItem(uri, "plaintext", 1, "np_grp[1].achse[0].versch x\n"))))
+    assert [str(d.code) for d in found] == ["R004"]
+    result, error = await raw_request(client, types.TEXT_DOCUMENT_HOVER,
+                                      {"textDocument": {"uri": uri}, "position": {"line": 0, "character": 2}}, "h")
+    assert error is None or "Traceback" not in (error.message + str(error.data or ""))
+    client.text_document_did_close(types.DidCloseTextDocumentParams(types.TextDocumentIdentifier(uri)))
+
+
+async def test_a_burst_of_changes_is_linted_once_not_once_each() -> None:
+    """With debounce 0 a client that sends 2,000 changes at once (or is gone) does not leave the
+    server linting each of them in turn: changes already waiting supersede each other."""
+    uri = "file:///tmp/zero-burst/n.lis"
+    text = "".join(f"np_grp[1].achse[0].versch {i}\n" for i in range(3000))
+    messages = [{**INITIALIZE, "params": {**INITIALIZE["params"], "initializationOptions": {"debounce": 0}}},  # type: ignore[dict-item]
+                {"jsonrpc": "2.0", "method": "initialized", "params": {}},
+                {"jsonrpc": "2.0", "method": "textDocument/didOpen", "params": {"textDocument": {
+                    "uri": uri, "languageId": "plaintext", "version": 1, "text": text}}}]
+    for v in range(2, 2002):
+        messages.append({"jsonrpc": "2.0", "method": "textDocument/didChange", "params": {
+            "textDocument": {"uri": uri, "version": v}, "contentChanges": [{"text": text + f"a {v}\n"}]}})
+    messages += [SHUTDOWN, EXIT]
+    import time
+
+    t0 = time.perf_counter()
+    code, answers, _ = await _run_raw(b"".join(_message(m) for m in messages), timeout=120)
+    published = [a for a in answers if a.get("method") == "textDocument/publishDiagnostics"]
+    assert code == 0
+    assert len(published) < 200, (len(published), time.perf_counter() - t0)

@@ -22,7 +22,7 @@ from lsprotocol import types
 from zero import __version__
 from zero.diagnostics import Diagnostic, Severity, Span
 from zero.errors import ZeroError
-from zero.files import write_atomic
+from zero.files import read_file, write_atomic
 from zero.rules import RULES
 from zero.server.documents import Analysis, Note
 from zero.server.positions import Text, uri_of
@@ -76,11 +76,20 @@ class RuleDocs:
             for code in RULES:
                 target = directory / f"{code}.md"
                 data = rule_markdown(code).encode("utf-8")
-                if not target.is_file() or target.read_bytes() != data:
+                if not _holds(target, data):
                     write_atomic(target, data, force=True)
         except (OSError, ZeroError):
             return False
         return True
+
+
+def _holds(target: Path, data: bytes) -> bool:
+    """Does the cached rule text hold exactly ``data``? (Its size first: a file of the cache
+    directory replaced by something huge is never read whole.)"""
+    try:
+        return target.stat().st_size == len(data) and read_file(target, limit=len(data)) == data
+    except (OSError, ZeroError):
+        return False
 
 
 def lsp_range(start: tuple[int, int], end: tuple[int, int]) -> types.Range:

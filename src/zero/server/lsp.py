@@ -17,10 +17,14 @@ from __future__ import annotations
 
 import asyncio
 import contextlib
+import json
 import logging
 import os
+import re
 import sys
+import threading
 import traceback
+from collections.abc import Callable
 from pathlib import Path
 from typing import Any
 from urllib.parse import unquote
@@ -181,7 +185,9 @@ class ZeroServer(LanguageServer):
 
     def schedule(self, uri: str, delay: float | None = None) -> None:
         self.cancel(uri)
-        wait = self.settings.debounce if delay is None else delay
+        # never below MIN_DEBOUNCE: changes already waiting in the stream (a client that types faster
+        # than zero lints, or one that is gone) supersede each other instead of each being linted
+        wait = max(self.settings.debounce, MIN_DEBOUNCE) if delay is None else delay
         self.timers[unquote(uri)] = asyncio.get_running_loop().call_later(wait, self.publish, uri)
 
     def cancel(self, uri: str) -> None:
@@ -330,27 +336,155 @@ def create_server(registries: Registries, param_desc: Path | None = None) -> Zer
     return server
 
 
-class ByteSafeInput:
-    """The client's stream, each message's bytes made readable: JSON-RPC is UTF-8, but an editor
-    may send a buffer it could not decode (Neovim does, for a Latin-1 file read as UTF-8) and
-    pygls would drop the message (a request never answered, a document never opened). A byte
-    that is not UTF-8 reaches zero as the lone surrogate zero keeps such bytes as
-    (``surrogateescape``), and is reported where it is (S007)."""
+MIN_DEBOUNCE = 0.02  # seconds
+MAX_MESSAGE_BYTES = 64 * 1024 * 1024  # one message from the client (a 30 MB list opened is 60 MB of JSON)
+MAX_HEADER_BYTES = 8192
+_CONTENT_LENGTH = re.compile(rb"content-length[ \t]*:[ \t]*([0-9]{1,12})[ \t]*", re.IGNORECASE)
+_HEADER_START = re.compile(rb"content-length[ \t]*:", re.IGNORECASE)
+_SWALLOWED = re.compile(rb"\}[ \t\r\n]*content-length[ \t]*:[ \t]*[0-9]+[ \t]*\r\n", re.IGNORECASE)  # a next message
 
-    def __init__(self, stream: Any) -> None:
+
+def _whole_json(body: bytes) -> bool:
+    """Is the body one JSON object? Parsed where small; a large one (a list opened) is checked by
+    its shape only, so that pygls's parse is the only one: an object, and no header inside it."""
+    if len(body) <= 1 << 20:
+        try:
+            return isinstance(json.loads(body.decode("utf-8", "surrogateescape")), dict)
+        except (ValueError, RecursionError):
+            return False
+    text = body.strip()
+    return text.startswith(b"{") and text.endswith(b"}") and _SWALLOWED.search(text) is None
+
+
+class FramedInput:
+    """The client's stream as pygls reads it, each message checked before pygls sees it.
+
+    pygls trusts the framing: a ``Content-Length`` that is not a number, missing, or wrong made it
+    read the next message's header as a body (or wait for bytes that never come), and the server
+    never answered again, not even ``shutdown``. Here each message is read whole, its header and
+    its JSON checked; a broken one is answered with a JSON-RPC parse error (id ``null``), said on
+    stderr, and reading goes on at the next ``Content-Length`` header. pygls gets only well-formed
+    messages, re-framed. A message over ``MAX_MESSAGE_BYTES`` is skipped without being held.
+
+    JSON-RPC is UTF-8, but an editor may send a buffer it could not decode (Neovim does, for a
+    Latin-1 file read as UTF-8): a byte that is not UTF-8 reaches zero as the lone surrogate zero
+    keeps such bytes as (``surrogateescape``), and is reported where it is (S007)."""
+
+    def __init__(self, stream: Any, reply: Callable[[bytes], None] | None = None) -> None:
         self.stream = stream
+        self.reply = reply
+        self._raw = bytearray()  # read from the client, not yet framed
+        self._out = bytearray()  # framed for pygls, not yet read by it
+        self._eof = False
 
+    # pygls's side
     def readline(self) -> bytes:
-        line: bytes = self.stream.readline()
+        if not self._out and not self._next():
+            return b""
+        end = self._out.find(b"\n")
+        cut = len(self._out) if end < 0 else end + 1
+        line = bytes(self._out[:cut])
+        del self._out[:cut]
         return line
 
     def read(self, size: int = -1) -> bytes:
-        data: bytes = self.stream.read(size)
-        try:
-            data.decode("utf-8")
-        except UnicodeDecodeError:
-            return data.decode("utf-8", "surrogateescape").encode("utf-8", "surrogatepass")
+        if not self._out and not self._next():
+            return b""
+        cut = len(self._out) if size < 0 else min(size, len(self._out))
+        data = bytes(self._out[:cut])
+        del self._out[:cut]
         return data
+
+    # the client's side
+    def _fill(self) -> bool:
+        if self._eof:
+            return False
+        read1 = getattr(self.stream, "read1", None)
+        chunk = read1(65536) if read1 is not None else self.stream.read(65536)
+        if not chunk:
+            self._eof = True
+            return False
+        self._raw += chunk
+        return True
+
+    def _refuse(self, why: str) -> None:
+        logger.warning("a message from the client is not valid, skipped: %s", why)
+        if self.reply is not None:
+            body = json.dumps({"jsonrpc": "2.0", "id": None, "error": {"code": -32700, "message": why}}).encode()
+            with contextlib.suppress(OSError, ValueError):
+                self.reply(b"Content-Length: %d\r\n\r\n" % len(body) + body)
+
+    def _resync(self, start: int, after: int | None = None) -> None:
+        """Drop what cannot be a message, up to the next ``Content-Length`` header: right ``after`` a
+        body whose length was right but whose content was not, else the first one from ``start``."""
+        if after is not None:
+            while len(self._raw) < after + 16 and self._fill():
+                pass
+            if _HEADER_START.match(self._raw, after):
+                del self._raw[:after]
+                return
+        m = _HEADER_START.search(self._raw, start)
+        if m is None:
+            keep = min(len(self._raw), 32)  # a header may be cut in two by the read
+            del self._raw[: len(self._raw) - keep]
+            return
+        del self._raw[:m.start()]
+
+    def _next(self) -> bool:
+        """Frame the next valid message into the output; ``False`` at the end of the stream."""
+        while True:
+            end = self._raw.find(b"\r\n\r\n")
+            if end < 0:
+                if len(self._raw) > MAX_HEADER_BYTES:
+                    self._refuse("no end of the header within 8192 bytes")
+                    self._resync(1)
+                    continue
+                if not self._fill():
+                    return False
+                continue
+            header = bytes(self._raw[:end])
+            m = None
+            for line in header.split(b"\r\n"):
+                m = _CONTENT_LENGTH.fullmatch(line) or m
+            if m is None:
+                self._refuse("a header without a valid Content-Length")
+                self._resync(1)
+                continue
+            length = int(m.group(1))
+            start = end + 4
+            if length > MAX_MESSAGE_BYTES:
+                self._refuse(f"a message of {length} bytes, over the {MAX_MESSAGE_BYTES} the server reads")
+                self._skip(start)
+                continue
+            while len(self._raw) < start + length:
+                if not self._fill():
+                    return False
+            body = bytes(self._raw[start:start + length])
+            if not _whole_json(body):
+                self._refuse("a body that is not JSON (is its Content-Length right?)")
+                self._resync(start, start + length)
+                continue
+            del self._raw[:start + length]
+            try:
+                body.decode("utf-8")
+            except UnicodeDecodeError:
+                body = body.decode("utf-8", "surrogateescape").encode("utf-8", "surrogatepass")
+            self._out += b"Content-Length: %d\r\n\r\n" % len(body) + body
+            return True
+
+    def _skip(self, start: int) -> None:
+        """Read past a message too large to hold, keeping nothing of it: up to the next header that
+        follows the end of a JSON object (its length is not trusted: it may be any number)."""
+        del self._raw[:start]
+        while True:
+            m = _SWALLOWED.search(self._raw)
+            if m is not None:
+                del self._raw[:m.start() + 1]
+                return
+            del self._raw[: max(0, len(self._raw) - 64)]  # a header may be cut in two by the read
+            if not self._fill():
+                self._raw.clear()
+                return
 
 
 def serve(registries: Registries, param_desc: Path | None = None) -> None:
@@ -365,6 +499,13 @@ def serve(registries: Registries, param_desc: Path | None = None) -> None:
     root.addHandler(handler)
     root.setLevel(logging.WARNING)
     server = create_server(registries, param_desc)
-    server.start_io(ByteSafeInput(sys.stdin.buffer), stdout)  # type: ignore[arg-type]
+    lock = threading.Lock()
+
+    def reply(data: bytes) -> None:  # a parse error, written whole beside pygls's messages
+        with lock:
+            stdout.write(data)
+            stdout.flush()
+
+    server.start_io(FramedInput(sys.stdin.buffer, reply), stdout)  # type: ignore[arg-type]
     if not server.shut_down:  # `exit` without `shutdown`, or the client gone: 1, as the protocol says
         raise SystemExit(1)

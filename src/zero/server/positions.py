@@ -20,11 +20,14 @@ from zero.lists.encoding import decode
 
 
 def path_of(uri: str) -> Path | None:
-    """The file a ``file:`` URI names; ``None`` for any other scheme (``untitled:``)."""
+    """The file a ``file:`` URI names; ``None`` for any other scheme (``untitled:``), and for a URI no
+    file system can name (a NUL byte in it: the document is then checked as an untitled one)."""
     parsed = urlparse(uri)
     if parsed.scheme != "file":
         return None
     local = url2pathname(unquote(parsed.path))
+    if "\x00" in local or "\x00" in parsed.netloc:
+        return None
     if parsed.netloc and parsed.netloc != "localhost":
         local = f"//{parsed.netloc}{local}"
     return Path(local)
