@@ -200,3 +200,30 @@ def test_a_start_up_list_naming_one_list_ten_thousand_times(tmp_path: Path) -> N
     _no_internal_error(run)
     assert run.code == 1 and "R003" in run.stdout, run.stderr
     assert run.seconds < 60, run.seconds
+
+
+@pytest.mark.parametrize(("name", "content"), [("blank.lis", b"\n" * 2_000_000), ("x.lis", b"x\n" * 1_500_000),
+                                               ("key.lis", b"a" * 3_000_000 + b" 1\n"),
+                                               ("key.yaml", b"a: " + b"1" * 2_000_000 + b"\n")])
+def test_an_input_no_list_resembles_is_refused_before_it_is_parsed(tmp_path: Path, name: str, content: bytes) -> None:
+    """README: "at most 1,000,000 lines, none longer than 1 MiB": memory is bounded before the
+    work (10 MB of blank lines took 1 GB, 10 MB of `x` lines 9 GB and minutes, one 20 MB key 0.9 GB)."""
+    (tmp_path / name).write_bytes(content)
+    for command in (("lint", name), ("show", name), ("format", "--check", name), ("convert", name)):
+        if command[0] == "format" and not name.endswith(".lis"):
+            continue  # format leaves YAML alone
+        run = zero_cli(*command, cwd=tmp_path, memory_mib=300, timeout=30)
+        _no_internal_error(run)
+        assert run.code == 2 and "any parameter list has" in run.stdout + run.stderr, (command, run)
+    piped = zero_cli("lint", "-", "--stdin-filename", name, stdin=content, cwd=tmp_path, memory_mib=300)
+    assert piped.code == 2 and "any parameter list has" in piped.stderr
+
+
+def test_a_flood_of_one_finding_is_listed_ten_thousand_times_then_counted(tmp_path: Path) -> None:
+    import json
+
+    (tmp_path / "x.lis").write_bytes(b"x\n" * 25_000)
+    run = zero_cli("lint", "x.lis", "--output-format", "json", "--select", "S002", cwd=tmp_path)
+    found = json.loads(run.stdout)
+    assert len(found) == 10_001
+    assert found[-1]["line"] == 10_001 and found[-1]["message"].startswith("15000 more S002 findings")

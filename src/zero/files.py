@@ -45,6 +45,11 @@ from zero.errors import ZeroError
 from zero.forms import CONFIG_NAMES, NOT_A_REPORT
 
 MAX_FILE_BYTES = 256 * 1024 * 1024
+# What no parameter list (nor its YAML/TOML/JSON form) comes near: the vendor's largest list has
+# 230,000 lines of at most 200 characters. Past these a file is refused before it is parsed, which
+# bounds the memory one input can take (each line and each byte of a line costs objects).
+MAX_LINES = 1_000_000
+MAX_LINE_BYTES = 1024 * 1024
 _UNITS = {"": 1, "B": 1, "K": 1024, "KB": 1000, "KIB": 1024, "M": 1024**2, "MB": 1000**2, "MIB": 1024**2,
           "G": 1024**3, "GB": 1000**3, "GIB": 1024**3}
 _SIZE_RE = re.compile(r"\s*([0-9]+)\s*([A-Za-z]*)\s*")
@@ -136,6 +141,7 @@ def read_file(path: str | Path, limit: int | None = None) -> bytes:
         data = _read_at_most(fd, st.st_size, limit)
         if data is None:  # the file grew while it was read: never more than the limit is held
             raise ZeroError(f"file is larger than the {_mib(limit)} zero reads (it grew while it was read)", where)
+        check_shape(data, where)
         return data
     except OSError as exc:
         raise ZeroError(str(exc.strerror or exc), where) from None
@@ -171,7 +177,25 @@ def read_stream(stream: BinaryIO, name: str = "-", limit: int | None = None) -> 
     if len(data) > limit:
         raise ZeroError(f"standard input is larger than the {_mib(limit)} zero reads "
                         "(ZERO_MAX_FILE_SIZE raises the limit)", name)
+    check_shape(data, name)
     return data
+
+
+def check_shape(data: bytes, where: str) -> None:
+    """Refuse an input with more than ``MAX_LINES`` lines or a line longer than ``MAX_LINE_BYTES``
+    (both found at the speed of a byte search: no line is split off for it)."""
+    lines = data.count(b"\n")
+    if lines > MAX_LINES:
+        raise ZeroError(f"{lines} lines, more than the {MAX_LINES} any parameter list has", where)
+    if len(data) > MAX_LINE_BYTES:
+        pos = 0
+        while len(data) - pos > MAX_LINE_BYTES:  # the last line break within each window of the limit
+            cut = data.rfind(b"\n", pos, pos + MAX_LINE_BYTES + 1)
+            if cut < 0:
+                line = data.count(b"\n", 0, pos) + 1
+                raise ZeroError(f"line {line} is longer than the {_mib(MAX_LINE_BYTES)} a line of any parameter "
+                                "list has", where)
+            pos = cut + 1
 
 
 # --------------------------------------------------------------------------- writing

@@ -33,7 +33,7 @@ from zero.engine.lint import (
 )
 from zero.engine.project import Project, Registries
 from zero.errors import ZeroError
-from zero.files import max_file_bytes, read_file
+from zero.files import check_shape, max_file_bytes, read_file
 from zero.forms import LIST, PROGRAM, STRUCTURED, form_of
 from zero.lists.tokenizer import tokenize
 from zero.machine.model import ListFile, Machine
@@ -187,6 +187,11 @@ class Projects:
         if len(data) > max_file_bytes():
             a.notes.append(Note(f"larger than the size limit ({max_file_bytes()} bytes, ZERO_MAX_FILE_SIZE): "
                                 "not checked", severity=Severity.WARNING))
+            return a
+        try:
+            check_shape(data, name)
+        except ZeroError as exc:
+            a.notes.append(Note(f"{exc.message}: not checked", severity=Severity.WARNING))
             return a
         if a.form == STRUCTURED and not self._is_list_form(text, config, path):
             return a
