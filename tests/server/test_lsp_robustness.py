@@ -252,7 +252,7 @@ async def test_a_uri_with_a_nul_byte_is_checked_as_an_untitled_document(client: 
     found = await diagnostics_after(client, uri, lambda: client.text_document_did_open(
         types.DidOpenTextDocumentParams(types.TextDocumentItem(uri, "plaintext", 1, "np_grp[1].achse[0].versch x\n"))))
     assert [str(d.code) for d in found] == ["R004"]
-    result, error = await raw_request(client, types.TEXT_DOCUMENT_HOVER,
+    _result, error = await raw_request(client, types.TEXT_DOCUMENT_HOVER,
                                       {"textDocument": {"uri": uri}, "position": {"line": 0, "character": 2}}, "h")
     assert error is None or "Traceback" not in (error.message + str(error.data or ""))
     client.text_document_did_close(types.DidCloseTextDocumentParams(types.TextDocumentIdentifier(uri)))
