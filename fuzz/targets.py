@@ -1,15 +1,21 @@
 """The fuzz targets, importable without atheris (tests replay crashes through them).
 
-The first byte of an input picks the target; the rest is the data:
+The first byte of an input picks the target (``% 9`` for 0-8; 0xF9, 0xFA and 0xFB for 9-11, so
+that every input saved before the last three targets existed replays as it did); the rest is the data:
 0 tokenizer + lint of list bytes, 1 list → YAML/TOML/JSON → list (must be the
 identity), 2 YAML reader, 3 TOML reader, 4 JSON reader, 5 diff of two halves,
 6 NC program against the fixture machine, 7 zero format (idempotent, meaning kept),
-8 fixes (a fixed list has no fixable finding left, or the fix loop stopped).
+8 fixes (a fixed list has no fixable finding left, or the fix loop stopped), 9 a
+configuration file (``zero.toml``: its patterns matched too), 10 a machine layout (a
+start-up list and the lists it names, split from the data, read from memory: references,
+counts, paths, default lists, the X rules), 11 the language server's transport (the bytes a
+client sends, framed as pygls will read them).
 Only zero's own refusals (ZeroError) may escape; anything else is a crash.
 """
 
 from __future__ import annotations
 
+import os
 from pathlib import Path
 
 from zero.catalog.registry import load_registry
@@ -95,10 +101,78 @@ def check_fix(data: bytes) -> None:
     fix_bytes(data, "f.lis", REGISTRY, unsafe=True)
 
 
+def check_config(data: bytes) -> None:
+    from zero.engine.config import parse_config
+
+    try:
+        cfg = parse_config(Path("/project/zero.toml"), data.decode("utf-8", "replace"))
+    except ZeroError:
+        return
+    if cfg is not None:
+        for name in ("a.lis", "old/b.lis", "machines/m1/listen/nullp_1.lis", "x" * 200 + ".lis"):
+            cfg.excluded(Path("/project") / name)
+            cfg.included(Path("/project") / name)
+
+
+def check_machine(data: bytes) -> None:
+    """Up to eight files split at NUL bytes: the first is the start-up list, the others are the
+    lists `./l1.lis` … `./l7.lis`; anything else a reference names does not exist."""
+    from zero.engine.lint import lint_machine
+
+    parts = data.split(b"\0")[:8]
+    root = Path("/nonexistent-zero-fuzz/m")
+    files = {root / "hochlauf.lis": parts[0], **{root / f"l{i}.lis": p for i, p in enumerate(parts[1:], 1)}}
+
+    def reader(path: Path) -> bytes:
+        got = files.get(Path(os.path.normpath(path)))
+        if got is None:
+            raise ZeroError("no such file", str(path))
+        return got
+
+    machine = load_machine(root / "hochlauf.lis", REGISTRY, reader=reader, workdir=root)
+    for r in lint_machine(machine, REGISTRY):
+        for d in r.diagnostics:
+            assert d.span.line >= 1, d
+
+
+def check_transport(data: bytes) -> None:
+    import io
+    import json
+
+    import logging
+
+    from zero.server.lsp import FramedInput
+
+    logging.getLogger("zero.server").setLevel(logging.ERROR)  # each refusal is said on stderr: not here
+    replies: list[bytes] = []
+    framed = FramedInput(io.BufferedReader(io.BytesIO(data)), replies.append)  # type: ignore[arg-type]
+    while True:
+        header = framed.readline()
+        if not header:
+            break
+        assert header.startswith(b"Content-Length: "), header
+        length = int(header[len(b"Content-Length: "):].strip())
+        assert framed.readline() == b"\r\n"
+        body = framed.read(length)
+        assert len(body) == length
+        json.loads(body.decode("utf-8", "surrogatepass"))
+    for reply in replies:
+        assert reply.startswith(b"Content-Length: ")
+
+
 def one_input(raw: bytes) -> None:
     if not raw:
         return
-    target, data = raw[0] % 9, raw[1:]
+    target, data = (raw[0] - 0xF0 if raw[0] in (0xF9, 0xFA, 0xFB) else raw[0] % 9), raw[1:]
+    if target == 9:
+        check_config(data)
+        return
+    if target == 10:
+        check_machine(data)
+        return
+    if target == 11:
+        check_transport(data)
+        return
     if target == 0:
         check_lint(data)
     elif target == 1:

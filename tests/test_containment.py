@@ -19,7 +19,7 @@ GIT = shutil.which("git")
 
 @pytest.mark.skipif(GIT is None, reason="git is not installed")
 def test_linting_an_untrusted_checkout_runs_none_of_its_code(tmp_path: Path) -> None:
-    """README: "zero lint DIR runs nothing a repository configures": `core.fsmonitor` names a
+    """README: "Runs nothing a repository configures": `core.fsmonitor` names a
     program that `git ls-files` runs; zero asks git with it switched off."""
     repo = tmp_path / "checkout"
     repo.mkdir()
@@ -56,7 +56,8 @@ def _startup(folder: Path, lines: list[str]) -> Path:
 @pytest.mark.parametrize("reference", ["etc/passwd", "../../../../../../etc/passwd", "/etc/passwd", "/etc/hostname",
                                        "proc/self/environ", "/proc/self/environ", "C:\\Windows\\win.ini"])
 def test_a_start_up_list_cannot_make_zero_print_a_file_of_this_computer(tmp_path: Path, reference: str) -> None:
-    """README: "a start-up list makes zero read only its own machine's lists": the working
+    """README: "A start-up list you received cannot make zero read, or print, other files of your
+    computer.": the working
     directory is never the file system's root nor above the project, absolute paths are not
     followed (X012), and no line of a file outside the machine appears in any output."""
     startup = _startup(tmp_path / "m", [f"hand_mds {reference}", "sda_mds[0] ./kanal.lis"])
@@ -206,7 +207,7 @@ def test_a_start_up_list_naming_one_list_ten_thousand_times(tmp_path: Path) -> N
                                                ("key.lis", b"a" * 3_000_000 + b" 1\n"),
                                                ("key.yaml", b"a: " + b"1" * 2_000_000 + b"\n")])
 def test_an_input_no_list_resembles_is_refused_before_it_is_parsed(tmp_path: Path, name: str, content: bytes) -> None:
-    """README: "at most 1,000,000 lines, none longer than 1 MiB": memory is bounded before the
+    """README: "every limit below is checked before the input is parsed or matched": memory is bounded before the
     work (10 MB of blank lines took 1 GB, 10 MB of `x` lines 9 GB and minutes, one 20 MB key 0.9 GB)."""
     (tmp_path / name).write_bytes(content)
     for command in (("lint", name), ("show", name), ("format", "--check", name), ("convert", name)):
@@ -227,3 +228,23 @@ def test_a_flood_of_one_finding_is_listed_ten_thousand_times_then_counted(tmp_pa
     found = json.loads(run.stdout)
     assert len(found) == 10_001
     assert found[-1]["line"] == 10_001 and found[-1]["message"].startswith("15000 more S002 findings")
+
+
+def test_every_promise_a_test_names_is_in_the_readme() -> None:
+    """The safety tests name the README's sentence they prove (`README: "…"`); each must be there,
+    word for word, so that the README says no more than the tests hold, and changes together."""
+    import re
+
+    from conftest import ROOT
+
+    def plain(text: str) -> str:
+        return " ".join(text.replace("*", "").replace("`", "").split())
+
+    readme = plain((ROOT / "README.md").read_text(encoding="utf-8"))
+    quoted = []
+    for path in (ROOT / "tests").rglob("*.py"):
+        for m in re.finditer(r'README: "([A-Za-z][^"]*)"', path.read_text(encoding="utf-8")):
+            quoted.append((path.name, plain(m.group(1))))
+    assert len(quoted) >= 6
+    missing = [(name, q) for name, q in quoted if q not in readme]
+    assert missing == []

@@ -399,7 +399,8 @@ zero.files.write_atomic(Path(sys.argv[1]), Path(sys.argv[2]).read_bytes(), force
 
 
 def test_a_hard_linked_file_killed_half_way_is_completed_never_mixed(tmp_path: Path) -> None:
-    """SIGKILL at random moments of an in-place rewrite (the file has a second hard link): the next
+    """README: "so the file is old or new, never a mix". SIGKILL at random moments of an in-place
+    rewrite (the file has a second hard link): the next
     zero that reads the file finds it old or new, never mixed, and the complete new text is never
     thrown away (it was: the next run deleted it as a stale temporary file)."""
     import random
@@ -489,7 +490,8 @@ def test_a_file_growing_while_it_is_read_is_refused_without_holding_it(tmp_path:
 
 @pytest.mark.parametrize("how", ["symlink", "hardlink", "pyproject", "no-suffix", "symlink-to-config"])
 def test_a_report_never_replaces_a_list_or_a_configuration(tmp_path: Path, how: str) -> None:
-    """`-o` looked at the name only: a link named rep.json replaced the list it points to, and
+    """README: "not by its name, not through a symbolic or hard link". `-o` looked at the name only: a
+    link named rep.json replaced the list it points to, and
     `-o pyproject.toml` or a list without a suffix was replaced without --force."""
     good = tmp_path / "good.lis"
     good.write_text("np_grp[1].achse[0].versch 5\nEnde\n")

@@ -237,7 +237,7 @@ EXIT = {"jsonrpc": "2.0", "method": "exit"}
     b"garbage without any header at all" * 400,
 ])
 async def test_broken_framing_is_answered_and_the_server_goes_on(broken: bytes) -> None:
-    """README: "a malformed message is answered with a parse error and skipped". pygls trusted the
+    """README: "a broken or oversized message is skipped, answered with a parse error". pygls trusted the
     framing: a Content-Length that was not a number, missing or wrong left the server reading the
     next message as a body, and it never answered again, not even `shutdown`."""
     data = _message(INITIALIZE) + broken + _message(SHUTDOWN) + _message(EXIT)
