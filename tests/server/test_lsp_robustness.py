@@ -235,6 +235,7 @@ EXIT = {"jsonrpc": "2.0", "method": "exit"}
     b"Content-Length: 80\r\n\r\n{\"jsonrpc\": \"2.0\", \"id\": 5}",  # too long: it swallows the next header
     b"Content-Length: 99999999999\r\n\r\n{}",  # over the limit
     b"garbage without any header at all" * 400,
+    b"X-Junk: 1\r\n\r\n",  # a header's end and no Content-Length: the reader looped on it (fuzzing found it)
 ])
 async def test_broken_framing_is_answered_and_the_server_goes_on(broken: bytes) -> None:
     """README: "a broken or oversized message is skipped, answered with a parse error". pygls trusted the

@@ -424,9 +424,9 @@ class FramedInput:
                 del self._raw[:after]
                 return
         m = _HEADER_START.search(self._raw, start)
-        if m is None:
-            keep = min(len(self._raw), 32)  # a header may be cut in two by the read
-            del self._raw[: len(self._raw) - keep]
+        if m is None:  # keep what may be the start of a header cut in two by the read, and no more:
+            last = self._raw.rfind(b"\r\n\r\n")  # never a header's end seen already (it looped on it)
+            del self._raw[: max(start, len(self._raw) - 15, last + 4 if last >= 0 else 0)]
             return
         del self._raw[:m.start()]
 
