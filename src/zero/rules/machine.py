@@ -53,6 +53,13 @@ Fix: correct the path, or add the file.
 """)
 
 
+def _on_reference(ctx: MachineContext, code: str, line: int, message: str) -> Diagnostic:
+    """A finding on the whole line of the start-up list that names a list."""
+    startup = ctx.machine.startup
+    return ctx.report(code, Span.on_line(line, 0, len(startup.values.doc.line_text(line))), message,
+                      path=str(startup.path))
+
+
 @FAMILY.check(MISSING_LIST)
 def check_missing(ctx: MachineContext) -> Iterator[Diagnostic]:
     """X005: every list the start-up list names can be read."""
@@ -61,10 +68,8 @@ def check_missing(ctx: MachineContext) -> Iterator[Diagnostic]:
     machine = ctx.machine
     startup = machine.startup
     for m in machine.missing:
-        line = startup.values.doc.line_text(m.line)
-        yield ctx.report("X005", Span.on_line(m.line, 0, len(line)),
-                         f"`{m.key}` names `{m.raw}`, which {m.reason} (working directory "
-                         f"{machine.workdir}): {m.consequence}", path=str(startup.path))
+        yield _on_reference(ctx, "X005", m.line, f"`{m.key}` names `{m.raw}`, which {m.reason} (working directory "
+                            f"{machine.workdir}): {m.consequence}")
     for ref in REFERENCES:  # a count larger than the lists named: the controller looks for the rest
         if ref.count not in (AXIS_LISTS, COMP_LISTS):
             continue
@@ -411,11 +416,7 @@ Fix: name the file where it lies in the repository with `[tool.zero.machine]`
 @FAMILY.check(LIST_NOT_CHECKED)
 def check_unchecked(ctx: MachineContext) -> Iterator[Diagnostic]:
     """X012: references zero does not follow."""
-    machine = ctx.machine
-    startup = machine.startup
-    for n in machine.unchecked:
-        line = startup.values.doc.line_text(n.line)
-        yield ctx.report("X012", Span.on_line(n.line, 0, len(line)),
-                         f"`{n.key}` names `{n.raw}`, which {n.reason}: zero does not read it, so that list is "
-                         "not checked (`[tool.zero.machine]` can name where it lies in the repository)",
-                         path=str(startup.path))
+    for n in ctx.machine.unchecked:
+        yield _on_reference(ctx, "X012", n.line, f"`{n.key}` names `{n.raw}`, which {n.reason}: zero does not read "
+                            "it, so that list is not checked (`[tool.zero.machine]` can name where it lies in the "
+                            "repository)")
