@@ -47,6 +47,7 @@ def fifo(path: Path) -> Path:
     ["convert", "{f}", "--to", "yaml"], ["show", "{f}"], ["lint", "--machine", "{f}"],
 ])
 def test_a_fifo_named_as_a_file_is_refused_at_once(tmp_path: Path, command: list[str]) -> None:
+    """README: "A FIFO, device, socket or directory named as a file is refused at once (nothing blocks), exit 2"."""
     f = fifo(tmp_path / "fifo.lis")
     other = tmp_path / "other.lis"
     other.write_bytes(LIST)
@@ -78,6 +79,7 @@ def test_a_device_node_is_neither_read_nor_replaced(tmp_path: Path) -> None:
 
 
 def test_dev_null_and_standard_output_are_written_to_as_meant(tmp_path: Path) -> None:
+    """README: "-o /dev/null and a terminal are written to"."""
     src = tmp_path / "a.lis"
     src.write_bytes(LIST)
     run = zero_cli("convert", str(src), "--to", "yaml", "-o", os.devnull, "--force")
@@ -87,6 +89,7 @@ def test_dev_null_and_standard_output_are_written_to_as_meant(tmp_path: Path) ->
 
 
 def test_an_input_over_the_size_limit_is_refused(tmp_path: Path) -> None:
+    """README: "so is an input over 256 MiB"."""
     big = tmp_path / "big.lis"
     big.write_bytes(LIST * 20)
     run = zero_cli("lint", str(big), env={"ZERO_MAX_FILE_SIZE": "100"})
@@ -98,6 +101,8 @@ def test_an_input_over_the_size_limit_is_refused(tmp_path: Path) -> None:
 
 
 def test_unreadable_files_in_a_walked_directory_do_not_stop_the_others(tmp_path: Path) -> None:
+    """README: "In a directory walk, a file that cannot be read (dangling link, link loop, FIFO,
+    permission) is one F001 finding"."""
     (tmp_path / "good.lis").write_bytes(b"np_grp[97].achse[0].versch 1\nEnde\n")
     (tmp_path / "dangling.lis").symlink_to(tmp_path / "gone.lis")
     (tmp_path / "loop.lis").symlink_to(tmp_path / "loop.lis")
@@ -129,6 +134,7 @@ def test_a_dangling_link_or_loop_named_on_the_command_line_is_refused(tmp_path: 
 
 
 def test_a_symlink_is_written_through_and_stays_a_link(tmp_path: Path) -> None:
+    """README: "A symbolic link is written through and stays a link"."""
     src = tmp_path / "a.lis"
     src.write_bytes(LIST)
     real = tmp_path / "real.yaml"
@@ -202,7 +208,8 @@ def test_a_read_only_file_is_refused_without_the_capability_to_override(tmp_path
 
 
 def test_racing_writers_without_force_cannot_both_win(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
-    """All writers have their content ready before any claims the name; exactly one wins."""
+    """README: "without --force an existing file is never replaced, even by two commands racing for one
+    name". All writers have their content ready before any claims the name; exactly one wins."""
     target = tmp_path / "out.yaml"
     writers = 6
     barrier = threading.Barrier(writers)
@@ -277,6 +284,7 @@ def test_a_signal_removes_the_temporary_file(tmp_path: Path, signum: int) -> Non
 
 
 def test_a_killed_writers_temporary_file_is_removed_by_the_next_write(tmp_path: Path) -> None:
+    """README: "one left by a killed process is removed by the next write"."""
     target = tmp_path / "out.lis"
     target.write_bytes(b"old\n")
     proc = _slow_writer(target)
@@ -444,6 +452,7 @@ def test_a_stale_journal_is_completed_by_the_next_write_not_deleted(tmp_path: Pa
 
 
 def test_a_full_disk_leaves_a_hard_linked_file_as_it_was(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """README: "a longer text claims its disk blocks first, so a full disk changes nothing"."""
     import errno
 
     target = tmp_path / "a.lis"
