@@ -248,3 +248,16 @@ def test_every_promise_a_test_names_is_in_the_readme() -> None:
     assert len(quoted) >= 6
     missing = [(name, q) for name, q in quoted if q not in readme]
     assert missing == []
+
+
+def test_x005_says_why_a_list_cannot_be_read_in_a_sentence(tmp_path: Path) -> None:
+    """It said "which file is … bytes" and "which symbolic link loop"."""
+    folder = tmp_path / "m"
+    startup = _startup(folder, ["hand_mds ./loop.lis", "rtconf_lis ./big.lis", "hw_configuration_list ./gone.lis"])
+    (folder / "loop.lis").symlink_to(folder / "loop.lis")
+    (folder / "big.lis").write_bytes(b"# big\n" * 200)
+    run = zero_cli("lint", "--machine", str(startup), "--output-format", "concise", env={"ZERO_MAX_FILE_SIZE": "1000"})
+    lines = [line for line in run.stdout.splitlines() if " X005 " in line]
+    assert any("`./loop.lis`, which cannot be read: symbolic link loop" in line for line in lines), lines
+    assert any("`./big.lis`, which cannot be read: file is 1200 bytes, larger than" in line for line in lines), lines
+    assert any("`./gone.lis`, which does not exist" in line for line in lines), lines

@@ -412,7 +412,7 @@ def load_machine(startup_path: Path, registry: Registry, forced_kind: str | None
             lf = _read(n.key, n.path, n.line, registry, forced_kind or n.reference.kind, base, reader, docs)
         except ZeroError as exc:
             n.status = "missing" if exc.message == "no such file" else "unreadable"
-            n.reason = "does not exist" if n.status == "missing" else f"cannot be read ({exc.message})"
+            n.reason = "does not exist" if n.status == "missing" else f"cannot be read: {exc.message}"
             return None
         foreign = _not_a_list(lf.values)
         if foreign is not None:  # never a line of it in a finding: it is not a list of this machine
