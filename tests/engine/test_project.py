@@ -180,3 +180,13 @@ def test_lint_machine_and_the_default_lint_use_one_machine(tmp_path: Path) -> No
     beside = zero_cli("lint", "--machine", "listen/hochlauf.lis", "part.nc", "--output-format", "json", cwd=root)
     assert [d for d in json.loads(beside.stdout) if d["path"] == "part.nc"] == json.loads(alone.stdout)
     assert os.path.exists(root / "part.nc")
+
+
+def test_convert_gives_each_input_its_own_catalogue(tmp_path: Path) -> None:
+    broken = _machine(tmp_path, 'param-desc = "missing/CncParaDesc.xml"\n')
+    (tmp_path / "other").mkdir()
+    shutil.copy(broken / "listen" / "achse_x.lis", tmp_path / "other" / "x.lis")
+    run = zero_cli("convert", "other/x.lis", "m/listen/achse_y.lis", "--out-dir", "out", cwd=tmp_path)
+    assert run.code == 2 and "CncParaDesc.xml" in run.stderr, run
+    alone = zero_cli("convert", "other/x.lis", "--out-dir", "out", cwd=tmp_path)
+    assert alone.code == 0, alone

@@ -190,8 +190,7 @@ def convert(
     def body() -> int:
         forced = parse_kind(kind)
         check_convert_options(inputs, output, out_dir)
-        registry = _registry(inputs[0] if len(inputs) == 1 else None)
-        items = convert_inputs(inputs, registry, read_stdin, src=from_.value if from_ else None,
+        items = convert_inputs(inputs, _registry, read_stdin, src=from_.value if from_ else None,
                                to=to.value if to else None, output=output, kind=forced, check=check,
                                strict=strict)
         for item in items:

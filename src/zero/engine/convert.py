@@ -99,18 +99,21 @@ def check_convert_options(inputs: Sequence[str], output: str | None, out_dir: Pa
         raise ZeroError("standard input (-) converts alone, to -o or standard output")
 
 
-def convert_inputs(inputs: Sequence[str], registry: Registry, read_stdin: Callable[[], bytes], *,
+def convert_inputs(inputs: Sequence[str], registry: Registry | Callable[[str], Registry],
+                   read_stdin: Callable[[], bytes], *,
                    src: str | None = None, to: str | None = None, output: str | None = None,
                    kind: str | None = None, check: bool = True, strict: bool = False) -> list[ConvertItem]:
     """Read, convert and check every input; nothing is written. A file that cannot be read
-    raises :class:`ZeroError`; an input that cannot be converted is an item with ``error``."""
+    raises :class:`ZeroError`; an input that cannot be converted is an item with ``error``.
+    ``registry`` may give each input its own catalogue (its configuration's ``param-desc``)."""
     items = []
     for name in inputs:
+        catalogue = registry(name) if callable(registry) else registry
         src_fmt = source_format(src, name)
         item = ConvertItem(name, target_format(to, output, src_fmt))
         data = read_stdin() if name == "-" else read_file(name)
         try:
-            result = convert(data, src_fmt, item.fmt, registry, name, kind, check)
+            result = convert(data, src_fmt, item.fmt, catalogue, name, kind, check)
         except ZeroError as exc:
             item.error = str(exc)
             items.append(item)
