@@ -72,7 +72,8 @@ def test_a_start_up_count_larger_than_the_named_lists(tmp_path: Path) -> None:
     startup.write_text(startup.read_text().replace("zahl_mds                                              3",
                                                    "zahl_mds                                              5"))
     run = zero_cli("lint", "--machine", str(startup), "--output-format", "concise")
-    assert "X005 error `zahl_mds` is 5, but the start-up list names no achs_mds[3], achs_mds[4]" in run.stdout
+    assert "X005 error `zahl_mds` is 5, but the start-up list names no achs_mds[3], achs_mds[4] (working directory" \
+        in run.stdout  # every X005 says where the controller looks
 
 
 def test_walks_match_a_link_by_its_own_name(tmp_path: Path) -> None:

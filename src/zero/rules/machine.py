@@ -81,7 +81,8 @@ def check_missing(ctx: MachineContext) -> Iterator[Diagnostic]:
             keys = ", ".join(f"{ref.key[:-2]}[{i}]" for i in absent[:4]) + (" …" if len(absent) > 4 else "")
             yield ctx.report("X005", Span.on_line(entry.line, entry.value_start, entry.value_end),
                              f"`{COUNT_KEYS[ref.count]}` is {int(count or 0)}, but the start-up list names no "
-                             f"{keys}: the controller looks for them, and {ref.missing}",
+                             f"{keys} (working directory {machine.workdir}): the controller looks for them, and "
+                             f"{ref.missing}",
                              param_id=ref.count, path=str(startup.path))
 
 
