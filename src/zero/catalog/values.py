@@ -10,6 +10,7 @@ and ``zero diff`` all read values through this module.
 
 from __future__ import annotations
 
+import re
 from typing import TypeVar
 
 from zero.catalog.ids import AXIS_TYPE, is_rotary
@@ -25,6 +26,7 @@ __all__ = ["NO_DEFAULT", "ListValues", "Resolved", "Slot", "Value", "canonical_k
 # catalogue does not know is its key pattern behind a `?` (``("?a.b[]", (1,))``). `[01]` and `[1]`
 # are one element, and so are an alias and the key it stands for.
 Slot = tuple[str, tuple[int, ...]]
+_LEADING_ZERO = re.compile(r"\[0[0-9]")  # `[01]`: an index written with a leading zero
 
 
 def rotary(values: ListValues) -> bool | None:
@@ -54,7 +56,10 @@ def canonical_key(registry: Registry, kind: str | None, entry: Entry) -> str:
     if key is None:
         return entry.key_text
     spec = registry.by_pattern(key.pattern, kind) or registry.alias(key.pattern, kind)
-    return format_key(spec.key if spec is not None and spec.key else key.pattern, key.indices)
+    pattern = spec.key if spec is not None and spec.key else key.pattern
+    if pattern == key.pattern and ("[0" not in key.text or _LEADING_ZERO.search(key.text) is None):
+        return key.text  # written as documented (the usual case): as it is
+    return format_key(pattern, key.indices)
 
 
 @record
