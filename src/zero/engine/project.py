@@ -139,31 +139,31 @@ class Project:
         key = (start, tuple(sorted(overrides.items())), workdir, id(registry), self.cli.kind)
         layout = (overrides, workdir)
         if reader is not None:
-            return self._read_with(key, reader_key, shown, registry, layout, reader, required)
-        hit = self._machines.get(key)
-        if hit is not None and hit[0] == _signature(hit[1]):
-            return hit[1]
-        machine = self._load(shown, registry, layout, read_file, required)
-        self._machines[key] = (_signature(machine), machine)
-        return machine
+            machine = self._read_with(key, reader_key, shown, registry, layout, reader)
+        else:
+            hit = self._machines.get(key)
+            if hit is not None and hit[0] == _signature(hit[1]):
+                machine = hit[1]
+            else:
+                machine = self._load(shown, registry, layout, read_file)
+                self._machines[key] = (_signature(machine), machine)
+        return require_startup(machine, registry) if required else machine  # asked each time, cached or not
 
     def _read_with(self, key: Hashable, reader_key: Hashable, shown: Path, registry: Registry,
-                   layout: tuple[dict[str, Path], Path | None], reader: Reader, required: bool) -> Machine:
+                   layout: tuple[dict[str, Path], Path | None], reader: Reader) -> Machine:
         full = (key, reader_key)
         hit = self._shaped.get(full)
         if hit is None:
-            hit = self._shaped[full] = self._load(shown, registry, layout, reader, required)
+            hit = self._shaped[full] = self._load(shown, registry, layout, reader)
             while len(self._shaped) > 4:
                 self._shaped.popitem(last=False)
         return hit
 
-    def _load(self, startup: Path, registry: Registry, layout: tuple[dict[str, Path], Path | None], reader: Reader,
-              required: bool) -> Machine:
+    def _load(self, startup: Path, registry: Registry, layout: tuple[dict[str, Path], Path | None],
+              reader: Reader) -> Machine:
         from zero.machine.model import load_machine, machine_ceiling  # start-up: only with a machine
 
-        machine = load_machine(startup, registry, self.cli.kind, layout[0], layout[1], reader,
-                               machine_ceiling(startup))
-        return require_startup(machine, registry) if required else machine
+        return load_machine(startup, registry, self.cli.kind, layout[0], layout[1], reader, machine_ceiling(startup))
 
     def references(self, startup: Path, doc: Document) -> dict[str, Path]:
         """The lists a start-up list names (key as written → the path the controller opens), resolved
