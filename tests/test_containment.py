@@ -261,3 +261,15 @@ def test_x005_says_why_a_list_cannot_be_read_in_a_sentence(tmp_path: Path) -> No
     assert any("`./loop.lis`, which cannot be read: symbolic link loop" in line for line in lines), lines
     assert any("`./big.lis`, which cannot be read: file is 1200 bytes, larger than" in line for line in lines), lines
     assert any("`./gone.lis`, which does not exist" in line for line in lines), lines
+
+
+def test_windows_separators_in_a_start_up_list(tmp_path: Path) -> None:
+    """TwinCAT writes `.\\sda_mds1.lis`: read as `./sda_mds1.lis` (X005 for every list before); `..\\`
+    climbing out and a drive letter are not followed (X012)."""
+    folder = tmp_path / "m"
+    startup = _startup(folder, ["sda_mds[0] .\\kanal.lis", "hand_mds ..\\..\\hand.lis",
+                                "rtconf_lis C:\\TwinCAT\\3.1\\Components\\Mc\\CNC\\rtconf.lis"])
+    (folder / "kanal.lis").write_text("gruppe[0].achs_anzahl 0\nEnde\n")
+    run = zero_cli("lint", "--machine", str(startup), "--output-format", "concise")
+    assert " X005 " not in run.stdout, run.stdout
+    assert run.stdout.count(" X012 ") == 2, run.stdout

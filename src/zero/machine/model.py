@@ -235,7 +235,9 @@ def axis_of(lf: ListFile) -> Axis | None:
 
 
 def _clean(raw: str) -> str:
-    return raw.strip().strip('"')
+    """A reference's path as written, quotes removed, ``\\`` read as the separator it is on a
+    Windows controller (TwinCAT writes ``.\\sda_mds1.lis`` and ``..\\prg``)."""
+    return raw.strip().strip('"').replace("\\", "/")
 
 
 def machine_ceiling(startup: Path) -> Path | None:
