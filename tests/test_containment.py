@@ -273,3 +273,26 @@ def test_windows_separators_in_a_start_up_list(tmp_path: Path) -> None:
     run = zero_cli("lint", "--machine", str(startup), "--output-format", "concise")
     assert " X005 " not in run.stdout, run.stdout
     assert run.stdout.count(" X012 ") == 2, run.stdout
+
+
+def test_a_drive_letter_path_is_followed_through_the_configured_roots(tmp_path: Path) -> None:
+    import json
+
+    project = tmp_path / "machine"
+    (project / ".git").mkdir(parents=True)
+    (project / "zero.toml").write_text('[machine]\nstartup = "hochlauf.lis"\n'
+                                       'roots = { "C:/TwinCAT/3.1/Components/Mc/CNC" = "cnc" }\n')
+    (project / "cnc" / "listen").mkdir(parents=True)
+    (project / "cnc" / "listen" / "kanal.lis").write_text("gruppe[0].achs_anzahl 0\nEnde\n")
+    startup = _startup(project, ["sda_mds[0] c:\\twincat\\3.1\\Components\\Mc\\CNC\\listen\\kanal.lis",
+                                 "hand_mds c:\\twincat\\3.1\\components\\mc\\cnc\\..\\..\\secret.lis",
+                                 "rtconf_lis D:\\other\\rtconf.lis"])
+    shown = json.loads(zero_cli("show", "--machine", "hochlauf.lis", "--output-format", "json", cwd=project).stdout)
+    status = {entry["key"]: (entry["status"], entry["resolved"]) for entry in shown["lists"]}
+    assert status["sda_mds[0]"] == ("loaded", str(project / "cnc" / "listen" / "kanal.lis")), status
+    assert status["hand_mds"][0] == "not-checked" and status["rtconf_lis"][0] == "not-checked", status
+    lint = zero_cli("lint", "--machine", str(startup), "--output-format", "concise")
+    assert lint.stdout.count(" X012 ") == 2 and " X005 " not in lint.stdout, lint.stdout
+    (project / "zero.toml").write_text('[machine]\nroots = { "C:/TwinCAT" = "../.." }\n')
+    refused = zero_cli("limits", "--machine", "hochlauf.lis", cwd=project)
+    assert refused.code == 2 and "lies outside the project" in refused.stderr, refused

@@ -36,6 +36,7 @@ from __future__ import annotations
 import functools
 import os
 import re
+from collections.abc import Callable
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
@@ -133,6 +134,8 @@ class Config:
     machine: Path | None = None  # the start-up list of the machine ([tool.zero.machine] startup)
     machine_lists: dict[str, Path] = field(default_factory=dict)  # start-up key → path override
     machine_workdir: Path | None = None  # the controller's working directory, where it cannot be found
+    # a folder of the controller (`C:/TwinCAT/3.1/Components/Mc/CNC`) → where it lies in the project
+    machine_roots: tuple[tuple[str, Path], ...] = ()
 
     @property
     def root(self) -> Path:
@@ -188,12 +191,14 @@ class Config:
                  f"exclude = {arr(self.exclude)}"]
         if self.param_desc:
             lines.append(f'param-desc = "{self.param_desc}"')
-        if self.machine or self.machine_lists or self.machine_workdir:
+        if self.machine or self.machine_lists or self.machine_workdir or self.machine_roots:
             lines.append(f"[{prefix}machine]")
             if self.machine:
                 lines.append(f'startup = "{self.machine}"')
             if self.machine_workdir:
                 lines.append(f'working-directory = "{self.machine_workdir}"')
+            if self.machine_roots:
+                lines.append("roots = { " + ", ".join(f'"{k}" = "{v}"' for k, v in self.machine_roots) + " }")
             lines += [f'"{k}" = "{v}"' for k, v in self.machine_lists.items()]
         lines.append(f"[{prefix}per-file-ignores]")
         lines += [f'"{g}" = {arr(c)}' for g, c in self.per_file_ignores]
@@ -202,6 +207,23 @@ class Config:
         lines.append(f"[{prefix}kind]")
         lines += [f'"{g}" = "{k}"' for g, k in self.kind]
         return "\n".join(lines) + "\n"
+
+
+def _roots(value: Any, path: Path, root: Path,
+           fail: Callable[[str | None, str, tuple[str, ...]], ZeroError]) -> tuple[tuple[str, Path], ...]:
+    """``roots = {"C:/TwinCAT/3.1/Components/Mc/CNC" = "."}``: an absolute folder of the controller
+    and the folder of the project that holds what lies below it (inside the project)."""
+    if not isinstance(value, dict) or not all(isinstance(k, str) and k and isinstance(v, str) and v
+                                              for k, v in value.items()):
+        raise fail("roots", 'expected a table of "controller folder" = "project folder"', ("machine",))
+    out = []
+    for k, v in value.items():
+        if not (k.startswith(("/", "\\")) or (len(k) >= 2 and k[0].isalpha() and k[1] == ":")):
+            raise fail("roots", f"{k!r} is no absolute path of the controller (`C:/…` or `/…`)", ("machine",))
+        if not _within(path.parent / v, root):
+            raise fail("roots", f"{v!r} lies outside the project {root}", ("machine",))
+        out.append((k, path.parent / v))
+    return tuple(out)
 
 
 def _line_of(text: str, table: tuple[str, ...], key: str | None) -> int | None:
@@ -313,6 +335,9 @@ def parse_config(path: Path, text: str | None = None) -> Config | None:
                 raise fail(key, "expected a table: startup = \"listen/hochlauf.lis\" and list overrides")
             root = project_root(path.parent)
             for mk, mv in value.items():
+                if mk == "roots":
+                    cfg.machine_roots = _roots(mv, path, root, fail)
+                    continue
                 if not isinstance(mv, str) or not mv:
                     raise fail(mk, "expected a path", ("machine",))
                 if not _within(path.parent / mv, root):
@@ -326,8 +351,8 @@ def parse_config(path: Path, text: str | None = None) -> Config | None:
                 elif _is_reference(mk):
                     cfg.machine_lists[mk] = path.parent / mv
                 else:
-                    raise fail(mk, "expected `startup`, `working-directory` or a key of the start-up list that "
-                               "names a list, such as `achs_mds[0]` or `hand_mds`", ("machine",))
+                    raise fail(mk, "expected `startup`, `working-directory`, `roots` or a key of the start-up list "
+                               "that names a list, such as `achs_mds[0]` or `hand_mds`", ("machine",))
         elif key == "per-file-ignores":
             if not isinstance(value, dict):
                 raise fail(key, "expected a table of glob = [codes]")

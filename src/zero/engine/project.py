@@ -41,6 +41,7 @@ if TYPE_CHECKING:  # start-up: `zero lint` of lists loads no machine model
 Registries = Callable[[Path | None], Registry]
 Reader = Callable[[Path], bytes]
 Signature = tuple[tuple[str, int, int], ...]
+Layout = tuple[dict[str, Path], Path | None, tuple[tuple[str, Path], ...]]  # overrides, working directory, roots
 
 
 def absolute(path: str | Path) -> Path:
@@ -135,9 +136,9 @@ class Project:
                 raise ZeroError("name the start-up list with --machine (or [tool.zero.machine] startup)")
             return None
         registry = self.registry(path if path is not None else start)
-        overrides, workdir = self._layout(start)
-        key = (start, tuple(sorted(overrides.items())), workdir, id(registry), self.cli.kind)
-        layout = (overrides, workdir)
+        layout = self._layout(start)
+        overrides, workdir, roots = layout
+        key = (start, tuple(sorted(overrides.items())), workdir, roots, id(registry), self.cli.kind)
         if reader is not None:
             machine = self._read_with(key, reader_key, shown, registry, layout, reader)
         else:
@@ -150,7 +151,7 @@ class Project:
         return require_startup(machine, registry) if required else machine  # asked each time, cached or not
 
     def _read_with(self, key: Hashable, reader_key: Hashable, shown: Path, registry: Registry,
-                   layout: tuple[dict[str, Path], Path | None], reader: Reader) -> Machine:
+                   layout: Layout, reader: Reader) -> Machine:
         full = (key, reader_key)
         hit = self._shaped.get(full)
         if hit is None:
@@ -159,11 +160,11 @@ class Project:
                 self._shaped.popitem(last=False)
         return hit
 
-    def _load(self, startup: Path, registry: Registry, layout: tuple[dict[str, Path], Path | None],
-              reader: Reader) -> Machine:
+    def _load(self, startup: Path, registry: Registry, layout: Layout, reader: Reader) -> Machine:
         from zero.machine.model import load_machine, machine_ceiling  # start-up: only with a machine
 
-        return load_machine(startup, registry, self.cli.kind, layout[0], layout[1], reader, machine_ceiling(startup))
+        return load_machine(startup, registry, self.cli.kind, layout[0], layout[1], reader, machine_ceiling(startup),
+                            layout[2])
 
     def references(self, startup: Path, doc: Document) -> dict[str, Path]:
         """The lists a start-up list names (key as written → the path the controller opens), resolved
@@ -171,18 +172,19 @@ class Project:
         read. A reference zero would not read (outside the working directory, empty) has none."""
         from zero.machine.model import machine_ceiling, named_lists  # start-up: only for a start-up list
 
-        overrides, workdir = self._layout(startup)
-        _, named = named_lists(startup, doc, overrides, workdir, machine_ceiling(startup))
+        overrides, workdir, roots = self._layout(startup)
+        _, named = named_lists(startup, doc, overrides, workdir, machine_ceiling(startup), roots)
         return {n.key: n.path for n in named if n.path is not None and n.status != "not-checked"}
 
-    def _layout(self, startup: Path) -> tuple[dict[str, Path], Path | None]:
-        """The list overrides and working directory of ``[tool.zero.machine]`` that apply to a start-up
-        list: those of the configuration that applies to it, where that configuration names this
-        start-up list or none (overrides written for another machine's start-up list never apply)."""
+    def _layout(self, startup: Path) -> Layout:
+        """The list overrides, working directory and folder mapping (``roots``) of ``[tool.zero.machine]``
+        that apply to a start-up list: those of the configuration that applies to it, where that
+        configuration names this start-up list or none (overrides written for another machine's
+        start-up list never apply; its folder mapping does: it describes the controller)."""
         cfg = self.config(startup)
         if cfg.machine is not None and os.path.realpath(cfg.machine) != os.path.realpath(startup):
-            return {}, None
-        return cfg.machine_lists, cfg.machine_workdir
+            return {}, None, cfg.machine_roots
+        return cfg.machine_lists, cfg.machine_workdir, cfg.machine_roots
 
     def forget(self) -> None:
         """Configuration files changed (or may have): find and read them again."""

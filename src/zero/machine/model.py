@@ -349,8 +349,27 @@ def _absolute(text: str) -> bool:
                                             and text[2] in "/\\")
 
 
+Roots = tuple[tuple[str, Path], ...]  # a folder of the controller → where it lies here
+
+
+def _mapped(text: str, roots: Roots) -> Path | None:
+    """An absolute path of the controller below one of ``roots`` (the longest that fits; letters'
+    case and separators do not matter, as on Windows), as the file here; ``None`` otherwise."""
+    norm = text.replace("\\", "/").rstrip("/").lower()
+    best: tuple[int, Path] | None = None
+    for prefix, folder in roots:
+        p = prefix.replace("\\", "/").rstrip("/").lower()
+        if (norm == p or norm.startswith(p + "/")) and (best is None or len(p) > best[0]):
+            best = (len(p), folder)
+    if best is None:
+        return None
+    rest = text.replace("\\", "/")[best[0]:].lstrip("/")
+    return best[1] / rest if rest else best[1]
+
+
 def named_lists(startup_path: Path, doc: Document, overrides: dict[str, Path] | None = None,
-                workdir: Path | None = None, ceiling: Path | None = None) -> tuple[Path, list[Named]]:
+                workdir: Path | None = None, ceiling: Path | None = None,
+                roots: Roots = ()) -> tuple[Path, list[Named]]:
     """The working directory and every list reference of a start-up list, each with the path the
     controller opens (``path``; status ``overridden`` where ``[tool.zero.machine]`` names it,
     ``missing`` for an empty one, ``not-checked`` for an absolute path or one outside the
@@ -372,8 +391,14 @@ def named_lists(startup_path: Path, doc: Document, overrides: dict[str, Path] | 
             n.path, n.status = override, "overridden"
         elif not text:
             n.status, n.reason = "missing", "is empty"
+        elif _absolute(text) and (mapped := _mapped(text, roots)) is not None:
+            n.path = mapped  # `[tool.zero.machine] roots` says where that folder of the controller lies
+            if not any(_inside(mapped, folder) for _, folder in roots):
+                n.status, n.reason = "not-checked", "climbs out of the folder `roots` maps it to"
+                n.path = None
         elif _absolute(text):
-            n.status, n.reason = "not-checked", "is an absolute path on the controller"
+            n.status, n.reason = "not-checked", ("is an absolute path on the controller (`[tool.zero.machine] roots` "
+                                                 "can map its folder)")
         else:
             n.path = root / text
             if not _inside(n.path, root):
@@ -384,7 +409,8 @@ def named_lists(startup_path: Path, doc: Document, overrides: dict[str, Path] | 
 
 def load_machine(startup_path: Path, registry: Registry, forced_kind: str | None = None,
                  overrides: dict[str, Path] | None = None, workdir: Path | None = None,
-                 reader: Callable[[Path], bytes] = read_file, ceiling: Path | None = None) -> Machine:
+                 reader: Callable[[Path], bytes] = read_file, ceiling: Path | None = None,
+                 roots: Roots = ()) -> Machine:
     """Read a start-up list and every list it names, as the controller would.
 
     ``overrides`` (start-up key → path, from ``[tool.zero.machine]``) replace what the
@@ -393,7 +419,7 @@ def load_machine(startup_path: Path, registry: Registry, forced_kind: str | None
     a list's bytes (an editor passes its unsaved text; :class:`ZeroError` when it cannot).
     """
     startup = _read("start-up list", startup_path, 0, registry, forced_kind or "STUP", None, reader)
-    root, named = named_lists(startup_path, startup.values.doc, overrides, workdir, ceiling)
+    root, named = named_lists(startup_path, startup.values.doc, overrides, workdir, ceiling, roots)
     machine = Machine(startup, root, named)
     counts = {pid: _count(startup.values, pid) for pid in COUNT_KEYS}
     sizes = {ref.param_id: spec.dims[0] for ref in REFERENCES
