@@ -28,6 +28,7 @@ R007 = "error"
 startup = "listen/hochlauf.lis"
 "achs_mds[0]" = "listen/achse_x_neu.lis"   # override a list the start-up list names
 working-directory = "."                    # where the controller resolves ./listen/...
+roots = { "C:/TwinCAT/3.1/Components/Mc/CNC" = "." }  # a controller folder → a project folder
 ```
 """
 
