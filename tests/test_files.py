@@ -530,3 +530,10 @@ def test_a_report_replaces_the_previous_report(tmp_path: Path) -> None:
             run = zero_cli("lint", "a.lis", "--output-format", fmt, "-o", name, cwd=tmp_path)
             assert run.code == 1, (fmt, run)
         assert (tmp_path / name).stat().st_size > 0
+
+
+@pytest.mark.skipif(not Path("/proc/self/status").is_file(), reason="no /proc here")
+def test_a_file_that_says_it_has_no_size_is_read_whole() -> None:
+    """/proc files (and some FUSE files) say st_size 0: reading stops at the size limit, not at the size."""
+    data = read_file("/proc/self/status")
+    assert b"Name:" in data and len(data) > 100

@@ -154,9 +154,9 @@ def _read_at_most(fd: int, size: int, limit: int) -> bytes | None:
     """The file's bytes, read in one allocation of its size where it does not grow; ``None`` as soon
     as more than ``limit`` bytes come (the memory held never exceeds the limit plus one chunk)."""
     f = io.FileIO(fd, closefd=False)
-    data = f.read(size + 1) if size else b""  # one read of the size fstat gave, one byte more to see growth
-    if data is None:
-        data = b""
+    # one read of the size fstat gave, one byte more to see growth (a file that says it has no size,
+    # as /proc and some FUSE files do, is read on by chunks)
+    data = f.read(size + 1) or b""
     if len(data) <= size:
         return data
     chunks = [data]
@@ -197,6 +197,24 @@ def check_shape(data: bytes, where: str) -> None:
                 raise ZeroError(f"line {line} is longer than the {_mib(MAX_LINE_BYTES)} a line of any parameter "
                                 "list has", where)
             pos = cut + 1
+
+
+def within(path: str | Path, root: str | Path) -> bool:
+    """Is ``path`` (links followed) ``root`` or below it? The one containment test: a start-up list
+    or a configuration cannot make zero read, and print, any other file (``/proc/self/environ``,
+    ``../../etc/passwd``)."""
+    real, top = os.path.realpath(path), os.path.realpath(root)
+    return real == top or real.startswith(top.rstrip(os.sep) + os.sep)
+
+
+def nearest_holding(folder: str | Path, names: tuple[str, ...]) -> Path | None:
+    """The nearest of ``folder`` (made absolute) and its ancestors that holds one of ``names``
+    (``.git``, a configuration file); ``None`` where none does."""
+    base = Path(os.path.abspath(folder))
+    for d in (base, *base.parents):
+        if any(os.path.lexists(d / name) for name in names):
+            return d
+    return None
 
 
 # --------------------------------------------------------------------------- writing

@@ -17,7 +17,7 @@ STRUCTURED_SUFFIXES = {".yaml": "yaml", ".yml": "yaml", ".toml": "toml", ".json"
 DEFAULT_INCLUDE = tuple(f"*{s}" for s in (*LIST_SUFFIXES, *PROGRAM_SUFFIXES))  # what a directory walk picks up
 CONFIG_NAMES = ("zero.toml", ".zero.toml", "pyproject.toml")  # nearest wins; in this order within a folder
 # A report (`zero lint -o FILE`) never replaces one of these: lists, programs, list forms, configuration.
-NOT_A_REPORT = (*LIST_SUFFIXES, *PROGRAM_SUFFIXES, ".yaml", ".yml", ".toml")
+NOT_A_REPORT = (*LIST_SUFFIXES, *PROGRAM_SUFFIXES, *(s for s in STRUCTURED_SUFFIXES if s != ".json"))  # JSON: reports
 EXTENSION = {"lis": ".lis", "yaml": ".yaml", "toml": ".toml", "json": ".json"}
 
 

@@ -45,7 +45,7 @@ from zero.catalog.registry import kind_from_name
 from zero.diagnostics import Severity
 from zero.engine.lint import LintOptions
 from zero.errors import ZeroError
-from zero.files import read_file
+from zero.files import nearest_holding, read_file, within
 from zero.forms import CONFIG_NAMES, DEFAULT_INCLUDE
 from zero.lists.model import parse_key
 from zero.records import field, record
@@ -101,17 +101,7 @@ def _is_reference(key: str) -> bool:
 
 def project_root(folder: Path) -> Path:
     """The project a configuration belongs to: the git work tree that holds its folder, else the folder."""
-    base = Path(os.path.abspath(folder))
-    for d in (base, *base.parents):
-        if os.path.lexists(d / ".git"):
-            return d
-    return base
-
-
-def _within(path: Path, root: Path) -> bool:
-    """Is ``path`` (links followed) ``root`` or below it?"""
-    real, top = os.path.realpath(path), os.path.realpath(root)
-    return real == top or real.startswith(top.rstrip(os.sep) + os.sep)
+    return nearest_holding(folder, (".git",)) or Path(os.path.abspath(folder))
 
 
 def _resolved(file: Path) -> Path:
@@ -221,7 +211,7 @@ def _roots(value: Any, path: Path, root: Path,
     for k, v in value.items():
         if not (k.startswith(("/", "\\")) or (len(k) >= 2 and k[0].isalpha() and k[1] == ":")):
             raise fail("roots", f"{k!r} is no absolute path of the controller (`C:/…` or `/…`)", ("machine",))
-        if not _within(path.parent / v, root):
+        if not within(path.parent / v, root):
             raise fail("roots", f"{v!r} lies outside the project {root}", ("machine",))
         out.append((k, path.parent / v))
     return tuple(out)
@@ -341,7 +331,7 @@ def parse_config(path: Path, text: str | None = None) -> Config | None:
                     continue
                 if not isinstance(mv, str) or not mv:
                     raise fail(mk, "expected a path", ("machine",))
-                if not _within(path.parent / mv, root):
+                if not within(path.parent / mv, root):
                     raise fail(mk, f"{mv!r} lies outside the project {root}: a configuration names only the "
                                "project's own files (give a path inside it, or --machine on the command line)",
                                ("machine",))

@@ -40,7 +40,7 @@ from zero.catalog.ids import (
 from zero.catalog.registry import Registry
 from zero.catalog.values import ListValues
 from zero.errors import ZeroError
-from zero.files import read_file
+from zero.files import nearest_holding, read_file, within
 from zero.forms import CONFIG_NAMES
 from zero.lists.model import Document, Entry, Invalid
 from zero.lists.tokenizer import tokenize
@@ -244,11 +244,7 @@ def machine_ceiling(startup: Path) -> Path | None:
     """The highest folder a machine's lists may lie in: the nearest folder, from the start-up list's
     own up, that is a project (holds a zero configuration or ``pyproject.toml``) or a git work tree
     (holds ``.git``); ``None`` where there is none (the search then stops below the file system's root)."""
-    base = Path(os.path.abspath(startup)).parent
-    for d in (base, *base.parents):
-        if any(os.path.lexists(d / name) for name in (".git", *CONFIG_NAMES)):
-            return d
-    return None
+    return nearest_holding(Path(os.path.abspath(startup)).parent, (".git", *CONFIG_NAMES))
 
 
 def _candidates(base: Path, ceiling: Path | None) -> list[Path]:
@@ -293,13 +289,6 @@ def shown(path: Path, relative_to_cwd: bool) -> Path:
         if rel != ".." and not rel.startswith(".." + os.sep):
             return Path(rel)
     return path
-
-
-def _inside(path: Path, root: Path) -> bool:
-    """Is ``path`` (links followed) below ``root``? A start-up list cannot make zero read, and
-    print, any file of the machine it runs on (``/proc/self/environ``, ``../../etc/passwd``)."""
-    real, base = os.path.realpath(path), os.path.realpath(root)
-    return real == base or real.startswith(base.rstrip(os.sep) + os.sep)
 
 
 def _read(key: str, path: Path, line: int, registry: Registry, kind: str,
@@ -393,7 +382,7 @@ def named_lists(startup_path: Path, doc: Document, overrides: dict[str, Path] | 
             n.status, n.reason = "missing", "is empty"
         elif _absolute(text) and (mapped := _mapped(text, roots)) is not None:
             n.path = mapped  # `[tool.zero.machine] roots` says where that folder of the controller lies
-            if not any(_inside(mapped, folder) for _, folder in roots):
+            if not any(within(mapped, folder) for _, folder in roots):
                 n.status, n.reason = "not-checked", "climbs out of the folder `roots` maps it to"
                 n.path = None
         elif _absolute(text):
@@ -401,7 +390,7 @@ def named_lists(startup_path: Path, doc: Document, overrides: dict[str, Path] | 
                                                  "can map its folder)")
         else:
             n.path = root / text
-            if not _inside(n.path, root):
+            if not within(n.path, root):
                 n.status, n.reason = "not-checked", f"lies outside the machine's folder {root}"
                 n.path = None
     return root, named
