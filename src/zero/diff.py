@@ -19,10 +19,10 @@ from zero.catalog.registry import NO_DEFAULT, ParamSpec, Registry
 from zero.catalog.values import canonical_key, default_number, parse_int, read_value
 from zero.errors import ZeroError
 from zero.lists.model import Comment, Entry, Key, ValueKind, parse_key
-from zero.lists.tokenizer import tokenize
+from zero.lists.tokenizer import tokenize, tokenize_text
 from zero.records import field, record
 from zero.structured.formats import read_tree
-from zero.structured.tree import encode_list, to_list_text
+from zero.structured.tree import to_list_text
 
 ADDED, REMOVED, CHANGED, SAME, COMMENT = "added", "removed", "changed", "same", "comment"
 
@@ -58,15 +58,18 @@ class Change:
 # ----------------------------------------------------------------- reading sides
 
 
-def read_side(data: bytes, fmt: str, path: str, registry: Registry, kind: str | None = None) -> Side:
-    """Read list/YAML/TOML/JSON bytes as the controller would see them."""
+def read_side(data: bytes, fmt: str, path: str, registry: Registry, kind: str | None = None,
+              encoding: str | None = None) -> Side:
+    """Read list/YAML/TOML/JSON bytes as the controller would see them; a list in the code page
+    ``encoding`` when its configuration declares one."""
     if fmt == "lis":
-        doc = tokenize(data, path)
+        doc = tokenize(data, path, encoding)
         if any(p.kind == "binary" for p in doc.problems):
             raise ZeroError("not a text file: not a parameter list (zero lint says so as S013)", path)
     else:
         tree = read_tree(data, fmt, registry, path, kind)
-        doc = tokenize(encode_list(tree, to_list_text(tree).text), path)
+        # the text as the list it makes (in UTF-8: the encoding of its `_zero` record changes nothing read)
+        doc = tokenize_text(to_list_text(tree).text, path)
         if kind is None and isinstance(tree.meta.get("kind"), str):
             kind = tree.meta["kind"]
     if kind is None:

@@ -320,7 +320,7 @@ def run_format(paths: Sequence[str | Path], registries: Registries, echo: Echo, 
             echo.err(f"zero: {exc} (not formatted)\n")
             run.unreadable += 1
             continue
-        new = _formatted(data, str(f), project.registry(f), echo, run)
+        new = _formatted(data, str(f), project.registry(f), echo, run, project.encoding(f))
         if new is None or new == data:
             continue
         run.changed += 1
@@ -333,11 +333,12 @@ def run_format(paths: Sequence[str | Path], registries: Registries, echo: Echo, 
     return run
 
 
-def _formatted(data: bytes, name: str, registry: Registry, echo: Echo, run: FormatRun) -> bytes | None:
+def _formatted(data: bytes, name: str, registry: Registry, echo: Echo, run: FormatRun,
+               encoding: str | None = None) -> bytes | None:
     from zero.engine.formatting import format_bytes  # start-up: `zero lint` does not format
 
     try:
-        return format_bytes(data, name, registry)
+        return format_bytes(data, name, registry, encoding=encoding)
     except ZeroError as exc:
         echo.err(f"zero: {exc} (not formatted)\n")
         run.failed += 1
@@ -353,7 +354,8 @@ def _format_stdin(data: bytes, name: str, project: Project, echo: Echo, check: b
             echo.out_bytes(data)
         return run
     new = None if name != "-" and project.excluded(Path(name)) else \
-        _formatted(data, name, project.registry(Path(name)), echo, run)
+        _formatted(data, name, project.registry(Path(name)), echo, run,
+                   project.encoding(Path(name)) if name != "-" else None)
     if new is not None and new != data:
         run.changed = 1
     if show_diff:

@@ -24,6 +24,9 @@ R007 = "error"
 [tool.zero.kind]                  # list kind by glob instead of detection
 "**/nullp*.lis" = "zero"
 
+[tool.zero.encoding]              # a list's code page by glob instead of detection (first match)
+"machines/old/**/*.lis" = "cp850" # lists written on DOS tools; any single-byte codec or utf-8
+
 [tool.zero.machine]               # the machine NC programs and `zero limits` refer to
 startup = "listen/hochlauf.lis"
 "achs_mds[0]" = "listen/achse_x_neu.lis"   # override a list the start-up list names
@@ -47,6 +50,7 @@ from zero.engine.lint import LintOptions
 from zero.errors import ZeroError
 from zero.files import nearest_holding, read_file, within
 from zero.forms import CONFIG_NAMES, DEFAULT_INCLUDE
+from zero.lists.encoding import declarable
 from zero.lists.model import parse_key
 from zero.records import field, record
 from zero.rules import RULES
@@ -58,7 +62,7 @@ MAX_PATTERN_WILDCARDS = 3  # `*` runs in one segment of a glob pattern, and `**`
 MAX_PATTERN_LENGTH = 512
 MAX_CONFIG_BYTES = 1 << 20  # a configuration larger than 1 MiB is no configuration
 _KEYS = ("select", "extend-select", "ignore", "per-file-ignores", "severity", "kind", "include",
-         "exclude", "param-desc", "machine")
+         "exclude", "param-desc", "machine", "encoding")
 
 
 @functools.lru_cache(maxsize=512)
@@ -119,6 +123,7 @@ class Config:
     per_file_ignores: tuple[tuple[str, tuple[str, ...]], ...] = ()
     severity: dict[str, Severity] = field(default_factory=dict)
     kind: tuple[tuple[str, str], ...] = ()
+    encoding: tuple[tuple[str, str], ...] = ()  # glob → the codec of the lists it matches (first match)
     include: tuple[str, ...] = DEFAULT_INCLUDE
     exclude: tuple[str, ...] = ()
     param_desc: Path | None = None
@@ -152,6 +157,11 @@ class Config:
     def included(self, file: Path) -> bool:
         return self._matches(self.include, file)
 
+    def encoding_for(self, file: Path) -> str | None:
+        """The codec the configuration declares for a list (the first pattern that matches), else
+        ``None``: the list's encoding is detected."""
+        return next((codec for glob, codec in self.encoding if self._matches((glob,), file)), None)
+
     def options_for(self, file: Path, cli: LintOptions) -> LintOptions:
         """The lint options for one file: the command line over this configuration."""
         select = cli.select or self.select
@@ -166,7 +176,8 @@ class Config:
         if kind is None:
             kind = next((k for glob, k in self.kind if self._matches((glob,), file)), None)
         return LintOptions(select=select, ignore=ignore, kind=kind,
-                           severity={**self.severity, **cli.severity}, extend_select=extend)
+                           severity={**self.severity, **cli.severity}, extend_select=extend,
+                           encoding=cli.encoding or self.encoding_for(file))
 
     def show(self) -> str:
         """The effective configuration as TOML (``zero config --show``)."""
@@ -197,6 +208,9 @@ class Config:
         lines += [f'{c} = "{s.label}"' for c, s in sorted(self.severity.items())]
         lines.append(f"[{prefix}kind]")
         lines += [f'"{g}" = "{k}"' for g, k in self.kind]
+        if self.encoding:
+            lines.append(f"[{prefix}encoding]")
+            lines += [f'"{g}" = "{c}"' for g, c in self.encoding]
         return "\n".join(lines) + "\n"
 
 
@@ -378,6 +392,20 @@ def parse_config(path: Path, text: str | None = None) -> Config | None:
                     raise fail(glob, f"{name!r} is not a list kind (zero, axis, channel, ...)", ("kind",))
                 pairs.append((glob, k))
             cfg.kind = tuple(pairs)
+        elif key == "encoding":
+            if not isinstance(value, dict):
+                raise fail(key, 'expected a table of glob = codec, e.g. {"old/**/*.lis" = "cp850"}')
+            declared = []
+            for glob, name in value.items():
+                globs(glob, [glob], ("encoding",))
+                try:
+                    codec = declarable(name) if isinstance(name, str) else None
+                except ValueError as exc:
+                    raise fail(glob, str(exc), ("encoding",)) from None
+                if codec is None:
+                    raise fail(glob, f"{name!r} is not the name of a codec (e.g. \"cp850\")", ("encoding",))
+                declared.append((glob, codec))
+            cfg.encoding = tuple(declared)
     return cfg
 
 

@@ -4,6 +4,10 @@
 :func:`convert_inputs` is the whole command without its printing: each input read,
 converted and checked, one :class:`ConvertItem` per input; :func:`write_outputs`
 writes the results (atomically, never over an input) once every input converted.
+
+A list is read in the code page its configuration declares (``[tool.zero] encoding``), which
+the ``_zero`` record of the structured form keeps, so that converting back writes the
+original bytes.
 """
 
 from __future__ import annotations
@@ -13,13 +17,21 @@ from pathlib import Path
 
 from zero.catalog.registry import Registry
 from zero.diagnostics import Severity
+from zero.engine.formatting import undeclared_code_page
 from zero.engine.lint import LintResult, lint_tree
+from zero.engine.project import Project
 from zero.errors import ZeroError
 from zero.files import read_file, write_atomic
 from zero.forms import EXTENSION, format_of
-from zero.records import field, record
+from zero.lists.encoding import encode_text
+from zero.lists.tokenizer import tokenize
+from zero.records import field, record, replace
 from zero.structured.formats import read_tree, write_tree
-from zero.structured.tree import Tree
+from zero.structured.tree import Tree, from_document, to_list_text
+
+# The encodings `zero.structured.tree.encode_list` writes: a list in a code page the configuration
+# declared (cp850) is written here instead, until it writes those too.
+_TREE_WRITES = ("utf-8", "cp1252", "latin-1")
 
 
 @record
@@ -31,19 +43,41 @@ class Conversion:
 
 
 def convert(data: bytes, src: str, dst: str, registry: Registry, path: str = "-", kind: str | None = None,
-            check: bool = True) -> Conversion:
+            check: bool = True, encoding: str | None = None) -> Conversion:
     """Convert bytes from one format to another.
 
     A structured input becomes a list only after every entry line has been
-    verified to read back as written; ``check`` also lints that list.
+    verified to read back as written; ``check`` also lints that list. ``encoding``: the code
+    page the configuration declares for a list input (``None``: detected).
     """
-    tree = read_tree(data, src, registry, path, kind)
-    output = write_tree(tree, dst)
+    if src == "lis":
+        doc = tokenize(data, path, encoding)
+        undeclared_code_page(doc, "YAML, TOML and JSON text cannot carry it")
+        tree = from_document(doc, registry, kind)
+    else:
+        tree = read_tree(data, src, registry, path, kind)
+    output = write_tree(tree, dst) if dst != "lis" else list_bytes(tree)
     result = None
     if check and src != "lis" and dst == "lis":
         source = data.decode("utf-8", "replace").lstrip("\ufeff")
-        result = lint_tree(tree, registry, None, source if src in ("yaml", "toml") else None)
+        # The findings are the same in any encoding: lint_tree encodes the list only to read it back.
+        readable = tree if tree.meta.get("encoding", "utf-8") in _TREE_WRITES else \
+            replace(tree, meta={**tree.meta, "encoding": "utf-8"})
+        result = lint_tree(readable, registry, None, source if src in ("yaml", "toml") else None)
     return Conversion(output, tree, list(tree.notes), result)
+
+
+def list_bytes(tree: Tree) -> bytes:
+    """A tree as the bytes of a list, in the encoding its ``_zero`` record names (a declared code
+    page such as cp850 too)."""
+    encoding = tree.meta.get("encoding", "utf-8")
+    if encoding in _TREE_WRITES or not isinstance(encoding, str):
+        return write_tree(tree, "lis")
+    return encode_text(to_list_text(tree).text, encoding, tree.meta.get("bom") is True, tree.path)
+
+
+def _no_catalogue(_desc: Path | None) -> Registry:
+    raise ZeroError("no catalogue is resolved here")  # pragma: no cover - never asked
 
 
 def output_path(src: Path, fmt: str, out_dir: Path) -> Path:
@@ -102,10 +136,15 @@ def check_convert_options(inputs: Sequence[str], output: str | None, out_dir: Pa
 def convert_inputs(inputs: Sequence[str], registry: Registry | Callable[[str], Registry],
                    read_stdin: Callable[[], bytes], *,
                    src: str | None = None, to: str | None = None, output: str | None = None,
-                   kind: str | None = None, check: bool = True, strict: bool = False) -> list[ConvertItem]:
+                   kind: str | None = None, check: bool = True, strict: bool = False,
+                   project: Project | None = None) -> list[ConvertItem]:
     """Read, convert and check every input; nothing is written. A file that cannot be read
     raises :class:`ZeroError`; an input that cannot be converted is an item with ``error``.
-    ``registry`` may give each input its own catalogue (its configuration's ``param-desc``)."""
+    ``registry`` may give each input its own catalogue (its configuration's ``param-desc``);
+    ``project`` says the code page each list input's configuration declares (by default the
+    configuration found from the input's folder)."""
+    if project is None:  # only its configurations are asked: the catalogue comes from `registry`
+        project = Project(_no_catalogue)
     items = []
     for name in inputs:
         catalogue = registry(name) if callable(registry) else registry
@@ -113,7 +152,8 @@ def convert_inputs(inputs: Sequence[str], registry: Registry | Callable[[str], R
         item = ConvertItem(name, target_format(to, output, src_fmt))
         data = read_stdin() if name == "-" else read_file(name)
         try:
-            result = convert(data, src_fmt, item.fmt, catalogue, name, kind, check)
+            encoding = project.encoding(Path(name)) if name != "-" else None
+            result = convert(data, src_fmt, item.fmt, catalogue, name, kind, check, encoding)
         except ZeroError as exc:
             item.error = str(exc)
             items.append(item)

@@ -58,10 +58,12 @@ class FixResult:
 
 def fix_bytes(data: bytes, path: str, registry: Registry,
               options: LintOptions | None = None, unsafe: bool = False) -> FixResult:
-    """Apply fixes until none is left (at most :data:`MAX_PASSES` rounds)."""
+    """Apply fixes until none is left (at most :data:`MAX_PASSES` rounds); the list is read in the
+    code page its options declare (``options.encoding``) and written back in it."""
     current = data
     total = 0
-    doc = tokenize(current, path)
+    encoding = options.encoding if options is not None else None
+    doc = tokenize(current, path, encoding)
     result = lint_document(doc, registry, options)
     for _ in range(MAX_PASSES):
         edits = _fixable(result.diagnostics, unsafe)
@@ -72,7 +74,7 @@ def fix_bytes(data: bytes, path: str, registry: Registry,
             break
         total += applied
         current = document_bytes(doc, lines)
-        doc = tokenize(current, path)
+        doc = tokenize(current, path, encoding)
         result = lint_document(doc, registry, options)
     return FixResult(current, total, result)
 

@@ -1,25 +1,45 @@
 """``zero format``: a list in canonical layout, meaning kept.
 
 Values aligned in one column, comments in another, no trailing whitespace; keys,
-values, comments and their order stay, and so do the encoding and line endings.
+values, comments and their order stay, and so do the encoding and line endings (a list in a
+code page the configuration declares, e.g. CP850, stays in it byte for byte).
 """
 
 from __future__ import annotations
 
 from zero.catalog.registry import Registry
+from zero.errors import ZeroError
+from zero.lists.encoding import encode_text, foreign_control
+from zero.lists.model import Document
 from zero.lists.tokenizer import tokenize
-from zero.structured.tree import DEFAULT_VALUE_COLUMN, encode_list, from_document, to_list_text
+from zero.structured.tree import DEFAULT_VALUE_COLUMN, from_document, to_list_text
 
 COMMENT_OFFSET = 15  # comments start this many columns after the value column
 
 
-def format_bytes(data: bytes, path: str, registry: Registry, value_column: int | None = None) -> bytes:
+def undeclared_code_page(doc: Document, why: str) -> None:
+    """:class:`ZeroError` for a list that holds a C1 control (a byte of another code page read as
+    Latin-1), saying ``why`` it cannot go on and that declaring the code page reads it right."""
+    found = foreign_control(doc)
+    if found is None:
+        return
+    line, column, byte = found
+    code = ord(doc.lines[line - 1][column])
+    raise ZeroError(f"byte 0x{byte} reads as control character U+{code:04X} in {doc.encoding}: {why}; a list "
+                    "written in another code page (CP850: 0x81 is `ü`) is read right when the configuration "
+                    'declares it, e.g. encoding = {"old/**/*.lis" = "cp850"}', doc.path, line, column + 1)
+
+
+def format_bytes(data: bytes, path: str, registry: Registry, value_column: int | None = None,
+                 encoding: str | None = None) -> bytes:
     """The list in canonical layout: values aligned in one column (the vendor's column 55, or
     after the longest key), comments 15 columns after it (one space after a longer value), no
     trailing whitespace; order, values, comments, encoding and line endings kept. Earlier lines
     of a key set twice stay as written. :class:`~zero.errors.ZeroError` for lines it cannot
-    read (the registry only tells which values are numbers)."""
-    doc = tokenize(data, path)
+    read (the registry only tells which values are numbers). ``encoding``: the code page the
+    configuration declares for the list (``None``: detected)."""
+    doc = tokenize(data, path, encoding)
+    undeclared_code_page(doc, "zero format cannot lay out a line that holds it")
     tree = from_document(doc, registry)
     meta = tree.meta
     # A key written with whitespace inside means something else to the controller (S004):
@@ -44,4 +64,4 @@ def format_bytes(data: bytes, path: str, registry: Registry, value_column: int |
     else:
         meta.pop("comment_column", None)
     text = to_list_text(tree).text
-    return encode_list(tree, text)
+    return encode_text(text, doc.encoding, doc.bom, path)

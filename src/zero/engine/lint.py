@@ -51,6 +51,7 @@ class LintOptions:
     kind: str | None = None  # force the list kind
     severity: dict[str, Severity] = field(default_factory=dict)  # per-code overrides
     extend_select: tuple[str, ...] = ()  # codes or prefixes added to the selection
+    encoding: str | None = None  # the codec the configuration declares for the list; None: detected
 
 
 @record
@@ -139,7 +140,7 @@ def lint_document(doc: Document, registry: Registry, options: LintOptions | None
 
 def lint_bytes(data: bytes, registry: Registry, path: str = "-",
                options: LintOptions | None = None) -> LintResult:
-    return lint_document(tokenize(data, path), registry, options)
+    return lint_document(tokenize(data, path, options.encoding if options else None), registry, options)
 
 
 def lint_tree(tree: Tree, registry: Registry, options: LintOptions | None = None,

@@ -6,7 +6,9 @@ workspace in the server) three questions about a path, and no other module answe
 * **configuration**: the ``zero.toml`` / ``.zero.toml`` / ``pyproject.toml`` ``[tool.zero]``
   nearest the file (``--config`` for every file, ``--isolated`` none), found from the
   directory that holds the file, cached by that directory; :meth:`Project.options` lays the
-  command line over it (per-file ignores included) — the options the funnel applies;
+  command line over it (per-file ignores included) — the options the funnel applies, and
+  the code page the configuration declares for the list (:meth:`Project.encoding`), which
+  every reader of the list decodes it with (the machine's too);
 * **catalogue**: ``--param-desc`` (or ``ZERO_PARAM_DESC``), else the configuration's
   ``param-desc``, else the built-in table; one registry per description, loaded once;
 * **machine**: the start-up list ``--machine`` names, else the configuration's
@@ -40,7 +42,7 @@ if TYPE_CHECKING:  # start-up: `zero lint` of lists loads no machine model
 
 Registries = Callable[[Path | None], Registry]
 Reader = Callable[[Path], bytes]
-Signature = tuple[tuple[str, int, int], ...]
+Signature = tuple[tuple[str, int, int, str | None], ...]  # path, mtime, size, declared codec
 Layout = tuple[dict[str, Path], Path | None, tuple[tuple[str, Path], ...]]  # overrides, working directory, roots
 
 
@@ -49,16 +51,17 @@ def absolute(path: str | Path) -> Path:
     return Path(os.path.abspath(path))
 
 
-def _signature(machine: Machine) -> Signature:
-    """What a machine was read from: every named file's size and modification time."""
+def _signature(machine: Machine, encoding: Callable[[Path], str | None]) -> Signature:
+    """What a machine was read from: every named file's size and modification time, and the code
+    page the configuration declares for it."""
     paths = [machine.startup.path, *(n.path for n in machine.named if n.path is not None)]
     out = []
     for p in paths:
         try:
             st = os.stat(p)
-            out.append((str(p), st.st_mtime_ns, st.st_size))
+            out.append((str(p), st.st_mtime_ns, st.st_size, encoding(p)))
         except OSError:
-            out.append((str(p), -1, -1))
+            out.append((str(p), -1, -1, encoding(p)))
     return tuple(out)
 
 
@@ -89,6 +92,11 @@ class Project:
     def options(self, path: Path | None) -> LintOptions:
         """The options of one file: the command line over its configuration."""
         return self.config(path).options_for(path if path is not None else Path("-"), self.cli)
+
+    def encoding(self, path: Path | None) -> str | None:
+        """The codec the configuration declares for a list (``[tool.zero] encoding``), else ``None``:
+        detected from the bytes. Standard input without a name has none."""
+        return self.config(path).encoding_for(path) if path is not None else None
 
     def excluded(self, path: Path) -> bool:
         """Excluded by the configuration of the directory that holds it (a file or a directory)."""
@@ -143,11 +151,11 @@ class Project:
             machine = self._read_with(key, reader_key, shown, registry, layout, reader)
         else:
             hit = self._machines.get(key)
-            if hit is not None and hit[0] == _signature(hit[1]):
+            if hit is not None and hit[0] == _signature(hit[1], self.encoding):
                 machine = hit[1]
             else:
                 machine = self._load(shown, registry, layout, read_file)
-                self._machines[key] = (_signature(machine), machine)
+                self._machines[key] = (_signature(machine, self.encoding), machine)
         return require_startup(machine, registry) if required else machine  # asked each time, cached or not
 
     def _read_with(self, key: Hashable, reader_key: Hashable, shown: Path, registry: Registry,
@@ -164,7 +172,7 @@ class Project:
         from zero.machine.model import load_machine, machine_ceiling  # start-up: only with a machine
 
         return load_machine(startup, registry, self.cli.kind, layout[0], layout[1], reader, machine_ceiling(startup),
-                            layout[2])
+                            layout[2], self.encoding)
 
     def references(self, startup: Path, doc: Document) -> dict[str, Path]:
         """The lists a start-up list names (key as written → the path the controller opens), resolved

@@ -24,11 +24,20 @@ from zero.records import field, record
 
 
 def load_side(name: str, fmt: str | None, kind: str | None, registry: Registry,
-              read_stdin: Callable[[], bytes]) -> Side:
-    """One side of ``zero diff`` (or ``zero show``): a file in any format, or standard input."""
+              read_stdin: Callable[[], bytes], project: Project | None = None) -> Side:
+    """One side of ``zero diff`` (or ``zero show``): a file in any format, or standard input. A list
+    is read in the code page its configuration declares (``project``'s; by default the one found
+    from the file's folder)."""
     src = source_format(fmt, name)
     data = read_stdin() if name == "-" else read_file(name)
-    return read_side(data, src, name, registry, kind)
+    encoding = None
+    if name != "-" and src == "lis":
+        encoding = (project or Project(_no_catalogue)).encoding(Path(name))
+    return read_side(data, src, name, registry, kind, encoding)
+
+
+def _no_catalogue(_desc: Path | None) -> Registry:
+    raise ZeroError("no catalogue is resolved here")  # pragma: no cover - only configurations are asked
 
 
 @record
@@ -51,7 +60,7 @@ def run_diff(a: str, b: str | None, project: Project, read_stdin: Callable[[], b
     if defaults:
         if b is not None:
             raise ZeroError("--defaults compares one file with the registry; give one file")
-        side = load_side(a, fmt, kind, registry, read_stdin)
+        side = load_side(a, fmt, kind, registry, read_stdin, project)
         changes = diff_defaults(side, registry, options)
         return DiffRun(changes, f"{a}: {len(changes)} parameters differ from the registry defaults")
     if b is None:
@@ -60,8 +69,8 @@ def run_diff(a: str, b: str | None, project: Project, read_stdin: Callable[[], b
         raise ZeroError("only one side can be standard input")
     if machine:
         return _diff_machines(a, b, project, registry, options)
-    side_a = load_side(a, fmt, kind, registry, read_stdin)
-    side_b = load_side(b, fmt, kind or side_a.kind, registry, read_stdin)
+    side_a = load_side(a, fmt, kind, registry, read_stdin, project)
+    side_b = load_side(b, fmt, kind or side_a.kind, registry, read_stdin, project)
     under = _default_list_side(_named(b) or _named(a), side_b.kind or side_a.kind, project)
     return DiffRun(diff_sides(side_a, side_b, registry, options, under), f"--- {a}\n+++ {b}")
 

@@ -2,7 +2,8 @@
 
 The scanner is hand-written and works one line at a time:
 
-1. Decode the bytes (:mod:`zero.lists.encoding`), remembering the encoding.
+1. Decode the bytes (:mod:`zero.lists.encoding`; as the configuration declares them, else as
+   detected), remembering the encoding.
 2. Split on ``\\n`` only; a ``\\r`` before it is the CRLF ending of that line.
 3. Classify each line: blank, full-line comment, ``Ende``, entry, or invalid.
 
@@ -61,6 +62,10 @@ _KIND_OF = {"int": ValueKind.INT, "hex": ValueKind.HEX, "ref": ValueKind.REF, "r
 _STYLE_OF = {"#": CommentStyle.HASH, "(": CommentStyle.PAREN}
 # Control characters other than tab; \r only counts when it is not a CRLF ending.
 _CONTROL_RE = re.compile(r"[\x00-\x08\x0b-\x1f\x7f-\x9f\udc80-\udcff]")
+# The C1 controls: what a byte above 0x7F becomes when a list written in another code page
+# (CP850's 0x81 `ü`) is read as Latin-1. In a comment the controller never reads it.
+_C1_RE = re.compile(r"[\x80-\x9f]")
+_MARKED_COMMENTS = (CommentStyle.HASH, CommentStyle.PAREN, CommentStyle.BLOCK)
 # Every ASCII byte _CONTROL_RE does not match: deleting them leaves the control characters.
 _NOT_CONTROL = bytes(b for b in range(128) if not (b <= 0x08 or 0x0B <= b <= 0x1F or b == 0x7F))
 
@@ -196,7 +201,28 @@ def scan_line(s: str, line: int, problems: list[Problem]) -> Item:
     return scan_entry(s, i, line, problems)
 
 
-def _scan_controls(lines: list[str], problems: list[Problem]) -> None:
+def _comment_starts(items: list[Item], end_line: int | None) -> list[int]:
+    """Per line, the column where the part the controller does not read begins (its length when
+    it reads all of it): a full-line comment, a `#`, `(` or `/*` comment after a value, the rest of
+    the `Ende` line and every line after it. Plain words after a value are not counted: after a
+    string value the controller may read them (S006)."""
+    out = []
+    for item in items:
+        if isinstance(item, Comment) or (end_line is not None and item.line > end_line):
+            out.append(0)
+        elif isinstance(item, Entry) and item.comment_style in _MARKED_COMMENTS:
+            out.append(item.comment_start)
+        elif isinstance(item, End):
+            out.append(item.start + len(END_KEYWORD))
+        else:
+            out.append(-1)
+    return out
+
+
+def _controls(lines: list[str], items: list[Item], end_line: int | None, declared: str | None) -> list[Problem]:
+    """The control characters and stray bytes of each line, but no C1 control in a comment."""
+    starts: list[int] | None = None
+    problems = []
     for number, s in enumerate(lines, 1):
         for m in _CONTROL_RE.finditer(s):
             ch = m.group()
@@ -204,13 +230,20 @@ def _scan_controls(lines: list[str], problems: list[Problem]) -> None:
             if code == 0:
                 problems.append(Problem("nul-byte", number, m.start(), m.end()))
             elif 0xDC80 <= code <= 0xDCFF:
-                problems.append(
-                    Problem("undecodable", number, m.start(), m.end(), f"0x{code - 0xDC00:02X}")
-                )
+                byte = f"0x{code - 0xDC00:02X}"
+                problems.append(Problem("undecodable", number, m.start(), m.end(),
+                                        byte if declared is None else f"{byte} {declared}"))
             else:
+                if 0x80 <= code <= 0x9F:
+                    if starts is None:
+                        starts = _comment_starts(items, end_line)
+                    at = starts[number - 1] if number <= len(starts) else -1
+                    if 0 <= at <= m.start():
+                        continue  # a byte of another code page in a comment: not read by the controller
                 problems.append(
                     Problem("control-char", number, m.start(), m.end(), f"U+{code:04X}")
                 )
+    return problems
 
 
 def _control_count(text: str) -> int:
@@ -221,8 +254,8 @@ def _control_count(text: str) -> int:
 
 
 def tokenize_text(text: str, path: str = "-", encoding: str = "utf-8", bom: bool = False,
-                  use_fast: bool = True) -> Document:
-    """Tokenize already decoded text."""
+                  use_fast: bool = True, declared: bool = False) -> Document:
+    """Tokenize already decoded text; ``declared``: the configuration named its encoding."""
     raw_lines = text.split("\n")
     endings = ["\n"] * (len(raw_lines) - 1) + [""]
     if raw_lines and raw_lines[-1] == "":
@@ -306,10 +339,12 @@ def tokenize_text(text: str, path: str = "-", encoding: str = "utf-8", bom: bool
     # the \r of each CRLF ending is no control character of a line
     controls = _control_count(text) - (endings.count("\r\n") if "\r" in text else 0)
     if controls:
+        found = _controls(lines, items, end_line, encoding if declared else None)
+        controls = len(found)  # C1 controls in comments are another code page's letters, no binary
         if controls >= BINARY_MIN_CONTROLS and controls > len(text) * BINARY_SHARE:
             problems.append(Problem("binary", 1, 0, len(lines[0]) if lines else 0, str(controls)))
         else:
-            _scan_controls(lines, problems)
+            problems.extend(found)
     if "\r\n" in endings and "\n" in endings:
         first = endings.index("\n" if endings[0] == "\r\n" else "\r\n")
         problems.append(Problem("mixed-endings", first + 1, len(lines[first]), len(lines[first])))
@@ -317,7 +352,10 @@ def tokenize_text(text: str, path: str = "-", encoding: str = "utf-8", bom: bool
     return Document(path, encoding, lines, endings, items, problems, bom, end_line)
 
 
-def tokenize(data: bytes, path: str = "-") -> Document:
-    """Tokenize the bytes of a list file. Never raises."""
-    text, encoding, bom = decode(data)
-    return tokenize_text(text, path, encoding, bom)
+def tokenize(data: bytes, path: str = "-", encoding: str | None = None) -> Document:
+    """Tokenize the bytes of a list file. Never raises (but for an ``encoding`` that
+    :func:`~zero.lists.encoding.declarable` refuses: :class:`ValueError`).
+
+    ``encoding``: the codec the configuration declares for the file, which wins over detection."""
+    text, codec, bom = decode(data, encoding)
+    return tokenize_text(text, path, codec, bom, declared=encoding is not None)

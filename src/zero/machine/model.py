@@ -291,15 +291,23 @@ def shown(path: Path, relative_to_cwd: bool) -> Path:
     return path
 
 
+Encodings = Callable[[Path], str | None]  # a list → the codec its configuration declares (None: detected)
+
+
+def _detected(_path: Path) -> str | None:
+    return None
+
+
 def _read(key: str, path: Path, line: int, registry: Registry, kind: str,
           base: ListValues | None = None, reader: Callable[[Path], bytes] = read_file,
-          docs: dict[str, Document] | None = None) -> ListFile:
+          docs: dict[str, Document] | None = None, encoding: Encodings = _detected) -> ListFile:
     """One list of the machine; ``docs`` keeps each file read once (a start-up list may name one
-    file many times: each reference costs its binding, never another read)."""
+    file many times: each reference costs its binding, never another read). ``encoding`` gives
+    the codec the configuration declares for a list (``None``: detected)."""
     real = os.path.realpath(path)
     doc = docs.get(real) if docs is not None else None
     if doc is None or doc.path != str(path):
-        doc = tokenize(reader(path), str(path)) if doc is None else replace(doc, path=str(path))
+        doc = tokenize(reader(path), str(path), encoding(path)) if doc is None else replace(doc, path=str(path))
         if docs is not None:
             docs.setdefault(real, doc)
     values = ListValues.of(doc, registry, kind)
@@ -399,15 +407,17 @@ def named_lists(startup_path: Path, doc: Document, overrides: dict[str, Path] | 
 def load_machine(startup_path: Path, registry: Registry, forced_kind: str | None = None,
                  overrides: dict[str, Path] | None = None, workdir: Path | None = None,
                  reader: Callable[[Path], bytes] = read_file, ceiling: Path | None = None,
-                 roots: Roots = ()) -> Machine:
+                 roots: Roots = (), encoding: Encodings = _detected) -> Machine:
     """Read a start-up list and every list it names, as the controller would.
 
     ``overrides`` (start-up key → path, from ``[tool.zero.machine]``) replace what the
     start-up list names; ``workdir`` fixes the working directory. Each list is read as the
     kind its key says (``achs_mds`` an axis list, ...), or as ``forced_kind``. ``reader`` gives
-    a list's bytes (an editor passes its unsaved text; :class:`ZeroError` when it cannot).
+    a list's bytes (an editor passes its unsaved text; :class:`ZeroError` when it cannot);
+    ``encoding`` the codec the configuration declares for a list (``None``: detected).
     """
-    startup = _read("start-up list", startup_path, 0, registry, forced_kind or "STUP", None, reader)
+    startup = _read("start-up list", startup_path, 0, registry, forced_kind or "STUP", None, reader,
+                    encoding=encoding)
     root, named = named_lists(startup_path, startup.values.doc, overrides, workdir, ceiling, roots)
     machine = Machine(startup, root, named)
     counts = {pid: _count(startup.values, pid) for pid in COUNT_KEYS}
@@ -426,7 +436,8 @@ def load_machine(startup_path: Path, registry: Registry, forced_kind: str | None
         if n.path is None or n.status == "not-checked":
             return None  # empty, absolute or outside the machine's folder: said by named_lists
         try:
-            lf = _read(n.key, n.path, n.line, registry, forced_kind or n.reference.kind, base, reader, docs)
+            lf = _read(n.key, n.path, n.line, registry, forced_kind or n.reference.kind, base, reader, docs,
+                       encoding)
         except ZeroError as exc:
             n.status = "missing" if exc.message == "no such file" else "unreadable"
             n.reason = "does not exist" if n.status == "missing" else f"cannot be read: {exc.message}"

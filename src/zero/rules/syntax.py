@@ -82,8 +82,10 @@ UNDECODABLE = FAMILY.rule(
     "S007", "undecodable", E, "Bytes that are not valid in the file's encoding",
     """
 What it checks: a list is UTF-8 (with or without BOM) or Windows-1252/Latin-1 as a
-whole. A byte that is invalid UTF-8 in a file that also holds UTF-8 text means the
-file mixes encodings (typically an editor saved a Latin-1 `µ` into a UTF-8 file).
+whole, or in the code page the configuration declares for it (`encoding`). A byte that is
+invalid UTF-8 in a file that also holds UTF-8 text means the file mixes encodings
+(typically an editor saved a Latin-1 `µ` into a UTF-8 file); a byte the declared code page
+does not define means the declaration or the file is wrong.
 
 Why it matters on the machine: names and comments come out garbled; in a value the
 controller reads something other than what the engineer sees in the editor.
@@ -116,8 +118,14 @@ Fix: move the entries above `Ende`.
 CONTROL_CHARACTER = FAMILY.rule(
     "S010", "control-character", W, "A control character in a line",
     """
-What it checks: characters below 0x20 other than tab, and DEL; a carriage return
-that is not part of a CRLF line ending.
+What it checks: characters below 0x20 other than tab, and DEL, anywhere in a line; a
+carriage return that is not part of a CRLF line ending; and the C1 controls (U+0080 to U+009F)
+in the part of a line the controller reads (key and value). A C1 control is what a byte above
+0x7F of another code page becomes when the list is read as Latin-1 (CP850's 0x81 `ü`, 0x84 `ä`):
+in a comment (`#`, `( ...`, `/* */` after a value, a full-line `#` comment, a commented-out
+entry, the `Ende` line and what follows it) it is a letter of a comment and not reported.
+Declare such a list's code page (`encoding = {"old/**/*.lis" = "cp850"}` in the configuration)
+to read, convert and format it as the text it is.
 
 Why it matters on the machine: invisible in most editors, but part of the key or
 value the controller reads, which then matches nothing.
@@ -186,7 +194,8 @@ _MESSAGES: dict[str, tuple[str, Callable[[Problem], str]]] = {
     "undecodable": (
         "S007",
         lambda p: f"byte {p.detail} is not valid UTF-8 in a file that also contains UTF-8 text "
-        "(mixed encodings)",
+        "(mixed encodings)" if " " not in p.detail else
+        "byte {} is not defined in {}, the encoding the configuration declares".format(*p.detail.split(" ", 1)),
     ),
     "nul-byte": ("S008", lambda p: "NUL byte: the controller ends the line here"),
     "after-end": (
