@@ -6,6 +6,7 @@ from __future__ import annotations
 import shutil
 from pathlib import Path
 
+import zero.engine.config as config
 from conftest import FIXTURES, builtin_registry
 from zero.engine.project import Project
 
@@ -31,3 +32,14 @@ def test_the_declared_codec_reaches_options_and_the_machine(tmp_path: Path) -> N
     doc = next(lf.values.doc for lf in again.lists if lf.path == axis)
     assert (doc.encoding, doc.lines[0]) == ("cp850", "# Achse für X")
     assert project.machine(axis, startup=root / "listen" / "hochlauf.lis") is again  # cached
+
+
+def test_the_configuration_modules_example_declares_a_code_page(tmp_path: Path) -> None:
+    """The example in zero.engine.config's documentation reads, `encoding` among its keys."""
+    doc = config.__doc__ or ""
+    example = doc.split("```toml\n", 1)[1].split("```", 1)[0]
+    (tmp_path / "pyproject.toml").write_text(example)
+    cfg = config.parse_config(tmp_path / "pyproject.toml")
+    assert cfg is not None and cfg.encoding == (("machines/old/**/*.lis", "cp850"),)
+    assert cfg.encoding_for(tmp_path / "machines" / "old" / "a" / "x.lis") == "cp850"
+    assert cfg.encoding_for(tmp_path / "machines" / "new" / "x.lis") is None
