@@ -219,6 +219,13 @@ def _comment_starts(items: list[Item], end_line: int | None) -> list[int]:
     return out
 
 
+def _c1_in_comments(lines: list[str], items: list[Item], end_line: int | None) -> int:
+    """How many C1 controls the comments hold (counted, never one problem each: a binary file)."""
+    starts = _comment_starts(items, end_line)
+    return sum(len(_C1_RE.findall(s, starts[n])) for n, s in enumerate(lines)
+               if n < len(starts) and starts[n] >= 0 and not s.isascii())
+
+
 def _controls(lines: list[str], items: list[Item], end_line: int | None, declared: str | None) -> list[Problem]:
     """The control characters and stray bytes of each line, but no C1 control in a comment."""
     starts: list[int] | None = None
@@ -338,13 +345,14 @@ def tokenize_text(text: str, path: str = "-", encoding: str = "utf-8", bom: bool
 
     # the \r of each CRLF ending is no control character of a line
     controls = _control_count(text) - (endings.count("\r\n") if "\r" in text else 0)
+    if controls >= BINARY_MIN_CONTROLS and controls > len(text) * BINARY_SHARE and _C1_RE.search(text):
+        # C1 controls in comments are letters of another code page, not signs of a binary file
+        controls -= _c1_in_comments(lines, items, end_line)
     if controls:
-        found = _controls(lines, items, end_line, encoding if declared else None)
-        controls = len(found)  # C1 controls in comments are another code page's letters, no binary
         if controls >= BINARY_MIN_CONTROLS and controls > len(text) * BINARY_SHARE:
             problems.append(Problem("binary", 1, 0, len(lines[0]) if lines else 0, str(controls)))
         else:
-            problems.extend(found)
+            problems.extend(_controls(lines, items, end_line, encoding if declared else None))
     if "\r\n" in endings and "\n" in endings:
         first = endings.index("\n" if endings[0] == "\r\n" else "\r\n")
         problems.append(Problem("mixed-endings", first + 1, len(lines[first]), len(lines[first])))
