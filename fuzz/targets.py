@@ -25,6 +25,8 @@ from zero.engine.fixes import fix_bytes
 from zero.engine.formatting import format_bytes
 from zero.engine.lint import lint_bytes, lint_program
 from zero.errors import ZeroError
+from zero.lists.encoding import document_bytes
+from zero.lists.tokenizer import tokenize
 from zero.machine.model import Machine, load_machine
 from zero.structured.formats import read_tree
 
@@ -112,6 +114,9 @@ def check_config(data: bytes) -> None:
         for name in ("a.lis", "old/b.lis", "machines/m1/listen/nullp_1.lis", "x" * 200 + ".lis"):
             cfg.excluded(Path("/project") / name)
             cfg.included(Path("/project") / name)
+            codec = cfg.encoding_for(Path("/project") / name)
+            if codec is not None:  # a declared code page reads and writes back any bytes
+                assert document_bytes(tokenize(data, name, codec)) == data
 
 
 def check_machine(data: bytes) -> None:

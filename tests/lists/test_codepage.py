@@ -6,6 +6,8 @@ from __future__ import annotations
 from pathlib import Path
 
 import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from conftest import FIXTURES, builtin_registry, golden
 from zero.engine.fixes import fix_bytes
@@ -145,3 +147,11 @@ def test_format_and_fix_keep_a_declared_code_page() -> None:
 def test_format_of_an_undeclared_code_page_says_how_to_declare_it() -> None:
     with pytest.raises(ZeroError, match=r"byte 0x81 reads as control character U\+0081 in latin-1.*encoding = "):
         format_bytes(b"kenngr.swe_pos 1 # f\x81r X\n", "a.lis", builtin_registry())
+
+
+@settings(max_examples=300, deadline=None)
+@given(st.binary(max_size=400), st.sampled_from(["cp850", "cp437", "cp1252", "latin-1", "iso8859-15", "mac-roman",
+                                                 "koi8-r", "ascii", "utf-8"]))
+def test_any_bytes_in_a_declared_code_page_come_back_as_they_were(data: bytes, codec: str) -> None:
+    doc = tokenize(data, "x.lis", codec)
+    assert document_bytes(doc) == data
