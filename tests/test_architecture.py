@@ -21,15 +21,17 @@ ALLOWED: dict[str, set[str]] = {
     "lists": {FOUNDATION},
     "catalog": {FOUNDATION, "lists"},
     "structured": {FOUNDATION, "lists", "catalog"},
-    "machine": {FOUNDATION, "lists", "catalog"},
+    "markup": {FOUNDATION, "lists", "catalog"},
+    "machine": {FOUNDATION, "lists", "catalog", "markup"},
     "nc": {FOUNDATION, "lists", "catalog"},
-    "diff": {FOUNDATION, "lists", "catalog", "structured"},
+    "diff": {FOUNDATION, "lists", "catalog", "structured", "markup"},
     "rules": {FOUNDATION, "lists", "catalog", "machine", "nc"},
-    "engine": {FOUNDATION, "lists", "catalog", "structured", "machine", "nc", "diff", "rules"},
+    "engine": {FOUNDATION, "lists", "catalog", "structured", "markup", "machine", "nc", "diff", "rules"},
     "output": {FOUNDATION, "lists", "catalog", "machine", "diff", "rules", "engine"},
-    "server": {FOUNDATION, "lists", "catalog", "structured", "machine", "nc", "diff", "rules", "engine", "output"},
-    "cli": {FOUNDATION, "lists", "catalog", "structured", "machine", "nc", "diff", "rules", "engine", "output",
-            "server"},
+    "server": {FOUNDATION, "lists", "catalog", "structured", "markup", "machine", "nc", "diff", "rules", "engine",
+               "output"},
+    "cli": {FOUNDATION, "lists", "catalog", "structured", "markup", "machine", "nc", "diff", "rules", "engine",
+            "output", "server"},
 }
 
 

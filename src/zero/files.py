@@ -42,7 +42,7 @@ from pathlib import Path
 from typing import BinaryIO
 
 from zero.errors import ZeroError
-from zero.forms import CONFIG_NAMES, NOT_A_REPORT
+from zero.forms import CONFIG_NAMES, NOT_A_REPORT, xml_form
 
 MAX_FILE_BYTES = 256 * 1024 * 1024
 # What no parameter list (nor its YAML/TOML/JSON form) comes near: the largest zero is measured on,
@@ -465,6 +465,8 @@ def _looks_like_a_list(path: Path) -> bool:
             head = f.read(8192)
     except OSError:
         return False
+    if xml_form(head):  # a kernel XML list or a TwinCAT export
+        return True
     seen = 0
     for line in head.splitlines():
         text = line.strip()

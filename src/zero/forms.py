@@ -1,4 +1,5 @@
-"""What a file is, by its name: a parameter list, an NC program, or a list's structured form.
+"""What a file is, by its name (a parameter list, an NC program, a list's structured form) and, for
+XML, by its content (a kernel XML list, a TwinCAT export holding lists, or no list at all).
 
 The one place that knows the suffixes. ``zero lint`` picks the reader by it, a directory
 walk picks up lists and programs by it (the default ``include``), ``zero convert`` takes the
@@ -9,6 +10,7 @@ written with ``-o`` never replaces a file of these kinds.
 from __future__ import annotations
 
 import os
+import re
 
 LIST, PROGRAM, STRUCTURED = "list", "program", "structured"
 LIST_SUFFIXES = (".lis", ".lst")
@@ -18,7 +20,24 @@ DEFAULT_INCLUDE = tuple(f"*{s}" for s in (*LIST_SUFFIXES, *PROGRAM_SUFFIXES))  #
 CONFIG_NAMES = ("zero.toml", ".zero.toml", "pyproject.toml")  # nearest wins; in this order within a folder
 # A report (`zero lint -o FILE`) never replaces one of these: lists, programs, list forms, configuration.
 NOT_A_REPORT = (*LIST_SUFFIXES, *PROGRAM_SUFFIXES, *(s for s in STRUCTURED_SUFFIXES if s != ".json"))  # JSON: reports
-EXTENSION = {"lis": ".lis", "yaml": ".yaml", "toml": ".toml", "json": ".json"}
+EXTENSION = {"lis": ".lis", "yaml": ".yaml", "toml": ".toml", "json": ".json", "xml": ".xml"}
+
+# XML: a list by its root element, never by the suffix alone (a TwinCAT project holds many XML files).
+XML_SUFFIX = ".xml"
+XML_LIST, TWINCAT = "xml", "twincat"
+# The root element of each list kind in the kernel's XML lists.
+XML_ROOTS: dict[str, str] = {
+    "StartUp": "STUP", "AX_MDS": "AXIS", "Default_AX_MDS": "AXIS", "SDA_MDS": "CHAN",
+    "Default_SDA_MDS": "CHAN", "ZeroOffset": "ZERO", "ToolData": "TOOL", "ClampPosOffset": "CLMP",
+    "ManualMode": "MANU", "ExtVar": "EXTV", "AX_COMP": "COMP", "VolComp": "VOLC",
+    "RTConfiguration": "RTCF",
+}
+TWINCAT_ROOT = "TreeItem"  # a TwinCAT tree item export (System Manager, Automation Interface)
+# The elements of a TwinCAT export that hold a list in CDATA, and the list kind each holds.
+EMBEDDED: dict[str, str] = {"AchsMds": "AXIS", "SdaMds": "CHAN", "NullpD": "ZERO", "WerkzD": "TOOL",
+                            "PzvD": "CLMP", "VeD": "EXTV", "Startup": "STUP"}
+_BOM = b"\xef\xbb\xbf"
+_LEAD_RE = re.compile(rb"\s*(?:<\?[^>]*\?>\s*|<!--.*?-->\s*)*<([A-Za-z_][^\s/>]*)", re.S)
 
 
 def _suffix(name: str | os.PathLike[str]) -> str:
@@ -47,4 +66,30 @@ def is_program(name: str | os.PathLike[str]) -> bool:
 def format_of(name: str | os.PathLike[str]) -> str | None:
     """The format a file name implies for `zero convert` (``None`` when the suffix says nothing)."""
     suffix = _suffix(name)
+    if suffix == XML_SUFFIX:
+        return "xml"
     return "lis" if suffix in LIST_SUFFIXES else STRUCTURED_SUFFIXES.get(suffix)
+
+
+def is_xml(data: bytes) -> bool:
+    """Does the content start like XML (a list never starts with `<`)?"""
+    head = data[3:64] if data.startswith(_BOM) else data[:64]
+    return head.lstrip()[:1] == b"<"
+
+
+def root_of(data: bytes) -> str | None:
+    """The name of the root element, from the first 64 KiB, without parsing; ``None`` when there is none."""
+    head = data[3:65536] if data.startswith(_BOM) else data[:65536]
+    m = _LEAD_RE.match(head)
+    return m.group(1).decode("ascii", "replace") if m else None
+
+
+def xml_form(data: bytes) -> str | None:
+    """``"xml"`` for a kernel XML list, ``"twincat"`` for a TwinCAT export (its root element), else
+    ``None``: XML of any other kind, or no XML."""
+    if not is_xml(data):
+        return None
+    root = root_of(data)
+    if root in XML_ROOTS:
+        return XML_LIST
+    return TWINCAT if root == TWINCAT_ROOT else None

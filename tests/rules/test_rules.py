@@ -15,6 +15,15 @@ from zero.rules.registry import SUGGESTIONS
 RULE_DIRS = sorted(p for p in (FIXTURES / "rules").iterdir() if p.is_dir())
 
 
+def _fixture(rule_dir: Path, name: str) -> Path:
+    """``fail.lis`` / ``pass.lis``; the rules on XML elements have ``.xml`` fixtures (the same list
+    model, read from XML), the U rules update files (``fail-Update.xml``: known by the name)."""
+    for candidate in (f"{name}.xml", f"{name}-Update.xml"):
+        if (rule_dir / candidate).exists():
+            return rule_dir / candidate
+    return rule_dir / f"{name}.lis"
+
+
 def test_every_rule_has_fixtures() -> None:
     assert RULE_DIRS, "no rule fixtures found"
     # X rules need a whole machine: fixtures/machine (failing) and fixtures/machine-clean
@@ -27,7 +36,7 @@ def test_every_rule_has_fixtures() -> None:
 @pytest.mark.parametrize("rule_dir", RULE_DIRS, ids=lambda p: p.name)
 def test_failing_fixture(rule_dir: Path, request: pytest.FixtureRequest, registry: Registry) -> None:
     # selected by its code, so that opt-in rules (S012) run as well
-    result = lint_file(rule_dir / "fail.lis", registry, LintOptions(extend_select=(rule_dir.name,)))
+    result = lint_file(_fixture(rule_dir, "fail"), registry, LintOptions(extend_select=(rule_dir.name,)))
     actual = findings(result)
     expected = golden(rule_dir / "fail.expected.json", actual,
                       request.config.getoption("--update-golden"))
@@ -37,14 +46,14 @@ def test_failing_fixture(rule_dir: Path, request: pytest.FixtureRequest, registr
 
 @pytest.mark.parametrize("rule_dir", RULE_DIRS, ids=lambda p: p.name)
 def test_passing_fixture(rule_dir: Path, registry: Registry) -> None:
-    result = lint_file(rule_dir / "pass.lis", registry, LintOptions(extend_select=(rule_dir.name,)))
+    result = lint_file(_fixture(rule_dir, "pass"), registry, LintOptions(extend_select=(rule_dir.name,)))
     assert result.diagnostics == []
 
 
 @pytest.mark.parametrize("code", sorted(RULES))
 def test_rule_metadata(code: str) -> None:
     r = RULES[code]
-    assert r.code == code and code[0] in "SRMZXNF" and len(code) == 4
+    assert r.code == code and code[0] in "SRMUZXNF" and len(code) == 4
     assert r.summary and "Why it matters on the machine" in r.explanation
     assert "Fix" in r.explanation
 

@@ -161,6 +161,10 @@ def read_value(spec: ParamSpec, entry: Entry) -> Value:
             text = text.rstrip(" ")
         else:
             text = raw
+        if spec.symbols and kind in (ValueKind.INT, ValueKind.HEX) and all(v is None for _, v in spec.symbols):
+            # A number for names whose numbers the catalogue does not give (the vendor writes
+            # `0x00000000` for "none of them"): the catalogue is silent, nothing to say.
+            return Value(number=parse_int(raw), text=text)
         if spec.symbols and kind is not ValueKind.QUOTED:
             parts = [p.strip() for p in text.split("|")] if kind is ValueKind.FLAGS else [text]
             got = _symbols(spec, parts, False)
@@ -168,7 +172,7 @@ def read_value(spec: ParamSpec, entry: Entry) -> Value:
                 got.text = text
                 return got
             return Value(number=got, text=text)
-        if spec.max_len is not None and len(text) > spec.max_len:
+        if spec.max_len and len(text) > spec.max_len:  # a length of 0: the catalogue gives none
             return Value(text=text, problem="length", detail=str(len(text)))
         return Value(text=text)
 

@@ -10,7 +10,7 @@ from pathlib import Path
 
 from zero.errors import ZeroError
 from zero.files import check_regular
-from zero.forms import LIST_SUFFIXES, PROGRAM_SUFFIXES
+from zero.forms import LIST_SUFFIXES, PROGRAM_SUFFIXES, TWINCAT_ROOT, XML_ROOTS, root_of
 
 
 def git_visible(directory: Path) -> set[str] | None:
@@ -39,6 +39,22 @@ def git_visible(directory: Path) -> set[str] | None:
     return {os.path.normpath(os.fsdecode(name)) for name in proc.stdout.split(b"\0") if name}
 
 
+def holds_lists(path: Path) -> bool:
+    """Does a walked file hold parameter lists? Always, but for XML (picked up only where ``include``
+    names ``*.xml``), which is a list only by its content: a kernel XML list or a TwinCAT export. An
+    XML file that cannot be read is kept, so that the lint reports it."""
+    if path.suffix.lower() != ".xml":
+        return True
+    try:
+        check_regular(path)
+        with open(path, "rb") as f:
+            head = f.read(65536)
+    except (OSError, ZeroError):
+        return True
+    root = root_of(head)
+    return root in XML_ROOTS or root == TWINCAT_ROOT
+
+
 def collect_files(paths: Iterable[str | Path], include: Callable[[Path], bool] | None = None,
                   exclude: Callable[[Path], bool] | None = None,
                   respect_gitignore: bool = True) -> list[Path]:
@@ -65,7 +81,7 @@ def collect_files(paths: Iterable[str | Path], include: Callable[[Path], bool] |
                         continue
                     path = Path(root) / f
                     if (include(path) if include else f.lower().endswith(LIST_SUFFIXES + PROGRAM_SUFFIXES)) and \
-                            not (exclude and exclude(path)):
+                            not (exclude and exclude(path)) and holds_lists(path):
                         found.append(path)
             out.extend(sorted(found, key=str))
         elif os.path.lexists(p):

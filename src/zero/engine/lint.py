@@ -222,14 +222,66 @@ def lint_program(data: bytes, registry: Registry, path: str = "-", options: Lint
 
 
 def lint_data(data: bytes, path: str, registry: Registry, options: LintOptions | None = None) -> LintResult:
-    """Lint bytes as the file ``path`` names: an NC program, YAML/TOML/JSON, else a list."""
+    """Lint bytes as the file ``path`` names: an NC program, YAML/TOML/JSON, else a list (an XML list
+    or a TwinCAT export when the content is XML)."""
     suffix = Path(path).suffix.lower()
     if suffix in PROGRAM_SUFFIXES:
         return lint_program(data, registry, path, options)
     fmt = STRUCTURED_SUFFIXES.get(suffix)
-    if fmt is None:
-        return lint_bytes(data, registry, path, options)
-    return lint_structured(data, fmt, registry, path, options)
+    if fmt is not None:
+        return lint_structured(data, fmt, registry, path, options)
+    if data[:64].lstrip(b"\xef\xbb\xbf \t\r\n")[:1] == b"<":
+        return lint_xml(data, path, registry, options)
+    return lint_bytes(data, registry, path, options)
+
+
+def lint_xml(data: bytes, path: str, registry: Registry, options: LintOptions | None = None) -> LintResult:
+    """An XML list, or every list a TwinCAT export holds, with findings placed in the XML file. XML
+    zero will not read (not well-formed, a DTD, entities) is one located S014 finding."""
+    from zero.markup.documents import (  # start-up: only for XML
+        TWINCAT_ROOT,
+        embedded_documents,
+        relocate,
+        shown_document,
+        xml_document,
+    )
+    from zero.markup.safe import scan  # start-up: only for XML
+
+    opts = options or LintOptions()
+    try:
+        sc = scan(data, path)
+        if sc.root == TWINCAT_ROOT:
+            _, lists = embedded_documents(data, path, sc)
+            pairs: list[tuple[Document, str | None]] = [(item.doc, item.kind) for item in lists]
+        else:
+            doc = xml_document(data, path, registry, sc)
+            pairs = [(doc, doc.origin.kind if doc.origin is not None else None)]
+    except ZeroError as exc:
+        return refused(path, data, exc, opts)
+    found: list[Diagnostic] = []
+    kind: str | None = None
+    for doc, own in pairs:
+        result = lint_document(doc, registry, opts if opts.kind or not own else replace(opts, kind=own))
+        kind = kind or result.kind
+        assert doc.origin is not None
+        found.extend(relocate(d, doc.origin) for d in result.diagnostics)
+    found.sort(key=lambda d: d.sort_key())
+    shown = shown_document(path, pairs[0][0].origin) if pairs and pairs[0][0].origin else _shown(path, data)
+    return LintResult(path, shown, kind if len(pairs) == 1 else None, found)
+
+
+def _shown(path: str, data: bytes) -> Document:
+    lines = data.decode("utf-8", "replace").lstrip("\ufeff").split("\n")
+    return Document(path, "utf-8", [x.rstrip("\r") for x in lines], ["\n"] * len(lines), [])
+
+
+def refused(path: str, data: bytes, error: ZeroError, options: LintOptions | None = None) -> LintResult:
+    """The result for an XML file zero will not read: one S014 finding where the reader stopped."""
+    line, col = error.line or 1, error.column or 1
+    finding = Diagnostic("S014", RULES["S014"].severity, f"{error.message}: not checked",
+                         Span(line, col, line, col + 1), path)
+    found = funnel(path, [finding], selected_rules(options or LintOptions()))
+    return LintResult(path, _shown(path, data), None, found)
 
 
 def unreadable(path: str, error: ZeroError, options: LintOptions | None = None) -> LintResult:
@@ -327,7 +379,9 @@ __all__ = [
     "lint_program",
     "lint_structured",
     "lint_tree",
+    "lint_xml",
     "machine_findings",
+    "refused",
     "selected_rules",
     "tallied",
     "unreadable",

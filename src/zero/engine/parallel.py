@@ -23,7 +23,7 @@ def _slim(result: LintResult) -> LintResult:
     """A result without the parsed items, keeping only the lines findings show (cheap to pickle)."""
     doc = result.document
     shown = {d.span.line: doc.lines[d.span.line - 1] for d in result.diagnostics if doc.has_line(d.span.line)}
-    slim = Excerpt(doc.path, doc.encoding, [], [], [], [], doc.bom, doc.end_line, shown)
+    slim = Excerpt(doc.path, doc.encoding, [], [], [], [], doc.bom, doc.end_line, shown=shown)
     return LintResult(result.path, slim, result.kind, result.diagnostics)
 
 

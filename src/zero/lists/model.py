@@ -188,6 +188,39 @@ class Problem:
 
 
 @record(eq=False)
+class Origin:
+    """Where the lines of a list came from, when the file the user has open is not the list text
+    itself: an XML list (one list line for one XML line) or a list inside a TwinCAT export.
+
+    ``shift`` maps a list line to ``(file line, column shift, entry)``; ``entry`` is ``None`` for a
+    line copied with a shift (a comment line holding an XML line, a line of an embedded list) and
+    for a parameter element ``(value start in the list line, value start and end in the file line,
+    1-based column of the element's `<`, length of its name)``.
+    """
+
+    form: str  # "xml", "twincat"
+    source: list[str]  # the file's lines, as shown in a report
+    shift: dict[int, tuple[int, int, tuple[int, int, int, int, int] | None]]
+    final_newline: bool = True
+    kind: str | None = None  # the list kind the form says (an XML list's root, a TwinCAT element)
+    update: bool = False  # an update or revert file: a partial list applied to a running controller
+
+    def locate(self, line: int, column: int, end: bool = False) -> tuple[int, int]:
+        """A 1-based (line, column) of the list text as (line, column) in the file."""
+        got = self.shift.get(line)
+        if got is None:  # the `Ende` line an XML list gets: its last line
+            last = max(len(self.source), 1)
+            return last, max(len(self.source[-1]) if self.source else 0, 0) + 1
+        target, shift, entry = got
+        if entry is None:
+            return target, max(column + shift, 1)
+        lis_value, vstart, vend, tag_col, name_len = entry
+        if column - 1 >= lis_value:
+            return target, vstart + 1 + min(column - 1 - lis_value, vend - vstart)
+        return target, tag_col + 1 + (name_len if end else 0)
+
+
+@record(eq=False)
 class Document:
     """A whole list file as read: its lines, items, encoding and line endings."""
 
@@ -199,6 +232,7 @@ class Document:
     problems: list[Problem] = field(default_factory=list)
     bom: bool = False
     end_line: int | None = None
+    origin: Origin | None = None  # where the lines came from, when not from a list file
 
     @property
     def entries(self) -> list[Entry]:
