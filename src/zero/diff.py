@@ -19,7 +19,8 @@ from zero.catalog.registry import NO_DEFAULT, ParamSpec, Registry
 from zero.catalog.values import canonical_key, default_number, parse_int, read_value
 from zero.errors import ZeroError
 from zero.lists.model import Comment, Entry, Key, ValueKind, parse_key
-from zero.lists.tokenizer import tokenize, tokenize_text
+from zero.lists.tokenizer import tokenize_text
+from zero.markup.documents import read_document
 from zero.records import field, record
 from zero.structured.formats import read_tree
 from zero.structured.tree import to_list_text
@@ -35,6 +36,12 @@ class Side:
     kind: str | None
     entries: dict[str, Entry]
     comments: dict[str, tuple[str, ...]] = field(default_factory=dict)  # key → comments near it
+    update: bool = False  # an update or revert file: what it changes on a running controller
+
+    def applied_to(self, target: Side) -> Side:
+        """``target`` as it is once this update is applied: its entries, with this file's over them."""
+        return Side(self.path, target.kind or self.kind, {**target.entries, **self.entries},
+                    {**target.comments, **self.comments})
 
 
 @record
@@ -62,8 +69,11 @@ def read_side(data: bytes, fmt: str, path: str, registry: Registry, kind: str | 
               encoding: str | None = None) -> Side:
     """Read list/YAML/TOML/JSON bytes as the controller would see them; a list in the code page
     ``encoding`` when its configuration declares one."""
-    if fmt == "lis":
-        doc = tokenize(data, path, encoding)
+    update = False
+    if fmt in ("lis", "xml"):
+        doc = read_document(data, path, registry, encoding)  # an ASCII or an XML list (by its content)
+        if doc.origin is not None:
+            kind, update = kind or doc.origin.kind, doc.origin.update
         if any(p.kind == "binary" for p in doc.problems):
             raise ZeroError("not a text file: not a parameter list (zero lint says so as S013)", path)
     else:
@@ -85,7 +95,7 @@ def read_side(data: bytes, fmt: str, path: str, registry: Registry, kind: str | 
             entries[key] = item  # the later value wins, as on the controller
             comments[key] = (*pending, item.comment.strip() if item.comment else "")
             pending = []
-    return Side(path, kind, entries, comments)
+    return Side(path, kind, entries, comments, update)
 
 
 # ----------------------------------------------------------------- values

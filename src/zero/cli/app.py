@@ -25,7 +25,7 @@ from zero.cli.run import REGISTRIES, echo, read_stdin, render_lint
 from zero.cli.run import lint as run_lint_command
 from zero.diff import SAME, DiffOptions, show_lines
 from zero.engine.commands import parse_kind, run_format
-from zero.engine.convert import check_convert_options, convert_inputs, write_outputs
+from zero.engine.convert import check_convert_options, convert_inputs, write_into, write_outputs
 from zero.engine.project import Project
 from zero.engine.queries import find_param, load_side, run_diff, run_effective, run_limits
 from zero.errors import ZeroError
@@ -56,6 +56,7 @@ class Format(StrEnum):
     yaml = "yaml"
     toml = "toml"
     json = "json"
+    xml = "xml"
 
 
 class _State:
@@ -183,27 +184,39 @@ def convert(
         help="Lint the list a YAML/TOML/JSON input makes and report the findings.")] = True,
     strict: Annotated[bool, typer.Option(
         help="Refuse (exit 1, nothing written) when that lint finds an error.")] = False,
+    item: Annotated[str | None, typer.Option(
+        "--item", help="The list of a TwinCAT export to convert (AchsMds, SdaMds, NullpD, WerkzD, PzvD, VeD, "
+        "Startup); with --out-dir and without --item, every list it holds.", metavar="ELEMENT")] = None,
+    into: Annotated[Path | None, typer.Option(
+        "--into", help="Put the list back into this TwinCAT export (its --item element's CDATA; every other "
+        "byte kept).", metavar="EXPORT")] = None,
     param_desc: ParamDesc = None,
 ) -> None:
-    """Convert lists to YAML/TOML/JSON and back, keeping values, order, comments and layout."""
+    """Convert lists to XML/YAML/TOML/JSON and back, keeping values, order, comments and layout."""
 
     def body() -> int:
         forced = parse_kind(kind)
+        if into is not None:
+            if len(inputs) != 1 or output is not None or out_dir is not None or to is not None:
+                raise ZeroError("--into puts one list into an export: give one input and no -o/--out-dir/--to")
+            write_into(inputs[0], into, item, _registry, read_stdin,
+                       src=from_.value if from_ else None, kind=forced)
+            return exits.OK
         check_convert_options(inputs, output, out_dir)
         items = convert_inputs(inputs, _registry, read_stdin, src=from_.value if from_ else None,
                                to=to.value if to else None, output=output, kind=forced, check=check,
-                               strict=strict)
-        for item in items:
-            if item.error is not None and item.findings is None:
-                sys.stderr.write(f"zero: {item.error}\n")
+                               strict=strict, element=item, every_list=out_dir is not None)
+        for done in items:
+            if done.error is not None and done.findings is None:
+                sys.stderr.write(f"zero: {done.error}\n")
                 continue
-            for note in item.notes:
-                sys.stderr.write(f"zero: note: {item.name}: {note}\n")
-            if item.findings is not None:
-                render_text([item.findings], sys.stderr, summary=False)
-            if item.error is not None:
-                sys.stderr.write(f"zero: {item.error}\n")
-        if any(item.failed for item in items):
+            for note in done.notes:
+                sys.stderr.write(f"zero: note: {done.name}: {note}\n")
+            if done.findings is not None:
+                render_text([done.findings], sys.stderr, summary=False)
+            if done.error is not None:
+                sys.stderr.write(f"zero: {done.error}\n")
+        if any(done.failed for done in items):
             return exits.FINDINGS
         data = write_outputs(items, output, out_dir, force)
         if data is not None:

@@ -223,8 +223,10 @@ def _roots(value: Any, path: Path, root: Path,
         raise fail("roots", 'expected a table of "controller folder" = "project folder"', ("machine",))
     out = []
     for k, v in value.items():
-        if not (k.startswith(("/", "\\")) or (len(k) >= 2 and k[0].isalpha() and k[1] == ":")):
-            raise fail("roots", f"{k!r} is no absolute path of the controller (`C:/…` or `/…`)", ("machine",))
+        if not (k.startswith(("/", "\\")) or (len(k) >= 2 and k[0].isalpha() and k[1] == ":")
+                or k.replace("\\", "/").split("/", 1)[0].lower() == "cnckernelrootdir"):
+            raise fail("roots", f"{k!r} is no absolute path of the controller (`C:/…`, `/…` or `CncKernelRootDir/…`)",
+                       ("machine",))
         if not within(path.parent / v, root):
             raise fail("roots", f"{v!r} lies outside the project {root}", ("machine",))
         out.append((k, path.parent / v))

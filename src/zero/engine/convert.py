@@ -15,14 +15,14 @@ from __future__ import annotations
 from collections.abc import Callable, Sequence
 from pathlib import Path
 
-from zero.catalog.registry import Registry
+from zero.catalog.registry import Registry, kind_from_name
 from zero.diagnostics import Severity
 from zero.engine.formatting import undeclared_code_page
 from zero.engine.lint import LintResult, lint_tree
 from zero.engine.project import Project
 from zero.errors import ZeroError
 from zero.files import read_file, write_atomic
-from zero.forms import EXTENSION, format_of
+from zero.forms import EXTENSION, TWINCAT_ROOT, XML_ROOTS, format_of
 from zero.lists.encoding import encode_text
 from zero.lists.tokenizer import tokenize
 from zero.records import field, record, replace
@@ -42,23 +42,68 @@ class Conversion:
     lint: LintResult | None = None  # findings on the list a structured input makes
 
 
+def xml_source(data: bytes, path: str, registry: Registry, item: str | None = None) -> tuple[bytes, str, str | None]:
+    """An XML input as the bytes of the list it is (the XML lines kept as comments: see
+    :mod:`zero.markup.lists`), its codec and its list kind; a TwinCAT export as the list of its
+    element ``item`` (the one list it holds when ``item`` is not given)."""
+    from zero.markup.documents import embedded_documents, list_text  # start-up: only for XML
+    from zero.markup.lists import to_list  # start-up: as above
+    from zero.markup.safe import BOM, scan  # start-up: as above
+
+    sc = scan(data, path)
+    if sc.root == TWINCAT_ROOT:
+        _, lists = embedded_documents(data, path, sc)
+        held = [x.element for x in lists]
+        hits = [x for x in lists if item is None or x.element.lower() == item.lower()]
+        if len(hits) != 1:
+            raise ZeroError(f"the export holds the lists {', '.join(held) or 'none'}: name one with --item "
+                            "(or give --out-dir to extract every one)" if item is None or not hits else
+                            f"the export holds {len(hits)} `<{item}>` lists", path)
+        return list_text(hits[0]), hits[0].doc.encoding, hits[0].kind
+    if item is not None:
+        raise ZeroError("--item names a list inside a TwinCAT export; this is an XML list", path)
+    if sc.root not in XML_ROOTS:
+        raise ZeroError(f"the root element `<{sc.root}>` is not that of a parameter list", path, 1, 1)
+    text, _, kind = to_list(data, registry, path, sc)
+    return (BOM if sc.bom else b"") + text.encode(sc.encoding, "surrogateescape"), sc.encoding, kind
+
+
+def xml_bytes(tree: Tree, registry: Registry, path: str) -> bytes:
+    """A tree as the kernel's XML list (byte for byte the XML it was read from, where it was one)."""
+    from zero.markup.lists import to_xml  # start-up: only for XML
+    from zero.markup.safe import BOM  # start-up: as above
+
+    doc = tokenize(list_bytes(tree), path, tree.meta.get("encoding") if isinstance(tree.meta.get("encoding"), str)
+                   else None)
+    kind = tree.meta.get("kind") if isinstance(tree.meta.get("kind"), str) else None
+    text = to_xml(doc, registry, kind_from_name(kind) if kind else None)
+    return (BOM if doc.bom else b"") + text.encode(doc.encoding, "surrogateescape")
+
+
 def convert(data: bytes, src: str, dst: str, registry: Registry, path: str = "-", kind: str | None = None,
-            check: bool = True, encoding: str | None = None) -> Conversion:
+            check: bool = True, encoding: str | None = None, item: str | None = None) -> Conversion:
     """Convert bytes from one format to another.
 
     A structured input becomes a list only after every entry line has been
     verified to read back as written; ``check`` also lints that list. ``encoding``: the code
-    page the configuration declares for a list input (``None``: detected).
+    page the configuration declares for a list input (``None``: detected). An XML input is read as
+    the list it is (``item``: which list of a TwinCAT export); ``xml`` writes the kernel's XML list.
     """
+    if src == "xml":
+        data, encoding, own = xml_source(data, path, registry, item)
+        kind, src = kind or own, "lis"
     if src == "lis":
         doc = tokenize(data, path, encoding)
         undeclared_code_page(doc, "YAML, TOML and JSON text cannot carry it")
         tree = from_document(doc, registry, kind)
     else:
         tree = read_tree(data, src, registry, path, kind)
-    output = write_tree(tree, dst) if dst != "lis" else list_bytes(tree)
+    if dst == "xml":
+        output = xml_bytes(tree, registry, path)
+    else:
+        output = write_tree(tree, dst) if dst != "lis" else list_bytes(tree)
     result = None
-    if check and src != "lis" and dst == "lis":
+    if check and src != "lis" and dst in ("lis", "xml"):
         source = data.decode("utf-8", "replace").lstrip("\ufeff")
         # The findings are the same in any encoding: lint_tree encodes the list only to read it back.
         readable = tree if tree.meta.get("encoding", "utf-8") in _TREE_WRITES else \
@@ -103,7 +148,7 @@ def source_format(given: str | None, path: str) -> str:
         return "lis"
     fmt = format_of(path)
     if fmt is None:
-        raise ZeroError("cannot tell the format from the name; give --from (lis, yaml, toml or json)", path)
+        raise ZeroError("cannot tell the format from the name; give --from (lis, xml, yaml, toml or json)", path)
     return fmt
 
 
@@ -117,6 +162,7 @@ class ConvertItem:
     notes: list[str] = field(default_factory=list)
     findings: LintResult | None = None  # warnings and errors of the list a structured input makes
     error: str | None = None  # not converted: why
+    element: str | None = None  # the list of a TwinCAT export this is (its output: name.Element.fmt)
 
     @property
     def failed(self) -> bool:
@@ -137,7 +183,8 @@ def convert_inputs(inputs: Sequence[str], registry: Registry | Callable[[str], R
                    read_stdin: Callable[[], bytes], *,
                    src: str | None = None, to: str | None = None, output: str | None = None,
                    kind: str | None = None, check: bool = True, strict: bool = False,
-                   project: Project | None = None) -> list[ConvertItem]:
+                   project: Project | None = None, element: str | None = None,
+                   every_list: bool = False) -> list[ConvertItem]:
     """Read, convert and check every input; nothing is written. A file that cannot be read
     raises :class:`ZeroError`; an input that cannot be converted is an item with ``error``.
     ``registry`` may give each input its own catalogue (its configuration's ``param-desc``);
@@ -151,9 +198,18 @@ def convert_inputs(inputs: Sequence[str], registry: Registry | Callable[[str], R
         src_fmt = source_format(src, name)
         item = ConvertItem(name, target_format(to, output, src_fmt))
         data = read_stdin() if name == "-" else read_file(name)
+        if src_fmt == "xml" and element is None and every_list:
+            embedded = _elements(data, name)
+            if len(embedded) > 1:  # a TwinCAT export: every list it holds, one output each
+                for part in embedded:
+                    items.extend(convert_inputs([name], catalogue, read_stdin, src=src, to=to, output=output,
+                                                kind=kind, check=check, strict=strict, project=project,
+                                                element=part))
+                continue
+        item.element = element
         try:
             encoding = project.encoding(Path(name)) if name != "-" else None
-            result = convert(data, src_fmt, item.fmt, catalogue, name, kind, check, encoding)
+            result = convert(data, src_fmt, item.fmt, catalogue, name, kind, check, encoding, element)
         except ZeroError as exc:
             item.error = str(exc)
             items.append(item)
@@ -172,13 +228,55 @@ def convert_inputs(inputs: Sequence[str], registry: Registry | Callable[[str], R
     return items
 
 
+def write_into(name: str, export: Path, element: str | None, registry: Registry | Callable[[str], Registry],
+               read_stdin: Callable[[], bytes], *, src: str | None = None, kind: str | None = None) -> bytes:
+    """``zero convert LIST --into EXPORT [--item ELEMENT]``: the list (in any form) put back into the
+    CDATA section of ``element`` in a TwinCAT export, written atomically; every other byte of the
+    export kept. The element may be left out when the export holds one list. Returns the new bytes."""
+    from zero.markup.documents import put_back  # start-up: only for XML
+
+    catalogue = registry(name) if callable(registry) else registry
+    data = read_stdin() if name == "-" else read_file(name)
+    src_fmt = source_format(src, name)
+    text = data if src_fmt == "lis" else convert(data, src_fmt, "lis", catalogue, name, kind, False).output
+    target = read_file(export)
+    held = _elements(target, str(export))
+    if element is None:
+        if len(held) != 1:
+            raise ZeroError(f"the export holds the lists {', '.join(held) or 'none'}: name one with --item",
+                            str(export))
+        element = held[0]
+    named = next((h for h in held if h.lower() == element.lower()), element)
+    codec = "utf-8"
+    try:
+        from zero.markup.safe import encoding_of  # start-up: as above
+
+        codec = encoding_of(target)[0]
+    except ZeroError:
+        pass
+    new = put_back(target, str(export), named, text.decode(codec, "surrogateescape"))
+    write_atomic(export, new, force=True, inputs=(Path(name),) if name != "-" else ())
+    return new
+
+
+def _elements(data: bytes, name: str) -> list[str]:
+    """The elements holding lists in a TwinCAT export (none for an XML list or unreadable XML)."""
+    from zero.markup.documents import embedded_documents  # start-up: only for XML
+
+    try:
+        return [x.element for x in embedded_documents(data, name)[1]]
+    except ZeroError:
+        return []
+
+
 def write_outputs(items: Sequence[ConvertItem], output: str | None, out_dir: Path | None,
                   force: bool) -> bytes | None:
     """Write converted items to ``out_dir`` or ``output``; the bytes for standard output otherwise."""
     sources = tuple(Path(i.name) for i in items if i.name != "-")
     done = [(i, i.output) for i in items if i.output is not None]
     if out_dir is not None:
-        targets = [output_path(Path(i.name), i.fmt, out_dir) for i, _ in done]
+        targets = [output_path(Path(i.name).with_name(f"{Path(i.name).stem}.{i.element}.xml") if i.element
+                               else Path(i.name), i.fmt, out_dir) for i, _ in done]
         if len(set(targets)) != len(targets):
             raise ZeroError("two inputs would write the same output name; convert them separately")
         out_dir.mkdir(parents=True, exist_ok=True)

@@ -12,10 +12,12 @@ import os
 
 from zero.catalog.registry import Registry
 from zero.diagnostics import Diagnostic, Edit
-from zero.engine.lint import LintOptions, LintResult, lint_document
+from zero.engine.lint import LintOptions, LintResult, lint_document, lint_xml
+from zero.errors import ZeroError
+from zero.forms import is_xml
 from zero.lists.encoding import document_bytes
 from zero.lists.model import Document
-from zero.lists.tokenizer import tokenize
+from zero.lists.tokenizer import tokenize, tokenize_text
 from zero.records import record
 
 MAX_PASSES = 8
@@ -60,6 +62,8 @@ def fix_bytes(data: bytes, path: str, registry: Registry,
               options: LintOptions | None = None, unsafe: bool = False) -> FixResult:
     """Apply fixes until none is left (at most :data:`MAX_PASSES` rounds); the list is read in the
     code page its options declare (``options.encoding``) and written back in it."""
+    if is_xml(data):
+        return _fix_xml(data, path, registry, options, unsafe)
     current = data
     total = 0
     encoding = options.encoding if options is not None else None
@@ -76,6 +80,34 @@ def fix_bytes(data: bytes, path: str, registry: Registry,
         current = document_bytes(doc, lines)
         doc = tokenize(current, path, encoding)
         result = lint_document(doc, registry, options)
+    return FixResult(current, total, result)
+
+
+def _fix_xml(data: bytes, path: str, registry: Registry, options: LintOptions | None,
+             unsafe: bool) -> FixResult:
+    """Fixes in an XML list (only edits inside a ``Value`` attribute, escaped) or in the lists of a
+    TwinCAT export (inside their CDATA sections): every other byte of the file kept."""
+    from zero.markup.safe import encoding_of  # start-up: only for XML
+
+    current = data
+    total = 0
+    result = lint_xml(current, path, registry, options)
+    for _ in range(MAX_PASSES):
+        edits = _fixable(result.diagnostics, unsafe)
+        if not edits:
+            break
+        try:
+            codec, bom = encoding_of(current)
+        except ZeroError:
+            break
+        text = (current[3:] if bom else current).decode(codec, "surrogateescape")
+        doc = tokenize_text(text, path, codec, bom)  # the file's lines, endings and encoding, to edit
+        lines, applied = apply_edits(doc, edits)
+        if not applied:
+            break
+        total += applied
+        current = document_bytes(doc, lines)
+        result = lint_xml(current, path, registry, options)
     return FixResult(current, total, result)
 
 

@@ -9,6 +9,7 @@ from __future__ import annotations
 
 from zero.catalog.registry import Registry
 from zero.errors import ZeroError
+from zero.forms import TWINCAT_ROOT, XML_ROOTS, is_xml
 from zero.lists.encoding import encode_text, foreign_control
 from zero.lists.model import Document
 from zero.lists.tokenizer import tokenize
@@ -37,7 +38,11 @@ def format_bytes(data: bytes, path: str, registry: Registry, value_column: int |
     trailing whitespace; order, values, comments, encoding and line endings kept. Earlier lines
     of a key set twice stay as written. :class:`~zero.errors.ZeroError` for lines it cannot
     read (the registry only tells which values are numbers). ``encoding``: the code page the
-    configuration declares for the list (``None``: detected)."""
+    configuration declares for the list (``None``: detected). An XML list keeps its layout (the
+    vendor's XML is its own canonical form: nothing changes); the lists of a TwinCAT export are
+    formatted inside their CDATA sections, every byte outside them kept."""
+    if is_xml(data):
+        return _format_xml(data, path, registry, value_column)
     doc = tokenize(data, path, encoding)
     undeclared_code_page(doc, "zero format cannot lay out a line that holds it")
     tree = from_document(doc, registry)
@@ -65,3 +70,20 @@ def format_bytes(data: bytes, path: str, registry: Registry, value_column: int |
         meta.pop("comment_column", None)
     text = to_list_text(tree).text
     return encode_text(text, doc.encoding, doc.bom, path)
+
+
+def _format_xml(data: bytes, path: str, registry: Registry, value_column: int | None) -> bytes:
+    from zero.markup.documents import embedded_documents, list_text, put_back  # start-up: only for XML
+    from zero.markup.safe import scan  # start-up: as above
+
+    sc = scan(data, path)
+    if sc.root != TWINCAT_ROOT:
+        if sc.root not in XML_ROOTS:
+            raise ZeroError(f"the root element `<{sc.root}>` is not that of a parameter list", path, 1, 1)
+        return data
+    _, lists = embedded_documents(data, path, sc)
+    out = data
+    for item in lists:
+        formatted = format_bytes(list_text(item), path, registry, value_column, item.doc.encoding)
+        out = put_back(out, path, item.element, formatted.decode(item.doc.encoding, "surrogateescape"))
+    return out

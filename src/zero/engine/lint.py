@@ -134,7 +134,13 @@ def lint_document(doc: Document, registry: Registry, options: LintOptions | None
                   extra: Sequence[Diagnostic] = ()) -> LintResult:
     """One list's findings; ``extra`` are findings about it from its machine (suppressible in it)."""
     options = options or LintOptions()
-    ctx, found = check_document(doc, registry, options.kind, selected_rules(options), extra)
+    kind = options.kind or (doc.origin.kind if doc.origin is not None else None)
+    ctx, found = check_document(doc, registry, kind, selected_rules(options), extra)
+    if doc.origin is not None:  # read from XML: the findings where the user has the file open
+        from zero.markup.documents import relocate, shown_document  # start-up: only for XML
+
+        placed = sorted((relocate(d, doc.origin) for d in found), key=lambda d: d.sort_key())
+        return LintResult(doc.path, shown_document(doc.path, doc.origin, doc.encoding), ctx.kind, placed)
     return LintResult(doc.path, doc, ctx.kind, found)
 
 
@@ -241,7 +247,6 @@ def lint_xml(data: bytes, path: str, registry: Registry, options: LintOptions | 
     from zero.markup.documents import (  # start-up: only for XML
         TWINCAT_ROOT,
         embedded_documents,
-        relocate,
         shown_document,
         xml_document,
     )
@@ -260,13 +265,13 @@ def lint_xml(data: bytes, path: str, registry: Registry, options: LintOptions | 
         return refused(path, data, exc, opts)
     found: list[Diagnostic] = []
     kind: str | None = None
-    for doc, own in pairs:
-        result = lint_document(doc, registry, opts if opts.kind or not own else replace(opts, kind=own))
+    for doc, _ in pairs:
+        result = lint_document(doc, registry, opts)  # placed in the XML file by its origin
         kind = kind or result.kind
-        assert doc.origin is not None
-        found.extend(relocate(d, doc.origin) for d in result.diagnostics)
+        found.extend(result.diagnostics)
     found.sort(key=lambda d: d.sort_key())
-    shown = shown_document(path, pairs[0][0].origin) if pairs and pairs[0][0].origin else _shown(path, data)
+    shown = shown_document(path, pairs[0][0].origin, sc.encoding) if pairs and pairs[0][0].origin \
+        else _shown(path, data)
     return LintResult(path, shown, kind if len(pairs) == 1 else None, found)
 
 

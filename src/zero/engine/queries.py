@@ -31,7 +31,7 @@ def load_side(name: str, fmt: str | None, kind: str | None, registry: Registry,
     src = source_format(fmt, name)
     data = read_stdin() if name == "-" else read_file(name)
     encoding = None
-    if name != "-" and src == "lis":
+    if name != "-" and src in ("lis", "xml"):
         encoding = (project or Project(_no_catalogue)).encoding(Path(name))
     return read_side(data, src, name, registry, kind, encoding)
 
@@ -71,8 +71,12 @@ def run_diff(a: str, b: str | None, project: Project, read_stdin: Callable[[], b
         return _diff_machines(a, b, project, registry, options)
     side_a = load_side(a, fmt, kind, registry, read_stdin, project)
     side_b = load_side(b, fmt, kind or side_a.kind, registry, read_stdin, project)
+    header = f"--- {a}\n+++ {b}"
+    if side_b.update and not side_a.update:  # `zero diff LIST UPDATE`: what the update will change
+        side_b = side_b.applied_to(side_a)
+        header = f"--- {a}\n+++ {a} with {b} applied"
     under = _default_list_side(_named(b) or _named(a), side_b.kind or side_a.kind, project)
-    return DiffRun(diff_sides(side_a, side_b, registry, options, under), f"--- {a}\n+++ {b}")
+    return DiffRun(diff_sides(side_a, side_b, registry, options, under), header)
 
 
 def _default_list_side(path: Path | None, kind: str | None, project: Project) -> Side | None:

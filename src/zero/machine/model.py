@@ -43,7 +43,7 @@ from zero.errors import ZeroError
 from zero.files import nearest_holding, read_file, within
 from zero.forms import CONFIG_NAMES
 from zero.lists.model import Document, Entry, Invalid
-from zero.lists.tokenizer import tokenize
+from zero.markup.documents import read_document
 from zero.records import field, record, replace
 
 # Soft limits the controller uses when no list sets them (±10 m, the catalogue default).
@@ -178,9 +178,11 @@ class Machine:
         return [n for n in self.named if n.status == "not-checked"]
 
     def complete_axes(self) -> bool:
-        """Were all the axis lists the start-up list names (within `zahl_mds`) followed? When one was
-        not, no "axis without a list" can be claimed."""
-        return not any(n.reference.key == "achs_mds[]" for n in self.unchecked)
+        """Were all the axis lists the start-up list names (within `zahl_mds`) followed and read? When
+        one was not (not followed, missing, unreadable), its axis number is not known, so no "axis
+        without a list" can be claimed: the missing list is the one root cause (X005/X012)."""
+        return not any(n.reference.key == "achs_mds[]" for n in self.unchecked) and not any(
+            n.reference.key == "achs_mds[]" and n.status in ("missing", "unreadable") for n in self.named)
 
     @property
     def missing(self) -> list[Missing]:
@@ -307,7 +309,8 @@ def _read(key: str, path: Path, line: int, registry: Registry, kind: str,
     real = os.path.realpath(path)
     doc = docs.get(real) if docs is not None else None
     if doc is None or doc.path != str(path):
-        doc = tokenize(reader(path), str(path), encoding(path)) if doc is None else replace(doc, path=str(path))
+        doc = read_document(reader(path), str(path), registry, encoding(path)) if doc is None else \
+            replace(doc, path=str(path))
         if docs is not None:
             docs.setdefault(real, doc)
     values = ListValues.of(doc, registry, kind)
@@ -340,10 +343,19 @@ def _count(startup: ListValues, pid: str) -> int:
     return int(n) if n is not None else 0
 
 
+KERNEL_ROOT = "CncKernelRootDir"  # the kernel's own folder, as its XML start-up lists name it
+
+
 def _absolute(text: str) -> bool:
-    """An absolute path on the controller: ``/…``, ``C:\\…``, ``C:/…`` or ``\\\\server\\…``."""
+    """An absolute path on the controller: ``/…``, ``C:\\…``, ``C:/…``, ``\\\\server\\…``, or below the
+    kernel's root folder (``CncKernelRootDir/config/ax_mds_1.xml``, as the SDK's ``startup.xml`` writes)."""
     return text.startswith(("/", "\\")) or (len(text) >= 3 and text[0].isalpha() and text[1] == ":"
-                                            and text[2] in "/\\")
+                                            and text[2] in "/\\") or _kernel_rooted(text)
+
+
+def _kernel_rooted(text: str) -> bool:
+    head = text.replace("\\", "/").split("/", 1)[0]
+    return head.lower() == KERNEL_ROOT.lower()
 
 
 Roots = tuple[tuple[str, Path], ...]  # a folder of the controller → where it lies here
@@ -394,8 +406,9 @@ def named_lists(startup_path: Path, doc: Document, overrides: dict[str, Path] | 
                 n.status, n.reason = "not-checked", "climbs out of the folder `roots` maps it to"
                 n.path = None
         elif _absolute(text):
-            n.status, n.reason = "not-checked", ("is an absolute path on the controller (`[tool.zero.machine] roots` "
-                                                 "can map its folder)")
+            where = (f"lies below the kernel's root folder `{KERNEL_ROOT}`" if _kernel_rooted(text)
+                     else "is an absolute path on the controller")
+            n.status, n.reason = "not-checked", f"{where} (`[tool.zero.machine] roots` can map its folder)"
         else:
             n.path = root / text
             if not within(n.path, root):

@@ -53,12 +53,12 @@ def _roots_said() -> str:
     return "the root of a parameter list in XML (" + ", ".join(f"`<{r}>`" for r in XML_ROOTS) + ")"
 
 
-def read_document(data: bytes, path: str, registry: Registry) -> Document:
+def read_document(data: bytes, path: str, registry: Registry, encoding: str | None = None) -> Document:
     """A list file's bytes as the document model, whatever its form; :class:`ZeroError` (located)
     for XML zero will not read, and for a TwinCAT export (it holds several lists: see
-    :func:`embedded_documents`)."""
+    :func:`embedded_documents`). ``encoding``: the code page declared for an ASCII list."""
     if not is_xml(data):
-        return tokenize(data, path)
+        return tokenize(data, path, encoding)
     form = xml_form(data)
     if form == TWINCAT:
         raise ZeroError("a TwinCAT export holds several lists; name the one meant (`--item`)", path, 1, 1)

@@ -34,9 +34,10 @@ from zero.engine.lint import (
 from zero.engine.project import Project, Registries
 from zero.errors import ZeroError
 from zero.files import check_shape, max_file_bytes, read_file
-from zero.forms import LIST, PROGRAM, STRUCTURED, form_of
+from zero.forms import LIST, PROGRAM, STRUCTURED, form_of, is_xml
 from zero.lists.tokenizer import tokenize
 from zero.machine.model import ListFile, Machine
+from zero.markup.documents import read_document
 from zero.records import field, record, replace
 from zero.server.positions import Text, path_of, source_bytes
 from zero.server.settings import Settings
@@ -91,7 +92,13 @@ class Analysis:
     def values(self) -> ListValues | None:
         """The list's entries bound to their parameters (lists only), built on first use."""
         if self._values is None and self.form == LIST:
-            doc = self.result.document if self.result is not None else tokenize(self.data, self.name)
+            if is_xml(self.data):  # the list an XML list is (a report shows the XML lines instead)
+                try:
+                    doc = read_document(self.data, self.name, self.registry)
+                except ZeroError:
+                    return None
+            else:
+                doc = self.result.document if self.result is not None else tokenize(self.data, self.name)
             kind = self.result.kind if self.result is not None else self.options.kind
             self._values = ListValues.of(doc, self.registry, kind)
         return self._values
@@ -238,7 +245,8 @@ class Projects:
         hit = self._values.get(key)
         if hit is None:
             data, _ = source_bytes(lf.path, text)
-            hit = ListValues.of(tokenize(data, str(lf.path)), lf.values.registry, lf.values.kind)
+            hit = ListValues.of(read_document(data, str(lf.path), lf.values.registry), lf.values.registry,
+                                lf.values.kind)
             self._values[key] = hit
             while len(self._values) > 8:
                 self._values.popitem(last=False)
