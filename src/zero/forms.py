@@ -16,7 +16,9 @@ LIST, PROGRAM, STRUCTURED = "list", "program", "structured"
 LIST_SUFFIXES = (".lis", ".lst")
 PROGRAM_SUFFIXES = (".nc", ".mpf", ".spf")  # NC programs (zero.nc)
 STRUCTURED_SUFFIXES = {".yaml": "yaml", ".yml": "yaml", ".toml": "toml", ".json": "json"}
-DEFAULT_INCLUDE = tuple(f"*{s}" for s in (*LIST_SUFFIXES, *PROGRAM_SUFFIXES))  # what a directory walk picks up
+# What a directory walk picks up: lists, NC programs, and XML files that hold lists (by content:
+# zero.engine.discovery.holds_lists skips every other XML file in silence).
+DEFAULT_INCLUDE = tuple(f"*{s}" for s in (*LIST_SUFFIXES, *PROGRAM_SUFFIXES, ".xml"))
 CONFIG_NAMES = ("zero.toml", ".zero.toml", "pyproject.toml")  # nearest wins; in this order within a folder
 # A report (`zero lint -o FILE`) never replaces one of these: lists, programs, list forms, configuration.
 NOT_A_REPORT = (*LIST_SUFFIXES, *PROGRAM_SUFFIXES, *(s for s in STRUCTURED_SUFFIXES if s != ".json"))  # JSON: reports

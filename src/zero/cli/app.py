@@ -245,10 +245,14 @@ def diff(
     kind: Annotated[str | None, typer.Option(help="List kind instead of detecting it.", metavar="KIND")] = None,
     machine: Annotated[bool, typer.Option(
         "--machine", help="A and B are start-up lists: compare the machines' effective values list by list.")] = False,
+    revert: Annotated[str | None, typer.Option(
+        "--revert", help="With A a list and B its update file: apply B, then this revert file, and show what "
+        "is not put back (nothing: exit 0).", metavar="REVERT")] = None,
     param_desc: ParamDesc = None,
 ) -> None:
     """Compare two lists by parameter: added, removed, changed, with mm/° deltas.
 
+    B may be an update file: the diff then shows what applying it to A changes.
     Exit 0 when equal, 1 when different, 2 on error (like diff).
     """
 
@@ -256,7 +260,7 @@ def diff(
         forced = parse_kind(kind)
         run = run_diff(a, b, _project(), read_stdin, defaults=defaults,
                        options=DiffOptions(strict=strict, comments=comments),
-                       fmt=from_.value if from_ else None, kind=forced, machine=machine)
+                       fmt=from_.value if from_ else None, kind=forced, machine=machine, revert=revert)
         if output_format is OutputFormat.json:
             sys.stdout.write(json.dumps([c.to_json() for c in run.changes], indent=2, ensure_ascii=False) + "\n")
         elif run.changes:

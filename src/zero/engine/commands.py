@@ -123,7 +123,8 @@ def run_lint(request: LintRequest, registries: Registries, echo: Echo,
     named = [Path(p) for p in request.paths]
     files = collect_files(named, include=project.included, exclude=project.excluded)
     if not files and any(p.is_dir() for p in named):
-        raise ZeroError("no list files or NC programs found (looked for *.lis, *.lst, *.nc, *.mpf, *.spf)")
+        raise ZeroError("no list files or NC programs found (looked for *.lis, *.lst, *.nc, *.mpf, *.spf, and *.xml "
+                        "holding lists)")
     groups: dict[Path | None, list[Path]] = {}
     for f in files:  # files sharing a parameter description share a registry
         groups.setdefault(project.param_desc(f), []).append(f)

@@ -12,7 +12,7 @@ select = ["S", "R", "M"]          # codes or prefixes; default: all
 extend-select = ["Z"]
 ignore = ["M003"]
 exclude = ["old/**"]              # never linted, even when named on the command line
-include = ["*.lis", "*.lst", "*.nc"]  # what a directory walk picks up
+include = ["*.lis", "*.lst", "*.nc", "*.xml"]  # what a directory walk picks up (XML: lists only)
 param-desc = "vendor/CncParaDesc.xml"
 
 [tool.zero.per-file-ignores]

@@ -39,10 +39,13 @@ def git_visible(directory: Path) -> set[str] | None:
     return {os.path.normpath(os.fsdecode(name)) for name in proc.stdout.split(b"\0") if name}
 
 
+_WALKED = (*LIST_SUFFIXES, *PROGRAM_SUFFIXES, ".xml")
+
+
 def holds_lists(path: Path) -> bool:
-    """Does a walked file hold parameter lists? Always, but for XML (picked up only where ``include``
-    names ``*.xml``), which is a list only by its content: a kernel XML list or a TwinCAT export. An
-    XML file that cannot be read is kept, so that the lint reports it."""
+    """Does a walked file hold parameter lists? Always, but for XML, which is a list only by its
+    content: a kernel XML list or a TwinCAT export (every other XML file of a project is skipped in
+    silence). An XML file that cannot be read is kept, so that the lint reports it."""
     if path.suffix.lower() != ".xml":
         return True
     try:
@@ -61,7 +64,8 @@ def collect_files(paths: Iterable[str | Path], include: Callable[[Path], bool] |
     """Files named explicitly, plus list files below named directories (sorted).
 
     ``include`` decides which files a directory walk picks up (default: lists ``*.lis``,
-    ``*.lst`` and NC programs ``*.nc``, ``*.mpf``, ``*.spf``); ``exclude`` drops files and
+    ``*.lst``, NC programs ``*.nc``, ``*.mpf``, ``*.spf`` and ``*.xml`` that hold lists, by their
+    content: :func:`holds_lists`); ``exclude`` drops files and
     directories, named ones included. A
     directory walk skips what ``.gitignore`` ignores when the directory is in a git
     work tree (named files are always linted).
@@ -80,7 +84,7 @@ def collect_files(paths: Iterable[str | Path], include: Callable[[Path], bool] |
                     if visible is not None and os.path.normpath(os.path.join(rel_root, f)) not in visible:
                         continue
                     path = Path(root) / f
-                    if (include(path) if include else f.lower().endswith(LIST_SUFFIXES + PROGRAM_SUFFIXES)) and \
+                    if (include(path) if include else f.lower().endswith(_WALKED)) and \
                             not (exclude and exclude(path)) and holds_lists(path):
                         found.append(path)
             out.extend(sorted(found, key=str))

@@ -52,7 +52,7 @@ def _named(name: str) -> Path | None:
 
 def run_diff(a: str, b: str | None, project: Project, read_stdin: Callable[[], bytes], *,
              defaults: bool = False, options: DiffOptions | None = None, fmt: str | None = None,
-             kind: str | None = None, machine: bool = False) -> DiffRun:
+             kind: str | None = None, machine: bool = False, revert: str | None = None) -> DiffRun:
     """``zero diff A B``, ``zero diff --defaults A`` or ``zero diff --machine A B`` (two start-up lists).
     Both sides are read with the catalogue of A's configuration."""
     options = options or DiffOptions()
@@ -72,9 +72,16 @@ def run_diff(a: str, b: str | None, project: Project, read_stdin: Callable[[], b
     side_a = load_side(a, fmt, kind, registry, read_stdin, project)
     side_b = load_side(b, fmt, kind or side_a.kind, registry, read_stdin, project)
     header = f"--- {a}\n+++ {b}"
+    if revert is not None and not (side_b.update and not side_a.update):
+        raise ZeroError("--revert checks an update and its revert file against a list: give the list as A and "
+                        "the update file as B (an update file lies in an `Update` folder or is named `*-Update.xml`)")
     if side_b.update and not side_a.update:  # `zero diff LIST UPDATE`: what the update will change
         side_b = side_b.applied_to(side_a)
         header = f"--- {a}\n+++ {a} with {b} applied"
+        if revert is not None:  # what the update changes and the revert does not put back
+            side_r = load_side(revert, fmt, kind or side_a.kind, registry, read_stdin, project)
+            side_b = side_r.applied_to(side_b)
+            header = f"--- {a}\n+++ {a} with {b}, then {revert} applied"
     under = _default_list_side(_named(b) or _named(a), side_b.kind or side_a.kind, project)
     return DiffRun(diff_sides(side_a, side_b, registry, options, under), header)
 

@@ -393,6 +393,10 @@ def named_lists(startup_path: Path, doc: Document, overrides: dict[str, Path] | 
             continue
         named.append(Named(e.key_text, ref, e.key.indices[0] if e.key.indices else None, e.value, e.line))
     root = workdir if workdir is not None else working_directory(startup_path, [n.raw for n in named], ceiling)
+    # A relative path may climb out of the working directory (TwinCAT's `..\listen\nullp_d1.lis`), never
+    # out of the project (its git work tree or configuration folder), nor, without one, the machine's folder.
+    inside = ceiling is not None and within(root, ceiling)
+    bound, what = (ceiling, "project") if inside and ceiling is not None else (root, "machine's folder")
     for n in named:
         override = (overrides or {}).get(n.key)
         text = _clean(n.raw)
@@ -410,9 +414,9 @@ def named_lists(startup_path: Path, doc: Document, overrides: dict[str, Path] | 
                      else "is an absolute path on the controller")
             n.status, n.reason = "not-checked", f"{where} (`[tool.zero.machine] roots` can map its folder)"
         else:
-            n.path = root / text
-            if not within(n.path, root):
-                n.status, n.reason = "not-checked", f"lies outside the machine's folder {root}"
+            n.path = Path(os.path.normpath(root / text))  # `startup/../listen/x.lis` shown as `listen/x.lis`
+            if not within(n.path, bound):
+                n.status, n.reason = "not-checked", f"lies outside the {what} {bound}"
                 n.path = None
     return root, named
 

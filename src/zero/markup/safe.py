@@ -176,15 +176,23 @@ def _parse(data: bytes, path: str, handler: _Collect) -> None:
             return None, None
         return loc.getLineNumber(), (loc.getColumnNumber() or 0) + 1
 
+    def first(marker: bytes) -> tuple[int | None, int | None]:
+        """Where ``marker`` first occurs (the declaration the hardened parser refused)."""
+        at = data.find(marker)
+        if at < 0:
+            return where()
+        start = data.rfind(b"\n", 0, at) + 1
+        return data.count(b"\n", 0, at) + 1, len(data[start:at].decode("utf-8", "replace").lstrip("\ufeff")) + 1
+
     try:
         parser.feed(data)
         parser.close()
     except defusedxml.DTDForbidden:
-        line, col = where()
+        line, col = first(b"<!DOCTYPE")
         raise ZeroError("the file declares a document type (DTD); zero does not read XML with a DTD "
                         "(a parameter list has none, and a DTD can expand or fetch text)", path, line, col) from None
     except defusedxml.EntitiesForbidden as exc:
-        line, col = where()
+        line, col = first(b"<!ENTITY")
         raise ZeroError(f"the file declares the entity `{exc.name}`; zero does not expand entities "
                         "(a parameter list has none, and entities can expand without bound)", path, line, col) from None
     except defusedxml.ExternalReferenceForbidden:
@@ -192,6 +200,12 @@ def _parse(data: bytes, path: str, handler: _Collect) -> None:
         raise ZeroError("the file refers to an external resource; zero never opens one", path, line, col) from None
     except xml.sax.SAXParseException as exc:
         message = str(exc.getMessage())
+        opened, closed = data.rfind(b"<![CDATA["), data.rfind(b"]]>")
+        if opened > closed and "unclosed" in message:  # the file ends inside a CDATA section: where it opens
+            start = data.rfind(b"\n", 0, opened) + 1
+            raise ZeroError("not well-formed XML: a CDATA section is never closed (`]]>` is missing)", path,
+                            data.count(b"\n", 0, opened) + 1,
+                            len(data[start:opened].decode("utf-8", "replace").lstrip("\ufeff")) + 1) from None
         raise ZeroError(f"not well-formed XML: {message}", path, exc.getLineNumber(),
                         (exc.getColumnNumber() or 0) + 1) from None
     except (ValueError, LookupError, UnicodeError) as exc:  # an encoding expat cannot read
