@@ -134,8 +134,6 @@ def test_config_show_names_the_declared_code_pages(project: Path) -> None:
     assert run.code == 0 and '[encoding]\n"machines/old/**/*.lis" = "cp850"\n' in run.stdout
 
 
-@pytest.mark.xfail(strict=True, reason="zero.structured.tree.encode_list writes only utf-8, cp1252 and latin-1: "
-                   "lint_tree refuses the YAML of a CP850 list until it writes every codec zero may declare")
 def test_lint_of_the_structured_form_of_a_declared_list(project: Path) -> None:
     assert zero_cli("convert", "machines/old/x/achse.lis", "-o", "achse.yaml", cwd=project).code == 0
     run = zero_cli("lint", "achse.yaml", cwd=project)

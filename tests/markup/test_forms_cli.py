@@ -110,7 +110,8 @@ def test_a_100_mb_attribute_is_refused_without_reading_it_whole(tmp_path: Path) 
 
 
 def test_twincat_exports_lint_at_their_xml_positions() -> None:
-    assert concise(str(TWINCAT / "axis_x.xml")) == [f"{TWINCAT}/axis_x.xml:28:8: S004", f"{TWINCAT}/axis_x.xml:30:1: R001"]
+    assert concise(str(TWINCAT / "axis_x.xml")) == [f"{TWINCAT}/axis_x.xml:28:8: S004",
+                                                    f"{TWINCAT}/axis_x.xml:30:1: R001"]
     assert concise(str(TWINCAT / "channel_1.xml")) == [f"{TWINCAT}/channel_1.xml:40:55: R004"]
     assert concise(str(TWINCAT / "cnc_task.xml")) == []
 

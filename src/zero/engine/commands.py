@@ -21,6 +21,7 @@ from zero.engine.lint import (
     is_unreadable,
     lint_bytes,
     lint_data,
+    lint_document,
     lint_file,
     lint_in_machine,
     lint_machine,
@@ -32,8 +33,8 @@ from zero.engine.parallel import iter_lint_many, lint_many
 from zero.engine.project import Project, Registries
 from zero.errors import ZeroError
 from zero.files import read_file, write_atomic
-from zero.forms import is_list, is_program
-from zero.records import field, record
+from zero.forms import TWINCAT_ROOT, is_list, is_program, is_xml
+from zero.records import field, record, replace
 from zero.rules import RULES
 
 Progress = Callable[[int, int], None]
@@ -236,7 +237,7 @@ def _lint_stdin(request: LintRequest, project: Project, echo: Echo, data: bytes)
         if request.show_diff:
             patch = unified_diff(name, data, fixed.fixed)
             echo.out_bytes(patch)
-            return LintRun([lint_bytes(data, registry, name, options)], findings_to_stderr=True,
+            return LintRun([lint_data(data, name, registry, options)], findings_to_stderr=True,
                            changed=int(bool(patch)))
         echo.out_bytes(fixed.fixed)
         return LintRun([fixed.result], findings_to_stderr=True, changed=int(fixed.fixed != data))
@@ -276,6 +277,8 @@ def _add_noqa(path: Path, result: LintResult, options: LintOptions, registry: Re
     from zero.engine.baseline import add_noqa  # start-up: only with --add-noqa
 
     data = read_file(path)
+    if is_xml(data):
+        return _add_noqa_xml(path, data, result, options, registry, echo, run)
     baseline = add_noqa(lint_bytes(data, registry, str(path), options))
     if baseline.added:
         write_atomic(path, baseline.data, force=True)
@@ -285,6 +288,37 @@ def _add_noqa(path: Path, result: LintResult, options: LintOptions, registry: Re
         echo.err(f"zero: {path}: {baseline.unplaced} finding{'s' if baseline.unplaced != 1 else ''} on lines "
                  "without an entry cannot be recorded on their line\n")
     return lint_bytes(baseline.data, registry, str(path), options)
+
+
+def _add_noqa_xml(path: Path, data: bytes, result: LintResult, options: LintOptions, registry: Registry,
+                  echo: Echo, run: LintRun) -> LintResult:
+    """``--add-noqa`` on XML: the lists of a TwinCAT export get their directives inside their CDATA
+    sections (every other byte kept); an XML list has no list comments to hold them and is left as it is."""
+    from zero.engine.baseline import add_noqa  # start-up: only with --add-noqa
+    from zero.markup.documents import embedded_documents, put_back  # start-up: only for XML
+    from zero.markup.safe import scan  # start-up: as above
+
+    try:
+        sc = scan(data, str(path))
+    except ZeroError:
+        return result
+    if sc.root != TWINCAT_ROOT:
+        echo.err(f"zero: {path}: --add-noqa writes list comments, which an XML list has no place for: not changed "
+                 "(per-file-ignores in the configuration suppress its findings)\n")
+        return result
+    new, added = data, 0
+    for item in embedded_documents(data, str(path), sc)[1]:
+        current = next(x for x in embedded_documents(new, str(path))[1] if x.element == item.element)
+        own = lint_document(replace(current.doc, origin=None), registry, options)  # the list's own lines
+        baseline = add_noqa(own)
+        if baseline.added:
+            added += baseline.added
+            new = put_back(new, str(path), item.element, baseline.data.decode(current.doc.encoding, "surrogateescape"))
+    if added:
+        write_atomic(path, new, force=True)
+        run.changed += 1
+        echo.err(f"zero: {path}: {added} noqa directive{'s' if added != 1 else ''} added\n")
+    return lint_data(new, str(path), registry, options)
 
 
 # ---------------------------------------------------------------------------- format

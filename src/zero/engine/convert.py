@@ -23,15 +23,10 @@ from zero.engine.project import Project
 from zero.errors import ZeroError
 from zero.files import read_file, write_atomic
 from zero.forms import EXTENSION, TWINCAT_ROOT, XML_ROOTS, format_of
-from zero.lists.encoding import encode_text
 from zero.lists.tokenizer import tokenize
-from zero.records import field, record, replace
+from zero.records import field, record
 from zero.structured.formats import read_tree, write_tree
-from zero.structured.tree import Tree, from_document, to_list_text
-
-# The encodings `zero.structured.tree.encode_list` writes: a list in a code page the configuration
-# declared (cp850) is written here instead, until it writes those too.
-_TREE_WRITES = ("utf-8", "cp1252", "latin-1")
+from zero.structured.tree import Tree, from_document
 
 
 @record
@@ -112,20 +107,14 @@ def convert(data: bytes, src: str, dst: str, registry: Registry, path: str = "-"
     result = None
     if check and src != "lis" and dst in ("lis", "xml"):
         source = data.decode("utf-8", "replace").lstrip("\ufeff")
-        # The findings are the same in any encoding: lint_tree encodes the list only to read it back.
-        readable = tree if tree.meta.get("encoding", "utf-8") in _TREE_WRITES else \
-            replace(tree, meta={**tree.meta, "encoding": "utf-8"})
-        result = lint_tree(readable, registry, None, source if src in ("yaml", "toml") else None)
+        result = lint_tree(tree, registry, None, source if src in ("yaml", "toml") else None)
     return Conversion(output, tree, list(tree.notes), result)
 
 
 def list_bytes(tree: Tree) -> bytes:
     """A tree as the bytes of a list, in the encoding its ``_zero`` record names (a declared code
     page such as cp850 too)."""
-    encoding = tree.meta.get("encoding", "utf-8")
-    if encoding in _TREE_WRITES or not isinstance(encoding, str):
-        return write_tree(tree, "lis")
-    return encode_text(to_list_text(tree).text, encoding, tree.meta.get("bom") is True, tree.path)
+    return write_tree(tree, "lis")
 
 
 def _no_catalogue(_desc: Path | None) -> Registry:

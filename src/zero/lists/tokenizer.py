@@ -260,22 +260,30 @@ def _control_count(text: str) -> int:
     return len(_CONTROL_RE.findall(text))
 
 
-def tokenize_text(text: str, path: str = "-", encoding: str = "utf-8", bom: bool = False,
-                  use_fast: bool = True, declared: bool = False) -> Document:
-    """Tokenize already decoded text; ``declared``: the configuration named its encoding."""
+def split_lines(text: str) -> tuple[list[str], list[str]]:
+    """The lines of a text without their endings, and each line's ending (``"\\n"``, ``"\\r\\n"``, or
+    ``""`` for a last line without one); a text ending in a line break has no empty last line."""
     raw_lines = text.split("\n")
     endings = ["\n"] * (len(raw_lines) - 1) + [""]
     if raw_lines and raw_lines[-1] == "":
         raw_lines.pop()
         endings.pop()
-    lines: list[str] = raw_lines if "\r" not in text else []
-    if "\r" in text:
-        for idx, s in enumerate(raw_lines):
-            if s.endswith("\r") and endings[idx] == "\n":
-                lines.append(s[:-1])
-                endings[idx] = "\r\n"
-            else:
-                lines.append(s)
+    if "\r" not in text:
+        return raw_lines, endings
+    lines: list[str] = []
+    for idx, s in enumerate(raw_lines):
+        if s.endswith("\r") and endings[idx] == "\n":
+            lines.append(s[:-1])
+            endings[idx] = "\r\n"
+        else:
+            lines.append(s)
+    return lines, endings
+
+
+def tokenize_text(text: str, path: str = "-", encoding: str = "utf-8", bom: bool = False,
+                  use_fast: bool = True, declared: bool = False) -> Document:
+    """Tokenize already decoded text; ``declared``: the configuration named its encoding."""
+    lines, endings = split_lines(text)
 
     problems: list[Problem] = []
     items: list[Item] = []

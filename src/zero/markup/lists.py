@@ -31,7 +31,7 @@ from zero.catalog.registry import KINDS, Registry
 from zero.errors import ZeroError
 from zero.forms import XML_ROOTS
 from zero.lists.model import Blank, Comment, Document, End, Entry, Origin, Problem, parse_key
-from zero.lists.tokenizer import scan_line
+from zero.lists.tokenizer import scan_line, split_lines
 from zero.markup.safe import Scan, Tag, scan
 
 ROOT_OF_KIND = {kind: root for root, kind in XML_ROOTS.items() if not root.startswith("Default_")}
@@ -141,19 +141,6 @@ def id_of(key: str, registry: Registry, kind: str | None) -> str | None:
 # ----------------------------------------------------------------------------- XML → list
 
 
-def _split_lines(text: str) -> tuple[list[str], list[str]]:
-    raw = text.split("\n")
-    endings = ["\n"] * (len(raw) - 1) + [""]
-    lines: list[str] = []
-    for i, s in enumerate(raw):
-        if s.endswith("\r") and endings[i] == "\n":
-            lines.append(s[:-1])
-            endings[i] = "\r\n"
-        else:
-            lines.append(s)
-    return lines, endings
-
-
 def to_list(data: bytes, registry: Registry, path: str = "-",
             parsed: Scan | None = None) -> tuple[str, Origin, str | None]:
     """An XML list as list text, with the map back to the XML file and the list kind of its root.
@@ -161,7 +148,7 @@ def to_list(data: bytes, registry: Registry, path: str = "-",
     that do not fit, an empty ``Value``, two elements on a line) stays a comment line, where the
     rules find it (S015, S016)."""
     sc = parsed if parsed is not None else scan(data, path)
-    lines, endings = _split_lines(sc.text)
+    lines, endings = split_lines(sc.text)
     kind = kind_of_root(sc.root)
     by_line: dict[int, list[Tag]] = {}
     for tag in sc.tags:
@@ -214,11 +201,8 @@ def to_list(data: bytes, registry: Registry, path: str = "-",
                                                 sc.position(tag.start)[1], len(tag.name)))
         if line.strip():
             previous = line
-    if lines and lines[-1] == "" and endings[-1] == "":  # the text ended with a line break
-        out.pop()
-        endings.pop()
-        last = endings[-1] if endings else "\n"
-        text = "".join(s + e for s, e in zip(out, endings, strict=True)) + "Ende" + last
+    if endings and endings[-1]:  # the text ended with a line break
+        text = "".join(s + e for s, e in zip(out, endings, strict=True)) + "Ende" + endings[-1]
     else:
         newline = "\r\n" if "\r\n" in endings else "\n"
         text = "".join(s + e for s, e in zip(out[:-1], endings[:-1], strict=True)) + (out[-1] if out else "")

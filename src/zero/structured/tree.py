@@ -27,6 +27,7 @@ from typing import Any
 
 from zero.catalog.registry import Registry
 from zero.errors import ZeroError
+from zero.lists.encoding import declarable
 from zero.lists.model import Blank, Comment, Document, End, Entry, Invalid
 from zero.lists.tokenizer import scan_line
 from zero.records import field, record
@@ -553,10 +554,13 @@ def _verify(line: str, leaf: Leaf, value: str, path: str) -> None:
 
 def encode_list(tree: Tree, text: str) -> bytes:
     """Encode list text the way the original file was encoded."""
-    enc = tree.meta.get("encoding", "utf-8")
-    if enc not in ("utf-8", "cp1252", "latin-1"):
-        raise ZeroError(f"{META_KEY}.encoding {enc!r} is not one zero writes "
-                           "(utf-8, cp1252, latin-1)", tree.path)
+    name = tree.meta.get("encoding", "utf-8")
+    try:  # UTF-8, or a code page that reads ASCII as ASCII (cp850, cp1252, latin-1 …)
+        enc = declarable(name) if isinstance(name, str) else ""
+    except ValueError as exc:
+        raise ZeroError(f"{META_KEY}.encoding {name!r} is not one zero writes: {exc}", tree.path) from None
+    if not enc:
+        raise ZeroError(f"{META_KEY}.encoding {name!r} is not one zero writes (a codec name, e.g. cp850)", tree.path)
     try:
         data = text.encode(enc)
     except UnicodeEncodeError as exc:
