@@ -132,6 +132,30 @@ def test_hover_and_outline_of_an_untitled_list() -> None:
     assert outline.document_symbols(a) is symbols  # once per version of the text
 
 
+def test_places_in_an_xml_list_and_a_twincat_export_are_places_in_their_list_text() -> None:
+    xml = analyse('<?xml version="1.0"?>\n<AX_MDS>\n  <P-AXIS-00016 Value="12" />\n  <!-- x -->\n</AX_MDS>\n',
+                  "ax_mds_1.xml")
+    (_, values), = xml.lists()
+    on_name, on_value, after = xml.place(2, 4), xml.place(2, 24), xml.place(2, 27)
+    assert on_name is not None and on_value is not None and after is not None
+    entry = values.doc.entries[0]
+    assert (on_name.line, on_name.column, on_name.element) == (2, 0, True)  # the element's name: the key
+    assert on_value.column == entry.value_start + 1 and after.column > entry.value_end
+    comment = xml.place(3, 4)
+    assert comment is not None and (comment.column, comment.shift) == (6, -2)  # the line as `# <!-- x -->`
+    export = analyse("<?xml version=\"1.0\"?>\n<TreeItem>\n<IsgAxisDef>\n<AchsMds><![CDATA[kopf.achs_nr 1\n"
+                     "kenngr.achs_typ 1\nEnde\n]]></AchsMds>\n</IsgAxisDef>\n</TreeItem>\n", "axis.xml")
+    (element, axis), = export.lists()
+    assert element == "AchsMds" and axis.kind == "AXIS"
+    first = export.place(3, 20)
+    assert first is not None and (first.values, first.line, first.column, first.shift) == (axis, 0, 2, 18)
+    assert export.place(3, 5) is None and export.place(2, 0) is None  # `<AchsMds>`, `<IsgAxisDef>`: no list
+    h = hover.hover(export, 4, 3)
+    assert h is not None and isinstance(h.contents, types.MarkupContent)
+    assert h.contents.value.startswith("**kenngr.achs_typ** — P-AXIS-00018")
+    assert h.range == types.Range(types.Position(4, 0), types.Position(4, 17))
+
+
 @pytest.mark.skipif(sys.platform == "win32", reason="FIFOs")
 def test_an_open_fifo_is_never_read(tmp_path: Path) -> None:
     import os

@@ -18,16 +18,21 @@ import re
 from lsprotocol import types
 
 from zero.catalog.registry import ParamSpec, Registry
-from zero.forms import LIST, PROGRAM
+from zero.catalog.values import ListValues
+from zero.forms import LIST, PROGRAM, XML_LIST, XML_ROOTS, root_of
 from zero.lists.model import Entry, parse_key
+from zero.markup.lists import escape, key_of
 from zero.output.docs import param_text
-from zero.server.documents import Analysis
+from zero.server.documents import Analysis, Place
 
 _KEY_TYPED = re.compile(r"([ \t]*)([A-Za-z0-9_\[\].]*)")
 _VALUE_TYPED = re.compile(r"[ \t]*([A-Za-z_][A-Za-z0-9_\[\].]*)[ \t]+([^\s|]*)")
 _INDEX = re.compile(r"\[([0-9]*)\]?")
 _MACHINE_DATA = re.compile(r"#\s*MACHINE\s+DATA\b", re.IGNORECASE)
 _HASH_TYPED = re.compile(r"(?:^|\s)#[A-Za-z ]*$")  # `#MA` typed, at the start or after `N10 `
+_XML_NAME_TYPED = re.compile(r"<(P-[A-Z0-9.-]*)$")  # `<P-AX` typed in an XML list
+_XML_VALUE_TYPED = re.compile(r'<(P-[A-Z]{4}-[0-9]{5})(?:\.[0-9]+)*\s+Value\s*=\s*"([^"]*)$')
+_XML_NAME = re.compile(r"<(P-[A-Z]{4}-[0-9]{5}(?:\.[0-9]+)*)[\s/>]")
 _AXPARAM_OPEN = re.compile(r'AXPARAM\s*=?\s*"([^"\s]*)$', re.IGNORECASE)
 MACHINE_DATA_LABEL = ('#MACHINE DATA [SYN] [AX=<name> | AXNR=<n>  P-AXIS-<id>[.<i>]=<value> | '
                       'AXPARAM="<key> <value>" [WAIT]]')
@@ -115,32 +120,33 @@ def _typed_indices(typed: str) -> tuple[str, list[int | None]]:
     return _INDEX.sub("[]", typed), indices
 
 
-def _previous_entry(a: Analysis, line: int, first: str) -> Entry | None:
-    values = a.values()
+def _previous_entry(values: ListValues | None, index: int, first: str) -> Entry | None:
+    """The last entry above 0-based line ``index`` of the list whose key starts with ``first``."""
     if values is None:
         return None
-    for item in reversed(values.doc.items[: min(line, len(values.doc.items))]):
+    for item in reversed(values.doc.items[: min(index, len(values.doc.items))]):
         if isinstance(item, Entry) and item.key is not None and item.key.members[0] == first:
             return item
     return None
 
 
-def _key_items(a: Analysis, line: int, start: int, col: int, typed: str, snippets: bool) -> list[types.CompletionItem]:
-    values = a.values()
-    kind = values.kind if values is not None else None
+def _key_items(a: Analysis, where: Place, line: int, start: int, col: int, typed: str,
+               snippets: bool) -> list[types.CompletionItem]:
+    values = where.values
+    kind = values.kind
     if kind is None:
         kind = a.registry.detect_kind((), a.name)
     pattern, indices = _typed_indices(typed)
     cut = max(pattern.rfind("."), pattern.rfind("]"))
     complete = pattern[: cut + 1].lower()  # the members typed completely
-    taken = {e.key_text for e in values.doc.entries} if values is not None else set()
+    taken = {e.key_text for e in values.doc.entries}
     items = _Items(a, line, start, col, snippets)
     for spec in keys_of(a.registry, kind):
         assert spec.key is not None
         if not spec.key.lower().startswith(complete):
             continue
         first = spec.key.split("[", 1)[0].split(".", 1)[0]
-        above = _previous_entry(a, line, first) if "[]" in spec.key else None
+        above = _previous_entry(values, where.line, first) if "[]" in spec.key else None
         previous = above.key.indices if above is not None and above.key is not None else ()
         key, insert = _fill(spec, indices, previous, taken, snippets)
         if key in taken and "[]" not in spec.key:
@@ -151,9 +157,8 @@ def _key_items(a: Analysis, line: int, start: int, col: int, typed: str, snippet
     return items.items
 
 
-def _value_items(a: Analysis, line: int, start: int, col: int, key: str) -> list[types.CompletionItem]:
-    values = a.values()
-    kind = values.kind if values is not None else None
+def _value_items(a: Analysis, kind: str | None, line: int, start: int, col: int,
+                 key: str) -> list[types.CompletionItem]:
     parsed = parse_key(key)
     if parsed is None:
         return []
@@ -162,6 +167,49 @@ def _value_items(a: Analysis, line: int, start: int, col: int, key: str) -> list
         return []
     items = _Items(a, line, start, col, False)
     _spec_values(items, spec, a.registry)
+    return items.items
+
+
+def _xml_items(a: Analysis, line: int, col: int, snippets: bool) -> list[types.CompletionItem]:
+    """In an XML list: the IDs of the list's kind after ``<P-`` (the element names, with the first
+    index of each array, moved on past the elements set already), the values after ``Value="``. Read
+    from the text alone: what is being typed is seldom well-formed XML."""
+    text = a.text.line(line)
+    before = text[:col]
+    m = _XML_VALUE_TYPED.search(before)
+    if m is not None:
+        spec = a.registry.get(m.group(1))
+        if spec is None:
+            return []
+        items = _Items(a, line, m.start(2), col, False)
+        _spec_values(items, spec, a.registry)
+        return items.items
+    m = _XML_NAME_TYPED.search(before)
+    if m is None:
+        return []
+    kind = XML_ROOTS.get(root_of(a.data) or "")
+    values = a.values()
+    if values is not None:
+        taken = {e.key_text for e in values.doc.entries}
+    else:  # the text as typed is no XML (yet): the elements written, as keys
+        names = set(_XML_NAME.findall(a.text.source))
+        taken = {key for key in (key_of(name, a.registry)[0] for name in names) if key is not None}
+    items = _Items(a, line, m.start(1), col, snippets)
+    bare = not text[col:].strip()  # nothing after the name: the element is written whole
+    for spec in keys_of(a.registry, kind):
+        assert spec.key is not None
+        key, _ = _fill(spec, [], (), taken, False)
+        parsed = parse_key(key)
+        name = spec.id + "".join(f".{i}" for i in (parsed.indices if parsed is not None else ()))
+        if key in taken and "[]" not in spec.key:
+            continue  # an element set already (again would be R007)
+        default = escape((spec.default or "").strip())
+        insert = name
+        if bare:
+            shown = re.sub(r"([$}\\])", r"\\\1", default)
+            insert += f' Value="${{1:{shown}}}" />' if snippets else f' Value="{default}" />'
+        items.add(name, types.CompletionItemKind.Field, f"{key} · {spec.type} · default {spec.default_display}",
+                  insert, sort=("1" if key in taken else "0") + name, data={"id": spec.id}, snippet=bare)
     return items.items
 
 
@@ -235,13 +283,16 @@ def completion(a: Analysis, line: int, character: int, snippets: bool) -> types.
     text = a.text.line(line)
     before = text[:col]
     items: list[types.CompletionItem] = []
-    if a.form == LIST:
+    if a.form == LIST and a.markup == XML_LIST:
+        items = _xml_items(a, line, col, snippets)
+    elif a.form == LIST and (where := a.place(line, col)) is not None:
+        before = text[where.shift:col]  # a list inside a TwinCAT export starts further right on its first line
         key = _KEY_TYPED.fullmatch(before)
         value = _VALUE_TYPED.fullmatch(before)
         if key is not None:
-            items = _key_items(a, line, len(key.group(1)), col, key.group(2), snippets)
+            items = _key_items(a, where, line, where.shift + len(key.group(1)), col, key.group(2), snippets)
         elif value is not None:
-            items = _value_items(a, line, value.start(2), col, value.group(1))
+            items = _value_items(a, where.values.kind, line, where.shift + value.start(2), col, value.group(1))
     elif a.form == PROGRAM:
         items = _program_items(a, line, col, snippets)
     return types.CompletionList(is_incomplete=False, items=items)

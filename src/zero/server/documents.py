@@ -34,10 +34,11 @@ from zero.engine.lint import (
 from zero.engine.project import Project, Registries
 from zero.errors import ZeroError
 from zero.files import check_shape, max_file_bytes, read_file
-from zero.forms import LIST, PROGRAM, STRUCTURED, form_of, is_xml
+from zero.forms import LIST, PROGRAM, STRUCTURED, TWINCAT, form_of, is_xml, xml_form
+from zero.lists.model import Document
 from zero.lists.tokenizer import tokenize
 from zero.machine.model import ListFile, Machine
-from zero.markup.documents import read_document
+from zero.markup.documents import embedded_documents, read_document
 from zero.records import field, record, replace
 from zero.server.positions import Text, path_of, source_bytes
 from zero.server.settings import Settings
@@ -56,6 +57,27 @@ class Note:
     column: int = 1
     severity: Severity = Severity.ERROR
     elsewhere: tuple[Path, int, int] | None = None  # the place in another file it is about (1-based)
+
+
+@record(eq=False)
+class Place:
+    """A position of the file the editor has open in the list text it holds: the list (the list a list
+    file or an XML list is, or one list of a TwinCAT export) and the 0-based line and column there."""
+
+    values: ListValues
+    line: int
+    column: int
+    shift: int = 0  # the file's column of the list's column 0 on this line (not on an XML parameter element)
+    element: bool = False  # on a parameter element of an XML list (its name is the key, its Value the value)
+
+
+def file_position(doc: Document, line: int, column: int, end: bool = False) -> tuple[int, int]:
+    """A 0-based line and column of a list's text as the 0-based line and column in the file it was
+    read from (the same where the list is the file; ``end``: the column is the end of a span)."""
+    if doc.origin is None:
+        return line, column
+    target, col = doc.origin.locate(line + 1, column + 1, end)
+    return target - 1, col - 1
 
 
 def _place(exc: ZeroError) -> tuple[Path, int, int] | None:
@@ -84,6 +106,13 @@ class Analysis:
     references: dict[str, Path] = field(default_factory=dict)  # a start-up list: key → the list it opens
     cache: dict[str, object] = field(default_factory=dict)  # answers that depend on the text only
     _values: ListValues | None = None
+    _lists: list[tuple[str, ListValues]] | None = None
+    _rows: dict[int, list[tuple[ListValues, int]]] | None = None  # 1-based file line → (list, its line)
+
+    @property
+    def markup(self) -> str | None:
+        """``"xml"`` for an XML list, ``"twincat"`` for a TwinCAT export, else ``None`` (lists only)."""
+        return xml_form(self.data) if self.form == LIST else None
 
     @property
     def diagnostics(self) -> list[Diagnostic]:
@@ -93,6 +122,8 @@ class Analysis:
         """The list's entries bound to their parameters (lists only), built on first use."""
         if self._values is None and self.form == LIST:
             if is_xml(self.data):  # the list an XML list is (a report shows the XML lines instead)
+                if xml_form(self.data) == TWINCAT:
+                    return None  # several lists: :meth:`lists`
                 try:
                     doc = read_document(self.data, self.name, self.registry)
                 except ZeroError:
@@ -102,6 +133,56 @@ class Analysis:
             kind = self.result.kind if self.result is not None else self.options.kind
             self._values = ListValues.of(doc, self.registry, kind)
         return self._values
+
+    def document(self) -> Document | None:
+        """The list text the document is (an XML list's with its way back to the XML lines); ``None``
+        for a TwinCAT export (it holds several) and XML zero cannot read."""
+        if self.markup is None and self.result is not None:
+            return self.result.document
+        values = self.values()
+        return values.doc if values is not None else None
+
+    def lists(self) -> list[tuple[str, ListValues]]:
+        """Every list the document holds, with the element that holds it in a TwinCAT export ("" for
+        the list a list file or an XML list is)."""
+        if self._lists is None:
+            self._lists = []
+            if self.markup == TWINCAT:
+                try:
+                    _, items = embedded_documents(self.data, self.name)
+                except ZeroError:
+                    items = []
+                self._lists = [(item.element, ListValues.of(item.doc, self.registry, item.kind)) for item in items]
+            elif (values := self.values()) is not None:
+                self._lists = [("", values)]
+        return self._lists
+
+    def place(self, line: int, column: int) -> Place | None:
+        """The list text at the 0-based ``line`` and code-point ``column`` of the document: the same
+        place in a list file; in an XML list the same line, a column on a parameter element mapped to
+        its key (the element's name and what comes before its value) or its value; in a TwinCAT export
+        the line of the list whose CDATA holds the position (``None`` outside every list)."""
+        lists = self.lists()
+        if len(lists) == 1 and lists[0][1].doc.origin is None:
+            return Place(lists[0][1], line, column)
+        if self._rows is None:
+            self._rows = {}
+            for _, values in lists:
+                origin = values.doc.origin
+                for n, (target, _, _) in (origin.shift.items() if origin is not None else ()):
+                    self._rows.setdefault(target, []).append((values, n))
+        for values, n in self._rows.get(line + 1, []):
+            assert values.doc.origin is not None
+            _, shift, entry = values.doc.origin.shift[n]
+            if entry is not None:
+                lis_value, vstart, vend, _, _ = entry
+                col = 0 if column < vstart else (lis_value + column - vstart if column <= vend else
+                                                 lis_value + vend - vstart + 1)
+                return Place(values, n - 1, col, element=True)
+            col = column - shift
+            if 0 <= col <= len(values.doc.line_text(n)):
+                return Place(values, n - 1, col, shift)
+        return None
 
     def machine_list(self) -> ListFile | None:
         """This document as one of the lists of the machine (with the default list under it)."""
@@ -212,12 +293,19 @@ class Projects:
         except ZeroError as exc:  # a YAML/TOML/JSON form that does not make a list
             a.notes.append(Note(exc.message, exc.line or 1, exc.column or 1))
             return a
-        if a.form == LIST and a.result.kind == "STUP" and path is not None:
-            a.references = self.project.references(path, a.result.document)
+        if a.form == LIST and path is not None:
+            if a.markup is None and a.result.kind == "STUP":
+                a.references = self.project.references(path, a.result.document)
+            elif a.markup is not None:  # a start-up list in XML, or the `<Startup>` list of a TwinCAT export
+                for _, values in a.lists():
+                    if values.kind == "STUP":
+                        a.references.update(self.project.references(path, values.doc))
         if a.form == LIST:
             a.machine = self._try_machine(a, buffers or {})
-            if a.machine is not None and a.path is not None:  # as `zero lint` and `zero lint --machine` lint it
-                linted = lint_in_machine(name, a.machine, registry, options, a.result.document)
+            doc = a.document()
+            if a.machine is not None and a.path is not None and doc is not None:
+                # as `zero lint` and `zero lint --machine` lint it (an XML list: its list text, placed in the XML)
+                linted = lint_in_machine(name, a.machine, registry, options, doc)
                 a.result = linted if linted is not None else a.result
         return a
 
@@ -287,8 +375,11 @@ class Projects:
                 continue
             if real == me and a.result is not None:  # this document: as its lint has read it
                 own = a.values()
+                doc = a.document()
+                if doc is None:
+                    continue  # XML it cannot read: the list as saved
                 values = own if own is not None and own.kind == lf.values.kind else \
-                    ListValues.of(a.result.document, a.registry, lf.values.kind)
+                    ListValues.of(doc, a.registry, lf.values.kind)
             elif real in buffers:
                 values = self._list_values(lf, buffers[real])
             else:

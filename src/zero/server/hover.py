@@ -26,8 +26,8 @@ from zero.forms import LIST, PROGRAM, STRUCTURED, format_of
 from zero.lists.model import Comment, Entry, format_key, parse_key
 from zero.machine.effective import Origin, canonical, scope_values
 from zero.output.docs import param_text
-from zero.records import record
-from zero.server.documents import Analysis
+from zero.records import record, replace
+from zero.server.documents import Analysis, file_position
 
 _ID = re.compile(r"P-[A-Z]{4}-[0-9]{5}(?:\.([0-9]+))?")
 _AXPARAM = re.compile(r'AXPARAM\s*=?\s*"([^"\s]*)', re.IGNORECASE)
@@ -51,6 +51,7 @@ class Target:
     alias: str | None = None  # the undocumented spelling written, where it is one
     start: int = 0  # 0-based columns of what is hovered
     end: int = 0
+    values: ListValues | None = None  # the list the entry is in
 
 
 def _fmt(n: Number) -> str:
@@ -94,17 +95,24 @@ def _entry_target(entry: Entry, registry: Registry, kind: str | None) -> Target 
 def target_at(a: Analysis, line: int, col: int) -> Target | None:
     """The parameter at 0-based ``line`` and code-point ``col`` of the document."""
     text = a.text.line(line)
-    hit = _id_at(text, col, a.registry)
-    if hit is not None:
-        return hit
+    place = a.place(line, col) if a.form == LIST else None
+    if place is None or not place.element or place.column > 0:  # an XML element's name: the ID of its entry
+        hit = _id_at(text, col, a.registry)
+        if hit is not None:
+            return hit
     if a.form == LIST:
-        values = a.values()
-        if values is None or line >= len(values.doc.items):
+        if place is None or place.line >= len(place.values.doc.items):
             return None
-        item = values.doc.items[line]
+        values = place.values
+        item = values.doc.items[place.line]
         if isinstance(item, Comment) and item.commented_out is not None:
             item = item.commented_out
-        return _entry_target(item, a.registry, values.kind) if isinstance(item, Entry) else None
+        t = _entry_target(item, a.registry, values.kind) if isinstance(item, Entry) else None
+        if t is None:
+            return None
+        _, start = file_position(values.doc, place.line, t.start)
+        _, end = file_position(values.doc, place.line, t.end, end=True)
+        return replace(t, start=start, end=max(start, end), values=values)
     if a.form == PROGRAM:
         for m in _AXPARAM.finditer(text):
             if m.start(1) <= col <= m.end(1) and m.group(1):
@@ -212,10 +220,9 @@ def _range_lines(t: Target, values: ListValues | None, registry: Registry) -> li
         layer = values.layer_of(r.id, idx[:dims])
         if where is None or layer is None:
             source = "not set: the catalogue default"
-        elif layer is values:
-            source = f"line {where.entry.line}"
         else:
-            source = f"default list {Path(layer.doc.path).name}:{where.entry.line}"
+            line = file_position(layer.doc, where.entry.line - 1, 0)[0] + 1  # a TwinCAT export's own line
+            source = f"line {line}" if layer is values else f"default list {Path(layer.doc.path).name}:{line}"
         out.append(f"- `{key}` = {shown} ({r.id}, {source})")
     return out
 
@@ -245,7 +252,7 @@ def _machine_lines(a: Analysis, t: Target) -> list[str]:
 
 def hover_text(a: Analysis, t: Target) -> str:
     on_machine = a.machine_list()  # with the default list under this one, where the machine has one
-    values = on_machine.values if on_machine is not None else (a.values() if a.form == LIST else None)
+    values = on_machine.values if on_machine is not None else (t.values or (a.values() if a.form == LIST else None))
     spec = t.spec
     kind = KINDS.get(spec.kind, (spec.kind, spec.kind))[1]
     head = f"**{t.key or spec.key or spec.id}** — {spec.id}, {kind}"

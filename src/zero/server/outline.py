@@ -19,10 +19,12 @@ import attrs
 from lsprotocol import types
 
 from zero.catalog.ids import g_code_with_index
-from zero.forms import LIST, PROGRAM, STRUCTURED, format_of
+from zero.catalog.registry import KINDS
+from zero.catalog.values import ListValues
+from zero.forms import LIST, PROGRAM, STRUCTURED, TWINCAT, format_of
 from zero.lists.model import Entry, ValueKind, parse_key
 from zero.records import field, record
-from zero.server.documents import Analysis
+from zero.server.documents import Analysis, file_position
 from zero.server.findings import line_range
 from zero.server.positions import uri_of
 
@@ -85,15 +87,16 @@ def _outline(rows: list[tuple[str, str, types.Range, types.Range]], kind: str | 
     return _build(root)
 
 
-def _list_rows(a: Analysis) -> list[tuple[str, str, types.Range, types.Range]]:
-    values = a.values()
-    if values is None:
-        return []
+def _list_rows(a: Analysis, values: ListValues) -> list[tuple[str, str, types.Range, types.Range]]:
+    doc = values.doc
     rows = []
-    for e in values.doc.entries:
-        index = e.line - 1
-        sel = types.Range(types.Position(index, a.text.character(index, e.key_start)),
-                          types.Position(index, a.text.character(index, e.key_end)))
+    for e in doc.entries:
+        index, start, end = e.line - 1, e.key_start, e.key_end
+        if doc.origin is not None:  # an XML list (the element's name) or a list in a TwinCAT export
+            index, start = file_position(doc, index, start)
+            end = max(start, file_position(doc, e.line - 1, end, end=True)[1])
+        sel = types.Range(types.Position(index, a.text.character(index, start)),
+                          types.Position(index, a.text.character(index, end)))
         rows.append((e.key_text, e.value, line_range(a.text, index), sel))
     return rows
 
@@ -151,8 +154,20 @@ def document_symbols(a: Analysis) -> list[types.DocumentSymbol]:
 
 
 def _document_symbols(a: Analysis) -> list[types.DocumentSymbol]:
+    if a.form == LIST and a.markup == TWINCAT:  # a symbol for each list of the export, its entries below
+        out = []
+        for element, values in a.lists():
+            children = _outline(_list_rows(a, values), values.kind)
+            if children:
+                start = min((c.range.start for c in children), key=lambda p: (p.line, p.character))
+                end = max((c.range.end for c in children), key=lambda p: (p.line, p.character))
+                detail = KINDS[values.kind][1] if values.kind in KINDS else None
+                out.append(types.DocumentSymbol(element, types.SymbolKind.Module, types.Range(start, end),
+                                                children[0].selection_range, detail=detail, children=children))
+        return out
     if a.form == LIST:
-        return _outline(_list_rows(a), a.result.kind if a.result is not None else None)
+        lists = a.lists()
+        return _outline(_list_rows(a, lists[0][1]) if lists else [], a.result.kind if a.result is not None else None)
     if a.form == STRUCTURED:
         return _outline(_structured_rows(a), a.result.kind if a.result is not None else None)
     if a.form == PROGRAM:
@@ -169,13 +184,14 @@ def _reference_target(a: Analysis, entry: Entry) -> Path | None:
 def definition(a: Analysis, line: int, character: int) -> list[types.Location]:
     if a.form != LIST:
         return []
-    values = a.values()
-    if values is None or line >= len(values.doc.items):
+    place = a.place(line, a.text.column(line, character))
+    if place is None or place.line >= len(place.values.doc.items):
         return []
-    entry = values.doc.items[line]
+    values = place.values
+    entry = values.doc.items[place.line]
     if not isinstance(entry, Entry):
         return []
-    col = a.text.column(line, character)
+    col = place.column
     if entry.value_kind is ValueKind.REF and entry.value_start <= col <= entry.value_end:
         rid, _, ridx = entry.value.partition(".")
         on_machine = a.machine_list()
@@ -188,7 +204,7 @@ def definition(a: Analysis, line: int, character: int) -> list[types.Location]:
             return []
         path = Path(layer.doc.path)
         uri = a.uri if layer is values else uri_of(path)
-        index = hit.entry.line - 1
+        index = file_position(layer.doc, hit.entry.line - 1, 0)[0]  # the line of the XML file
         rng = types.Range(types.Position(index, 0), types.Position(index, 0)) if layer is not values else \
             line_range(a.text, index)
         return [types.Location(uri, rng)]
