@@ -217,3 +217,21 @@ def test_line_edits_of_a_long_list_that_repeats_itself_need_no_diff(monkeypatch:
     new = old.replace(" 7\n", "  7\n")
     edits = actions.line_edits(Text(old), new)
     assert len(edits) == 100 and apply_edits(old, edits) == new
+
+
+def test_a_declared_code_page_is_read_and_written_in_the_editor(tmp_path: Path) -> None:
+    """A CP850 list the editor shows right (`ü`): its saved bytes are linted as on the command line,
+    its unsaved text is written in CP850 before it is read in CP850, and formatting keeps CP850."""
+    (tmp_path / "zero.toml").write_text('[encoding]\n"*.lis" = "cp850"\n')
+    text = "kopf.log_achs_name  X  ( Achse f\u00fcr den Tisch\nkenngr.swe_pos 100\nEnde\n"
+    path = tmp_path / "achse.lis"
+    path.write_bytes(text.encode("cp850"))
+    assert source_bytes(path, text, "cp850") == (text.encode("cp850"), True)
+    assert source_bytes(path, text.replace("100", "200"), "cp850")[0] == text.replace("100", "200").encode("cp850")
+    assert encode_text("\u20ac", "cp850") == "\u20ac".encode()  # a character CP850 lacks: UTF-8, said as S007
+    saved = projects().analyse(uri_of(path), 1, text)
+    assert saved.saved and saved.diagnostics == []
+    edited = projects().analyse(uri_of(path), 2, text.replace("100", "200"))
+    assert edited.diagnostics == []
+    formatted = actions.formatting(edited)
+    assert formatted and all("\u00fc" in e.new_text or "f" not in e.new_text for e in formatted)

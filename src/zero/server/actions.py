@@ -98,7 +98,7 @@ def _formatted(a: Analysis) -> str | None:
     ZeroError` for a line it cannot read); NC programs and structured forms are not reformatted."""
     if a.form != LIST:
         return None
-    new = format_bytes(a.data, a.name, a.registry)
+    new = format_bytes(a.data, a.name, a.registry, encoding=a.options.encoding)
     if new == a.data:
         return None
     return _decoded(new, a.result.document.encoding if a.result is not None else None)

@@ -265,9 +265,9 @@ class Projects:
         except ZeroError as exc:
             registry = self.registries(None)
             notes.append(Note(f"the parameter description cannot be read, nothing is checked: {exc}"))
-        data, saved = source_bytes(path, text)
         options = self.project.options(path) if path is not None and not notes else \
             config.options_for(Path(name), LintOptions())
+        data, saved = source_bytes(path, text, options.encoding)
         a = Analysis(uri, version, path, name, form_of(name), Text(text, encoding), data, saved, registry, config,
                      options, notes=notes)
         if notes or (path is not None and config.excluded(path)):
@@ -332,7 +332,7 @@ class Projects:
         key = (str(lf.path), id(lf.values.registry), text)
         hit = self._values.get(key)
         if hit is None:
-            data, _ = source_bytes(lf.path, text)
+            data, _ = source_bytes(lf.path, text, self.project.encoding(lf.path))
             hit = ListValues.of(read_document(data, str(lf.path), lf.values.registry), lf.values.registry,
                                 lf.values.kind)
             self._values[key] = hit
@@ -351,12 +351,14 @@ class Projects:
         texts = {real: buffers[real] for real in structural if real in buffers}
         if me in structural and a.path is not None:
             texts[me] = a.text.source
-        texts = {real: t for real, t in texts.items() if not source_bytes(Path(real), t)[1]}  # changed ones
+        texts = {real: t for real, t in texts.items()  # the changed ones
+                 if not source_bytes(Path(real), t, self.project.encoding(Path(real)))[1]}
         if texts:
             try:
                 def reader(path: Path) -> bytes:
                     text = texts.get(os.path.realpath(path))
-                    return read_file(path) if text is None else source_bytes(path, text)[0]
+                    return read_file(path) if text is None else \
+                        source_bytes(path, text, self.project.encoding(path))[0]
 
                 shaped = self.project.machine(a.path, reader=reader, reader_key=tuple(sorted(texts.items())))
             except ZeroError as exc:

@@ -102,20 +102,27 @@ class Text:
 _NOT_A_BYTE = re.compile(r"[\ud800-\udc7f\udd00-\udfff]")
 
 
-def encode_text(text: str) -> bytes:
-    """The editor's text as the bytes zero lints: UTF-8, with the bytes the client could not decode
+def encode_text(text: str, encoding: str | None = None) -> bytes:
+    """The editor's text as the bytes zero lints: UTF-8 (or the code page the configuration declares
+    for the file, where the text fits it), with the bytes the client could not decode
     (``\udc80``–``\udcff``, as zero and the server's input keep them) as they were, so that zero
     reports them (S007) where they are; any other lone surrogate becomes `?`."""
+    if encoding is not None:
+        try:
+            return text.encode(encoding)
+        except (UnicodeEncodeError, LookupError):
+            pass
     try:
         return text.encode("utf-8")
     except UnicodeEncodeError:
         return _NOT_A_BYTE.sub("?", text).encode("utf-8", "surrogateescape")
 
 
-def source_bytes(path: Path | None, text: str) -> tuple[bytes, bool]:
+def source_bytes(path: Path | None, text: str, encoding: str | None = None) -> tuple[bytes, bool]:
     """The bytes to lint and whether they are the file's own: the file when the editor's text
     is the file as zero decodes it (so its encoding and endings count as on the command line),
-    else the editor's text."""
+    else the editor's text. ``encoding``: the code page the configuration declares for the file
+    (a CP850 list the editor shows right is read, and its unsaved text written, in CP850)."""
     disk = None
     if path is not None:
         try:
@@ -123,7 +130,7 @@ def source_bytes(path: Path | None, text: str) -> tuple[bytes, bool]:
             disk = read_file(path) if size <= 4 * len(text) + 8 else None  # far larger: not this text
         except (OSError, ZeroError):
             disk = None
-        if disk is not None and decode(disk)[0] == text:
+        if disk is not None and decode(disk, encoding)[0] == text:
             return disk, True
-    data = encode_text(text)
+    data = encode_text(text, encoding)
     return data, data == disk
