@@ -95,3 +95,12 @@ def xml_form(data: bytes) -> str | None:
     if root in XML_ROOTS:
         return XML_LIST
     return TWINCAT if root == TWINCAT_ROOT else None
+
+
+def is_update(name: str | os.PathLike[str]) -> bool:
+    """An update or revert file by its place (the kernel's ``Update`` folder) or its name
+    (``achsmds1-Update.xml``, ``achsmds1-Revert.xml``): inside, the two look like any XML list."""
+    path = os.fspath(name)
+    stem = os.path.splitext(os.path.basename(path))[0].lower()
+    return os.path.basename(os.path.dirname(path)).lower() == "update" or \
+        stem.endswith(("-update", "-revert", "_update", "_revert"))

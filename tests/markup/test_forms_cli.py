@@ -227,3 +227,25 @@ def test_a_folder_walk_lints_xml_lists_and_skips_other_xml(tmp_path: Path) -> No
     assert [f.split(":")[0] for f in found] == [str(tmp_path / "nullp.xml")] * 3
     r = run("lint", "--isolated", str(tmp_path / "pom.xml"))
     assert r.returncode == 1 and "S014" in r.stdout and "root element `<project>`" in r.stdout
+
+
+def test_an_update_checked_against_its_machine(tmp_path: Path) -> None:
+    """`zero lint --machine STARTUP UPDATE...`: U003 for an axis the machine lacks; the update's values
+    among the target list's other values (a soft limit below the list's negative one: M001)."""
+    shutil.copytree(TWINCAT / "machine", tmp_path / "machine")
+    root = tmp_path / "machine"
+    (root / ".git").mkdir()
+    updates = root / "Update"
+    updates.mkdir()
+    (updates / "bad_axis-Update.xml").write_text('<?xml version="1.0" encoding="utf-8"?>\n<AX_MDS>\n'
+                                                 '    <P-AXIS-00016 Value="7" />\n'
+                                                 '    <P-AXIS-00297 Value="X9" />\n</AX_MDS>\n')
+    (updates / "limit-Update.xml").write_text('<?xml version="1.0" encoding="utf-8"?>\n<AX_MDS>\n'
+                                              '    <P-AXIS-00016 Value="1" />\n'
+                                              '    <P-AXIS-00178 Value="-99000000" />\n</AX_MDS>\n')
+    r = run("lint", "--machine", "startup/hochlauf.lis", "Update", "--output-format", "concise", cwd=root)
+    assert r.returncode == 1
+    found = [line.split(" ", 2)[:2] for line in r.stdout.splitlines() if line.startswith("Update")]
+    assert found == [["Update/bad_axis-Update.xml:3:26:", "U003"], ["Update/limit-Update.xml:4:26:", "M001"]], r.stdout
+    assert "with the update applied to startup/achsmds1.lis" in r.stdout
+    assert run("lint", "Update", "--output-format", "concise", cwd=root).stdout == ""  # alone: nothing to say

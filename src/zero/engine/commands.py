@@ -26,6 +26,7 @@ from zero.engine.lint import (
     lint_in_machine,
     lint_machine,
     lint_program,
+    lint_update_in_machine,
     machine_findings,
     unreadable,
 )
@@ -33,7 +34,7 @@ from zero.engine.parallel import iter_lint_many, lint_many
 from zero.engine.project import Project, Registries
 from zero.errors import ZeroError
 from zero.files import read_file, write_atomic
-from zero.forms import TWINCAT_ROOT, is_list, is_program, is_xml
+from zero.forms import TWINCAT_ROOT, is_list, is_program, is_update, is_xml
 from zero.records import field, record, replace
 from zero.rules import RULES
 
@@ -178,8 +179,13 @@ def _lint_machine(request: LintRequest, project: Project) -> list[LintResult]:
                 results.append(unreadable(str(f), exc, project.options(f)))
                 continue
             results.append(lint_program(data, project.registry(f), str(f), project.options(f), machine))
-        else:
-            results.append(lint_file(f, project.registry(f), project.options(f)))
+            continue
+        result = lint_file(f, project.registry(f), project.options(f))
+        if not is_unreadable(result) and is_update(str(f)):  # an update: checked against the machine too
+            in_machine = lint_update_in_machine(str(f), read_file(f), machine, project.registry(f),
+                                                project.options(f))
+            result = in_machine if in_machine is not None else result
+        results.append(result)
     return results
 
 

@@ -20,7 +20,7 @@ from zero.catalog.registry import Registry, kind_from_name
 from zero.diagnostics import Diagnostic, Severity, Span
 from zero.errors import ZeroError
 from zero.files import read_file
-from zero.forms import LIST_SUFFIXES, PROGRAM_SUFFIXES, STRUCTURED_SUFFIXES
+from zero.forms import LIST_SUFFIXES, PROGRAM_SUFFIXES, STRUCTURED_SUFFIXES, is_update, is_xml
 from zero.lists.model import Document
 from zero.lists.tokenizer import tokenize
 from zero.records import field, record, replace
@@ -311,6 +311,96 @@ def lint_file(path: str | Path, registry: Registry, options: LintOptions | None 
     return lint_data(data, str(path), registry, options)
 
 
+def lint_update_in_machine(path: str, data: bytes, machine: Machine, registry: Registry,
+                           options: LintOptions | None = None) -> LintResult | None:
+    """An update or revert file checked against the machine it is applied to (``zero lint --machine
+    STARTUP UPDATE``): its own findings, U003 when its axis number names no axis of the machine, and
+    the findings its values get among the other values of the list it changes (the list with the
+    update applied, each finding on the update's line). ``None`` when ``path`` is no update file."""
+    from zero.markup.documents import relocate, xml_document  # start-up: only for XML
+
+    if not is_update(path) or not is_xml(data):
+        return None
+    opts = options or LintOptions()
+    try:
+        doc = xml_document(data, path, registry)
+    except ZeroError:
+        return None
+    assert doc.origin is not None
+    result = lint_document(doc, registry, opts)
+    kind = result.kind
+    severities = selected_rules(opts)
+    target, extra = _update_target(doc, kind, machine, severities)
+    if target is not None:
+        extra.extend(_in_context(doc, target, registry, kind, severities))
+    if not extra:
+        return result
+    placed = funnel(path, [relocate(d, doc.origin) for d in extra], severities)
+    found = sorted([*result.diagnostics, *placed], key=lambda d: d.sort_key())
+    return replace(result, diagnostics=found)
+
+
+def _update_target(doc: Document, kind: str | None, machine: Machine,
+                   severities: dict[str, Severity]) -> tuple[ListFile | None, list[Diagnostic]]:
+    """The list of the machine an update changes, or why there is none (U003)."""
+    from zero.machine.model import axis_of  # start-up: only with a machine
+
+    if kind == "AXIS":
+        entry = next((e for e in doc.entries if e.key_text == "kopf.achs_nr"), None)
+        if entry is None or not entry.value.lstrip("-").isdigit():
+            return None, []  # U002 says so
+        nr = int(entry.value)
+        for lf in machine.axis_lists:
+            ax = axis_of(lf)
+            if ax is not None and ax.nr == nr:
+                return lf, []
+        if "U003" not in severities or not machine.complete_axes():
+            return None, []
+        known = ", ".join(str(n) for n in sorted(machine.axes())) or "none"
+        return None, [Diagnostic("U003", severities["U003"],
+                                 f"this update is for logical axis {nr}, which no axis list of the machine has "
+                                 f"(its axes: {known}): the kernel's double check of the axis refuses it",
+                                 Span.on_line(entry.line, entry.value_start, entry.value_end), doc.path,
+                                 "P-AXIS-00016")]
+    if len(machine.channels) != 1:  # which channel a channel-wide update is for: not said
+        return None, []
+    channel = machine.channels[0]
+    by_kind = {"CHAN": channel.lists, "ZERO": channel.zero, "TOOL": channel.tools}
+    return by_kind.get(kind or ""), []
+
+
+def _in_context(doc: Document, target: ListFile, registry: Registry, kind: str | None,
+                severities: dict[str, Severity]) -> list[Diagnostic]:
+    """The findings an update's entries get in the list they change and not alone, on their lines."""
+    from zero.catalog.values import canonical_key  # start-up: only with a machine
+    from zero.lists.tokenizer import tokenize_text  # start-up: as above
+
+    base = target.values.doc
+    end = base.end_line - 1 if base.end_line is not None else len(base.lines)
+    changed = {canonical_key(registry, kind, e) for e in doc.entries}
+    lines = list(base.lines[:end])
+    for e in base.entries:  # the values the update replaces: blank lines, so every line keeps its number
+        if e.line <= end and canonical_key(registry, kind, e) in changed:
+            lines[e.line - 1] = ""
+    where: dict[int, int] = {}
+    for e in doc.entries:
+        lines.append(doc.lines[e.line - 1])
+        where[len(lines)] = e.line
+    merged = tokenize_text("\n".join([*lines, "Ende"]) + "\n", doc.path)
+    alone = {(d.code, d.span.line) for d in check_document(doc, registry, kind, severities)[1]}
+    out = []
+    for d in check_document(merged, registry, kind, severities)[1]:
+        line = where.get(d.span.line)
+        if line is None or (d.code, line) in alone:
+            continue
+        message = re.sub(r"\bline (\d+)\b", lambda m: (f"line {where[int(m.group(1))]}" if int(m.group(1)) in where
+                                                         else f"{target.path}:{m.group(1)}"), d.message)
+        span = Span(line, d.span.column, line, d.span.end_column)
+        out.append(replace(d, span=span, message=f"with the update applied to {target.path}: {message}",
+                           fix=None, related=()))
+    return out
+
+
 def machine_findings(machine: Machine, registry: Registry, wanted: dict[str, Severity]) -> dict[str, list[Diagnostic]]:
     """The X findings of a machine for the codes in ``wanted``, by the real path of the list they
     concern (each still to pass the funnel of that list)."""
@@ -384,6 +474,7 @@ __all__ = [
     "lint_program",
     "lint_structured",
     "lint_tree",
+    "lint_update_in_machine",
     "lint_xml",
     "machine_findings",
     "refused",

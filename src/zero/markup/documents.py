@@ -10,12 +10,11 @@ finding on such a document, and its fix, to the file the user has open.
 from __future__ import annotations
 
 import re
-from pathlib import Path
 
 from zero.catalog.registry import Registry
 from zero.diagnostics import Diagnostic, Edit, Fix, Related, Span
 from zero.errors import ZeroError
-from zero.forms import EMBEDDED, TWINCAT, TWINCAT_ROOT, XML_LIST, XML_ROOTS, is_xml, root_of, xml_form
+from zero.forms import EMBEDDED, TWINCAT, TWINCAT_ROOT, XML_LIST, XML_ROOTS, is_update, is_xml, root_of, xml_form
 from zero.lists.model import Document, Origin
 from zero.lists.tokenizer import tokenize, tokenize_text
 from zero.markup.lists import escape, to_list
@@ -26,14 +25,6 @@ __all__ = ["EMBEDDED", "TWINCAT", "TWINCAT_ROOT", "XML_LIST", "Embedded", "embed
 from zero.records import record, replace
 
 _LINE_RE = re.compile(r"\bline (\d+)\b")
-
-
-def is_update(path: str) -> bool:
-    """An update or revert file by its place (the kernel's ``Update`` folder) or its name
-    (``achsmds1-Update.xml``, ``achsmds1-Revert.xml``): the two look like any XML list inside."""
-    p = Path(path)
-    stem = p.stem.lower()
-    return p.parent.name.lower() == "update" or stem.endswith(("-update", "-revert", "_update", "_revert"))
 
 
 def xml_document(data: bytes, path: str, registry: Registry, parsed: Scan | None = None) -> Document:

@@ -44,6 +44,24 @@ Fix: add `<P-AXIS-00016 Value="N" />` with the axis's logical number.
 """)
 
 
+UNKNOWN_AXIS = FAMILY.rule(
+    "U003", "update-for-unknown-axis", E, "An axis update for an axis the machine does not have",
+    """
+What it checks (with a machine: `zero lint --machine STARTUP UPDATE`): the logical axis number
+`P-AXIS-00016` of an axis update is the `kopf.achs_nr` of one of the machine's axis lists. The
+update's values are then checked with that list's other values around them (a new `swe_pos`
+against its `swe_neg`, a range that refers to a parameter the update leaves alone), and what
+that finds is reported on the update's lines.
+
+Why it matters on the machine: the kernel double-checks the axis of an online update by this
+number; an update for an axis the machine does not have is refused, or meant for another
+machine.
+
+Example: `<P-AXIS-00016 Value="7" />` on a machine of three axes
+Fix: correct the axis number, or apply the update on the machine it was written for.
+""")
+
+
 @FAMILY.check(RESTART, AXIS_CHECK)
 def check_update(ctx: Context) -> Iterator[Diagnostic]:
     origin = ctx.doc.origin
