@@ -104,3 +104,11 @@ def is_update(name: str | os.PathLike[str]) -> bool:
     stem = os.path.splitext(os.path.basename(path))[0].lower()
     return os.path.basename(os.path.dirname(path)).lower() == "update" or \
         stem.endswith(("-update", "-revert", "_update", "_revert"))
+
+
+def split_part(path: str | os.PathLike[str]) -> tuple[str, str | None]:
+    """``channel_1.xml#NullpD`` (a list inside a TwinCAT export, as a machine names it) → the file and
+    the element; any other path → itself and ``None``."""
+    text = os.fspath(path)
+    file, sep, element = text.rpartition("#")
+    return (file, element) if sep and element in EMBEDDED else (text, None)

@@ -249,3 +249,22 @@ def test_an_update_checked_against_its_machine(tmp_path: Path) -> None:
     assert found == [["Update/bad_axis-Update.xml:3:26:", "U003"], ["Update/limit-Update.xml:4:26:", "M001"]], r.stdout
     assert "with the update applied to startup/achsmds1.lis" in r.stdout
     assert run("lint", "Update", "--output-format", "concise", cwd=root).stdout == ""  # alone: nothing to say
+
+
+def test_a_folder_of_twincat_exports_assembles_a_machine(tmp_path: Path) -> None:
+    """The CNC task's export names its lists as TwinCAT writes them (`.\\achsmds1.lis`); where no such
+    file lies beside it, the channel's and the axes' exports in the folder hold them."""
+    for f in TWINCAT.glob("*.xml"):
+        shutil.copy(f, tmp_path / f.name)
+    (tmp_path / ".git").mkdir()
+    r = run("show", "--machine", "cnc_task.xml", "--output-format", "json", cwd=tmp_path)
+    assert r.returncode == 0, r.stderr
+    lists = {x["key"]: (x["status"], x["resolved"], x["line"]) for x in json.loads(r.stdout)["lists"]}
+    assert lists["achs_mds[0]"] == ("loaded", "axis_x.xml#AchsMds", 29), lists
+    assert lists["nullp_data[0]"][:2] == ("loaded", "channel_1.xml#NullpD"), lists
+    assert lists["sda_mds[0]"][:2] == ("loaded", "channel_1.xml#SdaMds"), lists
+    assert lists["achs_mds[1]"][0] == "missing"  # one axis export in the folder for three axis lists
+    found = [line.split(" ", 2)[:2] for line in run("lint", "--machine", "cnc_task.xml", "--output-format",
+                                                    "concise", cwd=tmp_path).stdout.splitlines()]
+    assert found == [["cnc_task.xml:30:1:", "X005"], ["cnc_task.xml:31:1:", "X005"], ["axis_x.xml:28:8:", "S004"],
+                     ["axis_x.xml:30:1:", "R001"], ["channel_1.xml:40:55:", "R004"]], found

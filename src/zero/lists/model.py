@@ -251,6 +251,10 @@ class Document:
             return self.lines[line - 1]
         return ""
 
+    def file_line(self, line: int) -> int:
+        """A line of this list as the line of the file that holds it (an XML list, a TwinCAT export)."""
+        return self.origin.locate(line, 1)[0] if self.origin is not None else line
+
     def has_line(self, line: int) -> bool:
         return 1 <= line <= len(self.lines)
 

@@ -99,7 +99,7 @@ def settings(values: ListValues) -> dict[Slot, Setting]:
     for e in values.doc.entries:
         slot, spec = slot_of(values.registry, values.kind, e)
         out[slot] = Setting(canonical_key(values.registry, values.kind, e), spec, e,
-                            Origin(LIST, values.doc.path, e.line))
+                            Origin(LIST, values.doc.path, values.doc.file_line(e.line)))
     return out
 
 
@@ -132,7 +132,7 @@ def _layers(values: ListValues, slot: Slot, spec: ParamSpec | None) -> tuple[tup
     while layer is not None:
         hit = next((e for e in reversed(layer.doc.entries)
                     if slot_of(layer.registry, layer.kind, e)[0] == slot), None)
-        out.append((hit.value, Origin(source, layer.doc.path, hit.line)) if hit is not None
+        out.append((hit.value, Origin(source, layer.doc.path, layer.doc.file_line(hit.line))) if hit is not None
                    else (None, Origin(NOT_SET, layer.doc.path)))
         layer, source = layer.base, DEFAULT_LIST
     out.append((_catalogue(spec), Origin(CATALOGUE)))
@@ -185,7 +185,8 @@ def summary(machine: Machine) -> dict[str, object]:
         "startup": str(machine.startup.path),
         "working_directory": str(machine.workdir),
         "lists": [{"key": n.key, "path": n.raw, "resolved": str(n.path) if n.path else None,
-                   "status": n.status, "reason": n.reason or None, "line": n.line} for n in machine.named],
+                   "status": n.status, "reason": n.reason or None,
+                   "line": machine.startup.values.doc.file_line(n.line)} for n in machine.named],
     }
 
 

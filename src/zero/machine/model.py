@@ -19,6 +19,7 @@ not there is missing, never replaced by a same-named file elsewhere.
 from __future__ import annotations
 
 import os
+import re
 from collections.abc import Callable
 from pathlib import Path
 
@@ -41,7 +42,7 @@ from zero.catalog.registry import Registry
 from zero.catalog.values import ListValues
 from zero.errors import ZeroError
 from zero.files import nearest_holding, read_file, within
-from zero.forms import CONFIG_NAMES
+from zero.forms import CONFIG_NAMES, TWINCAT, split_part, xml_form
 from zero.lists.model import Document, Entry, Invalid
 from zero.markup.documents import read_document
 from zero.records import field, record, replace
@@ -308,8 +309,9 @@ def _read(key: str, path: Path, line: int, registry: Registry, kind: str,
     the codec the configuration declares for a list (``None``: detected)."""
     real = os.path.realpath(path)
     doc = docs.get(real) if docs is not None else None
-    if doc is None or doc.path != str(path):
-        doc = read_document(reader(path), str(path), registry, encoding(path)) if doc is None else \
+    file, part = split_part(path)  # `channel_1.xml#NullpD`: a list inside a TwinCAT export
+    if doc is None or (doc.path != str(path) and part is None):
+        doc = read_document(reader(Path(file)), str(path), registry, encoding(path)) if doc is None else \
             replace(doc, path=str(path))
         if docs is not None:
             docs.setdefault(real, doc)
@@ -421,6 +423,58 @@ def named_lists(startup_path: Path, doc: Document, overrides: dict[str, Path] | 
     return root, named
 
 
+# The start-up references a TwinCAT export of a channel or an axis answers, by the element holding the list.
+_EXPORTED = {"sda_mds[]": "SdaMds", "nullp_data[]": "NullpD", "werkz_data[]": "WerkzD", "pzv_data[]": "PzvD",
+             "ve_var[]": "VeD", "achs_mds[]": "AchsMds"}
+_CHANNEL_NO = re.compile(r"<ChannelNo>\s*([0-9]+)\s*</ChannelNo>")
+
+
+def _from_exports(startup: Path, named: list[Named], reader: Callable[[Path], bytes]) -> None:
+    """A machine whose start-up list is a TwinCAT CNC task's export: the lists it names by files
+    TwinCAT writes when it activates the configuration (`.\\sda_mds1.lis`) are taken from the
+    exports of the channels and axes in the same folder, where no such file lies there: channel
+    `c`'s lists from the export of channel `c + 1` (its `<ChannelNo>`, else the exports in name
+    order), the axis lists from the axis exports in the order of their logical axis numbers (the
+    set of axes is what the X rules need: TwinCAT does not say which file each axis list becomes)."""
+    from zero.markup.documents import embedded_documents  # start-up: only for a TwinCAT machine
+
+    channels: list[tuple[int, Path, set[str]]] = []
+    axes: list[tuple[int, Path]] = []
+    for f in sorted(startup.parent.glob("*.xml")):
+        if f == startup:
+            continue
+        try:
+            data = reader(f)
+            if xml_form(data) != TWINCAT:
+                continue
+            sc, lists = embedded_documents(data, str(f))
+        except ZeroError:
+            continue
+        held = {x.element for x in lists}
+        if "AchsMds" in held:
+            doc = next(x.doc for x in lists if x.element == "AchsMds")
+            nr = next((e.value for e in doc.entries if e.key_text == "kopf.achs_nr"), "")
+            axes.append((int(nr) if nr.isdigit() else 10**6 + len(axes), f))
+        elif held & {"SdaMds", "NullpD", "WerkzD", "PzvD", "VeD"}:
+            m = _CHANNEL_NO.search(sc.text)
+            channels.append((int(m.group(1)) if m else 10**6 + len(channels), f, held))
+    channels.sort()
+    axes.sort()
+    by_number = {number: (f, held) for number, f, held in channels}
+    for n in named:
+        element = _EXPORTED.get(n.reference.key)
+        if element is None or n.index is None or (n.path is not None and os.path.exists(n.path)):
+            continue
+        hit: Path | None = None
+        if element == "AchsMds":
+            hit = axes[n.index][1] if n.index < len(axes) else None
+        else:
+            f_held = by_number.get(n.index + 1) or (channels[n.index][1:] if n.index < len(channels) else None)
+            hit = f_held[0] if f_held is not None and element in f_held[1] else None
+        if hit is not None:
+            n.path, n.status, n.reason = Path(f"{hit}#{element}"), "loaded", f"from the TwinCAT export {hit.name}"
+
+
 def load_machine(startup_path: Path, registry: Registry, forced_kind: str | None = None,
                  overrides: dict[str, Path] | None = None, workdir: Path | None = None,
                  reader: Callable[[Path], bytes] = read_file, ceiling: Path | None = None,
@@ -436,6 +490,9 @@ def load_machine(startup_path: Path, registry: Registry, forced_kind: str | None
     startup = _read("start-up list", startup_path, 0, registry, forced_kind or "STUP", None, reader,
                     encoding=encoding)
     root, named = named_lists(startup_path, startup.values.doc, overrides, workdir, ceiling, roots)
+    origin = startup.values.doc.origin
+    if origin is not None and origin.form == TWINCAT:  # the CNC task's export: the lists of its folder's exports
+        _from_exports(Path(split_part(startup_path)[0]), named, reader)
     machine = Machine(startup, root, named)
     counts = {pid: _count(startup.values, pid) for pid in COUNT_KEYS}
     sizes = {ref.param_id: spec.dims[0] for ref in REFERENCES

@@ -14,7 +14,18 @@ import re
 from zero.catalog.registry import Registry
 from zero.diagnostics import Diagnostic, Edit, Fix, Related, Span
 from zero.errors import ZeroError
-from zero.forms import EMBEDDED, TWINCAT, TWINCAT_ROOT, XML_LIST, XML_ROOTS, is_update, is_xml, root_of, xml_form
+from zero.forms import (
+    EMBEDDED,
+    TWINCAT,
+    TWINCAT_ROOT,
+    XML_LIST,
+    XML_ROOTS,
+    is_update,
+    is_xml,
+    root_of,
+    split_part,
+    xml_form,
+)
 from zero.lists.model import Document, Origin
 from zero.lists.tokenizer import tokenize, tokenize_text
 from zero.markup.lists import escape, to_list
@@ -50,9 +61,15 @@ def read_document(data: bytes, path: str, registry: Registry, encoding: str | No
     :func:`embedded_documents`). ``encoding``: the code page declared for an ASCII list."""
     if not is_xml(data):
         return tokenize(data, path, encoding)
-    form = xml_form(data)
-    if form == TWINCAT:
-        raise ZeroError("a TwinCAT export holds several lists; name the one meant (`--item`)", path, 1, 1)
+    file, element = split_part(path)
+    if xml_form(data) == TWINCAT:  # `export.xml#NullpD`, or the one list an export holds
+        _, lists = embedded_documents(data, file)
+        hits = [x for x in lists if element is None or x.element == element]
+        if len(hits) != 1:
+            held = ", ".join(x.element for x in lists) or "none"
+            raise ZeroError(f"a TwinCAT export holding {held}: name the list meant (`--item`, or "
+                            "`export.xml#Element` for a machine)", file, 1, 1)
+        return hits[0].doc
     return xml_document(data, path, registry)
 
 
