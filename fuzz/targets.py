@@ -1,7 +1,7 @@
 """The fuzz targets, importable without atheris (tests replay crashes through them).
 
-The first byte of an input picks the target (``% 9`` for 0-8; 0xF9, 0xFA and 0xFB for 9-11, so
-that every input saved before the last three targets existed replays as it did); the rest is the data:
+The first byte of an input picks the target (``% 9`` for 0-8; 0xF9 to 0xFC for 9-12, so
+that every input saved before the last targets existed replays as it did); the rest is the data:
 0 tokenizer + lint of list bytes, 1 list → YAML/TOML/JSON → list (must be the
 identity), 2 YAML reader, 3 TOML reader, 4 JSON reader, 5 diff of two halves,
 6 NC program against the fixture machine, 7 zero format (idempotent, meaning kept),
@@ -9,7 +9,9 @@ identity), 2 YAML reader, 3 TOML reader, 4 JSON reader, 5 diff of two halves,
 configuration file (``zero.toml``: its patterns matched too), 10 a machine layout (a
 start-up list and the lists it names, split from the data, read from memory: references,
 counts, paths, default lists, the X rules), 11 the language server's transport (the bytes a
-client sends, framed as pygls will read them).
+client sends, framed as pygls will read them), 12 XML: an XML list (lint with every finding inside
+the file, XML → list → XML the identity where it converts), and the same bytes as a TwinCAT export
+(its lists in place, a fixed export unchanged outside its CDATA sections).
 Only zero's own refusals (ZeroError) may escape; anything else is a crash.
 """
 
@@ -25,6 +27,7 @@ from zero.engine.fixes import fix_bytes
 from zero.engine.formatting import format_bytes
 from zero.engine.lint import lint_bytes, lint_program
 from zero.errors import ZeroError
+from zero.forms import xml_form
 from zero.lists.encoding import document_bytes
 from zero.lists.tokenizer import tokenize
 from zero.machine.model import Machine, load_machine
@@ -165,10 +168,46 @@ def check_transport(data: bytes) -> None:
         assert reply.startswith(b"Content-Length: ")
 
 
+_XML_HEAD = b'<?xml version="1.0" encoding="utf-8"?>\n'
+
+
+def check_xml(data: bytes) -> None:
+    """An XML list from the data (wrapped in a root element when it has none): its findings lie
+    inside the file, and where it converts, XML → list → XML gives its bytes back; then the data
+    as a TwinCAT export's axis list: findings inside the file, a fix that changes only the CDATA."""
+    from zero.engine.lint import lint_data
+
+    xml = data if data.lstrip().startswith(b"<") else _XML_HEAD + b"<AX_MDS>\n" + data + b"\n</AX_MDS>\n"
+    lines = xml.count(b"\n") + 1
+    result = lint_data(xml, "fuzz.xml", REGISTRY)
+    assert all(1 <= d.span.line <= lines for d in result.diagnostics), result.diagnostics
+    if xml_form(xml) == "xml":  # an XML list (a TwinCAT export converts to the list it holds)
+        try:
+            as_list = convert(xml, "xml", "lis", REGISTRY, "fuzz.xml", check=False).output
+            back = convert(as_list, "lis", "xml", REGISTRY, "fuzz.lis", check=False).output
+        except ZeroError:
+            pass
+        else:
+            assert back == xml, (xml, as_list, back)
+    if b"]]>" in data:
+        return
+    export = _XML_HEAD + b"<TreeItem>\n<ItemName>X</ItemName>\n<IsgAxisDef>\n<AchsMds><![CDATA[" + data + \
+        b"]]></AchsMds>\n</IsgAxisDef>\n</TreeItem>\n"
+    result = lint_data(export, "fuzz_export.xml", REGISTRY)
+    total = export.count(b"\n") + 1
+    assert all(1 <= d.span.line <= total for d in result.diagnostics), result.diagnostics
+    fixed = fix_bytes(export, "fuzz_export.xml", REGISTRY).fixed
+    head, tail = export.split(b"<![CDATA[", 1)[0], export.rsplit(b"]]>", 1)[1]
+    assert fixed.startswith(head) and fixed.endswith(tail), (export, fixed)
+
+
 def one_input(raw: bytes) -> None:
     if not raw:
         return
-    target, data = (raw[0] - 0xF0 if raw[0] in (0xF9, 0xFA, 0xFB) else raw[0] % 9), raw[1:]
+    target, data = (raw[0] - 0xF0 if raw[0] in (0xF9, 0xFA, 0xFB, 0xFC) else raw[0] % 9), raw[1:]
+    if target == 12:
+        check_xml(data)
+        return
     if target == 9:
         check_config(data)
         return

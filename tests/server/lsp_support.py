@@ -177,3 +177,11 @@ def apply_edits(text: str, edits: list[types.TextEdit]) -> str:
         text = text[: offset(e.range.start)] + e.new_text + text[offset(e.range.end):]
         lines = text.split("\n")
     return text
+
+
+def doc(path: Path) -> types.TextDocumentIdentifier:
+    return types.TextDocumentIdentifier(uri=path.as_uri())
+
+
+def at(line: int, character: int) -> types.Position:
+    return types.Position(line=line, character=character)

@@ -12,7 +12,7 @@ from pathlib import Path
 
 import pytest
 import pytest_asyncio
-from lsp_support import apply_edits, change_document, close_document, open_document, session
+from lsp_support import apply_edits, at, change_document, close_document, doc, open_document, session
 from lsprotocol import types
 from pytest_lsp import LanguageClient
 
@@ -69,14 +69,6 @@ MANUAL_XML = """\
 async def client(tmp_path_factory: pytest.TempPathFactory) -> AsyncIterator[LanguageClient]:
     async for c in session(tmp_path_factory.mktemp("cache")):
         yield c
-
-
-def doc(path: Path) -> types.TextDocumentIdentifier:
-    return types.TextDocumentIdentifier(uri=path.as_uri())
-
-
-def at(line: int, character: int) -> types.Position:
-    return types.Position(line=line, character=character)
 
 
 def xml_machine(tmp_path: Path) -> Path:

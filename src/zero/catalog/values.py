@@ -231,7 +231,7 @@ class ListValues:
         """Bind a document's entries (before ``Ende``); ``kind`` detected when ``None``."""
         entries = doc.entries
         if kind is None:
-            kind = registry.detect_kind((e.key.pattern for e in entries if e.key), doc.path)
+            kind = doc.declared_kind() or registry.detect_kind((e.key.pattern for e in entries if e.key), doc.path)
         out = cls(doc, registry, kind, entries)
         append = out.resolved.append
         by_id = out.by_id

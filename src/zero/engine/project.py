@@ -202,7 +202,7 @@ class Project:
 def require_startup(machine: Machine, registry: Registry) -> Machine:
     """A machine question needs a start-up list that names lists: anything else is said plainly."""
     doc = machine.startup.values.doc
-    kind = registry.detect_kind((e.key.pattern for e in doc.entries if e.key), doc.path)
+    kind = doc.declared_kind() or registry.detect_kind((e.key.pattern for e in doc.entries if e.key), doc.path)
     if not machine.named:
         if kind not in (None, "STUP"):
             raise ZeroError(f"not a start-up list: it reads as a {KINDS[kind][1]} and names no other list; "

@@ -10,6 +10,7 @@ from __future__ import annotations
 import enum
 import re
 
+from zero.forms import XML_ROOTS
 from zero.records import field, record
 
 # An index with more digits than this is not converted to an int: it is clamped
@@ -19,6 +20,7 @@ HUGE_INDEX = 10**MAX_INDEX_DIGITS
 
 _KEY_RE = re.compile(r"[A-Za-z0-9_]+(?:\[[0-9]+\])*(?:\.[A-Za-z0-9_]+(?:\[[0-9]+\])*)*")
 _INDEX_RE = re.compile(r"\[([0-9]+)\]")
+_ROOT_RE = re.compile(r"# ?\s*<([A-Za-z_][A-Za-z0-9_]*)[\s>]")
 
 
 class ValueKind(enum.Enum):
@@ -250,6 +252,27 @@ class Document:
         if 1 <= line <= len(self.lines):
             return self.lines[line - 1]
         return ""
+
+    def declared_kind(self) -> str | None:
+        """The list kind the file itself declares: an XML list's root element (read from XML, or kept
+        as the comment lines of its list text, YAML, TOML or JSON form), else ``None`` (detected from
+        the keys: an axis list and an axis compensation list share `kopf.achs_nr`)."""
+        if self.origin is not None and self.origin.kind is not None:
+            return self.origin.kind
+        seen = 0
+        for item in self.items:
+            if type(item) is Blank:
+                continue
+            if type(item) is not Comment or seen > 64:
+                return None
+            text = self.lines[item.line - 1]
+            if seen == 0 and not text.startswith(("# <?xml", "# \ufeff<?xml")):
+                return None
+            seen += 1
+            m = _ROOT_RE.match(text)
+            if m is not None:  # the first element is the root
+                return XML_ROOTS.get(m.group(1))
+        return None
 
     def file_line(self, line: int) -> int:
         """A line of this list as the line of the file that holds it (an XML list, a TwinCAT export)."""

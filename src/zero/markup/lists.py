@@ -231,7 +231,7 @@ def to_xml(doc: Document, registry: Registry, kind: str | None) -> str:
     """The XML list this list text stands for (see the module's description). Raises a located
     :class:`ZeroError` for what an XML list cannot hold."""
     if has_skeleton(doc):
-        return _rebuild(doc, registry, kind)
+        return _rebuild(doc, registry, doc.declared_kind() or kind)
     return _write_new(doc, registry, kind)
 
 
