@@ -220,9 +220,9 @@ def has_skeleton(doc: Document) -> bool:
         if isinstance(item, Blank):
             continue
         if isinstance(item, Comment):
-            text = doc.lines[item.line - 1]
-            return text.startswith("# <?xml") or text.startswith("# \ufeff<?xml") or (
-                text.startswith("# <") and text[3:4].isalpha())
+            text = doc.lines[item.line - 1].lstrip("# \ufeff")
+            return doc.lines[item.line - 1].startswith("# ") and text.startswith("<") and (
+                text[1:2] in ("?", "!") or text[1:2].isalpha())
         return False
     return False
 
@@ -231,7 +231,12 @@ def to_xml(doc: Document, registry: Registry, kind: str | None) -> str:
     """The XML list this list text stands for (see the module's description). Raises a located
     :class:`ZeroError` for what an XML list cannot hold."""
     if has_skeleton(doc):
-        return _rebuild(doc, registry, doc.declared_kind() or kind)
+        rebuilt = _rebuild(doc, registry, doc.declared_kind() or kind)
+        try:  # the comment lines were XML lines: they make XML again, or the list is written anew
+            scan(rebuilt.encode("utf-8", "surrogateescape"), doc.path)
+            return rebuilt
+        except ZeroError:
+            pass
     return _write_new(doc, registry, kind)
 
 
