@@ -13,6 +13,7 @@ line keeps a process-wide registry.
 
 from __future__ import annotations
 
+import re
 from collections import Counter
 from collections.abc import Iterable, Iterator, Mapping
 from pathlib import Path
@@ -124,6 +125,23 @@ class ParamSpec:
                 mask |= v
             return value & ~mask == 0
         return value in self.enum
+
+    @property
+    def bit_coded(self) -> bool:
+        """Are the symbols bits that combine (``VEL=1 ACC=2 JERK=4``: 7 is all three)? Decided from the
+        catalogue's values: at least three distinct powers of two, and every other value a power of
+        two in its low byte with higher flag bits (``ADD_VEL=257``); an enumeration (``1 2 3 5``) is not."""
+        values = {v for _, v in self.symbols if v}
+        powers = {v for v in values if v & (v - 1) == 0}
+        return len(powers) >= 3 and all(v in powers or (v & 0xFF) in powers for v in values)
+
+    def bits_allow(self, value: int) -> bool:
+        """A value made of the symbols' bits (every set bit covered by a symbol inside the value)."""
+        covered = 0
+        for _, v in self.symbols:
+            if v and v & ~value == 0:
+                covered |= v
+        return value >= 0 and covered == value
 
     @property
     def symbol_names(self) -> frozenset[str]:
@@ -253,6 +271,17 @@ class Registry:
                 return self.specs[pid] if pid is not None else None
         return None
 
+    def counted_by(self, spec: ParamSpec) -> tuple[tuple[str, int], ...]:
+        """The parameters that count the elements of ``spec``'s arrays, each with the index it counts:
+        `spindel[i].…` by `spdl_anzahl`, `gruppe[g].achse[j].…` by `gruppe[g].achs_anzahl` (index 1).
+        Found by rule from the catalogue's keys: an unsigned `STEM_anzahl` beside an array (same
+        parent) whose name holds STEM's letters in order (`spdl` in `spindel`, `grp` in `gruppe`, `hr`
+        in `hr_data`); empty where none counts them."""
+        table: dict[str, tuple[tuple[str, int], ...]] = self.memo.setdefault("counted_by", {})
+        if not table:
+            table.update(_counts(self))
+        return table.get(spec.id, ())
+
     def machine_data_ids(self) -> frozenset[str]:
         """The IDs ``#MACHINE DATA`` accepts as keywords (the seed's entries), computed once."""
         if self._machine_data is None:
@@ -332,6 +361,34 @@ class Registry:
             cands = [k for k in pool if k.rsplit(".", 1)[-1] == last and k.split(".", 1)[0] == first]
             out = sorted(cands, key=len)[:n]
         return out
+
+
+_COUNT_RE = re.compile(r"(?:^|\.)([a-z]+)_anzahl$")
+
+
+def _letters_in_order(stem: str, name: str) -> bool:
+    it = iter(name)
+    return all(c in it for c in stem)
+
+
+def _counts(registry: Registry) -> dict[str, tuple[tuple[str, int], ...]]:
+    """Every counted parameter → its counts (ID, the index each counts); see ``counted_by``."""
+    out: dict[str, tuple[tuple[str, int], ...]] = {"": ()}  # never empty once built
+    specs = list(registry.specs.values())
+    for count in specs:
+        m = _COUNT_RE.search(count.key or "") if count.type.startswith("UNS") else None
+        if m is None or count.key is None:
+            continue
+        stem, parent = m.group(1), count.key[: m.start(1)]
+        for spec in specs:
+            key = spec.key
+            if spec.kind != count.kind or not key or not key.startswith(parent):
+                continue
+            first = key[len(parent):].split(".")[0]
+            if first.endswith("[]") and first[:-2] != stem and first[0] == stem[0] and \
+                    _letters_in_order(stem, first[:-2]):
+                out[spec.id] = (*out.get(spec.id, ()), (count.id, parent.count("[]")))
+    return out
 
 
 def _spec_from_row(row: dict[str, Any], index_base: dict[str, int]) -> ParamSpec:

@@ -2,14 +2,15 @@
 
 from __future__ import annotations
 
-from collections.abc import Iterator
+import re
+from collections.abc import Callable, Iterator
 
 from zero.catalog.ids import SOFT_LIMITS
 from zero.catalog.ranges import Bounds, Number, Range, Ref
 from zero.catalog.registry import KINDS, NO_DEFAULT, ParamSpec, Registry
 from zero.catalog.values import Resolved, Value, default_number
 from zero.diagnostics import Diagnostic, Edit, Fix, Related, Span
-from zero.lists.model import Entry, format_key
+from zero.lists.model import Entry, ValueKind, format_key
 from zero.rules.base import INFO, Context, E, Family, W
 
 FAMILY: Family[Context] = Family("R", "registry", "list")
@@ -226,6 +227,36 @@ faulty and the default is used.
 Fix: correct the ID.
 """)
 
+CONTRADICTION = FAMILY.rule(
+    "R011", "range-excludes-default", W, "A value outside a range that the catalogue's own default violates",
+    """
+What it checks: a value outside the parameter's range, where the catalogue's default lies
+outside that range too (`kenngr.distc.min_pos`: range `0 ≤ x < MAX(SGN32)`, default −50000).
+The catalogue contradicts itself there: the value may be what the kernel expects.
+
+Why it matters on the machine: perhaps nothing, perhaps the value is replaced — the catalogue
+does not say which. zero reports it at warning, once, and says so, instead of an error (R005)
+that claims to know.
+
+Example: `kenngr.distc.min_pos -40000`
+Fix: check the parameter's documentation for the kernel release of the machine.
+""")
+UNIT_UNKNOWN = FAMILY.rule(
+    "R012", "range-unit-unknown", INFO, "A range written in a physical unit for a value of unknown unit",
+    """
+What it checks: a value outside a range the catalogue writes in a physical unit (`-45° ≤ x ≤
+45°`), where the catalogue gives no unit for the value itself: the value may be written in an
+internal unit (0.0001°: 450000 is 45°). zero compares a range in a unit only in the value's
+own unit; where that is unknown, it says so at info instead of an error.
+
+Why it matters on the machine: perhaps nothing (450000 is 45° in 0.0001°), perhaps a value out
+of range — the catalogue does not say which.
+
+Example: `wz[1].grinding_disc_tilt_angle 450000`
+Fix: check the parameter's unit in its documentation; write the value in it.
+""")
+_PHYSICAL_UNIT = re.compile(r"°|\b(?:mm|µm|um|m/s|mm/s|mm/min|rpm)\b")
+
 _SIMPLE_PROBLEMS = {
     "type": ("R004", "`{value}` is not {what} ({type}) for `{key}`"),
     "overflow": ("R004", "{value} does not fit {type} for `{key}`"),
@@ -275,16 +306,16 @@ def _default_contradicts(spec: ParamSpec, registry: Registry) -> bool:
     return not rng.evaluate(lambda *_: None).contains(dflt)
 
 
-@FAMILY.check(WRONG_TYPE, OUT_OF_RANGE, RANGE_REFERENCE, UNKNOWN_REFERENCE)
+@FAMILY.check(WRONG_TYPE, OUT_OF_RANGE, RANGE_REFERENCE, UNKNOWN_REFERENCE, CONTRADICTION, UNIT_UNKNOWN)
 def check_values(ctx: Context) -> Iterator[Diagnostic]:
-    """R004, R005, R006, R009: type, range, references."""
+    """R004, R005, R006, R009, R011, R012: type, range, references."""
     # Whether a value passes depends only on (parameter, value text) unless its range refers to
     # other parameters (then on the entry's indices too): a value that passed once passes again.
     registry = ctx.registry
     passed: dict[tuple[str, str], bool] = registry.memo.setdefault("passed", {})  # kept across lists
     for res in ctx.resolved:
         slot = (res.spec.id, res.entry.value)
-        if slot in passed:
+        if slot in passed or _not_configured(ctx, res):
             continue
         clean = True
         for found in _check_value(ctx, res):
@@ -294,6 +325,20 @@ def check_values(ctx: Context) -> Iterator[Diagnostic]:
             rng = registry.range_of(res.spec) if res.spec.range_text else None
             if rng is None or not rng.refs:
                 passed[slot] = True
+
+
+def _not_configured(ctx: Context, res: Resolved) -> bool:
+    """An element beyond its count (`spindel[0]` with `spdl_anzahl 0`): the controller does not use it,
+    so its value is not checked (X011 says what a channel's spindles are)."""
+    key = res.entry.key
+    if key is None:
+        return False
+    for count_id, level in ctx.registry.counted_by(res.spec):
+        if len(key.indices) > level:
+            n = ctx.number_of(count_id, key.indices[:level])
+            if n is not None and key.indices[level] >= n:
+                return True
+    return False
 
 
 def _check_value(ctx: Context, res: Resolved) -> Iterator[Diagnostic]:
@@ -321,6 +366,12 @@ def _check_value(ctx: Context, res: Resolved) -> Iterator[Diagnostic]:
         what = {"integer": "an integer", "number": "a number"}.get(v.detail, v.detail)
         text = template.format(value=e.value, key=e.key_text, type=spec.type, what=what,
                                detail=v.detail, max_len=spec.max_len)
+        if v.problem == "type" and e.value_kind is ValueKind.REAL:  # `666666.667` for an integer
+            whole = e.value.split(".")[0].split("e")[0].split("E")[0] or "0"
+            yield ctx.report(code, span, f"{text}: neither the catalogue nor the manuals say how the controller "
+                             f"reads a decimal here (the digits before the point, {whole}, or its default "
+                             f"{spec.default_display}, or something else)", param_id=spec.id)
+            return
         yield ctx.report(code, span, f"{text}: {_default_phrase(spec, ctx.registry)}", param_id=spec.id)
         return
     if v.problem == "symbol":
@@ -388,17 +439,38 @@ def _check_range(ctx: Context, e: Entry, spec: ParamSpec, v: Value) -> Iterator[
     skip_refs = "M001" in ctx.severities and spec.id in SOFT_LIMITS
     indices = e.key.indices if e.key else ()
 
-    def resolve(pid: str, idx: int | None) -> Number | None:
-        if skip_refs:
-            return None
-        return ctx.number_of(pid, (idx,) if idx is not None else indices)
+    unpaired = {r.id for r in rng.refs if r.index is None and not _same_indices(ctx.registry, spec, r.id)}
 
-    bounds = rng.evaluate(resolve)
+    def resolve_at(k: int | None) -> Callable[[str, int | None], Number | None]:
+        def resolve(pid: str, idx: int | None) -> Number | None:
+            if skip_refs:
+                return None
+            if pid in unpaired:  # its index means something else: element k of its array
+                return ctx.number_of(pid, (k or 0,))
+            return ctx.number_of(pid, (idx,) if idx is not None else indices)
+        return resolve
+
+    bounds = rng.evaluate(resolve_at(None))
     if bounds.contains(v.number):
         return
+    every = ""
+    if unpaired:  # `tipp.geschw[i] ≤ P-AXIS-00212` (gear i?): faulty only against every element of it
+        sizes = [d for pid in unpaired if (ref := ctx.registry.get(pid)) is not None for d in ref.dims[:1]]
+        each = [rng.evaluate(resolve_at(k)) for k in range(min(sizes or [1]))]
+        if any(b.contains(v.number) for b in each):
+            return
+        # said with the element that allows the most (the largest upper bound, else the lowest lower one)
+        bounds = max(each, key=lambda b: (b.high if b.high is not None else float("inf"),
+                                          -(b.low if b.low is not None else float("-inf"))))
+        arrays = ", ".join(f"`{ctx.registry.specs[pid].key}`" for pid in sorted(unpaired))
+        every = (f" for every element of {arrays} (its index means something else than the index of "
+                 f"`{spec.key}`, so zero pairs none)")
     refs = [] if skip_refs else rng.refs
     text = _bounds_text(bounds, rng.low, rng.high)
-    if refs:
+    if refs and every:
+        yield ctx.report("R006", span, f"{e.value} violates {text} for `{e.key_text}`{every}: "
+                         f"{_default_phrase(spec, ctx.registry)}", param_id=spec.id)
+    elif refs:
         yield ctx.report(
             "R006",
             span,
@@ -406,6 +478,16 @@ def _check_range(ctx: Context, e: Entry, spec: ParamSpec, v: Value) -> Iterator[
             f"{_default_phrase(spec, ctx.registry)}",
             param_id=spec.id,
         )
+    elif spec.range_text and not spec.units and _PHYSICAL_UNIT.search(spec.range_text):
+        unit = _PHYSICAL_UNIT.search(spec.range_text)
+        assert unit is not None
+        yield ctx.report("R012", span, f"{e.value} is outside {text} for `{e.key_text}` if it is in "
+                         f"{unit.group()}, as the catalogue writes the range; the catalogue gives no unit for the "
+                         "value itself, so whether it lies inside is not known", param_id=spec.id)
+    elif _default_contradicts(spec, ctx.registry):
+        yield ctx.report("R011", span, f"{e.value} is outside {text} for `{e.key_text}`, but so is the "
+                         f"catalogue's own default {spec.default_display}: the catalogue contradicts itself, and "
+                         "what the controller does with the value is not documented", param_id=spec.id)
     else:
         yield ctx.report(
             "R005",
@@ -413,6 +495,21 @@ def _check_range(ctx: Context, e: Entry, spec: ParamSpec, v: Value) -> Iterator[
             f"{e.value} is outside {text} for `{e.key_text}`: {_default_phrase(spec, ctx.registry)}",
             param_id=spec.id,
         )
+
+
+def _same_indices(registry: Registry, spec: ParamSpec, ref_id: str) -> bool:
+    """Do the indices of ``spec`` and of the parameter its range refers to mean the same thing (the
+    same array: `getriebe[i].a` and `getriebe[i].b`)? Not where the arrays differ
+    (`handbetrieb.tipp.geschw[i]` numbers jog steps, `getriebe[i].dynamik.vb_max` gears), nor where
+    only the referenced parameter is an array. Where it is no array, there is nothing to pair."""
+    ref = registry.get(ref_id)
+    if ref is None or not ref.dims or not ref.key:
+        return True
+    if not spec.dims or not spec.key:
+        return False  # a single value against an array: no index to pair
+    arrays = [m for m in spec.key.split(".") if m.endswith("[]")]
+    others = [m for m in ref.key.split(".") if m.endswith("[]")]
+    return arrays[: len(others)] == others
 
 
 def _check_enum(ctx: Context, e: Entry, spec: ParamSpec, number: Number) -> Iterator[Diagnostic]:
