@@ -172,8 +172,9 @@ def test_enumerations_and_bit_masks_get_no_arithmetic(registry: Registry) -> Non
     b = read_side(b"kenngr.antr_typ 2\nkenngr.achs_mode 0x000001\nkenngr.swe_pos 200\n", "lis", "b.lis", registry,
                   "AXIS")
     by_key = {c.key: c for c in diff_sides(a, b, registry)}
-    assert (by_key["kenngr.antr_typ"].delta, by_key["kenngr.antr_typ"].note) == (None, "")
-    assert (by_key["kenngr.achs_mode"].delta, by_key["kenngr.achs_mode"].note) == (None, "cleared 0x400000")
+    assert (by_key["kenngr.antr_typ"].delta, by_key["kenngr.antr_typ"].coding) == (None, "symbol")
+    achs_mode = by_key["kenngr.achs_mode"]  # tests/test_diff_values.py: how each kind of value reads
+    assert (achs_mode.delta, achs_mode.coding, achs_mode.bits) == (None, "bits", ((), ("bit 22 (0x400000)",)))
     assert by_key["kenngr.swe_pos"].delta == 0.01
 
 

@@ -15,7 +15,7 @@ from pathlib import Path
 from typing import Any
 
 from zero.catalog.ids import AXIS_TYPE, axis_unit, fixed, g_code_with_index, in_units
-from zero.catalog.registry import NO_DEFAULT, ParamSpec, Registry
+from zero.catalog.registry import INTEGER_TYPES, NO_DEFAULT, ParamSpec, Registry
 from zero.catalog.values import canonical_key, default_number, parse_int, read_value
 from zero.errors import ZeroError
 from zero.lists.model import Comment, Entry, Key, ValueKind, parse_key
@@ -55,11 +55,19 @@ class Change:
     delta: float | int | None = None
     group: str = ""
     note: str = ""
+    restart: bool = False  # the catalogue: a change takes effect only at a restart (ChangeRequiresRestart)
+    coding: str | None = None  # bits, symbol, boolean (see coding()); None: a quantity, a number, a text
+    old_name: str | None = None  # the values by name (`VEL | ACC`, `SERCOS`, `off`) where coding says one
+    new_name: str | None = None
+    # a mask's bits (by name, else `bit 22 (0x400000)`) set and cleared; None where not two masks
+    bits: tuple[tuple[str, ...], tuple[str, ...]] | None = None
 
     def to_json(self) -> dict[str, Any]:
         return {"key": self.key, "id": self.param_id, "kind": self.kind, "old": self.old,
                 "new": self.new, "unit": self.unit, "delta": self.delta, "group": self.group,
-                "note": self.note or None}
+                "note": self.note or None, "restart": self.restart, "coding": self.coding,
+                "old_name": self.old_name, "new_name": self.new_name,
+                "bits": {"set": list(self.bits[0]), "cleared": list(self.bits[1])} if self.bits else None}
 
 
 # ----------------------------------------------------------------- reading sides
@@ -154,10 +162,13 @@ def side_unit(side: Side | None, registry: Registry) -> str | None:
 
 def unit_and_delta(spec: ParamSpec | None, old: tuple[str, Any] | None, new: tuple[str, Any] | None,
                    length_unit: str | None) -> tuple[str | None, float | int | None]:
+    """The unit and, for a quantity (the catalogue gives it a unit), the numeric delta. A number
+    without a unit (a code, a count, a number of something: the catalogue does not say which) and
+    a value that names something (:func:`coding`) get no arithmetic."""
     if spec is None:
         return None, None
     unit: str | None = (length_unit or "mm or °") if spec.is_length else (", ".join(spec.units) or None)
-    if old is None or new is None or old[0] != "num" or new[0] != "num":
+    if unit is None or old is None or new is None or old[0] != "num" or new[0] != "num":
         return unit, None
     raw = new[1] - old[1]
     if spec.is_length:
@@ -168,26 +179,192 @@ def unit_and_delta(spec: ParamSpec | None, old: tuple[str, Any] | None, new: tup
     return unit, raw
 
 
-def _is_code(spec: ParamSpec | None, *texts: str) -> bool:
-    """A value that names something (listed values, symbols, bits written in hex), not a quantity."""
-    if spec is not None and (spec.enum or spec.symbols):
-        return True
-    return any(t.strip().lstrip("+-").lower().startswith("0x") for t in texts)
+# ----------------------------------------------------------------- what a value means
+
+BITS, SYMBOL, BOOLEAN = "bits", "symbol", "boolean"  # Change.coding; None: a quantity, a number or a text
+
+_BIT_WORDS = re.compile(r"\bbits?\s*[0-9]|\bbit[- ]?(?:coded|mask|wise|field)|\bbitmask|bitcodiert|\bbitmaske",
+                        re.IGNORECASE)
 
 
-def _code_note(spec: ParamSpec | None, old: tuple[str, Any] | None, new: tuple[str, Any] | None) -> str:
-    if old is None or new is None or old[0] != "num" or new[0] != "num":
-        return ""
+def _one_bit(v: int) -> bool:
+    return v > 0 and v & (v - 1) == 0
+
+
+def bits_criterion(spec: ParamSpec) -> str | None:
+    """Why the catalogue's data make the parameter's values bits (``None``: they do not):
+    ``bit_coded`` (:attr:`ParamSpec.bit_coded`: the one decision the rules make too, that
+    `VEL | ACC` combines), ``enum`` (values listed in prose that the catalogue reader marks as
+    bits: ``ParamSpec.enum_flags``), ``hex`` (an unsigned integer without symbols or listed values
+    whose default or range the catalogue writes in hex), ``description`` (no symbols or listed
+    values, and a description that speaks of bits: `Bit 0`, bit-coded, bit mask)."""
+    if spec.type == "BOOLEAN":
+        return None
+    if spec.bit_coded:
+        return "bit_coded"
+    if spec.symbols:
+        return None  # symbols that are no bits: by name
+    if spec.enum:
+        return "enum" if spec.enum_flags else None
+    if spec.type.startswith("UNS") and any((t or "").strip().lower().startswith("0x")
+                                           for t in (spec.default, spec.range_text)):
+        return "hex"
+    if spec.description and _BIT_WORDS.search(spec.description):
+        return "description"
+    return None
+
+
+def _hex_written(*texts: str | None) -> bool:
+    return any(t is not None and t.strip().lstrip("+-").lower().startswith("0x") for t in texts)
+
+
+def coding(spec: ParamSpec | None, old: tuple[str, Any] | None, new: tuple[str, Any] | None,
+           *texts: str | None) -> str | None:
+    """How a change is shown: ``bits`` (the bits that changed), ``symbol`` (by name), ``boolean``
+    (off/on) or ``None`` (a number, with its delta where it has a unit). Decided by the catalogue;
+    a combination written `A | B` is a set of flags; a unit-less integer written in hex a mask."""
+    if any(v is not None and v[0] == "flags" for v in (old, new)):
+        return BITS
+    if spec is None:
+        return BITS if _hex_written(*texts) else None
+    if spec.type == "BOOLEAN":
+        return BOOLEAN
+    if bits_criterion(spec) is not None:
+        return BITS
+    if spec.symbols or spec.enum:
+        return SYMBOL
+    if not spec.units and spec.type in INTEGER_TYPES and _hex_written(*texts):
+        return BITS
+    return None
+
+
+def _bit_names(spec: ParamSpec | None) -> dict[int, str]:
+    """The catalogue's name of each single bit (its symbols, or the labels of its listed bits)."""
+    names: dict[int, str] = {}
+    if spec is None:
+        return names
+    for name, v in spec.symbols:
+        if v is not None and _one_bit(v):
+            names.setdefault(v, name)
+    for v, label in spec.enum_items():
+        if label and _one_bit(v):
+            names.setdefault(v, label)
+    return names
+
+
+def bit_label(bit: int, names: dict[int, str]) -> str:
+    """A bit by its catalogue name, else by number and value: ``bit 22 (0x400000)``."""
+    return names.get(bit) or f"bit {bit.bit_length() - 1} ({bit:#x})"
+
+
+def _bits_of(n: int) -> list[int]:
+    return [1 << i for i in range(n.bit_length()) if n >> i & 1]
+
+
+def changed_bits(spec: ParamSpec | None, old: tuple[str, Any] | None,
+                 new: tuple[str, Any] | None) -> tuple[tuple[str, ...], tuple[str, ...]] | None:
+    """The bits (or flags) set and cleared from ``old`` to ``new``, in bit order; ``None`` where the
+    two values are not both masks zero can read."""
+    if old is None or new is None:
+        return None
+    flags = [_flag_set(spec, v) for v in (old, new)]
+    if flags[0] is not None and flags[1] is not None:
+        order = {name: i for i, (name, _) in enumerate(spec.symbols)} if spec is not None else {}
+
+        def ranked(names: set[str]) -> tuple[str, ...]:
+            return tuple(sorted(names, key=lambda x: (order.get(x, len(order)), x)))
+
+        return ranked(flags[1] - flags[0]), ranked(flags[0] - flags[1])
+    if old[0] != "num" or new[0] != "num" or not all(isinstance(v[1], int) and v[1] >= 0 for v in (old, new)):
+        return None
     a, b = old[1], new[1]
-    if spec is not None and spec.enum and not spec.enum_flags:
-        labels = dict(spec.enum_items())
-        if labels.get(a) and labels.get(b):
-            return f"{labels[a]} → {labels[b]}"
-        return ""
-    if isinstance(a, int) and isinstance(b, int) and a >= 0 and b >= 0:
-        parts = [f"bits set {b & ~a:#x}" if b & ~a else "", f"cleared {a & ~b:#x}" if a & ~b else ""]
-        return ", ".join(p for p in parts if p)
-    return ""
+    names = _bit_names(spec)
+    return (tuple(bit_label(x, names) for x in _bits_of(b & ~a)),
+            tuple(bit_label(x, names) for x in _bits_of(a & ~b)))
+
+
+def _flag_set(spec: ParamSpec | None, value: tuple[str, Any]) -> set[str] | None:
+    """Flags named without numbers (`FCT_A | FCT_B`) as a set; ``None`` for a value with numbers."""
+    if value[0] == "flags":
+        return set(value[1])
+    if value[0] == "text":
+        return {value[1]}
+    if value[0] == "num" and value[1] == 0 and spec is not None and spec.symbols \
+            and all(v is None for _, v in spec.symbols):
+        return set()  # `0x00000000`: none of them
+    return None
+
+
+def value_name(spec: ParamSpec | None, how: str | None, value: tuple[str, Any] | None) -> str | None:
+    """A value as its meaning: ``on``/``off``, a symbol's name (a listed value with its meaning:
+    ``3 (Bessel)``), the names of a mask's bits (``VEL | ACC``; a mask without names in hex);
+    ``None`` where the catalogue names nothing."""
+    if value is None or how is None:
+        return None
+    kind, v = value
+    if kind == "flags":
+        return " | ".join(v)
+    if kind == "text":
+        return str(v)
+    if kind != "num" or not isinstance(v, int):
+        return None
+    if how == BOOLEAN:
+        return {0: "off", 1: "on"}.get(v)
+    if how == SYMBOL:
+        for name, n in spec.symbols if spec is not None else ():
+            if n == v:
+                return name
+        labels = dict(spec.enum_items()) if spec is not None else {}
+        return f"{v} ({labels[v]})" if labels.get(v) else None
+    if v < 0:
+        return str(v)
+    named = [(n, name) for name, n in spec.symbols if n is not None] if spec is not None else []
+    if not named and not _bit_names(spec):
+        return f"{v:#x}"
+    if v == 0:
+        return next((name for n, name in named if n == 0), "0")
+    parts: list[tuple[int, str]] = []
+    rest = v
+    for n, name in sorted(named, key=lambda x: -x[0].bit_count()):  # combinations first (`ADD_VEL`)
+        if n > 0 and rest & n == n and not _one_bit(n):
+            parts.append((n & -n, name))
+            rest &= ~n
+    names = _bit_names(spec)
+    for bit in _bits_of(rest):
+        parts.append((bit, names.get(bit) or f"{bit:#x}"))
+    return " | ".join(name for _, name in sorted(parts))
+
+
+def describe(c: Change, spec: ParamSpec | None, old: tuple[str, Any] | None, new: tuple[str, Any] | None,
+             *texts: str | None) -> Change:
+    """Fill in what ``c`` means (:func:`coding`, the names, the bits that changed, the restart
+    flag); a value that names something gets no delta."""
+    c.restart = bool(spec is not None and spec.restart)
+    how = coding(spec, old, new, *texts)
+    if how is None:
+        return c
+    c.coding, c.delta = how, None
+    c.old_name, c.new_name = value_name(spec, how, old), value_name(spec, how, new)
+    if how == BITS:
+        c.bits = changed_bits(spec, old, new)
+    return c
+
+
+def _named(spec: ParamSpec | None, value: tuple[str, Any] | None, text: str) -> str:
+    """A value a list writes, by name where the catalogue names it (else as the list writes it)."""
+    how = coding(spec, value, None, text)
+    if how == BOOLEAN or (how in (BITS, SYMBOL) and spec is not None
+                          and (spec.symbols or _bit_names(spec) or any(lb for _, lb in spec.enum_items()))):
+        return value_name(spec, how, value) or text
+    return text
+
+
+def default_name(spec: ParamSpec) -> str:
+    """The catalogue's default as a note says it, by name: ``off``, ``NOT_VALID``, ``VEL | ACC``
+    (a default the catalogue writes as a name, or a number without names, as it writes it)."""
+    if spec.type != "BOOLEAN" and spec.symbol_value((spec.default or "").strip()) is not None:
+        return spec.default_display
+    return _named(spec, default_effective(spec), spec.default_display)
 
 
 _INDEX_RE = re.compile(r"\[([0-9]+)\]")
@@ -265,18 +442,17 @@ def diff_sides(a: Side, b: Side, registry: Registry, options: DiffOptions | None
                                       _comment_text(b.comments.get(key, ())), group=group))
                 continue
             unit, delta = unit_and_delta(spec, va, vb, length_unit)
-            note = ""
-            if _is_code(spec, ea.value, eb.value):  # an enumeration or bit mask: no arithmetic
-                delta, note = None, _code_note(spec, va, vb)
-            out.append(Change(key, pid, CHANGED, ea.value, eb.value, unit, delta, group, note))
+            out.append(describe(Change(key, pid, CHANGED, ea.value, eb.value, unit, delta, group),
+                                spec, va, vb, ea.value, eb.value))
             continue
         base = under.entries.get(key) if under is not None else None
         if base is not None:
             dflt: tuple[str, Any] | None = effective(base, spec)
-            shown = f"the default list's {base.value} ({Path(under.path).name}:{base.line})"  # type: ignore[union-attr]
+            named = _named(spec, dflt, base.value)
+            shown = f"the default list's {named} ({Path(under.path).name}:{base.line})"  # type: ignore[union-attr]
         else:
             dflt = default_effective(spec)
-            shown = f"the default {spec.default_display}" if spec is not None else ""
+            shown = f"the default {default_name(spec)}" if spec is not None else ""
         present = va if ea is not None else vb
         if dflt is not None and present is not None and present == dflt:
             if options.strict:
@@ -285,12 +461,14 @@ def diff_sides(a: Side, b: Side, registry: Registry, options: DiffOptions | None
             continue
         if ea is None:
             unit, delta = unit_and_delta(spec, dflt, vb, length_unit)
-            out.append(Change(key, pid, ADDED, None, eb.value if eb else None, unit, delta, group,
-                              note=f"was {shown}" if dflt and shown else ""))
+            out.append(describe(Change(key, pid, ADDED, None, eb.value if eb else None, unit, delta, group,
+                                       note=f"was {shown}" if dflt and shown else ""),
+                                spec, dflt, vb, eb.value if eb else None, base.value if base else None))
         else:
             unit, delta = unit_and_delta(spec, va, dflt, length_unit)
-            out.append(Change(key, pid, REMOVED, ea.value, None, unit, delta, group,
-                              note=f"now {shown}" if dflt and shown else ""))
+            out.append(describe(Change(key, pid, REMOVED, ea.value, None, unit, delta, group,
+                                       note=f"now {shown}" if dflt and shown else ""),
+                                spec, va, dflt, ea.value, base.value if base else None))
     return _grouped(out)
 
 
@@ -315,13 +493,14 @@ def diff_defaults(side: Side, registry: Registry, options: DiffOptions | None = 
             continue
         if dflt is None:
             if options.strict:
-                out.append(Change(key, spec.id, CHANGED, None, e.value, group=group,
-                                  note="no documented default"))
+                out.append(describe(Change(key, spec.id, CHANGED, None, e.value, group=group,
+                                           note="no documented default"), spec, None, value, e.value))
             continue
         if value == dflt:
             continue
         unit, delta = unit_and_delta(spec, dflt, value, length_unit)
-        out.append(Change(key, spec.id, CHANGED, spec.default_display, e.value, unit, delta, group))
+        out.append(describe(Change(key, spec.id, CHANGED, spec.default_display, e.value, unit, delta, group),
+                            spec, dflt, value, e.value, spec.default))
     return _grouped(out)
 
 

@@ -25,19 +25,37 @@ def format_delta(c: Change) -> str:
     return f"{text} {c.unit}" if c.unit else text
 
 
+def format_change(c: Change) -> str:
+    """What changed, in the column of the delta: a quantity's delta, a mask's bits (``+JERK -ACC``),
+    a symbol or a BOOLEAN by name (``SERCOS → CANOPEN``, ``off → on``); empty where the values
+    column already says it all."""
+    if c.coding is None:
+        return format_delta(c)
+    if c.bits is not None:
+        return " ".join([*(f"+{b}" for b in c.bits[0]), *(f"-{b}" for b in c.bits[1])])
+    if c.old_name is None and c.new_name is None:
+        return ""
+    text = f"{c.old_name or c.old or '(absent)'} → {c.new_name or c.new or '(absent)'}"
+    return "" if text == _values(c) else text
+
+
+def _values(c: Change) -> str:
+    return f"{'(absent)' if c.old is None else c.old} → {'(absent)' if c.new is None else c.new}"
+
+
 _MARK = {ADDED: "+", REMOVED: "-", CHANGED: "~", SAME: "=", COMMENT: "#"}
 
 
 def rows(changes: Iterable[Change]) -> list[tuple[str, list[tuple[str, ...]]]]:
-    """Changes as (group, rows of cells) for the text and table renderers."""
+    """Changes as (group, rows of cells) for the text and table renderers: mark, key, ID, old → new,
+    what changed, notes (in parentheses: the note, `restart` where the catalogue says a change
+    takes effect only at a restart)."""
     out: list[tuple[str, list[tuple[str, ...]]]] = []
     for c in changes:
         if not out or out[-1][0] != c.group:
             out.append((c.group, []))
-        old = "(absent)" if c.old is None else c.old
-        new = "(absent)" if c.new is None else c.new
-        out[-1][1].append((_MARK[c.kind], c.key, c.param_id or "", f"{old} → {new}",
-                           format_delta(c), c.note))
+        notes = "  ".join(f"({n})" for n in (c.note, "restart" if c.restart else "") if n)
+        out[-1][1].append((_MARK[c.kind], c.key, c.param_id or "", _values(c), format_change(c), notes))
     return out
 
 
@@ -49,7 +67,7 @@ def render_plain(changes: list[Change], header: str) -> str:
         for r in cells:
             text = "  ".join(r[i].rjust(widths[i]) if i == 4 else r[i].ljust(widths[i])
                              for i in range(5)).rstrip()
-            lines.append(f"  {text}" + (f"  ({r[5]})" if r[5] else ""))
+            lines.append(f"  {text}" + (f"  {r[5]}" if r[5] else ""))
     return "\n".join(lines) + "\n"
 
 
@@ -79,8 +97,8 @@ def render_diff(changes: Sequence[Change], header: str, stream: TextIO | None = 
     styles = {"+": "green", "-": "red", "~": "yellow", "=": "dim", "#": "cyan"}
     for group, cells in rows(changes):
         table = Table(title=group, title_justify="left", title_style="bold", box=None, pad_edge=False)
-        for i, name in enumerate(("", "key", "ID", "old → new", "delta", "")):
-            if name == "delta":  # a number: never cut
+        for i, name in enumerate(("", "key", "ID", "old → new", "change", "")):
+            if name == "change":  # a delta or the bits that changed: never cut
                 table.add_column(name, no_wrap=True, min_width=max((len(r[i]) for r in cells), default=0))
             else:  # values and notes fold onto the next line rather than lose characters
                 table.add_column(name, no_wrap=name in ("key", "ID"), overflow="fold")
