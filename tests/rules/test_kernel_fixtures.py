@@ -44,11 +44,13 @@ def test_what_the_fixtures_pin(registry: Registry) -> None:
     assert "the catalogue gives no unit for the value itself" in messages["R012"]
 
 
-def test_bit_coded_symbols_are_found_by_rule(registry: Registry) -> None:
-    coded = sorted(s.key for s in registry.specs.values() if s.symbols and s.bit_coded and s.key)
-    assert "vorsteuer.vorsteuerung" in coded and "h_synch[]" in coded
-    assert "filter[].prototype" not in coded and "getriebe[].slep_ueberw_typ" not in coded  # enumerations
-    assert len(coded) == 11
+def test_bit_coded_symbols_are_what_the_catalogue_says(registry: Registry) -> None:
+    """`<Bitfield>` (29 parameters) or a description calling the value bit-coded (6): facts of the
+    catalogue, carried into the built-in table; an axis type with values 1, 2, 4 is no bit field."""
+    coded = sorted(s.key for s in registry.specs.values() if s.bit_coded and s.key)
+    assert "vorsteuer.vorsteuerung" in coded and "h_synch[]" in coded and "block_search_restart_mode" in coded
+    assert "kenngr.achs_typ" not in coded and "filter[].prototype" not in coded
+    assert len(coded) == 35
 
 
 def test_counts_are_found_by_rule(registry: Registry) -> None:
@@ -58,3 +60,32 @@ def test_counts_are_found_by_rule(registry: Registry) -> None:
     assert pairs["gruppe[].achse[].log_achs_nr"] == ["grp_anzahl", "gruppe[].achs_anzahl"]
     assert {c for counts in pairs.values() for c in counts} == {
         "spdl_anzahl", "gruppe[].achs_anzahl", "grp_anzahl", "hr_anzahl", "tasten_anzahl"}
+
+
+def test_an_axis_list_of_an_older_kernel(registry: Registry) -> None:
+    """fixtures/releases/old_axis.lis (its README says line by line what is right): renamed keys are
+    R013 with today's key as an unsafe fix and their values checked as today's parameter, removed
+    keys and (the header says V3.01.3074) keys this catalogue lacks are R013 warnings, never R001."""
+    result = lint_file(FIXTURES / "releases" / "old_axis.lis", registry)
+    assert [(d.code, d.span.line) for d in result.diagnostics] == [
+        ("R013", 12), ("R013", 13), ("R013", 14), ("R013", 15), ("R013", 16), ("R008", 16), ("R013", 17),
+        ("R013", 18), ("R013", 19), ("R013", 20), ("R013", 21), ("R013", 25), ("R013", 26), ("R013", 29),
+        ("R013", 30), ("R013", 31), ("R013", 32), ("R013", 33), ("R013", 34), ("R013", 35)]
+    renamed = next(d for d in result.diagnostics if d.span.line == 17)
+    assert renamed.fix is not None and not renamed.fix.safe and renamed.fix.edits[0].replacement == "antr.simu.totzeit"
+    assert renamed.param_id == "P-AXIS-00194"
+
+
+def test_the_kernel_setting_says_what_an_unknown_key_may_be(tmp_path: Path) -> None:
+    from conftest import zero_cli
+
+    (tmp_path / "achse.lis").write_text("kopf.achs_nr 1\nkenngr.vendor_frei 7\nEnde\n")
+    plain = zero_cli("lint", "achse.lis", "--output-format", "concise", cwd=tmp_path)
+    assert " R001 " in plain.stdout and plain.code == 1
+    (tmp_path / "zero.toml").write_text('kernel = "V3.1.3074"\n')
+    older = zero_cli("lint", "achse.lis", "--output-format", "concise", cwd=tmp_path)
+    assert " R013 " in older.stdout and " R001 " not in older.stdout and older.code == 0
+    assert "the machine runs the older kernel V3.1.3074" in older.stdout
+    (tmp_path / "zero.toml").write_text('kernel = "latest"\n')
+    bad = zero_cli("lint", "achse.lis", cwd=tmp_path)
+    assert bad.code == 2 and "kernel" in bad.stderr and "not a kernel release" in bad.stderr

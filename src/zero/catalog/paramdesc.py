@@ -15,6 +15,9 @@ import xml.etree.ElementTree as ET
 from pathlib import Path
 from typing import Any
 
+from defusedxml import DefusedXmlException
+from defusedxml.ElementTree import fromstring as defused_fromstring
+
 from zero.catalog.ranges import parse_range
 from zero.errors import ZeroError
 from zero.files import read_file
@@ -61,6 +64,15 @@ def enumeration(text: str, typ: str, name: str = "") -> tuple[list[int], list[st
     return values, labels, flags
 
 
+_BIT_CODED = re.compile(r"bit[- ]?coded|bitkodiert|bitcodiert", re.I)
+
+
+def _all_text(p: ET.Element, tag: str) -> str:
+    """Every language's text of a child element (to find a fact in it; the text is not kept)."""
+    el = p.find(f"{_NS}{tag}")
+    return "".join(el.itertext()) if el is not None else ""
+
+
 def _find(p: ET.Element, tag: str) -> str | None:
     v = p.findtext(f"{_NS}{tag}")
     return v.strip() if v is not None else None
@@ -68,12 +80,15 @@ def _find(p: ET.Element, tag: str) -> str | None:
 
 def read_param_desc(path: str | Path, *, with_text: bool = False) -> list[dict[str, Any]]:
     """Parse the XML into registry rows; :class:`~zero.errors.ZeroError` on bad input."""
-    try:
-        root = ET.fromstring(read_file(path))  # a regular file only: a FIFO or device is refused
+    try:  # a regular file only (a FIFO or device is refused); no DTD, entities or external references
+        root = defused_fromstring(read_file(path), forbid_dtd=True)
     except ZeroError as exc:
         raise ZeroError(f"cannot read parameter description {path}: {exc.message}") from None
     except ET.ParseError as exc:
         raise ZeroError(f"cannot read parameter description {path}: {exc}") from None
+    except DefusedXmlException as exc:
+        raise ZeroError(f"cannot read parameter description {path}: it declares a DTD, entities or external "
+                        f"references, which a parameter description has none of ({type(exc).__name__})") from None
     if root.tag != f"{_NS}Parameters":
         raise ZeroError(f"not a CncParaDesc file (root element {root.tag!r})", str(path))
 
@@ -116,6 +131,9 @@ def read_param_desc(path: str | Path, *, with_text: bool = False) -> list[dict[s
             "quantity": _find(p, "Quantity"),
             "max_len": int(max_len) if max_len else None,
             "restart": _find(p, "ChangeRequiresRestart") == "true",
+            # its symbols are bits that combine: the catalogue gives a bit field width, or its
+            # description calls the value bit-coded (a fact read from it; no text is kept)
+            "bits": _find(p, "Bitfield") is not None or bool(_BIT_CODED.search(_all_text(p, "LongDescription"))),
             "source": "CncParaDesc.xml",
         }
         enum = enumeration(range_text, typ, row["key"] or "") if parsed is None and range_text else None

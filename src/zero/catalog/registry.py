@@ -87,6 +87,7 @@ class ParamSpec:
     index_base: int = 0
     enum: tuple[int, ...] = ()  # allowed values the catalogue lists in prose
     enum_flags: bool = False  # the listed values are bits: any combination of them is allowed
+    bits: bool = False  # the catalogue says its symbols are bits (`<Bitfield>`, "bit-coded")
     enum_labels: tuple[str, ...] = ()  # their meaning (only from a user's CncParaDesc.xml)
 
     def index_first(self, pos: int) -> int:
@@ -128,12 +129,10 @@ class ParamSpec:
 
     @property
     def bit_coded(self) -> bool:
-        """Are the symbols bits that combine (``VEL=1 ACC=2 JERK=4``: 7 is all three)? Decided from the
-        catalogue's values: at least three distinct powers of two, and every other value a power of
-        two in its low byte with higher flag bits (``ADD_VEL=257``); an enumeration (``1 2 3 5``) is not."""
-        values = {v for _, v in self.symbols if v}
-        powers = {v for v in values if v & (v - 1) == 0}
-        return len(powers) >= 3 and all(v in powers or (v & 0xFF) in powers for v in values)
+        """Are the symbols bits that combine (``VEL=1 ACC=2 JERK=4``: 7 is all three)? What the
+        catalogue says: a bit field width (``<Bitfield>``), or a description calling the value
+        bit-coded. An axis type with values 1, 2, 4 is not, unless the catalogue says so."""
+        return self.bits
 
     def bits_allow(self, value: int) -> bool:
         """A value made of the symbols' bits (every set bit covered by a symbol inside the value)."""
@@ -416,6 +415,7 @@ def _spec_from_row(row: dict[str, Any], index_base: dict[str, int]) -> ParamSpec
         index_base=base,
         enum=tuple(row.get("enum", ())),
         enum_flags=bool(row.get("enum_flags", False)),
+        bits=bool(row.get("bits", False)),
         enum_labels=tuple(row.get("enum_labels", ())),
     )
 

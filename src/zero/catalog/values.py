@@ -29,6 +29,15 @@ Slot = tuple[str, tuple[int, ...]]
 _LEADING_ZERO = re.compile(r"\[0[0-9]")  # `[01]`: an index written with a leading zero
 
 
+def _renamed(registry: Registry, pattern: str, kind: str | None) -> ParamSpec | None:
+    """Today's parameter for a spelling of another kernel release (zero's table of renames), so that
+    its value is checked as that parameter's (R013 says what the key is)."""
+    from zero.catalog.releases import renamed  # start-up: only for a key the catalogue does not have
+
+    row = renamed(pattern, kind, registry)
+    return registry.get(row.id) if row is not None else None
+
+
 def rotary(values: ListValues) -> bool | None:
     """Whether the lengths of a list are degrees: ``None`` for a list that is not an axis list, else
     from its axis type (``kenngr.achs_typ``: the list's, the default list's under it, else the
@@ -43,7 +52,8 @@ def slot_of(registry: Registry, kind: str | None, entry: Entry) -> tuple[Slot, P
     key = entry.key
     if key is None:
         return ("?" + entry.key_text, ()), None
-    spec = registry.by_pattern(key.pattern, kind) or registry.alias(key.pattern, kind)
+    spec = registry.by_pattern(key.pattern, kind) or registry.alias(key.pattern, kind) or \
+        _renamed(registry, key.pattern, kind)
     if spec is None:
         return ("?" + key.pattern, key.indices), None
     return (spec.id, key.indices), spec
@@ -55,7 +65,8 @@ def canonical_key(registry: Registry, kind: str | None, entry: Entry) -> str:
     key = entry.key
     if key is None:
         return entry.key_text
-    spec = registry.by_pattern(key.pattern, kind) or registry.alias(key.pattern, kind)
+    spec = registry.by_pattern(key.pattern, kind) or registry.alias(key.pattern, kind) or \
+        _renamed(registry, key.pattern, kind)  # another release's spelling: today's key
     pattern = spec.key if spec is not None and spec.key else key.pattern
     if pattern == key.pattern and ("[0" not in key.text or _LEADING_ZERO.search(key.text) is None):
         return key.text  # written as documented (the usual case): as it is
@@ -252,6 +263,7 @@ class ListValues:
                 if spec is None:
                     spec = registry.alias(pattern, kind)
                     via_alias = spec is not None
+                    spec = spec or _renamed(registry, pattern, kind)  # its annotation still checked (R008)
                 hit = bound[pattern] = (spec, via_alias) if spec is not None else None
             if hit is None:
                 continue

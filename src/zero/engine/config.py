@@ -62,7 +62,7 @@ MAX_PATTERN_WILDCARDS = 3  # `*` runs in one segment of a glob pattern, and `**`
 MAX_PATTERN_LENGTH = 512
 MAX_CONFIG_BYTES = 1 << 20  # a configuration larger than 1 MiB is no configuration
 _KEYS = ("select", "extend-select", "ignore", "per-file-ignores", "severity", "kind", "include",
-         "exclude", "param-desc", "machine", "encoding")
+         "exclude", "param-desc", "machine", "encoding", "kernel")
 
 
 @functools.lru_cache(maxsize=512)
@@ -127,6 +127,7 @@ class Config:
     include: tuple[str, ...] = DEFAULT_INCLUDE
     exclude: tuple[str, ...] = ()
     param_desc: Path | None = None
+    kernel: str | None = None  # the kernel release the machines run (`V3.1.3074`), when not the catalogue's
     machine: Path | None = None  # the start-up list of the machine ([tool.zero.machine] startup)
     machine_lists: dict[str, Path] = field(default_factory=dict)  # start-up key → path override
     machine_workdir: Path | None = None  # the controller's working directory, where it cannot be found
@@ -177,7 +178,7 @@ class Config:
             kind = next((k for glob, k in self.kind if self._matches((glob,), file)), None)
         return LintOptions(select=select, ignore=ignore, kind=kind,
                            severity={**self.severity, **cli.severity}, extend_select=extend,
-                           encoding=cli.encoding or self.encoding_for(file))
+                           encoding=cli.encoding or self.encoding_for(file), kernel=cli.kernel or self.kernel)
 
     def show(self) -> str:
         """The effective configuration as TOML (``zero config --show``)."""
@@ -193,6 +194,8 @@ class Config:
                  f"exclude = {arr(self.exclude)}"]
         if self.param_desc:
             lines.append(f'param-desc = "{self.param_desc}"')
+        if self.kernel:
+            lines.append(f'kernel = "{self.kernel}"')
         if self.machine or self.machine_lists or self.machine_workdir or self.machine_roots:
             lines.append(f"[{prefix}machine]")
             if self.machine:
@@ -333,6 +336,16 @@ def parse_config(path: Path, text: str | None = None) -> Config | None:
             cfg.include = globs(key, value)
         elif key == "exclude":
             cfg.exclude = globs(key, value)
+        elif key == "kernel":
+            from zero.catalog.releases import parse_release  # start-up: only when a release is set
+
+            if not isinstance(value, str):
+                raise fail(key, 'expected the kernel release the machines run, e.g. "V3.1.3074"')
+            try:
+                parse_release(value)
+            except ZeroError as exc:
+                raise fail(key, exc.message) from None
+            cfg.kernel = value
         elif key == "param-desc":
             if not isinstance(value, str) or not value:
                 raise fail(key, "expected the path of a CncParaDesc.xml")

@@ -52,6 +52,7 @@ class LintOptions:
     severity: dict[str, Severity] = field(default_factory=dict)  # per-code overrides
     extend_select: tuple[str, ...] = ()  # codes or prefixes added to the selection
     encoding: str | None = None  # the codec the configuration declares for the list; None: detected
+    kernel: str | None = None  # the kernel release the machine runs (`kernel` in [tool.zero]); None: not said
 
 
 @record
@@ -135,7 +136,7 @@ def lint_document(doc: Document, registry: Registry, options: LintOptions | None
     """One list's findings; ``extra`` are findings about it from its machine (suppressible in it)."""
     options = options or LintOptions()
     kind = options.kind or (doc.origin.kind if doc.origin is not None else None)
-    ctx, found = check_document(doc, registry, kind, selected_rules(options), extra)
+    ctx, found = check_document(doc, registry, kind, selected_rules(options), extra, options.kernel)
     if doc.origin is not None:  # read from XML: the findings where the user has the file open
         from zero.markup.documents import relocate, shown_document  # start-up: only for XML
 

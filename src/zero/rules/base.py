@@ -94,6 +94,7 @@ class Context(ListValues, Reporter):
     """One list as its checks see it: its values (:class:`ListValues`) and the selected codes."""
 
     severities: dict[str, Severity] = field(default_factory=dict)
+    kernel: str | None = None  # the kernel release the machine runs, where the configuration says it
 
     @property
     def path(self) -> str:  # type: ignore[override]

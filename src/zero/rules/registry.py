@@ -7,9 +7,10 @@ from collections.abc import Callable, Iterator
 
 from zero.catalog.ids import SOFT_LIMITS
 from zero.catalog.ranges import Bounds, Number, Range, Ref
-from zero.catalog.registry import KINDS, NO_DEFAULT, ParamSpec, Registry
+from zero.catalog.registry import BUILTIN_SOURCE, KINDS, NO_DEFAULT, ParamSpec, Registry
 from zero.catalog.values import Resolved, Value, default_number
 from zero.diagnostics import Diagnostic, Edit, Fix, Related, Span
+from zero.errors import ZeroError
 from zero.lists.model import Entry, ValueKind, format_key
 from zero.rules.base import INFO, Context, E, Family, W
 
@@ -81,7 +82,28 @@ Fix: nothing, unless your kernel's parameter description documents another key f
 """)
 
 
-@FAMILY.check(UNKNOWN_KEY, ALIAS_KEY, INDEX_OUT_OF_RANGE, VENDOR_KEY)
+OTHER_RELEASE = FAMILY.rule(
+    "R013", "key-of-another-release", W, "A key written for another kernel release",
+    """
+What it checks: a key zero's catalogue (kernel V4.13) does not have, where zero knows more than
+"unknown": an older spelling of a key the catalogue has (`antr_simu.totzeit`, today
+`antr.simu.totzeit`, P-AXIS-00194), from zero's table of renames between releases (each row with
+its source) or from the line's own `( P-AXIS-nnnnn` annotation naming a parameter whose key
+ends in the same member; a key that lists of an older release use and today's catalogue lacks
+(`lr_hw[0].cntr_adr`); and, where the configuration says the machine runs an older kernel
+(`kernel = "V3.1.3074"`, or a list's header says so), any key this catalogue does not know.
+
+Why it matters on the machine: on the kernel the list was written for, the entry may be read as
+intended; on a kernel of the catalogue's release the old spelling is unknown and not taken over.
+zero cannot check such an entry, and says what it knows instead of calling it an error.
+
+Example: `antr_simu.totzeit 10 ( P-AXIS-00194 : ...` in an axis list of a kernel V3.01 machine
+Fix: on a newer kernel, use today's key (an unsafe fix proposes it); on the old kernel, set
+`kernel` in the configuration.
+""")
+
+
+@FAMILY.check(UNKNOWN_KEY, ALIAS_KEY, INDEX_OUT_OF_RANGE, VENDOR_KEY, OTHER_RELEASE)
 def check_keys(ctx: Context) -> Iterator[Diagnostic]:
     """R001, R002, R003: key known, spelling documented, indices inside the arrays."""
     reg = ctx.registry
@@ -113,6 +135,10 @@ def check_keys(ctx: Context) -> Iterator[Diagnostic]:
             if vendor is not None:
                 yield _vendor_key(ctx, e, *vendor)
                 continue
+            release = _other_release(ctx, e)
+            if release is not None:
+                yield release
+                continue
             propose = key.pattern in proposed or len(proposed) < SUGGESTIONS
             if propose:
                 proposed.add(key.pattern)
@@ -134,6 +160,83 @@ def check_keys(ctx: Context) -> Iterator[Diagnostic]:
                 "and the controller does not take the entry over",
                 param_id=spec.id,
             )
+
+
+_ANNOTATED_ID = re.compile(r"\(\s*(P-[A-Z]{4}-[0-9]{5})")
+_HEADER_RELEASE = re.compile(r"(?i)\b(?:kernel|cnc|version|release)\b[^0-9\n]{0,24}(V?\d+\.\d+(?:\.\d+){0,2})")
+
+
+def _kernel_of(ctx: Context) -> tuple[int, ...] | None:
+    """The kernel release the machine runs: the configuration's `kernel`, else what the list's first
+    comment lines say (`# CNC kernel V3.01.3074`), else ``None``."""
+    from zero.catalog.releases import parse_release  # start-up: only for a key the catalogue lacks
+
+    text = ctx.kernel
+    if text is None:
+        for item in ctx.doc.items[:40]:
+            if type(item).__name__ == "Comment":
+                m = _HEADER_RELEASE.search(ctx.doc.lines[item.line - 1])
+                if m is not None:
+                    text = m.group(1)
+                    break
+    try:
+        return parse_release(text) if text else None
+    except ZeroError:
+        return None
+
+
+def _other_release(ctx: Context, e: Entry) -> Diagnostic | None:
+    """R013 for a key of another kernel release (see the rule), or ``None`` where zero knows nothing
+    more than "unknown" (R001)."""
+    from zero.catalog.releases import CATALOGUE_RELEASE, format_release, removed, renamed  # start-up: as above
+
+    assert e.key is not None
+    builtin = ctx.registry.source == BUILTIN_SOURCE
+    ours = _catalogue(ctx.registry)
+    row = renamed(e.key.pattern, ctx.kind, ctx.registry)
+    source = row.source if row is not None else ""
+    if row is None and e.comment is not None:  # the line's own annotation names today's parameter
+        m = _ANNOTATED_ID.match(e.comment.strip())
+        spec = ctx.registry.get(m.group(1)) if m is not None else None
+        last = e.key.pattern.rsplit(".", 1)[-1]
+        if spec is not None and spec.key and spec.kind == (ctx.kind or spec.kind) and \
+                spec.key.rsplit(".", 1)[-1] == last:
+            from zero.catalog.releases import Rename  # start-up: as above
+
+            row = Rename(e.key.pattern, spec.kind, spec.key, spec.id, "unknown", "the line's own annotation")
+            source = f"its own `( {spec.id}` annotation"
+    if row is not None:
+        new = row.new_key(e.key.indices)
+        when = f" (seen in lists of kernel {row.release})" if row.release != "unknown" else ""
+        return ctx.report("R013", _key_span(e), f"`{e.key_text}` is another spelling{when} of `{new}` ({row.id}), as "
+                          f"{source if source.startswith('its own') else 'zero’s table of renames says'}: "
+                          f"{ours} does not document it, so a kernel that does not accept it does not take the entry "
+                          "over; the kernel it was written for may read it as intended (its value is checked as "
+                          f"{row.id}'s)", param_id=row.id,
+                          hint=f"today: `{new}`", fix=Fix(f"Use today's key `{new}`", (Edit(_key_span(e), new),),
+                                                          safe=False))
+    gone = removed(e.key.pattern, ctx.kind)
+    if gone is not None:
+        when = f"kernel {gone.release}" if gone.release != "unknown" else "an older kernel"
+        return ctx.report("R013", _key_span(e), f"`{e.key_text}` is not in {ours}; lists of {when} use it: what a "
+                          "kernel of this release does with it, the catalogue does not say")
+    kernel = _kernel_of(ctx) if builtin else None  # a catalogue of the user's own is the machine's
+    if kernel is not None and kernel < CATALOGUE_RELEASE:
+        near = ctx.registry.suggest(e.key.pattern, ctx.kind)
+        hint = f"the nearest key zero knows: `{format_key(near[0], e.key.indices)}`" if near else None
+        return ctx.report("R013", _key_span(e), f"`{e.key_text}` is not in {ours}, which zero checks with; the "
+                          f"machine runs the older kernel {format_release(kernel)}, whose catalogue zero does not "
+                          "have: whether it knows the key is not known", hint=hint)
+    return None
+
+
+def _catalogue(registry: Registry) -> str:
+    """The catalogue said to people: zero's own (and its kernel release), or the user's file."""
+    from zero.catalog.releases import CATALOGUE_RELEASE, format_release  # start-up: only for an unknown key
+
+    if registry.source == BUILTIN_SOURCE:
+        return f"zero's catalogue (kernel {format_release(CATALOGUE_RELEASE)})"
+    return f"the catalogue {registry.source}"
 
 
 def _vendor_key(ctx: Context, e: Entry, source: str, near: str) -> Diagnostic:
@@ -163,7 +266,7 @@ def _unknown_key(ctx: Context, e: Entry, propose: bool = True) -> Diagnostic:
                f"{_KIND_NAMES.get(ctx.kind or '', 'list')}: not taken over by the controller")
         hint = "check that this is the right file, or override the detection with --kind"
     else:
-        msg = f"unknown key `{e.key_text}`: not taken over by the controller"
+        msg = f"unknown key `{e.key_text}` (not in {_catalogue(reg)}): not taken over by the controller"
         near = reg.suggest(e.key.pattern, ctx.kind) if propose else []
         if near:
             proposal = format_key(near[0], e.key.indices)
