@@ -108,14 +108,17 @@ def _kept_entry(text: str) -> bool:
     return isinstance(item, Entry) and not problems and "--" not in text
 
 
-def key_of(tag_name: str, registry: Registry) -> tuple[str | None, str]:
-    """``P-ZERO-00003.1.0`` → (``np_grp[1].achse[0].versch``, ""), or (None, why not)."""
+def key_of(tag_name: str, registry: Registry, kind: str | None = None) -> tuple[str | None, str]:
+    """``P-ZERO-00003.1.0`` → (``np_grp[1].achse[0].versch``, ""), or (None, why not); an element of
+    another list kind than ``kind`` (the root's) makes no entry."""
     m = _ELEMENT_RE.fullmatch(tag_name)
     if m is None:
         return None, "not a parameter ID"
     spec = registry.get(m.group(1))
     if spec is None or not spec.key:
         return None, f"{m.group(1)} is not a parameter the catalogue ({registry.source}) knows"
+    if kind is not None and spec.kind != kind:
+        return None, f"{spec.id} belongs to another list kind"
     indices = [int(x) for x in m.group(2).split(".")[1:]]
     parts = spec.key.split("[]")
     if len(parts) - 1 != len(indices):
@@ -160,7 +163,7 @@ def to_list(data: bytes, registry: Registry, path: str = "-",
         if (len(tags) > 1 or not ID_RE.match(tag.name) or not tag.empty or sc.position(tag.end)[0] != number
                 or not tag.attrs.get("Value") or "Value" not in tag.raw):
             continue
-        found, _ = key_of(tag.name, registry)
+        found, _ = key_of(tag.name, registry, kind)
         if found is not None:
             entries[number] = (found, tag.attrs["Value"], tag)
     skeleton: list[str | None] = [None if (i + 1) in entries or _is_kept(s) else s for i, s in enumerate(lines)]

@@ -15,6 +15,7 @@ from __future__ import annotations
 import re
 from collections.abc import Iterator
 
+from zero.catalog.registry import KINDS
 from zero.diagnostics import Diagnostic, Span
 from zero.lists.model import Comment
 from zero.rules.base import INFO, Context, E, W
@@ -93,6 +94,11 @@ def check_elements(ctx: Context) -> Iterator[Diagnostic]:
                 yield ctx.report("S015", span, f"{pid} is not in the catalogue ({ctx.registry.source}): zero cannot "
                                  "say which parameter this element sets or check its value; the catalogue is "
                                  "silent on whether the kernel reads it", param_id=pid)
+                continue
+            if ctx.kind is not None and spec.kind != ctx.kind:
+                yield ctx.report("S015", span, f"{pid} (`{spec.key}`) belongs to the {KINDS[spec.kind][1]}, not to "
+                                 f"this {KINDS[ctx.kind][1]}: zero does not check it here, and the catalogue does "
+                                 "not say what the kernel does with it", param_id=pid)
                 continue
             want = spec.key.count("[]")
             given = dots.count(".")
