@@ -102,6 +102,7 @@ class Diagnostic:
     fix: Fix | None = None
     hint: str | None = field(default=None, compare=False)
     related: tuple[Related, ...] = field(default=(), compare=False)
+    kernel_error: str | None = None  # the number the kernel reports for it at start-up: P-ERR-110421
 
     def sort_key(self) -> tuple[str, int, int, str]:
         return (self.path, self.span.line, self.span.column, self.code)
@@ -118,5 +119,6 @@ class Diagnostic:
             "severity": self.severity.label,
             "message": self.message,
             "param_id": self.param_id,
+            "kernel_error": self.kernel_error,
             "fix": self.fix.to_json() if self.fix is not None else None,
         }

@@ -169,8 +169,9 @@ def render_sarif(results: Sequence[LintResult], stream: TextIO) -> None:
                     "region": {"startLine": r.span.line, "startColumn": r.span.column,
                                "endLine": r.span.end_line, "endColumn": r.span.end_column}}}
                 for n, r in enumerate(d.related)]
-        if d.param_id:
-            item["properties"] = {"parameterId": d.param_id}
+        properties = {k: v for k, v in (("parameterId", d.param_id), ("kernelError", d.kernel_error)) if v}
+        if properties:
+            item["properties"] = properties
         res.append(item)
     log = {"$schema": "https://json.schemastore.org/sarif-2.1.0.json", "version": "2.1.0",
            "runs": [{"originalUriBaseIds": {"%SRCROOT%": {"uri": Path.cwd().as_uri() + "/"}},

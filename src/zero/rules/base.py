@@ -73,12 +73,12 @@ class Reporter:
 
     def report(self, code: str, span: Span, message: str, *, param_id: str | None = None,
                fix: Fix | None = None, hint: str | None = None, path: str | None = None,
-               related: tuple[Related, ...] = ()) -> Diagnostic:
+               related: tuple[Related, ...] = (), kernel_error: str | None = None) -> Diagnostic:
         if len(message) > 300:
             message = _LONG_WORD.sub(_shorten_word, _LONG_QUOTED.sub(_shorten, message))
         severity = self.severities.get(code) or _defaults.get(code, Severity.ERROR)
         return Diagnostic(code, severity, message, span, self.path if path is None else path,
-                          param_id, fix, hint, related)
+                          param_id, fix, hint, related, kernel_error)
 
 
 _defaults: dict[str, Severity] = {}  # code → default severity, filled as families declare rules

@@ -10,11 +10,11 @@ from collections.abc import Sequence
 from zero.catalog.registry import Registry
 from zero.diagnostics import Diagnostic, Severity
 from zero.lists.model import Document
-from zero.rules import elements, meaning, registry, suppress, syntax, update
+from zero.rules import elements, meaning, registry, startup, suppress, syntax, update
 from zero.rules.base import Check, Context, declared_codes, run_checks
 from zero.rules.funnel import funnel
 
-FAMILIES = (syntax.FAMILY, registry.FAMILY, meaning.FAMILY, update.FAMILY)
+FAMILIES = (syntax.FAMILY, registry.FAMILY, meaning.FAMILY, update.FAMILY, startup.FAMILY)
 assert elements.FAMILY is syntax.FAMILY  # its checks are the syntax family's
 CHECKS: list[Check[Context]] = [c for family in FAMILIES for c in family.checks]
 

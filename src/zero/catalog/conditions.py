@@ -1,0 +1,247 @@
+"""Conditions between parameters, as the kernel's documentation states them: parsed once, evaluated
+on a list's values.
+
+The language is small and closed (no names but parameter IDs, no calls but ``abs``), so a table row
+can never run code: numbers (``12``, ``0x40``, ``1.5``), parameter IDs (``P-AXIS-00219``; with an
+element ``P-AXIS-00212.0``, without one the element of the parameter being checked), ``+ - * /``,
+parentheses, comparisons ``< <= > >= == !=``, ``and``, ``or``, ``not``, ``abs(x)`` and ``&`` for bit
+tests (``(P-AXIS-00015 & 0x40) != 0``). :func:`parse` raises :class:`ValueError` for anything else.
+"""
+
+from __future__ import annotations
+
+import re
+from collections.abc import Callable
+from typing import Union
+
+Number = int | float
+# A parameter's value by (ID, element index or None for "the checked parameter's"); None: not known.
+Lookup = Callable[[str, int | None], Number | None]
+
+_TOKEN = re.compile(r"\s*(?:(P-[A-Z]{4}-[0-9]{5}(?:\.[0-9]+)?)|(0x[0-9A-Fa-f]+|[0-9]+(?:\.[0-9]+)?)"
+                    r"|(<=|>=|==|!=|<|>|\+|-|\*|/|&|\(|\)|,)|(and|or|not|abs)\b)")
+
+Node = Union["Num", "Ref", "Unary", "Binary", "Call"]
+
+
+class Num:
+    __slots__ = ("value",)
+
+    def __init__(self, value: Number) -> None:
+        self.value = value
+
+
+class Ref:
+    __slots__ = ("index", "pid")
+
+    def __init__(self, pid: str, index: int | None) -> None:
+        self.pid, self.index = pid, index
+
+
+class Unary:
+    __slots__ = ("arg", "op")
+
+    def __init__(self, op: str, arg: Node) -> None:
+        self.op, self.arg = op, arg
+
+
+class Binary:
+    __slots__ = ("left", "op", "right")
+
+    def __init__(self, op: str, left: Node, right: Node) -> None:
+        self.op, self.left, self.right = op, left, right
+
+
+class Call:
+    __slots__ = ("arg", "name")
+
+    def __init__(self, name: str, arg: Node) -> None:
+        self.name, self.arg = name, arg
+
+
+def _tokens(text: str) -> list[str]:
+    out: list[str] = []
+    pos = 0
+    text = text.rstrip()
+    while pos < len(text):
+        m = _TOKEN.match(text, pos)
+        if m is None or m.end() == pos:
+            raise ValueError(f"cannot read the condition at {text[pos:pos + 12]!r}")
+        out.append(m.group(m.lastindex or 0))
+        pos = m.end()
+    return out
+
+
+class _Parser:
+    def __init__(self, text: str) -> None:
+        self.toks = _tokens(text)
+        self.i = 0
+
+    def peek(self) -> str | None:
+        return self.toks[self.i] if self.i < len(self.toks) else None
+
+    def take(self, want: str | None = None) -> str:
+        tok = self.peek()
+        if tok is None or (want is not None and tok != want):
+            raise ValueError(f"expected {want or 'more'} in the condition, found {tok!r}")
+        self.i += 1
+        return tok
+
+    def parse(self) -> Node:
+        node = self.or_()
+        if self.peek() is not None:
+            raise ValueError(f"unexpected {self.peek()!r} in the condition")
+        return node
+
+    def or_(self) -> Node:
+        node = self.and_()
+        while self.peek() == "or":
+            self.take()
+            node = Binary("or", node, self.and_())
+        return node
+
+    def and_(self) -> Node:
+        node = self.not_()
+        while self.peek() == "and":
+            self.take()
+            node = Binary("and", node, self.not_())
+        return node
+
+    def not_(self) -> Node:
+        if self.peek() == "not":
+            self.take()
+            return Unary("not", self.not_())
+        return self.compare()
+
+    def compare(self) -> Node:
+        node = self.bits()
+        while self.peek() in ("<", "<=", ">", ">=", "==", "!="):
+            op = self.take()
+            node = Binary(op, node, self.bits())
+        return node
+
+    def bits(self) -> Node:
+        node = self.sum()
+        while self.peek() == "&":
+            self.take()
+            node = Binary("&", node, self.sum())
+        return node
+
+    def sum(self) -> Node:
+        node = self.product()
+        while self.peek() in ("+", "-"):
+            op = self.take()
+            node = Binary(op, node, self.product())
+        return node
+
+    def product(self) -> Node:
+        node = self.unary()
+        while self.peek() in ("*", "/"):
+            op = self.take()
+            node = Binary(op, node, self.unary())
+        return node
+
+    def unary(self) -> Node:
+        if self.peek() == "-":
+            self.take()
+            return Unary("-", self.unary())
+        return self.atom()
+
+    def atom(self) -> Node:
+        tok = self.take()
+        if tok == "(":
+            node = self.or_()
+            self.take(")")
+            return node
+        if tok == "abs":
+            self.take("(")
+            arg = self.or_()
+            self.take(")")
+            return Call("abs", arg)
+        if tok.startswith("P-"):
+            pid, _, idx = tok.partition(".")
+            return Ref(pid, int(idx) if idx else None)
+        if tok.startswith("0x"):
+            return Num(int(tok, 16))
+        if tok[:1].isdigit():
+            return Num(float(tok) if "." in tok else int(tok))
+        raise ValueError(f"unexpected {tok!r} in the condition")
+
+
+def parse(text: str) -> Node:
+    """A condition as a tree; :class:`ValueError` for text outside the language."""
+    return _Parser(text).parse()
+
+
+def refs(node: Node) -> list[str]:
+    """The parameter IDs a condition reads, in order of appearance."""
+    out: list[str] = []
+    stack = [node]
+    while stack:
+        n = stack.pop()
+        if isinstance(n, Ref):
+            out.append(n.pid)
+        elif isinstance(n, Unary | Call):
+            stack.append(n.arg)
+        elif isinstance(n, Binary):
+            stack.extend((n.right, n.left))
+    return list(dict.fromkeys(out))
+
+
+_Value = Number | bool | None
+
+
+def _num(v: Number | bool) -> Number:
+    return v if isinstance(v, float) else int(v)
+
+
+def evaluate(node: Node, lookup: Lookup) -> _Value:
+    """The condition's value; ``None`` where a parameter it needs is not known (then nothing is said)."""
+    if isinstance(node, Num):
+        return node.value
+    if isinstance(node, Ref):
+        return lookup(node.pid, node.index)
+    if isinstance(node, Unary):
+        v = evaluate(node.arg, lookup)
+        if v is None:
+            return None
+        return (not v) if node.op == "not" else -v
+    if isinstance(node, Call):
+        v = evaluate(node.arg, lookup)
+        return None if v is None else abs(v)
+    left = evaluate(node.left, lookup)
+    if node.op in ("and", "or"):
+        if left is not None and ((node.op == "and" and not left) or (node.op == "or" and left)):
+            return bool(left)
+        right = evaluate(node.right, lookup)
+        if right is None or left is None:
+            return None
+        return bool(right)
+    right = evaluate(node.right, lookup)
+    if left is None or right is None:
+        return None
+    a, b = _num(left), _num(right)
+    match node.op:
+        case "+":
+            return a + b
+        case "-":
+            return a - b
+        case "*":
+            return a * b
+        case "/":
+            return None if b == 0 else a / b
+        case "&":
+            return int(a) & int(b)
+        case "<":
+            return a < b
+        case "<=":
+            return a <= b
+        case ">":
+            return a > b
+        case ">=":
+            return a >= b
+        case "==":
+            return a == b
+        case "!=":
+            return a != b
+    raise ValueError(node.op)  # pragma: no cover - the parser makes no other operator

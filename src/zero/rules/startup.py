@@ -1,0 +1,210 @@
+"""K rules: the kernel's own start-up checks of a list, each with the number the kernel reports.
+
+The controller checks its lists when it starts and reports what it finds as numbered errors (the
+axis management's list-load errors: 110000–119999), then corrects the value in a documented way
+— not always to the default. zero keeps one row per documented error a list can cause
+(``catalog/data/startup_errors.toml``: number, list kind, the condition as the documentation
+states it, the correction, the source page) and checks each one offline as a rule of its own:
+K001 is P-ERR-…, and so on. A condition is evaluated on the list's values, a parameter the list
+does not set taking its catalogue default; where the documentation does not say what the kernel
+does, the message says so.
+"""
+
+from __future__ import annotations
+
+import itertools
+from collections.abc import Iterator
+
+from zero.catalog.conditions import Node, evaluate, parse, refs
+from zero.catalog.data.startup_errors import ERRORS
+from zero.diagnostics import Diagnostic, Span
+from zero.lists.model import Entry
+from zero.records import record
+from zero.rules.base import Context, E, Family
+
+FAMILY: Family[Context] = Family("K", "kernel start-up checks", "list")
+
+
+@record(frozen=True)
+class StartupError:
+    code: str
+    number: int
+    kind: str
+    params: tuple[str, ...]
+    condition: Node
+    when: Node | None
+    condition_text: str
+    correction: str
+    title: str
+    source: str
+
+    @property
+    def kernel_error(self) -> str:
+        return f"P-ERR-{self.number}"
+
+
+def _correction_said(correction: str) -> str:
+    """The documented correction in words (``P-AXIS-00219 = P-AXIS-00268`` → "sets P-AXIS-00219 to the
+    value of P-AXIS-00268")."""
+    c = correction.strip()
+    if not c:
+        return "the documentation does not say what the kernel then uses"
+    if c == "default":
+        return "the kernel uses the parameter's default instead"
+    if c == "abort":
+        return "the kernel aborts the start-up"
+    target, _, value = c.partition("=")
+    value = value.strip()
+    what = f"the value of {value}" if value.startswith("P-") else value
+    return f"the kernel sets {target.strip()} to {what}"
+
+
+def _explanation(row: dict[str, object], condition: str, when: str) -> str:
+    correction = _correction_said(str(row.get("correction", "")))
+    guard = f" (checked where {when} holds)" if when else ""
+    return f"""
+What it checks: {row["title"]}. At start-up the kernel checks that `{condition}` holds{guard}, and
+reports error P-ERR-{row["number"]} when it does not.
+
+Why it matters on the machine: the message appears when the controller starts, and {correction}.
+
+Fix: change the values so that `{condition}` holds. Source: {row["source"]}
+"""
+
+
+def _declare() -> list[StartupError]:
+    out = []
+    for row in ERRORS:
+        condition = str(row.get("condition", ""))
+        if not condition:
+            continue  # documented, but not as a condition zero can evaluate (said in the table)
+        when = str(row.get("when", ""))
+        FAMILY.rule(str(row["code"]), f"kernel-{row['number']}", E, f"P-ERR-{row['number']}: {row['title']}",
+                    _explanation(row, condition, when))
+        out.append(StartupError(str(row["code"]), int(str(row["number"])), str(row["list"]),
+                                tuple(str(p) for p in row.get("params", ()) or ()),
+                                parse(condition), parse(when) if when else None, condition,
+                                str(row.get("correction", "")), str(row["title"]), str(row["source"])))
+    return out
+
+
+CHECKS = _declare()
+
+
+@FAMILY.check(*FAMILY.rules.values())
+def check_startup(ctx: Context) -> Iterator[Diagnostic]:
+    """The documented start-up checks of this list's kind, on its values (defaults where unset). One
+    root cause, one finding: of the checks that fail on one line, the one that reports that line's
+    own parameter (`getriebe[0].dynamik.vb_max 0`: 110079, not the checks that merely read it)."""
+    by_line: dict[int, list[tuple[bool, Diagnostic]]] = {}
+    for err in CHECKS:
+        if err.kind != ctx.kind or err.code not in ctx.severities:
+            continue
+        for d, own in _check(ctx, err):
+            by_line.setdefault(d.span.line, []).append((own, d))
+    for line in sorted(by_line):
+        found = by_line[line]
+        primary = [d for own, d in found if own] or [found[0][1]]
+        yield primary[0]
+
+
+def _elements(ctx: Context, err: StartupError) -> list[tuple[int, ...]]:
+    """The elements to check: those the list sets of the reported parameter (or of any parameter of the
+    condition), so that a condition on `getriebe[g]` is checked for each gear the list writes."""
+    spec = ctx.registry.get(err.params[0]) if err.params else None
+    ids = [*err.params, *refs(err.condition)]
+    seen: dict[tuple[int, ...], None] = {}
+    for pid in ids:
+        for idx in ctx.ids_of(pid):
+            seen[idx[: len(spec.dims)] if spec is not None and spec.dims else ()] = None
+    return list(seen) or [()]
+
+
+def _check(ctx: Context, err: StartupError) -> Iterator[tuple[Diagnostic, bool]]:
+    """Each failing element's finding, and whether it lies on the line of the parameter it reports."""
+    for idx in _elements(ctx, err):
+        def lookup(pid: str, index: int | None, idx: tuple[int, ...] = idx) -> float | int | None:
+            return _value(ctx, pid, (index,) if index is not None else idx)
+
+        if err.when is not None and evaluate(err.when, lookup) is not True:
+            continue
+        if evaluate(err.condition, lookup) is not False:
+            continue  # holds, or a value it needs is not known: nothing to say
+        if _fails_on_defaults(ctx, err, idx):
+            continue  # the catalogue's own defaults fail it too: its 0 means "not used", or the row says too much
+        hit = _reported_entry(ctx, err, idx)
+        if hit is None:
+            continue  # the list sets none of the values the condition reads: not this list's doing
+        entry, pid_on_line = hit
+        values = ", ".join(f"{_named(ctx, pid, idx)} = {_fmt(lookup(pid, None))}" for pid in refs(err.condition))
+        yield ctx.report(
+            err.code, Span.on_line(entry.line, entry.value_start, entry.value_end),
+            f"P-ERR-{err.number}: {err.title}: `{err.condition_text}` does not hold ({values}); the controller "
+            f"reports error {err.number} at start-up, and {_correction_said(err.correction)}",
+            param_id=err.params[0] if err.params else None, kernel_error=err.kernel_error), \
+            bool(err.params) and pid_on_line == err.params[0]
+
+
+def _value(ctx: Context, pid: str, idx: tuple[int, ...]) -> float | int | None:
+    """The value as written, where the list writes a number (also one the catalogue's range refuses:
+    the kernel's own check sees it), else the value the controller uses (the default where unset)."""
+    from zero.catalog.values import parse_int  # start-up: only where a start-up check runs
+
+    spec = ctx.registry.get(pid)
+    n = len(spec.dims) if spec is not None else 0
+    res = ctx.by_id.get(pid, {}).get(tuple(idx[:n]) + (0,) * max(n - len(idx), 0))
+    if res is not None:
+        if res.value.number is not None:
+            return res.value.number
+        raw = parse_int(res.entry.value)
+        if raw is not None:
+            return raw
+    return ctx.number_of(pid, idx)
+
+
+def _named(ctx: Context, pid: str, idx: tuple[int, ...]) -> str:
+    """``P-AXIS-00219`` as ``P-AXIS-00219 (`kenngr.vb_refmax`)``, with the element checked."""
+    from zero.lists.model import format_key  # start-up: only for a finding
+
+    spec = ctx.registry.get(pid)
+    if spec is None or not spec.key:
+        return pid
+    n = len(spec.dims)
+    return f"{pid} (`{format_key(spec.key, tuple(idx[:n]) + (0,) * max(n - len(idx), 0))}`)"
+
+
+def _fails_on_defaults(ctx: Context, err: StartupError, idx: tuple[int, ...]) -> bool:
+    """Does the condition fail with nothing but the catalogue's defaults? Then the list is not what makes
+    it fail: a default of 0 that means "not used" (an emergency deceleration of 0 takes the normal
+    one), which the documented condition leaves unsaid."""
+    from zero.catalog.values import default_number  # start-up: only for a condition that failed
+
+    def defaults(pid: str, index: int | None) -> float | int | None:
+        spec = ctx.registry.get(pid)
+        return default_number(spec) if spec is not None else None
+
+    if err.when is not None and evaluate(err.when, defaults) is not True:
+        return False
+    return evaluate(err.condition, defaults) is False
+
+
+def _reported_entry(ctx: Context, err: StartupError, idx: tuple[int, ...]) -> tuple[Entry, str] | None:
+    """The line to report on, and its parameter: this list's entry of the reported parameter, else of
+    another one the condition reads (never a default list's: its own findings are its own)."""
+    read = refs(err.condition)
+    for pid in itertools.chain((p for p in err.params if p in read), read):
+        spec = ctx.registry.get(pid)
+        n = len(spec.dims) if spec is not None else 0
+        res = ctx.by_id.get(pid, {}).get(tuple(idx[:n]) + (0,) * max(n - len(idx), 0))
+        if res is not None:
+            return res.entry, pid
+    return None
+
+
+def _fmt(v: float | int | None) -> str:
+    if v is None:
+        return "not known"
+    return str(int(v)) if isinstance(v, float) and v.is_integer() else str(v)
+
+
+__all__ = ["CHECKS", "FAMILY", "StartupError", "check_startup"]
