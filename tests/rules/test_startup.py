@@ -55,7 +55,9 @@ def test_every_condition_is_a_rule_with_its_number() -> None:
 def test_failing_and_passing_fixture(row: dict[str, object], registry: Registry) -> None:
     folder = FIXTURES / "startup" / str(row["number"])
     options = LintOptions(select=("K",))
-    failing = lint_file(folder / "fail.lis", registry, options).diagnostics
+    # a default list is one by the machine that reads it, or by an XML list's root: those fixtures are XML
+    suffix = ".xml" if (folder / "fail.xml").exists() else ".lis"
+    failing = lint_file(folder / f"fail{suffix}", registry, options).diagnostics
     own = [d for d in failing if d.code == row["code"]]
     assert len(own) == 1, failing
     # another start-up check may fail too, never on the same line (one root cause, one finding): the
@@ -63,7 +65,7 @@ def test_failing_and_passing_fixture(row: dict[str, object], registry: Registry)
     assert all(d.span.line != own[0].span.line for d in failing if d is not own[0]), failing
     assert own[0].kernel_error == f"P-ERR-{row['number']}"
     assert f"P-ERR-{row['number']}" in own[0].message
-    passing = lint_file(folder / "pass.lis", registry, options).diagnostics
+    passing = lint_file(folder / f"pass{suffix}", registry, options).diagnostics
     assert [d.code for d in passing if d.code == row["code"]] == [], passing
 
 
@@ -84,3 +86,19 @@ def test_the_kernel_number_reaches_json_and_sarif(tmp_path: Path) -> None:
                           "sarif", str(path)], capture_output=True, text=True, check=False)
     [result] = json.loads(out.stdout)["runs"][0]["results"]
     assert result["properties"]["kernelError"] == f"P-ERR-{row['number']}"
+
+
+def test_a_default_list_of_a_machine_is_checked_as_one(tmp_path: Path) -> None:
+    """The sixth planted fault of issue 26: the machine's default axis list with `kopf.achs_nr` 3."""
+    import shutil
+
+    from conftest import zero_cli
+
+    shutil.copytree(FIXTURES / "machine-clean", tmp_path / "m")
+    listen = tmp_path / "m" / "listen"
+    (listen / "default_achse.lis").write_text("kopf.achs_nr 3\nkenngr.achs_typ 1\nEnde\n")
+    startup = listen / "hochlauf.lis"
+    startup.write_text(startup.read_text().replace("Ende", "default_achs_mds ./listen/default_achse.lis\nEnde", 1))
+    run = zero_cli("lint", "--machine", str(startup), "--select", "K", "--output-format", "concise")
+    assert [line.split(" ")[1] for line in run.stdout.splitlines()] == ["K056"], run.stdout
+    assert "default_achse.lis:1:" in run.stdout and "P-ERR-110300" in run.stdout

@@ -5,7 +5,9 @@ The language is small and closed (no names but parameter IDs, no calls but ``abs
 can never run code: numbers (``12``, ``0x40``, ``1.5``), parameter IDs (``P-AXIS-00219``; with an
 element ``P-AXIS-00212.0``, without one the element of the parameter being checked), ``+ - * /``,
 parentheses, comparisons ``< <= > >= == !=``, ``and``, ``or``, ``not``, ``abs(x)`` and ``&`` for bit
-tests (``(P-AXIS-00015 & 0x40) != 0``). :func:`parse` raises :class:`ValueError` for anything else.
+tests (``(P-AXIS-00015 & 0x40) != 0``), and one fact about the list itself: ``DEFAULT_LIST`` (1 in
+a default list, the template the controller reads under the lists of its kind, else 0).
+:func:`parse` raises :class:`ValueError` for anything else.
 """
 
 from __future__ import annotations
@@ -18,7 +20,8 @@ Number = int | float
 # A parameter's value by (ID, element index or None for "the checked parameter's"); None: not known.
 Lookup = Callable[[str, int | None], Number | None]
 
-_TOKEN = re.compile(r"\s*(?:(P-[A-Z]{4}-[0-9]{5}(?:\.[0-9]+)?)|(0x[0-9A-Fa-f]+|[0-9]+(?:\.[0-9]+)?)"
+DEFAULT_LIST = "DEFAULT_LIST"  # a fact of the list, not a parameter: read by the lookup like one
+_TOKEN = re.compile(r"\s*(?:(P-[A-Z]{4}-[0-9]{5}(?:\.[0-9]+)?|DEFAULT_LIST\b)|(0x[0-9A-Fa-f]+|[0-9]+(?:\.[0-9]+)?)"
                     r"|(<=|>=|==|!=|<|>|\+|-|\*|/|&|\(|\)|,)|(and|or|not|abs)\b)")
 
 Node = Union["Num", "Ref", "Unary", "Binary", "Call"]
@@ -158,6 +161,8 @@ class _Parser:
             arg = self.or_()
             self.take(")")
             return Call("abs", arg)
+        if tok == DEFAULT_LIST:
+            return Ref(tok, None)
         if tok.startswith("P-"):
             pid, _, idx = tok.partition(".")
             return Ref(pid, int(idx) if idx else None)
@@ -174,12 +179,12 @@ def parse(text: str) -> Node:
 
 
 def refs(node: Node) -> list[str]:
-    """The parameter IDs a condition reads, in order of appearance."""
+    """The parameter IDs a condition reads, in order of appearance (not ``DEFAULT_LIST``)."""
     out: list[str] = []
     stack = [node]
     while stack:
         n = stack.pop()
-        if isinstance(n, Ref):
+        if isinstance(n, Ref) and n.pid != DEFAULT_LIST:
             out.append(n.pid)
         elif isinstance(n, Unary | Call):
             stack.append(n.arg)

@@ -132,11 +132,12 @@ def _selected_rules(options: LintOptions) -> dict[str, Severity]:
 
 
 def lint_document(doc: Document, registry: Registry, options: LintOptions | None = None,
-                  extra: Sequence[Diagnostic] = ()) -> LintResult:
-    """One list's findings; ``extra`` are findings about it from its machine (suppressible in it)."""
+                  extra: Sequence[Diagnostic] = (), default_list: bool = False) -> LintResult:
+    """One list's findings; ``extra`` are findings about it from its machine (suppressible in it);
+    ``default_list``: its machine reads it as a default list."""
     options = options or LintOptions()
     kind = options.kind or (doc.origin.kind if doc.origin is not None else None)
-    ctx, found = check_document(doc, registry, kind, selected_rules(options), extra, options.kernel)
+    ctx, found = check_document(doc, registry, kind, selected_rules(options), extra, options.kernel, default_list)
     if doc.origin is not None:  # read from XML: the findings where the user has the file open
         from zero.markup.documents import relocate, shown_document  # start-up: only for XML
 
@@ -428,15 +429,16 @@ def lint_machine(machine: Machine, registry: Registry,
     for lf, opts in per_list:
         if str(lf.path) not in results:
             results[str(lf.path)] = _in_machine(lf, lf.values.doc, registry, opts,
-                                                across.get(os.path.realpath(lf.path), []))
+                                                across.get(os.path.realpath(lf.path), []), machine)
     return list(results.values())
 
 
 def _in_machine(lf: ListFile, doc: Document, registry: Registry, options: LintOptions,
-                found: list[Diagnostic]) -> LintResult:
+                found: list[Diagnostic], machine: Machine | None = None) -> LintResult:
     kind = lf.values.kind
     extra = [d if d.path == doc.path else replace(d, path=doc.path) for d in found]
-    return lint_document(doc, registry, replace(options, kind=kind) if kind else options, extra)
+    default = machine is not None and any(d is lf for d in machine.defaults.values())
+    return lint_document(doc, registry, replace(options, kind=kind) if kind else options, extra, default)
 
 
 def lint_in_machine(path: str, machine: Machine, registry: Registry, options: LintOptions,
@@ -454,7 +456,7 @@ def lint_in_machine(path: str, machine: Machine, registry: Registry, options: Li
         doc = lf.values.doc if lf.values.doc.path == path else replace(lf.values.doc, path=path)
     if across is None:
         across = machine_findings(machine, registry, selected_rules(options))
-    return _in_machine(lf, doc, registry, options, across.get(me, []))
+    return _in_machine(lf, doc, registry, options, across.get(me, []), machine)
 
 
 __all__ = [

@@ -206,6 +206,7 @@ class Origin:
     final_newline: bool = True
     kind: str | None = None  # the list kind the form says (an XML list's root, a TwinCAT element)
     update: bool = False  # an update or revert file: a partial list applied to a running controller
+    default_list: bool = False  # a default list by its root element (`<Default_AX_MDS>`)
 
     def locate(self, line: int, column: int, end: bool = False) -> tuple[int, int]:
         """A 1-based (line, column) of the list text as (line, column) in the file."""

@@ -46,6 +46,7 @@ def xml_document(data: bytes, path: str, registry: Registry, parsed: Scan | None
     text, origin, kind = to_list(data, registry, path, sc)
     origin.kind = kind
     origin.update = is_update(path)
+    origin.default_list = sc.root.startswith("Default_")
     doc = tokenize_text(text, path, sc.encoding, sc.bom)
     doc.origin = origin
     return doc

@@ -95,6 +95,7 @@ class Context(ListValues, Reporter):
 
     severities: dict[str, Severity] = field(default_factory=dict)
     kernel: str | None = None  # the kernel release the machine runs, where the configuration says it
+    default_list: bool = False  # a default list (the template read under the lists of its kind)
 
     @property
     def path(self) -> str:  # type: ignore[override]

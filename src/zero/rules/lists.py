@@ -21,14 +21,17 @@ CHECKS: list[Check[Context]] = [c for family in FAMILIES for c in family.checks]
 
 def check_document(doc: Document, registry: Registry, kind: str | None,
                    severities: dict[str, Severity],
-                   extra: Sequence[Diagnostic] = (), kernel: str | None = None) -> tuple[Context, list[Diagnostic]]:
+                   extra: Sequence[Diagnostic] = (), kernel: str | None = None,
+                   default_list: bool = False) -> tuple[Context, list[Diagnostic]]:
     """The list's context (kind detected when ``None``) and its findings, sorted, suppressions applied.
     ``extra``: findings about this list from elsewhere (the X rules of its machine), which pass the
     same funnel (:mod:`zero.rules.funnel`): this list's selection, severities and suppressions.
-    ``kernel``: the kernel release the machine runs, where the configuration says it."""
+    ``kernel``: the kernel release the machine runs, where the configuration says it; ``default_list``:
+    the machine reads this list as a default list (an XML list says so by its root element itself)."""
     ctx = Context.of(doc, registry, kind)
     ctx.severities = severities
     ctx.kernel = kernel
+    ctx.default_list = default_list or (doc.origin is not None and doc.origin.default_list)
     if any(p.kind == "binary" for p in doc.problems):  # one root cause, one finding
         return ctx, funnel(doc.path, [d for d in syntax.check_problems(ctx) if d.code == "S013"], severities)
     found = run_checks(CHECKS, ctx)

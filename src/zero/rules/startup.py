@@ -15,7 +15,7 @@ from __future__ import annotations
 import itertools
 from collections.abc import Iterator
 
-from zero.catalog.conditions import Node, evaluate, parse, refs
+from zero.catalog.conditions import DEFAULT_LIST, Node, evaluate, parse, refs
 from zero.catalog.data.startup_errors import ERRORS
 from zero.diagnostics import Diagnostic, Span
 from zero.lists.model import Entry
@@ -37,6 +37,7 @@ class StartupError:
     correction: str
     title: str
     source: str
+    written: bool = False  # checked only where the list writes the reported parameter (absent is fine)
 
     @property
     def kernel_error(self) -> str:
@@ -84,7 +85,8 @@ def _declare() -> list[StartupError]:
         out.append(StartupError(str(row["code"]), int(str(row["number"])), str(row["list"]),
                                 tuple(str(p) for p in row.get("params", ()) or ()),
                                 parse(condition), parse(when) if when else None, condition,
-                                str(row.get("correction", "")), str(row["title"]), str(row["source"])))
+                                str(row.get("correction", "")), str(row["title"]), str(row["source"]),
+                                bool(row.get("written", False))))
     return out
 
 
@@ -124,13 +126,18 @@ def _check(ctx: Context, err: StartupError) -> Iterator[tuple[Diagnostic, bool]]
     """Each failing element's finding, and whether it lies on the line of the parameter it reports."""
     for idx in _elements(ctx, err):
         def lookup(pid: str, index: int | None, idx: tuple[int, ...] = idx) -> float | int | None:
+            if pid == DEFAULT_LIST:
+                return int(ctx.default_list)
             return _value(ctx, pid, (index,) if index is not None else idx)
 
         if err.when is not None and evaluate(err.when, lookup) is not True:
             continue
         if evaluate(err.condition, lookup) is not False:
             continue  # holds, or a value it needs is not known: nothing to say
-        if _fails_on_defaults(ctx, err, idx):
+        if err.written:
+            if _reported_entry(ctx, err, idx, own_only=True) is None:
+                continue  # absent is fine: only a value the list writes is checked
+        elif _fails_on_defaults(ctx, err, idx):
             continue  # the catalogue's own defaults fail it too: its 0 means "not used", or the row says too much
         hit = _reported_entry(ctx, err, idx)
         if hit is None:
@@ -180,6 +187,8 @@ def _fails_on_defaults(ctx: Context, err: StartupError, idx: tuple[int, ...]) ->
     from zero.catalog.values import default_number  # start-up: only for a condition that failed
 
     def defaults(pid: str, index: int | None) -> float | int | None:
+        if pid == DEFAULT_LIST:
+            return int(ctx.default_list)
         spec = ctx.registry.get(pid)
         return default_number(spec) if spec is not None else None
 
@@ -188,11 +197,14 @@ def _fails_on_defaults(ctx: Context, err: StartupError, idx: tuple[int, ...]) ->
     return evaluate(err.condition, defaults) is False
 
 
-def _reported_entry(ctx: Context, err: StartupError, idx: tuple[int, ...]) -> tuple[Entry, str] | None:
+def _reported_entry(ctx: Context, err: StartupError, idx: tuple[int, ...],
+                    own_only: bool = False) -> tuple[Entry, str] | None:
     """The line to report on, and its parameter: this list's entry of the reported parameter, else of
-    another one the condition reads (never a default list's: its own findings are its own)."""
+    another one the condition reads (never a default list's: its own findings are its own);
+    ``own_only``: the reported parameter's entry or none."""
     read = refs(err.condition)
-    for pid in itertools.chain((p for p in err.params if p in read), read):
+    order = err.params[:1] if own_only else list(itertools.chain((p for p in err.params if p in read), read))
+    for pid in order:
         spec = ctx.registry.get(pid)
         n = len(spec.dims) if spec is not None else 0
         res = ctx.by_id.get(pid, {}).get(tuple(idx[:n]) + (0,) * max(n - len(idx), 0))
