@@ -418,7 +418,7 @@ def check_values(ctx: Context) -> Iterator[Diagnostic]:
     passed: dict[tuple[str, str], bool] = registry.memo.setdefault("passed", {})  # kept across lists
     for res in ctx.resolved:
         slot = (res.spec.id, res.entry.value)
-        if slot in passed or _not_configured(ctx, res):
+        if slot in passed or not_configured(ctx, res):
             continue
         clean = True
         for found in _check_value(ctx, res):
@@ -430,7 +430,7 @@ def check_values(ctx: Context) -> Iterator[Diagnostic]:
                 passed[slot] = True
 
 
-def _not_configured(ctx: Context, res: Resolved) -> bool:
+def not_configured(ctx: Context, res: Resolved) -> bool:
     """An element beyond its count (`spindel[0]` with `spdl_anzahl 0`): the controller does not use it,
     so its value is not checked (X011 says what a channel's spindles are)."""
     key = res.entry.key
