@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
 """Compile ``src/zero/catalog/data/startup_errors.toml`` (the kernel's documented start-up errors a
-list can cause, edited by hand, each row with its source) to ``startup_errors.py`` (imported at run
-time: no TOML parser at start-up). Run it after every edit of the TOML; a test fails while the two
-differ.
+list can cause, edited by hand, each row with its source) to ``startup_errors.py``, and
+``prose_ranges.toml`` (the catalogue's prose ranges written as conditions) to ``prose_ranges.py``
+(imported at run time: no TOML parser at start-up). Run it after every edit of either TOML; a test
+fails while they differ.
 
 Usage: python tools/gen_startup.py
 """
@@ -22,6 +23,10 @@ def main() -> None:
     write_module(DATA / "startup_errors.py", "The kernel's start-up errors of startup_errors.toml, compiled.",
                  {"ERRORS": rows}, rows_name="ERRORS")
     print(f"wrote {DATA / 'startup_errors.py'}: {len(rows)} errors")
+    ranges = tomllib.loads((DATA / "prose_ranges.toml").read_text(encoding="utf-8"))["range"]
+    write_module(DATA / "prose_ranges.py", "The prose ranges of prose_ranges.toml written as conditions, compiled.",
+                 {"RANGES": ranges}, rows_name="RANGES")
+    print(f"wrote {DATA / 'prose_ranges.py'}: {len(ranges)} ranges")
 
 
 if __name__ == "__main__":

@@ -371,22 +371,24 @@ def _letters_in_order(stem: str, name: str) -> bool:
 
 
 def _counts(registry: Registry) -> dict[str, tuple[tuple[str, int], ...]]:
-    """Every counted parameter → its counts (ID, the index each counts); see ``counted_by``."""
+    """Every counted parameter → its counts (ID, the index each counts); see ``counted_by``. Read from
+    the keys alone (a lazy table builds no parameter for it): only the few counts are built."""
     out: dict[str, tuple[tuple[str, int], ...]] = {"": ()}  # never empty once built
-    specs = list(registry.specs.values())
-    for count in specs:
-        m = _COUNT_RE.search(count.key or "") if count.type.startswith("UNS") else None
-        if m is None or count.key is None:
+    specs = registry.specs
+    triples = list(specs.keys_by_kind()) if isinstance(specs, SpecTable) else \
+        [(s.id, s.kind, s.key) for s in specs.values() if s.key]
+    for count_id, count_kind, count_key in triples:
+        m = _COUNT_RE.search(count_key)
+        if m is None or not specs[count_id].type.startswith("UNS"):
             continue
-        stem, parent = m.group(1), count.key[: m.start(1)]
-        for spec in specs:
-            key = spec.key
-            if spec.kind != count.kind or not key or not key.startswith(parent):
+        stem, parent = m.group(1), count_key[: m.start(1)]
+        for pid, kind, key in triples:
+            if kind != count_kind or not key.startswith(parent):
                 continue
             first = key[len(parent):].split(".")[0]
             if first.endswith("[]") and first[:-2] != stem and first[0] == stem[0] and \
                     _letters_in_order(stem, first[:-2]):
-                out[spec.id] = (*out.get(spec.id, ()), (count.id, parent.count("[]")))
+                out[pid] = (*out.get(pid, ()), (count_id, parent.count("[]")))
     return out
 
 

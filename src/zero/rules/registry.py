@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import re
 from collections.abc import Callable, Iterator
+from typing import Any
 
 from zero.catalog.ids import SOFT_LIMITS
 from zero.catalog.ranges import Bounds, Number, Range, Ref
@@ -108,6 +109,7 @@ def check_keys(ctx: Context) -> Iterator[Diagnostic]:
     """R001, R002, R003: key known, spelling documented, indices inside the arrays."""
     reg = ctx.registry
     proposed: set[str] = set()  # unknown patterns a spelling was looked for (the first SUGGESTIONS)
+    known: dict[str, Any] = {}  # per list: the catalogue said, the machine's release, rows by pattern
     for e in ctx.entries:
         key = e.key
         if key is None:
@@ -135,14 +137,14 @@ def check_keys(ctx: Context) -> Iterator[Diagnostic]:
             if vendor is not None:
                 yield _vendor_key(ctx, e, *vendor)
                 continue
-            release = _other_release(ctx, e)
+            release = _other_release(ctx, e, known)
             if release is not None:
                 yield release
                 continue
             propose = key.pattern in proposed or len(proposed) < SUGGESTIONS
             if propose:
                 proposed.add(key.pattern)
-            yield _unknown_key(ctx, e, propose)
+            yield _unknown_key(ctx, e, propose, known)
             continue
         if not key.indices:
             continue
@@ -185,15 +187,21 @@ def _kernel_of(ctx: Context) -> tuple[int, ...] | None:
         return None
 
 
-def _other_release(ctx: Context, e: Entry) -> Diagnostic | None:
+def _other_release(ctx: Context, e: Entry, known: dict[str, Any]) -> Diagnostic | None:
     """R013 for a key of another kernel release (see the rule), or ``None`` where zero knows nothing
     more than "unknown" (R001)."""
     from zero.catalog.releases import CATALOGUE_RELEASE, format_release, removed, renamed  # start-up: as above
 
     assert e.key is not None
     builtin = ctx.registry.source == BUILTIN_SOURCE
-    ours = _catalogue(ctx.registry)
-    row = renamed(e.key.pattern, ctx.kind, ctx.registry)
+    if "ours" not in known:  # once per list, not once per unknown key
+        known["ours"] = _catalogue(ctx.registry)
+        known["kernel"] = _kernel_of(ctx) if builtin else None  # a catalogue of the user's own is the machine's
+    ours = known["ours"]
+    rows = known.setdefault("rows", {})
+    if e.key.pattern not in rows:
+        rows[e.key.pattern] = (renamed(e.key.pattern, ctx.kind, ctx.registry), removed(e.key.pattern, ctx.kind))
+    row, gone = rows[e.key.pattern]
     source = row.source if row is not None else ""
     if row is None and e.comment is not None:  # the line's own annotation names today's parameter
         m = _ANNOTATED_ID.match(e.comment.strip())
@@ -215,12 +223,11 @@ def _other_release(ctx: Context, e: Entry) -> Diagnostic | None:
                           f"{row.id}'s)", param_id=row.id,
                           hint=f"today: `{new}`", fix=Fix(f"Use today's key `{new}`", (Edit(_key_span(e), new),),
                                                           safe=False))
-    gone = removed(e.key.pattern, ctx.kind)
     if gone is not None:
         when = f"kernel {gone.release}" if gone.release != "unknown" else "an older kernel"
         return ctx.report("R013", _key_span(e), f"`{e.key_text}` is not in {ours}; lists of {when} use it: what a "
                           "kernel of this release does with it, the catalogue does not say")
-    kernel = _kernel_of(ctx) if builtin else None  # a catalogue of the user's own is the machine's
+    kernel = known["kernel"]
     if kernel is not None and kernel < CATALOGUE_RELEASE:
         near = ctx.registry.suggest(e.key.pattern, ctx.kind)
         hint = f"the nearest key zero knows: `{format_key(near[0], e.key.indices)}`" if near else None
@@ -252,7 +259,7 @@ def _vendor_key(ctx: Context, e: Entry, source: str, near: str) -> Diagnostic:
 SUGGESTIONS = 100
 
 
-def _unknown_key(ctx: Context, e: Entry, propose: bool = True) -> Diagnostic:
+def _unknown_key(ctx: Context, e: Entry, propose: bool = True, known: dict[str, Any] | None = None) -> Diagnostic:
     assert e.key is not None
     reg = ctx.registry
     other = [k for k in reg.kinds_of(e.key.pattern) if k != ctx.kind]
@@ -266,7 +273,8 @@ def _unknown_key(ctx: Context, e: Entry, propose: bool = True) -> Diagnostic:
                f"{_KIND_NAMES.get(ctx.kind or '', 'list')}: not taken over by the controller")
         hint = "check that this is the right file, or override the detection with --kind"
     else:
-        msg = f"unknown key `{e.key_text}` (not in {_catalogue(reg)}): not taken over by the controller"
+        ours = known["ours"] if known and "ours" in known else _catalogue(reg)
+        msg = f"unknown key `{e.key_text}` (not in {ours}): not taken over by the controller"
         near = reg.suggest(e.key.pattern, ctx.kind) if propose else []
         if near:
             proposal = format_key(near[0], e.key.indices)
@@ -424,7 +432,7 @@ def check_values(ctx: Context) -> Iterator[Diagnostic]:
         for found in _check_value(ctx, res):
             clean = False
             yield found
-        if clean and len(passed) < 65_536:
+        if clean and len(passed) < 65_536 and res.spec.id not in _prose_ids():  # a prose range reads others too
             rng = registry.range_of(res.spec) if res.spec.range_text else None
             if rng is None or not rng.refs:
                 passed[slot] = True
@@ -508,6 +516,8 @@ def _default_of(spec: ParamSpec) -> Number | None:
 
 
 def _check_range(ctx: Context, e: Entry, spec: ParamSpec, v: Value) -> Iterator[Diagnostic]:
+    if v.number is not None and spec.id in _prose_ids():
+        yield from _check_prose(ctx, e, spec, v.number)
     if v.number is None or (spec.range_text is None and not spec.enum):
         return
     dflt = _default_of(spec)
@@ -598,6 +608,47 @@ def _check_range(ctx: Context, e: Entry, spec: ParamSpec, v: Value) -> Iterator[
             f"{e.value} is outside {text} for `{e.key_text}`: {_default_phrase(spec, ctx.registry)}",
             param_id=spec.id,
         )
+
+
+_prose: dict[str, Any] = {}
+
+
+def _prose_ids() -> dict[str, Any]:
+    """The catalogue's prose ranges written as conditions (``catalog/data/prose_ranges.toml``), by ID,
+    each compiled once (at the first value checked, not at start-up)."""
+    if not _prose:
+        from zero.catalog.conditions import compile_condition, parse, refs  # start-up: first value checked
+        from zero.catalog.data.prose_ranges import RANGES  # start-up: as above
+
+        for row in RANGES:
+            cond = parse(row["condition"])
+            when = parse(row["when"]) if row.get("when") else None
+            _prose[row["id"]] = (compile_condition(cond), compile_condition(when) if when else None,
+                                 row["condition"], row["prose"], refs(cond))
+        _prose.setdefault("", None)
+    return _prose
+
+
+def _check_prose(ctx: Context, e: Entry, spec: ParamSpec, number: Number) -> Iterator[Diagnostic]:
+    """R006 for a range the catalogue writes in prose (`swe_neg < pos_refpkt < swe_pos`), where zero can
+    write it as a condition: evaluated with this entry's value and the list's others (defaults where
+    unset)."""
+    condition, when, text, prose, read = _prose_ids()[spec.id]
+    indices = e.key.indices if e.key else ()
+
+    def lookup(pid: str, index: int | None) -> Number | None:
+        if pid == spec.id and index is None:
+            return number
+        return ctx.number_of(pid, (index,) if index is not None else indices)
+
+    if when is not None and when(lookup) is not True:
+        return
+    if condition(lookup) is not False:
+        return
+    values = ", ".join(f"{ctx.registry.specs[p].key or p} = {_fmt(lookup(p, None))}" for p in read if p != spec.id)
+    yield ctx.report("R006", _value_span(e), f"{e.value} violates the catalogue's range for `{e.key_text}`, which "
+                     f"it writes in prose ({prose}: `{text}`; {values}): {_default_phrase(spec, ctx.registry)}",
+                     param_id=spec.id)
 
 
 def _same_indices(registry: Registry, spec: ParamSpec, ref_id: str) -> bool:

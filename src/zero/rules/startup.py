@@ -15,7 +15,7 @@ from __future__ import annotations
 import itertools
 from collections.abc import Iterator
 
-from zero.catalog.conditions import DEFAULT_LIST, Node, evaluate, parse, refs
+from zero.catalog.conditions import DEFAULT_LIST, Compiled, compile_condition, parse, refs
 from zero.catalog.data.startup_errors import ERRORS
 from zero.diagnostics import Diagnostic, Span
 from zero.lists.model import Entry
@@ -31,13 +31,14 @@ class StartupError:
     number: int
     kind: str
     params: tuple[str, ...]
-    condition: Node
-    when: Node | None
+    condition: Compiled
+    when: Compiled | None
     condition_text: str
     correction: str
     title: str
     source: str
     written: bool = False  # checked only where the list writes the reported parameter (absent is fine)
+    read: tuple[str, ...] = ()  # the parameters the condition reads (computed once)
 
     @property
     def kernel_error(self) -> str:
@@ -84,9 +85,10 @@ def _declare() -> list[StartupError]:
                     _explanation(row, condition, when))
         out.append(StartupError(str(row["code"]), int(str(row["number"])), str(row["list"]),
                                 tuple(str(p) for p in row.get("params", ()) or ()),
-                                parse(condition), parse(when) if when else None, condition,
+                                compile_condition(parse(condition)),
+                                compile_condition(parse(when)) if when else None, condition,
                                 str(row.get("correction", "")), str(row["title"]), str(row["source"]),
-                                bool(row.get("written", False))))
+                                bool(row.get("written", False)), tuple(refs(parse(condition)))))
     return out
 
 
@@ -99,9 +101,10 @@ def check_startup(ctx: Context) -> Iterator[Diagnostic]:
     root cause, one finding: of the checks that fail on one line, the one that reports that line's
     own parameter (`getriebe[0].dynamik.vb_max 0`: 110079, not the checks that merely read it)."""
     by_line: dict[int, list[tuple[bool, Diagnostic]]] = {}
+    by_id = ctx.by_id
     for err in CHECKS:
-        if err.kind != ctx.kind or err.code not in ctx.severities:
-            continue
+        if err.kind != ctx.kind or err.code not in ctx.severities or not any(p in by_id for p in err.read):
+            continue  # another kind, not selected, or the list sets nothing the condition reads
         for d, own in _check(ctx, err):
             by_line.setdefault(d.span.line, []).append((own, d))
     for line in sorted(by_line):
@@ -114,7 +117,7 @@ def _elements(ctx: Context, err: StartupError) -> list[tuple[int, ...]]:
     """The elements to check: those the list sets of the reported parameter (or of any parameter of the
     condition), so that a condition on `getriebe[g]` is checked for each gear the list writes."""
     spec = ctx.registry.get(err.params[0]) if err.params else None
-    ids = [*err.params, *refs(err.condition)]
+    ids = [*err.params, *err.read]
     seen: dict[tuple[int, ...], None] = {}
     for pid in ids:
         for idx in ctx.ids_of(pid):
@@ -130,9 +133,9 @@ def _check(ctx: Context, err: StartupError) -> Iterator[tuple[Diagnostic, bool]]
                 return int(ctx.default_list)
             return _value(ctx, pid, (index,) if index is not None else idx)
 
-        if err.when is not None and evaluate(err.when, lookup) is not True:
+        if err.when is not None and err.when(lookup) is not True:
             continue
-        if evaluate(err.condition, lookup) is not False:
+        if err.condition(lookup) is not False:
             continue  # holds, or a value it needs is not known: nothing to say
         if err.written:
             if _reported_entry(ctx, err, idx, own_only=True) is None:
@@ -143,7 +146,7 @@ def _check(ctx: Context, err: StartupError) -> Iterator[tuple[Diagnostic, bool]]
         if hit is None:
             continue  # the list sets none of the values the condition reads: not this list's doing
         entry, pid_on_line = hit
-        values = ", ".join(f"{_named(ctx, pid, idx)} = {_fmt(lookup(pid, None))}" for pid in refs(err.condition))
+        values = ", ".join(f"{_named(ctx, pid, idx)} = {_fmt(lookup(pid, None))}" for pid in err.read)
         yield ctx.report(
             err.code, Span.on_line(entry.line, entry.value_start, entry.value_end),
             f"P-ERR-{err.number}: {err.title}: `{err.condition_text}` does not hold ({values}); the controller "
@@ -192,9 +195,9 @@ def _fails_on_defaults(ctx: Context, err: StartupError, idx: tuple[int, ...]) ->
         spec = ctx.registry.get(pid)
         return default_number(spec) if spec is not None else None
 
-    if err.when is not None and evaluate(err.when, defaults) is not True:
+    if err.when is not None and err.when(defaults) is not True:
         return False
-    return evaluate(err.condition, defaults) is False
+    return err.condition(defaults) is False
 
 
 def _reported_entry(ctx: Context, err: StartupError, idx: tuple[int, ...],
@@ -202,7 +205,7 @@ def _reported_entry(ctx: Context, err: StartupError, idx: tuple[int, ...],
     """The line to report on, and its parameter: this list's entry of the reported parameter, else of
     another one the condition reads (never a default list's: its own findings are its own);
     ``own_only``: the reported parameter's entry or none."""
-    read = refs(err.condition)
+    read = err.read
     order = err.params[:1] if own_only else list(itertools.chain((p for p in err.params if p in read), read))
     for pid in order:
         spec = ctx.registry.get(pid)
