@@ -102,3 +102,11 @@ def test_a_default_list_of_a_machine_is_checked_as_one(tmp_path: Path) -> None:
     run = zero_cli("lint", "--machine", str(startup), "--select", "K", "--output-format", "concise")
     assert [line.split(" ")[1] for line in run.stdout.splitlines()] == ["K056"], run.stdout
     assert "default_achse.lis:1:" in run.stdout and "P-ERR-110300" in run.stdout
+
+
+def test_the_compiled_prose_ranges_are_the_toml() -> None:
+    """tools/gen_startup.py compiles the prose ranges too."""
+    from zero.catalog.data.prose_ranges import RANGES
+
+    toml = ROOT / "src" / "zero" / "catalog" / "data" / "prose_ranges.toml"
+    assert RANGES == tomllib.loads(toml.read_text(encoding="utf-8"))["range"]
