@@ -66,6 +66,11 @@ def format_release(release: tuple[int, ...]) -> str:
     return "V" + ".".join(str(p) for p in parts)
 
 
+def _release_tuple(release: str) -> tuple[int, ...] | None:
+    """A row's release as a comparable tuple; ``None`` where its source does not say."""
+    return None if release == UNKNOWN_RELEASE else parse_release(release)
+
+
 @record(frozen=True)
 class Rename:
     """``old`` is an older spelling of today's ``new`` (``id``), as ``source`` shows.
@@ -81,10 +86,7 @@ class Rename:
     release: str
     source: str
     see: tuple[str, ...] = ()
-
-    @property
-    def release_tuple(self) -> tuple[int, ...] | None:
-        return None if self.release == UNKNOWN_RELEASE else parse_release(self.release)
+    release_tuple = property(lambda self: _release_tuple(self.release), doc="The release, comparable.")
 
     def new_key(self, indices: tuple[int, ...] | list[int] = ()) -> str:
         """Today's key with a list line's indices filled in (``lr_hw[1]...``)."""
@@ -104,10 +106,7 @@ class Removal:
     release: str
     source: str
     see: tuple[str, ...] = ()
-
-    @property
-    def release_tuple(self) -> tuple[int, ...] | None:
-        return None if self.release == UNKNOWN_RELEASE else parse_release(self.release)
+    release_tuple = property(lambda self: _release_tuple(self.release), doc="The release, comparable.")
 
 
 @record(frozen=True)

@@ -35,8 +35,8 @@ def check_document(doc: Document, registry: Registry, kind: str | None,
     if any(p.kind == "binary" for p in doc.problems):  # one root cause, one finding
         return ctx, funnel(doc.path, [d for d in syntax.check_problems(ctx) if d.code == "S013"], severities)
     found = run_checks(CHECKS, ctx)
-    kernel = {(d.span.line, d.param_id) for d in found if d.kernel_error is not None}
-    if kernel:  # one root cause, one finding: the kernel's own start-up error says it, with its number
-        found = [d for d in found if d.code not in ("R005", "R006") or (d.span.line, d.param_id) not in kernel]
+    said = {(d.span.line, d.param_id) for d in found if d.kernel_error is not None}
+    if said:  # one root cause, one finding: the kernel's own start-up error says it, with its number
+        found = [d for d in found if d.code not in ("R005", "R006") or (d.span.line, d.param_id) not in said]
     found.extend(extra)
     return ctx, funnel(doc.path, found, severities, suppress.parse_directives(doc, declared_codes()))
