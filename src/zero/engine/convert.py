@@ -65,14 +65,14 @@ def xml_source(data: bytes, path: str, registry: Registry, item: str | None = No
 
 def xml_bytes(tree: Tree, registry: Registry, path: str) -> bytes:
     """A tree as the kernel's XML list (byte for byte the XML it was read from, where it was one)."""
-    from zero.markup.lists import has_skeleton, to_xml  # start-up: only for XML
+    from zero.markup.lists import to_xml  # start-up: only for XML
     from zero.markup.safe import BOM  # start-up: as above
 
     doc = tokenize(list_bytes(tree), path, tree.meta.get("encoding") if isinstance(tree.meta.get("encoding"), str)
                    else None)
     kind = tree.meta.get("kind") if isinstance(tree.meta.get("kind"), str) else None
     text = to_xml(doc, registry, kind_from_name(kind) if kind else None)
-    if has_skeleton(doc):  # the XML it was read from: its own encoding and BOM, byte for byte
+    if doc.holds_xml_lines():  # the XML it was read from: its own encoding and BOM, byte for byte
         return (BOM if doc.bom else b"") + text.encode(doc.encoding, "surrogateescape")
     try:  # a new XML list: UTF-8, as its declaration says
         return text.encode("utf-8")

@@ -238,7 +238,7 @@ def lint_data(data: bytes, path: str, registry: Registry, options: LintOptions |
     fmt = STRUCTURED_SUFFIXES.get(suffix)
     if fmt is not None:
         return lint_structured(data, fmt, registry, path, options)
-    if data[:64].lstrip(b"\xef\xbb\xbf \t\r\n")[:1] == b"<":
+    if is_xml(data):
         return lint_xml(data, path, registry, options)
     return lint_bytes(data, registry, path, options)
 

@@ -254,23 +254,30 @@ class Document:
             return self.lines[line - 1]
         return ""
 
+    def holds_xml_lines(self) -> bool:
+        """Was this list text written from an XML list (do its first comment lines hold the XML lines,
+        `# <?xml …`, `# <AX_MDS>`)? It is then written back as that XML, and its root says its kind."""
+        for item in self.items:
+            if type(item) is Blank:
+                continue
+            line = self.lines[item.line - 1]
+            text = line.lstrip("# \ufeff")
+            return type(item) is Comment and line.startswith("# ") and text.startswith("<") and (
+                text[1:2] in ("?", "!") or text[1:2].isalpha())
+        return False
+
     def declared_kind(self) -> str | None:
         """The list kind the file itself declares: an XML list's root element (read from XML, or kept
         as the comment lines of its list text, YAML, TOML or JSON form), else ``None`` (detected from
         the keys: an axis list and an axis compensation list share `kopf.achs_nr`)."""
         if self.origin is not None and self.origin.kind is not None:
             return self.origin.kind
-        seen = 0
-        for item in self.items:
-            if type(item) is Blank:
-                continue
+        if not self.holds_xml_lines():
+            return None
+        for seen, item in enumerate(i for i in self.items if type(i) is not Blank):
             if type(item) is not Comment or seen > 64:
                 return None
-            text = self.lines[item.line - 1]
-            if seen == 0 and not text.startswith(("# <?xml", "# \ufeff<?xml")):
-                return None
-            seen += 1
-            m = _ROOT_RE.match(text)
+            m = _ROOT_RE.match(self.lines[item.line - 1])
             if m is not None:  # the first element is the root
                 return XML_ROOTS.get(m.group(1))
         return None

@@ -217,23 +217,10 @@ def to_list(data: bytes, registry: Registry, path: str = "-",
 # ----------------------------------------------------------------------------- list → XML
 
 
-def has_skeleton(doc: Document) -> bool:
-    """Was this list text written from an XML list (does it carry the XML lines)?"""
-    for item in doc.items:
-        if isinstance(item, Blank):
-            continue
-        if isinstance(item, Comment):
-            text = doc.lines[item.line - 1].lstrip("# \ufeff")
-            return doc.lines[item.line - 1].startswith("# ") and text.startswith("<") and (
-                text[1:2] in ("?", "!") or text[1:2].isalpha())
-        return False
-    return False
-
-
 def to_xml(doc: Document, registry: Registry, kind: str | None) -> str:
     """The XML list this list text stands for (see the module's description). Raises a located
     :class:`ZeroError` for what an XML list cannot hold."""
-    if has_skeleton(doc):
+    if doc.holds_xml_lines():
         rebuilt = _rebuild(doc, registry, doc.declared_kind() or kind)
         try:  # the comment lines were XML lines: they make XML again, or the list is written anew
             scan(rebuilt.encode("utf-8", "surrogateescape"), doc.path)

@@ -75,7 +75,7 @@ Fix: write one element to a line.
 def check_elements(ctx: Context) -> Iterator[Diagnostic]:
     """S015/S016: parameter elements left as comment lines of an XML list's text."""
     doc = ctx.doc
-    if doc.origin is None and not _has_skeleton(ctx):
+    if doc.origin is None and not doc.holds_xml_lines():
         return
     for item in doc.items:
         if type(item) is not Comment:
@@ -109,12 +109,3 @@ def check_elements(ctx: Context) -> Iterator[Diagnostic]:
                 continue
             yield ctx.report("S016", span, f"{pid}{dots} is not written alone on its line as "
                              "`<ID Value=\"…\" />`: zero does not check it", param_id=pid)
-
-
-def _has_skeleton(ctx: Context) -> bool:
-    """A list converted from XML (to list text, YAML, TOML or JSON) still holds the XML lines."""
-    for item in ctx.doc.items:
-        if type(item).__name__ == "Blank":
-            continue
-        return type(item) is Comment and ctx.doc.lines[item.line - 1].startswith(("# <?xml", "# \ufeff<?xml"))
-    return False

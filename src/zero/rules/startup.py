@@ -17,8 +17,9 @@ from collections.abc import Iterator
 
 from zero.catalog.conditions import DEFAULT_LIST, Compiled, compile_condition, parse, refs
 from zero.catalog.data.startup_errors import ERRORS
+from zero.catalog.values import Resolved, default_number, parse_int
 from zero.diagnostics import Diagnostic, Span
-from zero.lists.model import Entry
+from zero.lists.model import Entry, format_key
 from zero.records import record
 from zero.rules.base import Context, E, Family
 
@@ -31,18 +32,38 @@ class StartupError:
     number: int
     kind: str
     params: tuple[str, ...]
-    condition: Compiled
-    when: Compiled | None
     condition_text: str
+    when_text: str
     correction: str
     title: str
     source: str
     written: bool = False  # checked only where the list writes the reported parameter (absent is fine)
-    read: tuple[str, ...] = ()  # the parameters the condition reads (computed once)
 
     @property
     def kernel_error(self) -> str:
         return f"P-ERR-{self.number}"
+
+
+@record(frozen=True)
+class _Compiled:
+    condition: Compiled
+    when: Compiled | None
+    read: tuple[str, ...]  # the parameters the condition reads
+
+
+_compiled: dict[str, _Compiled] = {}
+
+
+def compiled(err: StartupError) -> _Compiled:
+    """An error's condition compiled at its first check (not at start-up: a zero-offset list never
+    needs the axis checks)."""
+    hit = _compiled.get(err.code)
+    if hit is None:
+        node = parse(err.condition_text)
+        hit = _compiled[err.code] = _Compiled(compile_condition(node),
+                                              compile_condition(parse(err.when_text)) if err.when_text else None,
+                                              tuple(refs(node)))
+    return hit
 
 
 def _correction_said(correction: str) -> str:
@@ -84,11 +105,9 @@ def _declare() -> list[StartupError]:
         FAMILY.rule(str(row["code"]), f"kernel-{row['number']}", E, f"P-ERR-{row['number']}: {row['title']}",
                     _explanation(row, condition, when))
         out.append(StartupError(str(row["code"]), int(str(row["number"])), str(row["list"]),
-                                tuple(str(p) for p in row.get("params", ()) or ()),
-                                compile_condition(parse(condition)),
-                                compile_condition(parse(when)) if when else None, condition,
+                                tuple(str(p) for p in row.get("params", ()) or ()), condition, when,
                                 str(row.get("correction", "")), str(row["title"]), str(row["source"]),
-                                bool(row.get("written", False)), tuple(refs(parse(condition)))))
+                                bool(row.get("written", False))))
     return out
 
 
@@ -103,7 +122,8 @@ def check_startup(ctx: Context) -> Iterator[Diagnostic]:
     by_line: dict[int, list[tuple[bool, Diagnostic]]] = {}
     by_id = ctx.by_id
     for err in CHECKS:
-        if err.kind != ctx.kind or err.code not in ctx.severities or not any(p in by_id for p in err.read):
+        if err.kind != ctx.kind or err.code not in ctx.severities or \
+                not any(p in by_id for p in compiled(err).read):
             continue  # another kind, not selected, or the list sets nothing the condition reads
         for d, own in _check(ctx, err):
             by_line.setdefault(d.span.line, []).append((own, d))
@@ -117,7 +137,7 @@ def _elements(ctx: Context, err: StartupError) -> list[tuple[int, ...]]:
     """The elements to check: those the list sets of the reported parameter (or of any parameter of the
     condition), so that a condition on `getriebe[g]` is checked for each gear the list writes."""
     spec = ctx.registry.get(err.params[0]) if err.params else None
-    ids = [*err.params, *err.read]
+    ids = [*err.params, *compiled(err).read]
     seen: dict[tuple[int, ...], None] = {}
     for pid in ids:
         for idx in ctx.ids_of(pid):
@@ -127,15 +147,16 @@ def _elements(ctx: Context, err: StartupError) -> list[tuple[int, ...]]:
 
 def _check(ctx: Context, err: StartupError) -> Iterator[tuple[Diagnostic, bool]]:
     """Each failing element's finding, and whether it lies on the line of the parameter it reports."""
+    c = compiled(err)
     for idx in _elements(ctx, err):
         def lookup(pid: str, index: int | None, idx: tuple[int, ...] = idx) -> float | int | None:
             if pid == DEFAULT_LIST:
                 return int(ctx.default_list)
             return _value(ctx, pid, (index,) if index is not None else idx)
 
-        if err.when is not None and err.when(lookup) is not True:
+        if c.when is not None and c.when(lookup) is not True:
             continue
-        if err.condition(lookup) is not False:
+        if c.condition(lookup) is not False:
             continue  # holds, or a value it needs is not known: nothing to say
         if err.written:
             if _reported_entry(ctx, err, idx, own_only=True) is None:
@@ -146,7 +167,7 @@ def _check(ctx: Context, err: StartupError) -> Iterator[tuple[Diagnostic, bool]]
         if hit is None:
             continue  # the list sets none of the values the condition reads: not this list's doing
         entry, pid_on_line = hit
-        values = ", ".join(f"{_named(ctx, pid, idx)} = {_fmt(lookup(pid, None))}" for pid in err.read)
+        values = ", ".join(f"{_named(ctx, pid, idx)} = {_fmt(lookup(pid, None))}" for pid in c.read)
         yield ctx.report(
             err.code, Span.on_line(entry.line, entry.value_start, entry.value_end),
             f"P-ERR-{err.number}: {err.title}: `{err.condition_text}` does not hold ({values}); the controller "
@@ -155,14 +176,22 @@ def _check(ctx: Context, err: StartupError) -> Iterator[tuple[Diagnostic, bool]]
             bool(err.params) and pid_on_line == err.params[0]
 
 
+def _element(ctx: Context, pid: str, idx: tuple[int, ...]) -> tuple[int, ...]:
+    """The element of ``pid`` that element ``idx`` of the checked parameter pairs with."""
+    spec = ctx.registry.get(pid)
+    n = len(spec.dims) if spec is not None else 0
+    return tuple(idx[:n]) + (0,) * max(n - len(idx), 0)
+
+
+def _own(ctx: Context, pid: str, idx: tuple[int, ...]) -> Resolved | None:
+    """This list's entry of ``pid`` at that element (never a default list's)."""
+    return ctx.by_id.get(pid, {}).get(_element(ctx, pid, idx))
+
+
 def _value(ctx: Context, pid: str, idx: tuple[int, ...]) -> float | int | None:
     """The value as written, where the list writes a number (also one the catalogue's range refuses:
     the kernel's own check sees it), else the value the controller uses (the default where unset)."""
-    from zero.catalog.values import parse_int  # start-up: only where a start-up check runs
-
-    spec = ctx.registry.get(pid)
-    n = len(spec.dims) if spec is not None else 0
-    res = ctx.by_id.get(pid, {}).get(tuple(idx[:n]) + (0,) * max(n - len(idx), 0))
+    res = _own(ctx, pid, idx)
     if res is not None:
         if res.value.number is not None:
             return res.value.number
@@ -174,20 +203,16 @@ def _value(ctx: Context, pid: str, idx: tuple[int, ...]) -> float | int | None:
 
 def _named(ctx: Context, pid: str, idx: tuple[int, ...]) -> str:
     """``P-AXIS-00219`` as ``P-AXIS-00219 (`kenngr.vb_refmax`)``, with the element checked."""
-    from zero.lists.model import format_key  # start-up: only for a finding
-
     spec = ctx.registry.get(pid)
     if spec is None or not spec.key:
         return pid
-    n = len(spec.dims)
-    return f"{pid} (`{format_key(spec.key, tuple(idx[:n]) + (0,) * max(n - len(idx), 0))}`)"
+    return f"{pid} (`{format_key(spec.key, _element(ctx, pid, idx))}`)"
 
 
 def _fails_on_defaults(ctx: Context, err: StartupError, idx: tuple[int, ...]) -> bool:
     """Does the condition fail with nothing but the catalogue's defaults? Then the list is not what makes
     it fail: a default of 0 that means "not used" (an emergency deceleration of 0 takes the normal
     one), which the documented condition leaves unsaid."""
-    from zero.catalog.values import default_number  # start-up: only for a condition that failed
 
     def defaults(pid: str, index: int | None) -> float | int | None:
         if pid == DEFAULT_LIST:
@@ -195,9 +220,10 @@ def _fails_on_defaults(ctx: Context, err: StartupError, idx: tuple[int, ...]) ->
         spec = ctx.registry.get(pid)
         return default_number(spec) if spec is not None else None
 
-    if err.when is not None and err.when(defaults) is not True:
+    c = compiled(err)
+    if c.when is not None and c.when(defaults) is not True:
         return False
-    return err.condition(defaults) is False
+    return c.condition(defaults) is False
 
 
 def _reported_entry(ctx: Context, err: StartupError, idx: tuple[int, ...],
@@ -205,12 +231,10 @@ def _reported_entry(ctx: Context, err: StartupError, idx: tuple[int, ...],
     """The line to report on, and its parameter: this list's entry of the reported parameter, else of
     another one the condition reads (never a default list's: its own findings are its own);
     ``own_only``: the reported parameter's entry or none."""
-    read = err.read
+    read = compiled(err).read
     order = err.params[:1] if own_only else list(itertools.chain((p for p in err.params if p in read), read))
     for pid in order:
-        spec = ctx.registry.get(pid)
-        n = len(spec.dims) if spec is not None else 0
-        res = ctx.by_id.get(pid, {}).get(tuple(idx[:n]) + (0,) * max(n - len(idx), 0))
+        res = _own(ctx, pid, idx)
         if res is not None:
             return res.entry, pid
     return None
