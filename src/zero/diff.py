@@ -20,7 +20,7 @@ from zero.catalog.values import canonical_key, default_number, parse_int, read_v
 from zero.errors import ZeroError
 from zero.lists.model import Comment, Entry, Key, ValueKind, parse_key
 from zero.lists.tokenizer import tokenize_text
-from zero.markup.documents import read_document
+from zero.markup import read_document
 from zero.records import field, record
 from zero.structured.formats import read_tree
 from zero.structured.tree import to_list_text

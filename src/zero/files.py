@@ -351,6 +351,10 @@ def _write_to_stream(path: Path, data: bytes) -> bool:
         os.close(fd)
 
 
+class _Unchanged(OSError):
+    """An in-place rewrite that failed before its first byte: the file is as it was."""
+
+
 def _rewrite_in_place(target: Path, data: bytes) -> None:
     """Overwrite the file itself (same inode: every hard link and the owner stay). The blocks a
     longer content needs are claimed first, so a full disk fails before the first byte is changed."""
@@ -364,7 +368,7 @@ def _rewrite_in_place(target: Path, data: bytes) -> None:
                 with contextlib.suppress(OSError):
                     os.ftruncate(fd, old)  # nothing of the old content was changed
                 if exc.errno not in (errno.EINVAL, errno.EOPNOTSUPP, errno.ENOTSUP):
-                    raise
+                    raise _Unchanged(exc.errno, exc.strerror) from exc
         _write_all(fd, data)
         os.ftruncate(fd, len(data))
         os.fsync(fd)
@@ -556,6 +560,9 @@ def _replace(tmp: Path, target: Path, st: os.stat_result, data: bytes) -> None:
         with _signals_held():
             try:
                 _rewrite_in_place(target, data)
+            except _Unchanged as exc:  # the blocks could not be claimed: nothing to complete later
+                os.unlink(journal)
+                raise ZeroError(f"not written: {exc.strerror or exc}; the file is unchanged", str(target)) from None
             except OSError as exc:
                 raise ZeroError(f"not written completely: {exc.strerror or exc}; the next zero that reads or "
                                 f"writes it completes it from {journal.name}", str(target)) from None

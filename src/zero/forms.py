@@ -112,3 +112,17 @@ def split_part(path: str | os.PathLike[str]) -> tuple[str, str | None]:
     text = os.fspath(path)
     file, sep, element = text.rpartition("#")
     return (file, element) if sep and element in EMBEDDED else (text, None)
+
+
+KERNEL_ROOT = "CncKernelRootDir"  # the kernel's own folder, as its XML start-up lists name it
+
+
+def controller_absolute(text: str) -> bool:
+    """An absolute path on the controller, as a start-up list or `roots` writes it: ``/…``, ``C:\\…``,
+    ``C:/…``, ``\\\\server\\…``, or below the kernel's root folder (``CncKernelRootDir/config/…``)."""
+    return text.startswith(("/", "\\")) or (len(text) >= 3 and text[0].isalpha() and text[1] == ":"
+                                            and text[2] in "/\\") or kernel_rooted(text)
+
+
+def kernel_rooted(text: str) -> bool:
+    return text.replace("\\", "/").split("/", 1)[0].lower() == KERNEL_ROOT.lower()

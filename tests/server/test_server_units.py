@@ -235,3 +235,11 @@ def test_a_declared_code_page_is_read_and_written_in_the_editor(tmp_path: Path) 
     assert edited.diagnostics == []
     formatted = actions.formatting(edited)
     assert formatted and all("\u00fc" in e.new_text or "f" not in e.new_text for e in formatted)
+
+
+def test_an_xml_text_is_written_in_the_encoding_its_declaration_names() -> None:
+    """An unsaved XML list in ISO-8859-1: its bytes are what expat reads as the same text (was UTF-8:
+    `Kühlung` read as `KÃ¼hlung`, every column after it shifted)."""
+    text = '<?xml version="1.0" encoding="ISO-8859-1"?>\n<AX_MDS>\n  <!-- K\u00fchlung -->\n</AX_MDS>\n'
+    assert encode_text(text) == text.encode("latin-1")
+    assert encode_text("kopf.achs_nr 1  # K\u00fchlung\n") == "kopf.achs_nr 1  # K\u00fchlung\n".encode()

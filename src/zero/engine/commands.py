@@ -301,7 +301,7 @@ def _add_noqa_xml(path: Path, data: bytes, result: LintResult, options: LintOpti
     """``--add-noqa`` on XML: the lists of a TwinCAT export get their directives inside their CDATA
     sections (every other byte kept); an XML list has no list comments to hold them and is left as it is."""
     from zero.engine.baseline import add_noqa  # start-up: only with --add-noqa
-    from zero.markup.documents import embedded_documents, put_back  # start-up: only for XML
+    from zero.markup.documents import embedded_documents, splice  # start-up: only for XML
     from zero.markup.safe import scan  # start-up: as above
 
     try:
@@ -312,14 +312,13 @@ def _add_noqa_xml(path: Path, data: bytes, result: LintResult, options: LintOpti
         echo.err(f"zero: {path}: --add-noqa writes list comments, which an XML list has no place for: not changed "
                  "(per-file-ignores in the configuration suppress its findings)\n")
         return result
-    new, added = data, 0
+    texts, added = [], 0
     for item in embedded_documents(data, str(path), sc)[1]:
-        current = next(x for x in embedded_documents(new, str(path))[1] if x.element == item.element)
-        own = lint_document(replace(current.doc, origin=None), registry, options)  # the list's own lines
-        baseline = add_noqa(own)
+        baseline = add_noqa(lint_document(replace(item.doc, origin=None), registry, options))  # its own lines
         if baseline.added:
             added += baseline.added
-            new = put_back(new, str(path), item.element, baseline.data.decode(current.doc.encoding, "surrogateescape"))
+            texts.append((item, baseline.data.decode(item.doc.encoding, "surrogateescape")))
+    new = splice(sc, str(path), texts) if texts else data
     if added:
         write_atomic(path, new, force=True)
         run.changed += 1

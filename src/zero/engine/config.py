@@ -49,7 +49,7 @@ from zero.diagnostics import Severity
 from zero.engine.lint import LintOptions
 from zero.errors import ZeroError
 from zero.files import nearest_holding, read_file, within
-from zero.forms import CONFIG_NAMES, DEFAULT_INCLUDE
+from zero.forms import CONFIG_NAMES, DEFAULT_INCLUDE, controller_absolute
 from zero.lists.encoding import declarable
 from zero.lists.model import parse_key
 from zero.records import field, record
@@ -226,8 +226,7 @@ def _roots(value: Any, path: Path, root: Path,
         raise fail("roots", 'expected a table of "controller folder" = "project folder"', ("machine",))
     out = []
     for k, v in value.items():
-        if not (k.startswith(("/", "\\")) or (len(k) >= 2 and k[0].isalpha() and k[1] == ":")
-                or k.replace("\\", "/").split("/", 1)[0].lower() == "cnckernelrootdir"):
+        if not controller_absolute(k.rstrip("/\\") + "/"):
             raise fail("roots", f"{k!r} is no absolute path of the controller (`C:/…`, `/…` or `CncKernelRootDir/…`)",
                        ("machine",))
         if not within(path.parent / v, root):

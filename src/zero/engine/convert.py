@@ -19,10 +19,11 @@ from zero.catalog.registry import Registry, kind_from_name
 from zero.diagnostics import Severity
 from zero.engine.formatting import undeclared_code_page
 from zero.engine.lint import LintResult, lint_tree
-from zero.engine.project import Project
+from zero.engine.project import Project, configurations_only
 from zero.errors import ZeroError
 from zero.files import read_file, write_atomic
-from zero.forms import EXTENSION, TWINCAT_ROOT, XML_ROOTS, format_of
+from zero.forms import EXTENSION, TWINCAT_ROOT, format_of
+from zero.lists.encoding import document_bytes
 from zero.lists.tokenizer import tokenize
 from zero.records import field, record
 from zero.structured.formats import read_tree, write_tree
@@ -41,45 +42,27 @@ def xml_source(data: bytes, path: str, registry: Registry, item: str | None = No
     """An XML input as the bytes of the list it is (the XML lines kept as comments: see
     :mod:`zero.markup.lists`), its codec and its list kind; a TwinCAT export as the list of its
     element ``item`` (the one list it holds when ``item`` is not given)."""
-    from zero.markup.documents import embedded_documents, list_text  # start-up: only for XML
-    from zero.markup.lists import to_list  # start-up: as above
-    from zero.markup.safe import BOM, scan  # start-up: as above
+    from zero.markup.documents import embedded_documents, list_text, pick, xml_document  # start-up: only for XML
+    from zero.markup.safe import scan  # start-up: as above
 
     sc = scan(data, path)
     if sc.root == TWINCAT_ROOT:
-        _, lists = embedded_documents(data, path, sc)
-        held = [x.element for x in lists]
-        hits = [x for x in lists if item is None or x.element.lower() == item.lower()]
-        if len(hits) != 1:
-            raise ZeroError(f"the export holds the lists {', '.join(held) or 'none'}: name one with --item "
-                            "(or give --out-dir to extract every one)" if item is None or not hits else
-                            f"the export holds {len(hits)} `<{item}>` lists", path)
-        return list_text(hits[0]), hits[0].doc.encoding, hits[0].kind
+        hit = pick(embedded_documents(data, path, sc)[1], item, path)
+        return list_text(hit), hit.doc.encoding, hit.kind
     if item is not None:
         raise ZeroError("--item names a list inside a TwinCAT export; this is an XML list", path)
-    if sc.root not in XML_ROOTS:
-        raise ZeroError(f"the root element `<{sc.root}>` is not that of a parameter list", path, 1, 1)
-    text, _, kind = to_list(data, registry, path, sc)
-    return (BOM if sc.bom else b"") + text.encode(sc.encoding, "surrogateescape"), sc.encoding, kind
+    doc = xml_document(data, path, registry, sc)
+    return document_bytes(doc), doc.encoding, doc.origin.kind if doc.origin is not None else None
 
 
 def xml_bytes(tree: Tree, registry: Registry, path: str) -> bytes:
     """A tree as the kernel's XML list (byte for byte the XML it was read from, where it was one)."""
     from zero.markup.lists import to_xml  # start-up: only for XML
-    from zero.markup.safe import BOM  # start-up: as above
 
-    doc = tokenize(list_bytes(tree), path, tree.meta.get("encoding") if isinstance(tree.meta.get("encoding"), str)
-                   else None)
+    encoding = tree.meta.get("encoding")
+    doc = tokenize(list_bytes(tree), path, encoding if isinstance(encoding, str) else None)
     kind = tree.meta.get("kind") if isinstance(tree.meta.get("kind"), str) else None
-    text = to_xml(doc, registry, kind_from_name(kind) if kind else None)
-    if doc.holds_xml_lines():  # the XML it was read from: its own encoding and BOM, byte for byte
-        return (BOM if doc.bom else b"") + text.encode(doc.encoding, "surrogateescape")
-    try:  # a new XML list: UTF-8, as its declaration says
-        return text.encode("utf-8")
-    except UnicodeEncodeError as exc:
-        line = text.count("\n", 0, exc.start) + 1
-        raise ZeroError("a byte the list's encoding cannot read: an XML list cannot hold it; fix the line first "
-                        "(`zero lint` shows it as S007)", path, line) from None
+    return to_xml(doc, registry, kind_from_name(kind) if kind else None)
 
 
 def convert(data: bytes, src: str, dst: str, registry: Registry, path: str = "-", kind: str | None = None,
@@ -118,12 +101,10 @@ def list_bytes(tree: Tree) -> bytes:
     return write_tree(tree, "lis")
 
 
-def _no_catalogue(_desc: Path | None) -> Registry:
-    raise ZeroError("no catalogue is resolved here")  # pragma: no cover - never asked
 
-
-def output_path(src: Path, fmt: str, out_dir: Path) -> Path:
-    return out_dir / (src.stem + EXTENSION[fmt])
+def output_path(src: Path, fmt: str, out_dir: Path, element: str | None = None) -> Path:
+    """``name.yaml`` in ``out_dir``; ``name.Element.lis`` for the list ``element`` of a TwinCAT export."""
+    return out_dir / (src.stem + (f".{element}" if element else "") + EXTENSION[fmt])
 
 
 def target_format(to: str | None, output: str | None, src_fmt: str) -> str:
@@ -188,7 +169,7 @@ def convert_inputs(inputs: Sequence[str], registry: Registry | Callable[[str], R
     ``project`` says the code page each list input's configuration declares (by default the
     configuration found from the input's folder)."""
     if project is None:  # only its configurations are asked: the catalogue comes from `registry`
-        project = Project(_no_catalogue)
+        project = configurations_only()
     items = []
     for name in inputs:
         catalogue = registry(name) if callable(registry) else registry
@@ -230,28 +211,24 @@ def write_into(name: str, export: Path, element: str | None, registry: Registry 
     """``zero convert LIST --into EXPORT [--item ELEMENT]``: the list (in any form) put back into the
     CDATA section of ``element`` in a TwinCAT export, written atomically; every other byte of the
     export kept. The element may be left out when the export holds one list. Returns the new bytes."""
-    from zero.markup.documents import put_back  # start-up: only for XML
+    from zero.markup.documents import doc_text, embedded_documents, pick, splice  # start-up: only for XML
+    from zero.markup.safe import scan  # start-up: as above
 
     catalogue = registry(name) if callable(registry) else registry
     data = read_stdin() if name == "-" else read_file(name)
     src_fmt = source_format(src, name)
-    text = data if src_fmt == "lis" else convert(data, src_fmt, "lis", catalogue, name, kind, False).output
+    if src_fmt != "lis":
+        data = convert(data, src_fmt, "lis", catalogue, name, kind, False).output
+    declared = configurations_only().encoding(Path(name)) if name != "-" else None
+    text = doc_text(tokenize(data, name, declared))  # the list's own code page, read as text
     target = read_file(export)
-    held = _elements(target, str(export))
-    if element is None:
-        if len(held) != 1:
-            raise ZeroError(f"the export holds the lists {', '.join(held) or 'none'}: name one with --item",
-                            str(export))
-        element = held[0]
-    named = next((h for h in held if h.lower() == element.lower()), element)
-    codec = "utf-8"
+    sc, lists = embedded_documents(target, str(export))
+    new = splice(sc, str(export), [(pick(lists, element, str(export)), text)])
     try:
-        from zero.markup.safe import encoding_of  # start-up: as above
-
-        codec = encoding_of(target)[0]
-    except ZeroError:
-        pass
-    new = put_back(target, str(export), named, text.decode(codec, "surrogateescape"))
+        new.decode(sc.encoding)
+        scan(new, str(export))  # the export as it will be: still XML (a character its codec lacks is not)
+    except (UnicodeDecodeError, ZeroError) as exc:
+        raise ZeroError(f"the list cannot be put into the export: {exc}", str(export)) from None
     write_atomic(export, new, force=True, inputs=(Path(name),) if name != "-" else ())
     return new
 
@@ -272,8 +249,7 @@ def write_outputs(items: Sequence[ConvertItem], output: str | None, out_dir: Pat
     sources = tuple(Path(i.name) for i in items if i.name != "-")
     done = [(i, i.output) for i in items if i.output is not None]
     if out_dir is not None:
-        targets = [output_path(Path(i.name).with_name(f"{Path(i.name).stem}.{i.element}.xml") if i.element
-                               else Path(i.name), i.fmt, out_dir) for i, _ in done]
+        targets = [output_path(Path(i.name), i.fmt, out_dir, i.element) for i, _ in done]
         if len(set(targets)) != len(targets):
             raise ZeroError("two inputs would write the same output name; convert them separately")
         out_dir.mkdir(parents=True, exist_ok=True)

@@ -10,7 +10,7 @@ from pathlib import Path
 
 from zero.errors import ZeroError
 from zero.files import check_regular
-from zero.forms import LIST_SUFFIXES, PROGRAM_SUFFIXES, TWINCAT_ROOT, XML_ROOTS, root_of
+from zero.forms import LIST_SUFFIXES, PROGRAM_SUFFIXES, xml_form
 
 
 def git_visible(directory: Path) -> set[str] | None:
@@ -54,8 +54,7 @@ def holds_lists(path: Path) -> bool:
             head = f.read(65536)
     except (OSError, ZeroError):
         return True
-    root = root_of(head)
-    return root in XML_ROOTS or root == TWINCAT_ROOT
+    return xml_form(head) is not None
 
 
 def collect_files(paths: Iterable[str | Path], include: Callable[[Path], bool] | None = None,

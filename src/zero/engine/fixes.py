@@ -17,7 +17,7 @@ from zero.errors import ZeroError
 from zero.forms import is_xml
 from zero.lists.encoding import document_bytes
 from zero.lists.model import Document
-from zero.lists.tokenizer import tokenize, tokenize_text
+from zero.lists.tokenizer import split_lines, tokenize
 from zero.records import record
 
 MAX_PASSES = 8
@@ -100,8 +100,8 @@ def _fix_xml(data: bytes, path: str, registry: Registry, options: LintOptions | 
             codec, bom = encoding_of(current)
         except ZeroError:
             break
-        text = (current[3:] if bom else current).decode(codec, "surrogateescape")
-        doc = tokenize_text(text, path, codec, bom)  # the file's lines, endings and encoding, to edit
+        lines, endings = split_lines((current[3:] if bom else current).decode(codec, "surrogateescape"))
+        doc = Document(path, codec, lines, endings, [], bom=bom)  # the file's own lines, to edit
         lines, applied = apply_edits(doc, edits)
         if not applied:
             break

@@ -73,7 +73,7 @@ def format_bytes(data: bytes, path: str, registry: Registry, value_column: int |
 
 
 def _format_xml(data: bytes, path: str, registry: Registry, value_column: int | None) -> bytes:
-    from zero.markup.documents import embedded_documents, list_text, put_back  # start-up: only for XML
+    from zero.markup.documents import embedded_documents, list_text, splice  # start-up: only for XML
     from zero.markup.safe import scan  # start-up: as above
 
     sc = scan(data, path)
@@ -82,8 +82,6 @@ def _format_xml(data: bytes, path: str, registry: Registry, value_column: int | 
             raise ZeroError(f"the root element `<{sc.root}>` is not that of a parameter list", path, 1, 1)
         return data
     _, lists = embedded_documents(data, path, sc)
-    out = data
-    for item in lists:
-        formatted = format_bytes(list_text(item), path, registry, value_column, item.doc.encoding)
-        out = put_back(out, path, item.element, formatted.decode(item.doc.encoding, "surrogateescape"))
-    return out
+    texts = [(item, format_bytes(list_text(item), path, registry, value_column, item.doc.encoding)
+              .decode(item.doc.encoding, "surrogateescape")) for item in lists]
+    return splice(sc, path, texts)

@@ -257,24 +257,14 @@ def lint_xml(data: bytes, path: str, registry: Registry, options: LintOptions | 
     opts = options or LintOptions()
     try:
         sc = scan(data, path)
-        if sc.root == TWINCAT_ROOT:
-            _, lists = embedded_documents(data, path, sc)
-            pairs: list[tuple[Document, str | None]] = [(item.doc, item.kind) for item in lists]
-        else:
-            doc = xml_document(data, path, registry, sc)
-            pairs = [(doc, doc.origin.kind if doc.origin is not None else None)]
+        docs = [item.doc for item in embedded_documents(data, path, sc)[1]] if sc.root == TWINCAT_ROOT \
+            else [xml_document(data, path, registry, sc)]
     except ZeroError as exc:
         return refused(path, data, exc, opts)
-    found: list[Diagnostic] = []
-    kind: str | None = None
-    for doc, _ in pairs:
-        result = lint_document(doc, registry, opts)  # placed in the XML file by its origin
-        kind = kind or result.kind
-        found.extend(result.diagnostics)
-    found.sort(key=lambda d: d.sort_key())
-    shown = shown_document(path, pairs[0][0].origin, sc.encoding) if pairs and pairs[0][0].origin \
-        else _shown(path, data)
-    return LintResult(path, shown, kind if len(pairs) == 1 else None, found)
+    results = [lint_document(doc, registry, opts) for doc in docs]  # each placed in the XML file by its origin
+    found = sorted((d for r in results for d in r.diagnostics), key=lambda d: d.sort_key())
+    shown = shown_document(path, docs[0].origin, sc.encoding) if docs and docs[0].origin else _shown(path, data)
+    return LintResult(path, shown, results[0].kind if len(results) == 1 else None, found)
 
 
 def _shown(path: str, data: bytes) -> Document:

@@ -213,3 +213,12 @@ def require_startup(machine: Machine, registry: Registry) -> Machine:
 
 
 __all__ = ["Project", "Registries", "absolute", "require_startup"]
+
+
+def _no_catalogue(_desc: Path | None) -> Registry:
+    raise ZeroError("no catalogue is resolved here")  # pragma: no cover - only configurations are asked
+
+
+def configurations_only() -> Project:
+    """A project asked only for configurations (a list's declared code page): it loads no catalogue."""
+    return Project(_no_catalogue)

@@ -13,7 +13,7 @@ from pathlib import Path
 from zero.catalog.registry import ParamSpec, Registry
 from zero.diff import Change, DiffOptions, Side, diff_defaults, diff_sides, read_side
 from zero.engine.convert import source_format
-from zero.engine.project import Project
+from zero.engine.project import Project, configurations_only
 from zero.errors import ZeroError
 from zero.files import read_file
 from zero.lists.model import parse_key
@@ -32,12 +32,9 @@ def load_side(name: str, fmt: str | None, kind: str | None, registry: Registry,
     data = read_stdin() if name == "-" else read_file(name)
     encoding = None
     if name != "-" and src in ("lis", "xml"):
-        encoding = (project or Project(_no_catalogue)).encoding(Path(name))
+        encoding = (project or configurations_only()).encoding(Path(name))
     return read_side(data, src, name, registry, kind, encoding)
 
-
-def _no_catalogue(_desc: Path | None) -> Registry:
-    raise ZeroError("no catalogue is resolved here")  # pragma: no cover - only configurations are asked
 
 
 @record

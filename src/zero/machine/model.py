@@ -42,9 +42,9 @@ from zero.catalog.registry import Registry
 from zero.catalog.values import ListValues
 from zero.errors import ZeroError
 from zero.files import nearest_holding, read_file, within
-from zero.forms import CONFIG_NAMES, TWINCAT, split_part, xml_form
+from zero.forms import CONFIG_NAMES, KERNEL_ROOT, TWINCAT, controller_absolute, kernel_rooted, split_part, xml_form
 from zero.lists.model import Document, Entry, Invalid
-from zero.markup.documents import read_document
+from zero.markup import read_document
 from zero.records import field, record, replace
 
 # Soft limits the controller uses when no list sets them (±10 m, the catalogue default).
@@ -275,7 +275,7 @@ def working_directory(startup: Path, raws: list[str], ceiling: Path | None = Non
     absolute = Path(os.path.abspath(startup))
     base = absolute.parent
     candidates = _candidates(base, ceiling)
-    relative = [Path(_clean(r)) for r in raws if _clean(r) and not _absolute(_clean(r))]
+    relative = [Path(_clean(r)) for r in raws if _clean(r) and not controller_absolute(_clean(r))]
     best, hits = base, 0
     for d in candidates:
         n = sum(1 for r in relative if (d / r).is_file())
@@ -345,21 +345,6 @@ def _count(startup: ListValues, pid: str) -> int:
     return int(n) if n is not None else 0
 
 
-KERNEL_ROOT = "CncKernelRootDir"  # the kernel's own folder, as its XML start-up lists name it
-
-
-def _absolute(text: str) -> bool:
-    """An absolute path on the controller: ``/…``, ``C:\\…``, ``C:/…``, ``\\\\server\\…``, or below the
-    kernel's root folder (``CncKernelRootDir/config/ax_mds_1.xml``, as the SDK's ``startup.xml`` writes)."""
-    return text.startswith(("/", "\\")) or (len(text) >= 3 and text[0].isalpha() and text[1] == ":"
-                                            and text[2] in "/\\") or _kernel_rooted(text)
-
-
-def _kernel_rooted(text: str) -> bool:
-    head = text.replace("\\", "/").split("/", 1)[0]
-    return head.lower() == KERNEL_ROOT.lower()
-
-
 Roots = tuple[tuple[str, Path], ...]  # a folder of the controller → where it lies here
 
 
@@ -406,13 +391,13 @@ def named_lists(startup_path: Path, doc: Document, overrides: dict[str, Path] | 
             n.path, n.status = override, "overridden"
         elif not text:
             n.status, n.reason = "missing", "is empty"
-        elif _absolute(text) and (mapped := _mapped(text, roots)) is not None:
+        elif controller_absolute(text) and (mapped := _mapped(text, roots)) is not None:
             n.path = mapped  # `[tool.zero.machine] roots` says where that folder of the controller lies
             if not any(within(mapped, folder) for _, folder in roots):
                 n.status, n.reason = "not-checked", "climbs out of the folder `roots` maps it to"
                 n.path = None
-        elif _absolute(text):
-            where = (f"lies below the kernel's root folder `{KERNEL_ROOT}`" if _kernel_rooted(text)
+        elif controller_absolute(text):
+            where = (f"lies below the kernel's root folder `{KERNEL_ROOT}`" if kernel_rooted(text)
                      else "is an absolute path on the controller")
             n.status, n.reason = "not-checked", f"{where} (`[tool.zero.machine] roots` can map its folder)"
         else:

@@ -26,13 +26,11 @@ from zero.forms import (
     split_part,
     xml_form,
 )
+from zero.lists.encoding import BOM
 from zero.lists.model import Document, Origin
-from zero.lists.tokenizer import tokenize, tokenize_text
+from zero.lists.tokenizer import tokenize_text
 from zero.markup.lists import escape, to_list
-from zero.markup.safe import BOM, Scan, scan
-
-__all__ = ["EMBEDDED", "TWINCAT", "TWINCAT_ROOT", "XML_LIST", "Embedded", "embedded_documents", "is_update", "is_xml",
-           "put_back", "read_document", "relocate", "root_of", "shown_document", "xml_document", "xml_form"]
+from zero.markup.safe import Scan, scan
 from zero.records import record, replace
 
 _LINE_RE = re.compile(r"\bline (\d+)\b")
@@ -56,21 +54,13 @@ def _roots_said() -> str:
     return "the root of a parameter list in XML (" + ", ".join(f"`<{r}>`" for r in XML_ROOTS) + ")"
 
 
-def read_document(data: bytes, path: str, registry: Registry, encoding: str | None = None) -> Document:
-    """A list file's bytes as the document model, whatever its form; :class:`ZeroError` (located)
-    for XML zero will not read, and for a TwinCAT export (it holds several lists: see
-    :func:`embedded_documents`). ``encoding``: the code page declared for an ASCII list."""
-    if not is_xml(data):
-        return tokenize(data, path, encoding)
+def read_xml(data: bytes, path: str, registry: Registry) -> Document:
+    """XML bytes as the document model (see :func:`zero.markup.read_document`): an XML list, or one list
+    of a TwinCAT export (`export.xml#NullpD`, or the one it holds); :class:`ZeroError` (located) for XML
+    zero will not read."""
     file, element = split_part(path)
-    if xml_form(data) == TWINCAT:  # `export.xml#NullpD`, or the one list an export holds
-        _, lists = embedded_documents(data, file)
-        hits = [x for x in lists if element is None or x.element == element]
-        if len(hits) != 1:
-            held = ", ".join(x.element for x in lists) or "none"
-            raise ZeroError(f"a TwinCAT export holding {held}: name the list meant (`--item`, or "
-                            "`export.xml#Element` for a machine)", file, 1, 1)
-        return hits[0].doc
+    if xml_form(data) == TWINCAT:
+        return pick(embedded_documents(data, file)[1], element, file).doc
     return xml_document(data, path, registry)
 
 
@@ -142,24 +132,43 @@ def shown_document(path: str, origin: Origin, encoding: str = "utf-8") -> Docume
     return Document(path, encoding, list(origin.source), ["\n"] * len(origin.source), [])
 
 
-def put_back(data: bytes, path: str, element: str, text: str) -> bytes:
-    """A TwinCAT export with the list of ``element`` replaced by ``text``: every byte outside that
-    CDATA section kept. Refused (located) when the export holds no such list, or several, or when
-    the text cannot stand in CDATA (it holds ``]]>``)."""
-    sc, lists = embedded_documents(data, path)
-    hits = [item for item in lists if item.element == element]
+def pick(lists: list[Embedded], element: str | None, path: str) -> Embedded:
+    """The one list of an export that ``element`` names (any case; the only one where ``None``), or a
+    located :class:`ZeroError` saying which lists the export holds."""
+    hits = [x for x in lists if element is None or x.element.lower() == element.lower()]
     if len(hits) != 1:
-        held = ", ".join(sorted({item.element for item in lists})) or "none"
-        raise ZeroError(f"the export holds {len(hits)} `<{element}>` lists (it holds: {held}); "
-                        "zero puts a list back into exactly one", path)
-    if "]]>" in text:
-        raise ZeroError("the list holds `]]>`, which cannot stand inside a CDATA section", path)
-    hit = hits[0]
-    new = sc.text[:hit.start] + text + sc.text[hit.end:]
-    return (BOM if sc.bom else b"") + new.encode(sc.encoding, "surrogateescape")
+        held = ", ".join(x.element for x in lists) or "none"
+        if element is None:
+            raise ZeroError(f"the export holds the lists {held}: name one with --item ELEMENT (or give --out-dir "
+                            "for every one; a machine names `export.xml#Element`)", path, 1, 1)
+        raise ZeroError(f"the export holds {len(hits)} `<{element}>` lists (it holds: {held}): zero takes exactly "
+                        "one", path, 1, 1)
+    return hits[0]
+
+
+def splice(sc: Scan, path: str, texts: list[tuple[Embedded, str]]) -> bytes:
+    """An export with the CDATA content of each list replaced by its text, every other byte kept (one
+    scan, replaced by offsets from the end, so two lists of one element name are two lists).
+    Refused (located) where a text cannot stand in CDATA (it holds ``]]>``)."""
+    out = sc.text
+    for item, text in sorted(texts, key=lambda pair: -pair[0].start):
+        if "]]>" in text:
+            raise ZeroError("the list holds `]]>`, which cannot stand inside a CDATA section", path,
+                            *sc.position(item.start))
+        out = out[:item.start] + text + out[item.end:]
+    return (BOM if sc.bom else b"") + out.encode(sc.encoding, "surrogateescape")
+
+
+def doc_text(doc: Document) -> str:
+    """A document's text as it was read (its lines and endings)."""
+    return "".join(a + b for a, b in zip(doc.lines, doc.endings, strict=True))
 
 
 def list_text(item: Embedded) -> bytes:
     """The bytes of an embedded list as a list file holds them."""
-    doc = item.doc
-    return "".join(a + b for a, b in zip(doc.lines, doc.endings, strict=True)).encode(doc.encoding, "surrogateescape")
+    return doc_text(item.doc).encode(item.doc.encoding, "surrogateescape")
+
+
+__all__ = ["EMBEDDED", "TWINCAT", "TWINCAT_ROOT", "XML_LIST", "Embedded", "doc_text", "embedded_documents", "is_update",
+           "is_xml", "pick", "read_xml", "relocate", "root_of", "shown_document", "splice", "xml_document",
+           "xml_form"]

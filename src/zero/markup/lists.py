@@ -30,6 +30,7 @@ from collections import Counter
 from zero.catalog.registry import KINDS, Registry
 from zero.errors import ZeroError
 from zero.forms import XML_ROOTS
+from zero.lists.encoding import BOM
 from zero.lists.model import Blank, Comment, Document, End, Entry, Origin, Problem, parse_key
 from zero.lists.tokenizer import scan_line, split_lines
 from zero.markup.safe import Scan, Tag, scan
@@ -217,17 +218,25 @@ def to_list(data: bytes, registry: Registry, path: str = "-",
 # ----------------------------------------------------------------------------- list → XML
 
 
-def to_xml(doc: Document, registry: Registry, kind: str | None) -> str:
-    """The XML list this list text stands for (see the module's description). Raises a located
-    :class:`ZeroError` for what an XML list cannot hold."""
+def to_xml(doc: Document, registry: Registry, kind: str | None) -> bytes:
+    """The bytes of the XML list this list text stands for (see the module's description): the XML it
+    was read from, in its own encoding and BOM, where its comment lines make that XML again; else a new
+    XML list in UTF-8, as its declaration says. Raises a located :class:`ZeroError` for what an XML
+    list cannot hold."""
     if doc.holds_xml_lines():
-        rebuilt = _rebuild(doc, registry, doc.declared_kind() or kind)
-        try:  # the comment lines were XML lines: they make XML again, or the list is written anew
-            scan(rebuilt.encode("utf-8", "surrogateescape"), doc.path)
+        rebuilt = (BOM if doc.bom else b"") + _rebuild(doc, registry, doc.declared_kind() or kind).encode(
+            doc.encoding, "surrogateescape")
+        try:
+            scan(rebuilt, doc.path)
             return rebuilt
         except ZeroError:
             pass
-    return _write_new(doc, registry, kind)
+    text = _write_new(doc, registry, kind)
+    try:
+        return text.encode("utf-8")
+    except UnicodeEncodeError as exc:
+        raise ZeroError("a byte the list's encoding cannot read: an XML list cannot hold it; fix the line first "
+                        "(`zero lint` shows it as S007)", doc.path, text.count("\n", 0, exc.start) + 1) from None
 
 
 def _element(entry: Entry, doc: Document, registry: Registry, kind: str | None) -> str:

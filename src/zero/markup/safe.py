@@ -15,7 +15,7 @@ Every refusal is a :class:`~zero.errors.ZeroError` with line and column; nothing
 
 from __future__ import annotations
 
-import codecs
+import bisect
 import re
 import xml.sax
 from xml.sax.handler import ContentHandler
@@ -25,9 +25,9 @@ import defusedxml
 import defusedxml.expatreader
 
 from zero.errors import ZeroError
+from zero.lists.encoding import BOM, declarable
 from zero.records import field, record
 
-BOM = b"\xef\xbb\xbf"
 _DECL_RE = re.compile(rb"""<\?xml[^>]*?encoding\s*=\s*["']([A-Za-z0-9._-]+)["']""")
 _TOKEN_RE = re.compile(
     r"<!--.*?-->"  # a comment
@@ -74,14 +74,12 @@ class Scan:
 
     def position(self, offset: int) -> tuple[int, int]:
         """1-based line and column of a character offset."""
-        lo, hi = 0, len(self.line_starts) - 1
-        while lo < hi:
-            mid = (lo + hi + 1) // 2
-            if self.line_starts[mid] <= offset:
-                lo = mid
-            else:
-                hi = mid - 1
-        return lo + 1, offset - self.line_starts[lo] + 1
+        return _position(self.line_starts, offset)
+
+
+def _position(line_starts: list[int], offset: int) -> tuple[int, int]:
+    line = bisect.bisect_right(line_starts, offset)
+    return line, offset - line_starts[line - 1] + 1
 
 
 class _Collect(ContentHandler):
@@ -105,11 +103,10 @@ def encoding_of(data: bytes) -> tuple[str, bool]:
     if m is None:
         return "utf-8", False
     name = m.group(1).decode("ascii")
-    try:
-        return codecs.lookup(name).name, False
-    except LookupError:
-        raise ZeroError(f"the XML declaration names the encoding `{name}`, which zero does not know",
-                        "", 1, 1) from None
+    try:  # a code page zero writes back byte for byte (as a list's declared encoding)
+        return declarable(name), False
+    except ValueError as exc:
+        raise ZeroError(f"the XML declaration names the encoding `{name}`: {exc}", "", 1, 1) from None
 
 
 def _line_starts(text: str) -> list[int]:
@@ -154,7 +151,7 @@ def scan(data: bytes, path: str = "-") -> Scan:
             raw[a.group(1)] = (base + a.start(group), base + a.end(group))
         index = len(tags)
         if index >= len(handler.elements) or handler.elements[index][0] != name:
-            line, col = Scan(text, encoding, bom, "", [], [], starts).position(m.start())
+            line, col = _position(starts, m.start())
             raise ZeroError(f"zero cannot follow the tag `<{name}>` here", path, line, col)
         empty = m.group("empty") is not None
         tags.append(Tag(name, handler.elements[index][1], m.start(), m.end(), len(stack), empty, raw))

@@ -38,7 +38,8 @@ from zero.forms import LIST, PROGRAM, STRUCTURED, TWINCAT, form_of, is_xml, xml_
 from zero.lists.model import Document
 from zero.lists.tokenizer import tokenize
 from zero.machine.model import ListFile, Machine
-from zero.markup.documents import embedded_documents, read_document
+from zero.markup import read_document
+from zero.markup.documents import embedded_documents
 from zero.records import field, record, replace
 from zero.server.positions import Text, path_of, source_bytes
 from zero.server.settings import Settings

@@ -102,11 +102,17 @@ class Text:
 _NOT_A_BYTE = re.compile(r"[\ud800-\udc7f\udd00-\udfff]")
 
 
+_XML_ENCODING = re.compile(r"""<\?xml[^>]*?encoding\s*=\s*["']([A-Za-z0-9._-]+)["']""")
+
+
 def encode_text(text: str, encoding: str | None = None) -> bytes:
     """The editor's text as the bytes zero lints: UTF-8 (or the code page the configuration declares
-    for the file, where the text fits it), with the bytes the client could not decode
-    (``\udc80``–``\udcff``, as zero and the server's input keep them) as they were, so that zero
-    reports them (S007) where they are; any other lone surrogate becomes `?`."""
+    for the file, or an XML text's declaration names, where the text fits it), with the bytes the
+    client could not decode (``\udc80``–``\udcff``, as zero and the server's input keep them) as they
+    were, so that zero reports them (S007) where they are; any other lone surrogate becomes `?`."""
+    if encoding is None and text.lstrip("\ufeff").startswith("<?xml"):  # XML says its own encoding
+        m = _XML_ENCODING.match(text.lstrip("\ufeff"))
+        encoding = m.group(1) if m is not None else None
     if encoding is not None:
         try:
             return text.encode(encoding)
