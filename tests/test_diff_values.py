@@ -141,7 +141,7 @@ def test_which_parameters_are_bits_decided_by_the_catalogue(registry: Registry) 
                       "antr.sercos.telegramm_typ", "kenngr.swe_behaviour"):
         assert numbering not in bits, numbering
     # symbols are bits exactly where the rules combine them (`vorsteuerung 7` = VEL | ACC | JERK)
-    assert all((by[p] is not None) == registry.specs[p].bit_coded for p in registry.specs
+    assert all((by[p] is not None) == registry.specs[p].bits for p in registry.specs
                if registry.specs[p].symbols and registry.specs[p].type != "BOOLEAN")
     assert Counter(registry.specs[p].type for p, c in by.items() if c).get("BOOLEAN") is None
 

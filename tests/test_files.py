@@ -463,7 +463,7 @@ def test_a_full_disk_leaves_a_hard_linked_file_as_it_was(tmp_path: Path, monkeyp
         raise OSError(errno.ENOSPC, "No space left on device")
 
     monkeypatch.setattr(os, "posix_fallocate", full)
-    with pytest.raises(ZeroError, match="No space left.*the file is unchanged"):
+    with pytest.raises(ZeroError, match=r"No space left.*the file is unchanged"):
         write_atomic(target, b"a longer new content\n" * 100, force=True)
     assert target.read_bytes() == b"old\n" == (tmp_path / "b.lis").read_bytes()
     # nothing was written, so no journal is left for the next zero to complete: a write the user was

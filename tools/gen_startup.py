@@ -1,7 +1,9 @@
 #!/usr/bin/env python3
 """Compile ``src/zero/catalog/data/startup_errors.toml`` (the kernel's documented start-up errors a
 list can cause, edited by hand, each row with its source) to ``startup_errors.py``, and
-``prose_ranges.toml`` (the catalogue's prose ranges written as conditions) to ``prose_ranges.py``
+``prose_ranges.toml`` (the catalogue's prose ranges written as conditions) to ``prose_ranges.py``,
+and ``releases.toml`` (key renames and removals, each row checked to have a source) to
+``releases_table.py``
 (imported at run time: no TOML parser at start-up). Run it after every edit of either TOML; a test
 fails while they differ.
 
@@ -10,8 +12,11 @@ Usage: python tools/gen_startup.py
 
 from __future__ import annotations
 
+import sys
 import tomllib
 from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parent.parent / "src"))
 
 from pydata import write_module
 
@@ -27,6 +32,14 @@ def main() -> None:
     write_module(DATA / "prose_ranges.py", "The prose ranges of prose_ranges.toml written as conditions, compiled.",
                  {"RANGES": ranges}, rows_name="RANGES")
     print(f"wrote {DATA / 'prose_ranges.py'}: {len(ranges)} ranges")
+    from zero.catalog.releases import read_table  # the rows checked on the way (a row needs a source)
+
+    t = read_table(DATA / "releases.toml")
+    rows = {"RENAMES": t.renames, "REMOVALS": t.removals, "PREFIXES": t.prefixes}
+    write_module(DATA / "releases_table.py", "The renames and removals of releases.toml, checked and compiled.",
+                 {name: [{f: getattr(r, f) for f in ("old", "kind", "new", "id", "release", "source", "see")
+                          if hasattr(r, f)} for r in rs] for name, rs in rows.items()})
+    print(f"wrote {DATA / 'releases_table.py'}")
 
 
 if __name__ == "__main__":

@@ -20,6 +20,7 @@ def write_module(path: Path, doc: str, constants: dict[str, Any], rows_name: str
             out.extend(f"    {row!r}," for row in value)
             out.append("]")
         else:
-            kind = "dict[str, Any]" if isinstance(value, dict) else type(value).__name__
+            kind = "dict[str, Any]" if isinstance(value, dict) else \
+                "list[dict[str, Any]]" if isinstance(value, list) else type(value).__name__
             out.append(f"{name}: {kind} = {value!r}")
     path.write_text("\n".join(out) + "\n", encoding="utf-8")

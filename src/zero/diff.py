@@ -193,14 +193,14 @@ def _one_bit(v: int) -> bool:
 
 def bits_criterion(spec: ParamSpec) -> str | None:
     """Why the catalogue's data make the parameter's values bits (``None``: they do not):
-    ``bit_coded`` (:attr:`ParamSpec.bit_coded`: the one decision the rules make too, that
+    ``bit_coded`` (:attr:`ParamSpec.bits`: the one decision the rules make too, that
     `VEL | ACC` combines), ``enum`` (values listed in prose that the catalogue reader marks as
     bits: ``ParamSpec.enum_flags``), ``hex`` (an unsigned integer without symbols or listed values
     whose default or range the catalogue writes in hex), ``description`` (no symbols or listed
     values, and a description that speaks of bits: `Bit 0`, bit-coded, bit mask)."""
     if spec.type == "BOOLEAN":
         return None
-    if spec.bit_coded:
+    if spec.bits:
         return "bit_coded"
     if spec.symbols:
         return None  # symbols that are no bits: by name

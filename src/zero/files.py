@@ -351,24 +351,30 @@ def _write_to_stream(path: Path, data: bytes) -> bool:
         os.close(fd)
 
 
-class _Unchanged(OSError):
-    """An in-place rewrite that failed before its first byte: the file is as it was."""
-
-
-def _rewrite_in_place(target: Path, data: bytes) -> None:
-    """Overwrite the file itself (same inode: every hard link and the owner stay). The blocks a
-    longer content needs are claimed first, so a full disk fails before the first byte is changed."""
+def _claim_blocks(target: Path, size: int) -> None:
+    """Claim the disk blocks a longer content needs before the first byte of the file is changed, so
+    that a full disk fails with the file as it was (:class:`OSError`); a file system that cannot
+    claim them ahead is written as it comes."""
     fd = os.open(target, os.O_WRONLY | _O_BINARY)
     try:
         old = os.fstat(fd).st_size
-        if len(data) > old and hasattr(os, "posix_fallocate"):
+        if size > old and hasattr(os, "posix_fallocate"):
             try:
-                os.posix_fallocate(fd, old, len(data) - old)
+                os.posix_fallocate(fd, old, size - old)
             except OSError as exc:
                 with contextlib.suppress(OSError):
                     os.ftruncate(fd, old)  # nothing of the old content was changed
                 if exc.errno not in (errno.EINVAL, errno.EOPNOTSUPP, errno.ENOTSUP):
-                    raise _Unchanged(exc.errno, exc.strerror) from exc
+                    raise
+    finally:
+        os.close(fd)
+
+
+def _rewrite_in_place(target: Path, data: bytes) -> None:
+    """Overwrite the file itself (same inode: every hard link and the owner stay); its blocks are
+    claimed already (:func:`_claim_blocks`)."""
+    fd = os.open(target, os.O_WRONLY | _O_BINARY)
+    try:
         _write_all(fd, data)
         os.ftruncate(fd, len(data))
         os.fsync(fd)
@@ -552,6 +558,10 @@ def _replace(tmp: Path, target: Path, st: os.stat_result, data: bytes) -> None:
             except OSError:
                 in_place = True  # a rename would change the owner: rewrite the file itself
     if in_place:
+        try:  # a full disk fails here, with the file as it was and nothing left to complete later
+            _claim_blocks(target, len(data))
+        except OSError as exc:
+            raise ZeroError(f"not written: {exc.strerror or exc}; the file is unchanged", str(target)) from None
         # The temporary file is complete and on disk: renamed to a journal, it says so, and the next
         # zero completes the copy from it if this one dies half way (never deletes it as stale).
         journal = tmp.with_name(tmp.name[: -len(".tmp")] + ".journal")
@@ -560,9 +570,6 @@ def _replace(tmp: Path, target: Path, st: os.stat_result, data: bytes) -> None:
         with _signals_held():
             try:
                 _rewrite_in_place(target, data)
-            except _Unchanged as exc:  # the blocks could not be claimed: nothing to complete later
-                os.unlink(journal)
-                raise ZeroError(f"not written: {exc.strerror or exc}; the file is unchanged", str(target)) from None
             except OSError as exc:
                 raise ZeroError(f"not written completely: {exc.strerror or exc}; the next zero that reads or "
                                 f"writes it completes it from {journal.name}", str(target)) from None

@@ -55,7 +55,7 @@ def test_what_the_fixtures_pin(registry: Registry) -> None:
 def test_bit_coded_symbols_are_what_the_catalogue_says(registry: Registry) -> None:
     """`<Bitfield>` (29 parameters) or a description calling the value bit-coded (6): facts of the
     catalogue, carried into the built-in table; an axis type with values 1, 2, 4 is no bit field."""
-    coded = sorted(s.key for s in registry.specs.values() if s.bit_coded and s.key)
+    coded = sorted(s.key for s in registry.specs.values() if s.bits and s.key)
     assert "vorsteuer.vorsteuerung" in coded and "h_synch[]" in coded and "block_search_restart_mode" in coded
     assert "kenngr.achs_typ" not in coded and "filter[].prototype" not in coded
     assert len(coded) == 35
@@ -97,3 +97,14 @@ def test_the_kernel_setting_says_what_an_unknown_key_may_be(tmp_path: Path) -> N
     (tmp_path / "zero.toml").write_text('kernel = "latest"\n')
     bad = zero_cli("lint", "achse.lis", cwd=tmp_path)
     assert bad.code == 2 and "kernel" in bad.stderr and "not a kernel release" in bad.stderr
+
+
+@pytest.mark.parametrize(("value", "codes"), [("7", []), ("0x7", []), ("VEL | JERK", []), ("0x8", ["R005"]),
+                                              ("9", ["R005"]), ("0x101", []), ("BRAKE", ["R005"])])
+def test_a_bit_field_takes_its_bits_and_only_them(value: str, codes: list[str], registry: Registry) -> None:
+    """`vorsteuer.vorsteuerung` (VEL=1, ACC=2, JERK=4, ADD_VEL=257 …): any combination of the symbols'
+    bits, by number or by name; a bit no symbol names (8) is not one of its values."""
+    from zero.engine.lint import lint_bytes
+
+    data = f"kopf.achs_nr 1\nvorsteuer.vorsteuerung {value}\nEnde\n".encode()
+    assert [d.code for d in lint_bytes(data, registry, "achse.lis").diagnostics] == codes

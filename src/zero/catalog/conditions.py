@@ -180,12 +180,18 @@ def parse(text: str) -> Node:
 
 def refs(node: Node) -> list[str]:
     """The parameter IDs a condition reads, in order of appearance (not ``DEFAULT_LIST``)."""
-    out: list[str] = []
+    return list(dict.fromkeys(pid for pid, _ in ref_elements(node)))
+
+
+def ref_elements(node: Node) -> list[tuple[str, int | None]]:
+    """Each parameter a condition reads with the element it names (``P-AXIS-00212.0``: 0; ``None``: the
+    checked parameter's), in order of appearance, once each."""
+    out: list[tuple[str, int | None]] = []
     stack = [node]
     while stack:
         n = stack.pop()
         if isinstance(n, Ref) and n.pid != DEFAULT_LIST:
-            out.append(n.pid)
+            out.append((n.pid, n.index))
         elif isinstance(n, Unary | Call):
             stack.append(n.arg)
         elif isinstance(n, Binary):
@@ -200,58 +206,6 @@ def _num(v: Number | bool) -> Number:
     return v if isinstance(v, float) else int(v)
 
 
-def evaluate(node: Node, lookup: Lookup) -> _Value:
-    """The condition's value; ``None`` where a parameter it needs is not known (then nothing is said)."""
-    if isinstance(node, Num):
-        return node.value
-    if isinstance(node, Ref):
-        return lookup(node.pid, node.index)
-    if isinstance(node, Unary):
-        v = evaluate(node.arg, lookup)
-        if v is None:
-            return None
-        return (not v) if node.op == "not" else -v
-    if isinstance(node, Call):
-        v = evaluate(node.arg, lookup)
-        return None if v is None else abs(v)
-    left = evaluate(node.left, lookup)
-    if node.op in ("and", "or"):
-        if left is not None and ((node.op == "and" and not left) or (node.op == "or" and left)):
-            return bool(left)
-        right = evaluate(node.right, lookup)
-        if right is None or left is None:
-            return None
-        return bool(right)
-    right = evaluate(node.right, lookup)
-    if left is None or right is None:
-        return None
-    a, b = _num(left), _num(right)
-    match node.op:
-        case "+":
-            return a + b
-        case "-":
-            return a - b
-        case "*":
-            return a * b
-        case "/":
-            return None if b == 0 else a / b
-        case "&":
-            return int(a) & int(b)
-        case "<":
-            return a < b
-        case "<=":
-            return a <= b
-        case ">":
-            return a > b
-        case ">=":
-            return a >= b
-        case "==":
-            return a == b
-        case "!=":
-            return a != b
-    raise ValueError(node.op)  # pragma: no cover - the parser makes no other operator
-
-
 Compiled = Callable[[Lookup], "_Value"]
 _OPS: dict[str, Callable[[Number, Number], _Value]] = {
     "+": lambda a, b: a + b, "-": lambda a, b: a - b, "*": lambda a, b: a * b,
@@ -262,8 +216,9 @@ _OPS: dict[str, Callable[[Number, Number], _Value]] = {
 
 
 def compile_condition(node: Node) -> Compiled:
-    """A condition as a function of the lookup: what :func:`evaluate` computes, without walking the
-    tree each time (a fleet evaluates each condition once per list)."""
+    """A condition as a function of the lookup, built once (a fleet evaluates each condition once per
+    list). ``None`` where a parameter it needs is not known: then nothing is said; ``and``/``or`` decide
+    without the unknown side where the known side decides."""
     if isinstance(node, Num):
         value = node.value
         return lambda _lookup: value

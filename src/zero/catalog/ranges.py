@@ -44,6 +44,15 @@ Number = int | float
 Resolver = Callable[[str, "int | None"], "Number | None"]
 
 
+def format_number(n: Number | None) -> str:
+    """A value as a message shows it: ``1400000`` for ``1400000.0``; ``not known`` for ``None``."""
+    if n is None:
+        return "not known"
+    if isinstance(n, float) and n.is_integer() and abs(n) < 1e15:
+        return str(int(n))
+    return str(n)
+
+
 @record(frozen=True)
 class Num:
     value: Number

@@ -87,7 +87,7 @@ class ParamSpec:
     index_base: int = 0
     enum: tuple[int, ...] = ()  # allowed values the catalogue lists in prose
     enum_flags: bool = False  # the listed values are bits: any combination of them is allowed
-    bits: bool = False  # the catalogue says its symbols are bits (`<Bitfield>`, "bit-coded")
+    bits: bool = False  # its symbols are bits that combine: the catalogue's `<Bitfield>`, or "bit-coded"
     enum_labels: tuple[str, ...] = ()  # their meaning (only from a user's CncParaDesc.xml)
 
     def index_first(self, pos: int) -> int:
@@ -126,13 +126,6 @@ class ParamSpec:
                 mask |= v
             return value & ~mask == 0
         return value in self.enum
-
-    @property
-    def bit_coded(self) -> bool:
-        """Are the symbols bits that combine (``VEL=1 ACC=2 JERK=4``: 7 is all three)? What the
-        catalogue says: a bit field width (``<Bitfield>``), or a description calling the value
-        bit-coded. An axis type with values 1, 2, 4 is not, unless the catalogue says so."""
-        return self.bits
 
     def bits_allow(self, value: int) -> bool:
         """A value made of the symbols' bits (every set bit covered by a symbol inside the value)."""
@@ -276,6 +269,8 @@ class Registry:
         Found by rule from the catalogue's keys: an unsigned `STEM_anzahl` beside an array (same
         parent) whose name holds STEM's letters in order (`spdl` in `spindel`, `grp` in `gruppe`, `hr`
         in `hr_data`); empty where none counts them."""
+        if not spec.dims:
+            return ()  # no array, nothing to count (and no table built for a list of scalars)
         table: dict[str, tuple[tuple[str, int], ...]] = self.memo.setdefault("counted_by", {})
         if not table:
             table.update(_counts(self))

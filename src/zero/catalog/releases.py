@@ -16,15 +16,16 @@ that merely looks like a known one is not a rename. The one rule beyond single r
 (``antr_simu.`` → ``antr.simu.``), is itself a row with a source, and maps a key only to a key the
 catalogue in use really has.
 
-The table is read with :mod:`tomllib` at the first question, once per process: nothing of it
-runs at start-up.
+The table is compiled from ``data/releases.toml`` to ``data/releases_table.py`` (checked on the way) and
+built at the first question, once per process: nothing of it runs at start-up.
 """
 
 from __future__ import annotations
 
 import re
+from collections.abc import Callable
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
+from typing import TYPE_CHECKING, Any, TypeVar
 
 from zero.errors import ZeroError
 from zero.lists.model import format_key
@@ -37,6 +38,7 @@ if TYPE_CHECKING:
 # V1.5.0.0, kernel V4.13.0.0 (the corpus README; data/table.py's GENERATED_FROM).
 CATALOGUE_RELEASE: tuple[int, ...] = (4, 13)
 
+_Row = TypeVar("_Row")
 UNKNOWN_RELEASE = "unknown"  # a row whose source does not say which release wrote the spelling
 DATA = Path(__file__).parent / "data" / "releases.toml"
 
@@ -136,18 +138,27 @@ _removals: dict[tuple[str, str], Removal] = {}
 
 
 def table() -> ReleaseTable:
-    """The table, read at the first call (``tomllib``) and kept for the process."""
+    """The table, built at the first call from its compiled form (``data/releases_table.py``, written
+    from the TOML by ``tools/gen_startup.py``: no TOML parser for a list's first unknown key) and kept
+    for the process."""
     global _table
     if _table is None:
-        _table = read_table(DATA)
+        from zero.catalog.data.releases_table import PREFIXES, REMOVALS, RENAMES  # start-up: first unknown key
+
+        _table = ReleaseTable(renames=_rows(Rename, RENAMES), removals=_rows(Removal, REMOVALS),
+                              prefixes=_rows(Prefix, PREFIXES))
         _renames.update(((r.kind, r.old), r) for r in _table.renames)
         _removals.update(((r.kind, r.old), r) for r in _table.removals)
     return _table
 
 
+def _rows(cls: Callable[..., _Row], data: list[dict[str, Any]]) -> tuple[_Row, ...]:
+    return tuple(cls(**{**r, "see": tuple(r["see"])}) for r in data)  # compiled through JSON: lists
+
+
 def read_table(path: Path) -> ReleaseTable:
-    """Read a table file (:class:`~zero.errors.ZeroError` where a row lacks a field or says
-    nothing of its source: a row without one is a guess)."""
+    """Read and check a table file (:class:`~zero.errors.ZeroError` where a row lacks a field or says
+    nothing of its source: a row without one is a guess). ``tools/gen_startup.py`` compiles it with this."""
     import tomllib  # start-up: the table is read only when a key is not in the catalogue
 
     try:

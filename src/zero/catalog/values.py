@@ -139,7 +139,7 @@ def _symbol_number(spec: ParamSpec, word: str) -> tuple[bool, int | None]:
         if name == word:
             return True, val
     n = parse_int(word)
-    if n is not None and (any(val == n for _, val in spec.symbols) or (spec.bit_coded and spec.bits_allow(n))):
+    if n is not None and (any(val == n for _, val in spec.symbols) or (spec.bits and spec.bits_allow(n))):
         return True, n  # a symbol's number, or (bit-coded symbols) a combination of their bits: 7 = VEL|ACC|JERK
     return False, None
 

@@ -85,7 +85,7 @@ def check_elements(ctx: Context) -> Iterator[Diagnostic]:
             continue
         for m in _ELEMENT_RE.finditer(text):
             value = _VALUE_RE.match(text, m.end())
-            if value is not None and not (value.group(1) or value.group(2)) and m.start() > 2:
+            if value is not None and not (value.group(1) or value.group(2)):
                 continue  # an empty Value: nothing to check, nothing known to say
             span = Span.on_line(item.line, m.start(1), m.end(2))
             pid, dots = m.group(1), m.group(2)

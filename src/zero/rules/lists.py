@@ -35,8 +35,9 @@ def check_document(doc: Document, registry: Registry, kind: str | None,
     if any(p.kind == "binary" for p in doc.problems):  # one root cause, one finding
         return ctx, funnel(doc.path, [d for d in syntax.check_problems(ctx) if d.code == "S013"], severities)
     found = run_checks(CHECKS, ctx)
-    said = {(d.span.line, d.param_id) for d in found if d.kernel_error is not None}
-    if said:  # one root cause, one finding: the kernel's own start-up error says it, with its number
-        found = [d for d in found if d.code not in ("R005", "R006") or (d.span.line, d.param_id) not in said]
     found.extend(extra)
-    return ctx, funnel(doc.path, found, severities, suppress.parse_directives(doc, declared_codes()))
+    kept = funnel(doc.path, found, severities, suppress.parse_directives(doc, declared_codes()))
+    said = {(d.span.line, d.param_id) for d in kept if d.kernel_error is not None}
+    if said:  # one root cause, one finding: the kernel's own start-up error (not suppressed) says it
+        kept = [d for d in kept if d.code not in ("R005", "R006") or (d.span.line, d.param_id) not in said]
+    return ctx, kept

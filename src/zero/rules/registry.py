@@ -2,17 +2,19 @@
 
 from __future__ import annotations
 
+import functools
 import re
 from collections.abc import Callable, Iterator
 from typing import Any
 
+from zero.catalog.conditions import Compiled
 from zero.catalog.ids import SOFT_LIMITS
-from zero.catalog.ranges import Bounds, Number, Range, Ref
+from zero.catalog.ranges import Bounds, Number, Range, Ref, format_number
 from zero.catalog.registry import BUILTIN_SOURCE, KINDS, NO_DEFAULT, ParamSpec, Registry
 from zero.catalog.values import Resolved, Value, default_number
 from zero.diagnostics import Diagnostic, Edit, Fix, Related, Span
 from zero.errors import ZeroError
-from zero.lists.model import Entry, ValueKind, format_key
+from zero.lists.model import Comment, Entry, ValueKind, format_key
 from zero.rules.base import INFO, Context, E, Family, W
 
 FAMILY: Family[Context] = Family("R", "registry", "list")
@@ -137,14 +139,11 @@ def check_keys(ctx: Context) -> Iterator[Diagnostic]:
             if vendor is not None:
                 yield _vendor_key(ctx, e, *vendor)
                 continue
-            release = _other_release(ctx, e, known)
-            if release is not None:
-                yield release
-                continue
             propose = key.pattern in proposed or len(proposed) < SUGGESTIONS
             if propose:
                 proposed.add(key.pattern)
-            yield _unknown_key(ctx, e, propose, known)
+            release = _other_release(ctx, e, known, propose)
+            yield release if release is not None else _unknown_key(ctx, e, propose, known)
             continue
         if not key.indices:
             continue
@@ -165,7 +164,9 @@ def check_keys(ctx: Context) -> Iterator[Diagnostic]:
 
 
 _ANNOTATED_ID = re.compile(r"\(\s*(P-[A-Z]{4}-[0-9]{5})")
-_HEADER_RELEASE = re.compile(r"(?i)\b(?:kernel|cnc|version|release)\b[^0-9\n]{0,24}(V?\d+\.\d+(?:\.\d+){0,2})")
+# `# … written for kernel V3.01.3074`, `# CNC V3.1.3074`: a kernel or CNC release with its `V` (a bare
+# "Version 1.2" of the list itself is not one)
+_HEADER_RELEASE = re.compile(r"(?i)\b(?:kernel|cnc)\b[^\n]{0,24}?\b(V\d+\.\d+(?:\.\d+){0,2})\b")
 
 
 def _kernel_of(ctx: Context) -> tuple[int, ...] | None:
@@ -176,7 +177,7 @@ def _kernel_of(ctx: Context) -> tuple[int, ...] | None:
     text = ctx.kernel
     if text is None:
         for item in ctx.doc.items[:40]:
-            if type(item).__name__ == "Comment":
+            if type(item) is Comment:
                 m = _HEADER_RELEASE.search(ctx.doc.lines[item.line - 1])
                 if m is not None:
                     text = m.group(1)
@@ -187,10 +188,16 @@ def _kernel_of(ctx: Context) -> tuple[int, ...] | None:
         return None
 
 
-def _other_release(ctx: Context, e: Entry, known: dict[str, Any]) -> Diagnostic | None:
+def _other_release(ctx: Context, e: Entry, known: dict[str, Any], propose: bool = True) -> Diagnostic | None:
     """R013 for a key of another kernel release (see the rule), or ``None`` where zero knows nothing
     more than "unknown" (R001)."""
-    from zero.catalog.releases import CATALOGUE_RELEASE, format_release, removed, renamed  # start-up: as above
+    from zero.catalog.releases import (  # start-up: as above
+        CATALOGUE_RELEASE,
+        UNKNOWN_RELEASE,
+        format_release,
+        removed,
+        renamed,
+    )
 
     assert e.key is not None
     builtin = ctx.registry.source == BUILTIN_SOURCE
@@ -211,25 +218,26 @@ def _other_release(ctx: Context, e: Entry, known: dict[str, Any]) -> Diagnostic 
                 spec.key.rsplit(".", 1)[-1] == last:
             from zero.catalog.releases import Rename  # start-up: as above
 
-            row = Rename(e.key.pattern, spec.kind, spec.key, spec.id, "unknown", "the line's own annotation")
+            row = Rename(e.key.pattern, spec.kind, spec.key, spec.id, UNKNOWN_RELEASE, "the line's own annotation")
             source = f"its own `( {spec.id}` annotation"
     if row is not None:
         new = row.new_key(e.key.indices)
-        when = f" (seen in lists of kernel {row.release})" if row.release != "unknown" else ""
+        when = f" (seen in lists of kernel {row.release})" if row.release != UNKNOWN_RELEASE else ""
         return ctx.report("R013", _key_span(e), f"`{e.key_text}` is another spelling{when} of `{new}` ({row.id}), as "
                           f"{source if source.startswith('its own') else 'zero’s table of renames says'}: "
                           f"{ours} does not document it, so a kernel that does not accept it does not take the entry "
-                          "over; the kernel it was written for may read it as intended (its value is checked as "
-                          f"{row.id}'s)", param_id=row.id,
+                          "over; the kernel it was written for may read it as intended"
+                          + (f" (its value is checked as {row.id}'s)" if not source.startswith("its own") else ""),
+                          param_id=row.id,
                           hint=f"today: `{new}`", fix=Fix(f"Use today's key `{new}`", (Edit(_key_span(e), new),),
                                                           safe=False))
     if gone is not None:
-        when = f"kernel {gone.release}" if gone.release != "unknown" else "an older kernel"
+        when = f"kernel {gone.release}" if gone.release != UNKNOWN_RELEASE else "an older kernel"
         return ctx.report("R013", _key_span(e), f"`{e.key_text}` is not in {ours}; lists of {when} use it: what a "
                           "kernel of this release does with it, the catalogue does not say")
     kernel = known["kernel"]
     if kernel is not None and kernel < CATALOGUE_RELEASE:
-        near = ctx.registry.suggest(e.key.pattern, ctx.kind)
+        near = ctx.registry.suggest(e.key.pattern, ctx.kind) if propose else []
         hint = f"the nearest key zero knows: `{format_key(near[0], e.key.indices)}`" if near else None
         return ctx.report("R013", _key_span(e), f"`{e.key_text}` is not in {ours}, which zero checks with; the "
                           f"machine runs the older kernel {format_release(kernel)}, whose catalogue zero does not "
@@ -382,14 +390,6 @@ def _value_span(e: Entry) -> Span:
     return Span.on_line(e.line, e.key_start, e.key_end)
 
 
-def _fmt(n: Number | None) -> str:
-    if n is None:
-        return "?"
-    if isinstance(n, float) and n.is_integer() and abs(n) < 1e15:
-        return str(int(n))
-    return str(n)
-
-
 def _default_phrase(spec: ParamSpec, registry: Registry | None = None) -> str:
     """What the controller does instead, as far as the catalogue says: its default, unless it
     documents none, or its default contradicts its own range (then say so, do not predict)."""
@@ -432,7 +432,7 @@ def check_values(ctx: Context) -> Iterator[Diagnostic]:
         for found in _check_value(ctx, res):
             clean = False
             yield found
-        if clean and len(passed) < 65_536 and res.spec.id not in _prose_ids():  # a prose range reads others too
+        if clean and len(passed) < 65_536 and res.spec.id not in _prose_rows():  # a prose range reads others too
             rng = registry.range_of(res.spec) if res.spec.range_text else None
             if rng is None or not rng.refs:
                 passed[slot] = True
@@ -516,7 +516,7 @@ def _default_of(spec: ParamSpec) -> Number | None:
 
 
 def _check_range(ctx: Context, e: Entry, spec: ParamSpec, v: Value) -> Iterator[Diagnostic]:
-    if v.number is not None and spec.id in _prose_ids():
+    if v.number is not None and spec.id in _prose_rows():
         yield from _check_prose(ctx, e, spec, v.number)
     if v.number is None or (spec.range_text is None and not spec.enum):
         return
@@ -539,7 +539,7 @@ def _check_range(ctx: Context, e: Entry, spec: ParamSpec, v: Value) -> Iterator[
     span = _value_span(e)
     if rng.allowed is not None:
         if v.number not in rng.allowed:
-            allowed = ", ".join(_fmt(a) for a in rng.allowed)
+            allowed = ", ".join(format_number(a) for a in rng.allowed)
             yield ctx.report(
                 "R005",
                 span,
@@ -591,9 +591,7 @@ def _check_range(ctx: Context, e: Entry, spec: ParamSpec, v: Value) -> Iterator[
             f"{_default_phrase(spec, ctx.registry)}",
             param_id=spec.id,
         )
-    elif spec.range_text and not spec.units and _PHYSICAL_UNIT.search(spec.range_text):
-        unit = _PHYSICAL_UNIT.search(spec.range_text)
-        assert unit is not None
+    elif spec.range_text and not spec.units and (unit := _PHYSICAL_UNIT.search(spec.range_text)):
         yield ctx.report("R012", span, f"{e.value} is outside {text} for `{e.key_text}` if it is in "
                          f"{unit.group()}, as the catalogue writes the range; the catalogue gives no unit for the "
                          "value itself, so whether it lies inside is not known", param_id=spec.id)
@@ -610,30 +608,31 @@ def _check_range(ctx: Context, e: Entry, spec: ParamSpec, v: Value) -> Iterator[
         )
 
 
-_prose: dict[str, Any] = {}
+@functools.cache
+def _prose_rows() -> dict[str, dict[str, Any]]:
+    """The catalogue's prose ranges written as conditions (``catalog/data/prose_ranges.toml``), by ID."""
+    from zero.catalog.data.prose_ranges import RANGES  # start-up: at the first value checked
+
+    return {row["id"]: row for row in RANGES}
 
 
-def _prose_ids() -> dict[str, Any]:
-    """The catalogue's prose ranges written as conditions (``catalog/data/prose_ranges.toml``), by ID,
-    each compiled once (at the first value checked, not at start-up)."""
-    if not _prose:
-        from zero.catalog.conditions import compile_condition, parse, refs  # start-up: first value checked
-        from zero.catalog.data.prose_ranges import RANGES  # start-up: as above
+@functools.cache
+def _prose(pid: str) -> tuple[Compiled, Compiled | None, str, str, list[tuple[str, int | None]]]:
+    """One prose range compiled, at its parameter's first value (an axis range is never compiled for a
+    zero-offset list)."""
+    from zero.catalog.conditions import compile_condition, parse, ref_elements  # start-up: as above
 
-        for row in RANGES:
-            cond = parse(row["condition"])
-            when = parse(row["when"]) if row.get("when") else None
-            _prose[row["id"]] = (compile_condition(cond), compile_condition(when) if when else None,
-                                 row["condition"], row["prose"], refs(cond))
-        _prose.setdefault("", None)
-    return _prose
+    row = _prose_rows()[pid]
+    cond = parse(row["condition"])
+    when = compile_condition(parse(row["when"])) if row.get("when") else None
+    return compile_condition(cond), when, row["condition"], row["prose"], ref_elements(cond)
 
 
 def _check_prose(ctx: Context, e: Entry, spec: ParamSpec, number: Number) -> Iterator[Diagnostic]:
     """R006 for a range the catalogue writes in prose (`swe_neg < pos_refpkt < swe_pos`), where zero can
     write it as a condition: evaluated with this entry's value and the list's others (defaults where
     unset)."""
-    condition, when, text, prose, read = _prose_ids()[spec.id]
+    condition, when, text, prose, shown = _prose(spec.id)
     indices = e.key.indices if e.key else ()
 
     def lookup(pid: str, index: int | None) -> Number | None:
@@ -645,10 +644,11 @@ def _check_prose(ctx: Context, e: Entry, spec: ParamSpec, number: Number) -> Ite
         return
     if condition(lookup) is not False:
         return
-    values = ", ".join(f"{ctx.registry.specs[p].key or p} = {_fmt(lookup(p, None))}" for p in read if p != spec.id)
+    values = ", ".join(f"{format_key(ctx.registry.specs[p].key or p, (i,) if i is not None else indices)} = "
+                       f"{format_number(lookup(p, i))}" for p, i in shown if p != spec.id)
     yield ctx.report("R006", _value_span(e), f"{e.value} violates the catalogue's range for `{e.key_text}`, which "
-                     f"it writes in prose ({prose}: `{text}`; {values}): {_default_phrase(spec, ctx.registry)}",
-                     param_id=spec.id)
+                     f"it writes in prose, {prose} ({values}): {_default_phrase(spec, ctx.registry)}",
+                     hint=f"the range as zero evaluates it: {text}", param_id=spec.id)
 
 
 def _same_indices(registry: Registry, spec: ParamSpec, ref_id: str) -> bool:
@@ -682,11 +682,11 @@ def _check_enum(ctx: Context, e: Entry, spec: ParamSpec, number: Number) -> Iter
 def _bounds_text(b: Bounds, low: object, high: object) -> str:
     parts = []
     if b.low is not None:
-        shown = _fmt(b.low) if str(low) == _fmt(b.low) else f"{low} = {_fmt(b.low)}"
+        shown = format_number(b.low) if str(low) == format_number(b.low) else f"{low} = {format_number(b.low)}"
         parts.append(f"{shown} {'<' if b.low_strict else '≤'} ")
     parts.append("x")
     if b.high is not None:
-        shown = _fmt(b.high) if str(high) == _fmt(b.high) else f"{high} = {_fmt(b.high)}"
+        shown = format_number(b.high) if str(high) == format_number(b.high) else f"{high} = {format_number(b.high)}"
         parts.append(f" {'<' if b.high_strict else '≤'} {shown}")
     return "".join(parts)
 
@@ -702,9 +702,9 @@ def _ref_values(ctx: Context, refs: list[Ref], indices: tuple[int, ...]) -> str:
         key = format_key(spec.key or r.id, (idx + (0,) * dims)[:dims])
         where = ctx.value_of(r.id, (idx + (0,) * dims)[:dims])
         if where is not None:
-            out.append(f"{key} is {_fmt(ctx.number_of(r.id, idx))} on line {where.entry.line}")
+            out.append(f"{key} is {format_number(ctx.number_of(r.id, idx))} on line {where.entry.line}")
         else:
-            out.append(f"{key} is not set, default {_fmt(ctx.number_of(r.id, idx))}")
+            out.append(f"{key} is not set, default {format_number(ctx.number_of(r.id, idx))}")
     return "; ".join(out)
 
 

@@ -15,8 +15,9 @@ from __future__ import annotations
 import itertools
 from collections.abc import Iterator
 
-from zero.catalog.conditions import DEFAULT_LIST, Compiled, compile_condition, parse, refs
+from zero.catalog.conditions import DEFAULT_LIST, Compiled, compile_condition, parse, ref_elements, refs
 from zero.catalog.data.startup_errors import ERRORS
+from zero.catalog.ranges import format_number
 from zero.catalog.values import Resolved, default_number, parse_int
 from zero.diagnostics import Diagnostic, Span
 from zero.lists.model import Entry, format_key
@@ -49,6 +50,7 @@ class _Compiled:
     condition: Compiled
     when: Compiled | None
     read: tuple[str, ...]  # the parameters the condition reads
+    shown: tuple[tuple[str, int | None], ...]  # each with the element it names, as a finding shows it
 
 
 _compiled: dict[str, _Compiled] = {}
@@ -62,7 +64,7 @@ def compiled(err: StartupError) -> _Compiled:
         node = parse(err.condition_text)
         hit = _compiled[err.code] = _Compiled(compile_condition(node),
                                               compile_condition(parse(err.when_text)) if err.when_text else None,
-                                              tuple(refs(node)))
+                                              tuple(refs(node)), tuple(ref_elements(node)))
     return hit
 
 
@@ -167,11 +169,12 @@ def _check(ctx: Context, err: StartupError) -> Iterator[tuple[Diagnostic, bool]]
         if hit is None:
             continue  # the list sets none of the values the condition reads: not this list's doing
         entry, pid_on_line = hit
-        values = ", ".join(f"{_named(ctx, pid, idx)} = {_fmt(lookup(pid, None))}" for pid in c.read)
+        values = ", ".join(f"{_named(ctx, pid, idx if index is None else (index,))} = "
+                           f"{format_number(lookup(pid, index))}" for pid, index in c.shown)
         yield ctx.report(
             err.code, Span.on_line(entry.line, entry.value_start, entry.value_end),
-            f"P-ERR-{err.number}: {err.title}: `{err.condition_text}` does not hold ({values}); the controller "
-            f"reports error {err.number} at start-up, and {_correction_said(err.correction)}",
+            f"P-ERR-{err.number}: {err.title} ({values}): the controller reports error {err.number} at start-up, "
+            f"and {_correction_said(err.correction)}", hint=f"the documented condition: {err.condition_text}",
             param_id=err.params[0] if err.params else None, kernel_error=err.kernel_error), \
             bool(err.params) and pid_on_line == err.params[0]
 
@@ -238,12 +241,6 @@ def _reported_entry(ctx: Context, err: StartupError, idx: tuple[int, ...],
         if res is not None:
             return res.entry, pid
     return None
-
-
-def _fmt(v: float | int | None) -> str:
-    if v is None:
-        return "not known"
-    return str(int(v)) if isinstance(v, float) and v.is_integer() else str(v)
 
 
 __all__ = ["CHECKS", "FAMILY", "StartupError", "check_startup"]

@@ -19,7 +19,7 @@ from pathlib import Path
 from lsprotocol import types
 
 from zero.catalog.ids import length_text
-from zero.catalog.ranges import Number
+from zero.catalog.ranges import Number, format_number
 from zero.catalog.registry import KINDS, ParamSpec, Registry
 from zero.catalog.values import ListValues, read_value, rotary
 from zero.forms import LIST, PROGRAM, STRUCTURED, format_of
@@ -52,12 +52,6 @@ class Target:
     start: int = 0  # 0-based columns of what is hovered
     end: int = 0
     values: ListValues | None = None  # the list the entry is in
-
-
-def _fmt(n: Number) -> str:
-    if isinstance(n, float) and n.is_integer():
-        return str(int(n))
-    return str(n)
 
 
 def _id_at(line: str, col: int, registry: Registry) -> Target | None:
@@ -165,7 +159,7 @@ def _value_lines(t: Target, values: ListValues | None) -> list[str]:
         rid, ridx = v.ref
         number = values.number_of(rid, (ridx,) if ridx is not None else ())
         out[0] += f": the value of {rid}{'' if ridx is None else f' element {ridx}'}"
-        out[0] += f" = {_fmt(number)}" if number is not None else " (not known here)"
+        out[0] += f" = {format_number(number)}" if number is not None else " (not known here)"
     if v.problem is not None:
         out[0] += " — the controller does not take it (see the finding)"
         return out
@@ -176,7 +170,7 @@ def _value_lines(t: Target, values: ListValues | None) -> list[str]:
         if names and e.value not in names:
             out.append(f"= {' | '.join(names)}")
         elif e.value in spec.symbol_names and not e.value.lstrip("-").isdigit():
-            out.append(f"= {_fmt(number)}")
+            out.append(f"= {format_number(number)}")
     if isinstance(number, int) and spec.enum:
         if spec.enum_flags:
             bits = [f"{v} {label}".strip() for v, label in spec.enum_items() if v and number & v]
@@ -202,10 +196,10 @@ def _range_lines(t: Target, values: ListValues | None, registry: Registry) -> li
     bounds = rng.evaluate(resolve)
     parts = []
     if bounds.low is not None:
-        parts.append(f"{_fmt(bounds.low)} {'<' if bounds.low_strict else '≤'} ")
+        parts.append(f"{format_number(bounds.low)} {'<' if bounds.low_strict else '≤'} ")
     parts.append("x")
     if bounds.high is not None:
-        parts.append(f" {'<' if bounds.high_strict else '≤'} {_fmt(bounds.high)}")
+        parts.append(f" {'<' if bounds.high_strict else '≤'} {format_number(bounds.high)}")
     out = [f"range here: `{''.join(parts)}` (`{rng}`)"]
     for r in rng.refs:
         spec = registry.get(r.id)
@@ -216,7 +210,7 @@ def _range_lines(t: Target, values: ListValues | None, registry: Registry) -> li
         key = format_key(spec.key or r.id, idx[:dims])
         where = values.value_of(r.id, idx[:dims])
         n = values.number_of(r.id, idx[:dims])
-        shown = _fmt(n) if n is not None else "unknown"
+        shown = format_number(n) if n is not None else "unknown"
         layer = values.layer_of(r.id, idx[:dims])
         if where is None or layer is None:
             source = "not set: the catalogue default"
