@@ -41,8 +41,9 @@ def test_what_the_fixtures_pin(registry: Registry) -> None:
         # P-AXIS-00152), homing speeds above the limit of an axis not homed (P-ERR-110422, 110421) ...
         "planted_spindle": [("K032", 8), ("R006", 9), ("R006", 11), ("K075", 13), ("K074", 14)],
         # ... and a homing distance limit on a linear axis (P-ERR-110545): the documentation checks it on
-        # linear axes only, and modulo and the non-homed limit on rotary axes and spindles only
-        "planted_linear": [("K089", 4)],
+        # linear axes only, and modulo and the non-homed limit on rotary axes and spindles only; both position
+        # resolution settings at once (no documented error: M009)
+        "planted_linear": [("K089", 4), ("M009", 6)],
     }
     messages = {d.code: d.message for p in KERNEL if not p.stem.startswith("planted")
                 for d in lint_file(p, registry).diagnostics}

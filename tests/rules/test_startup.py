@@ -110,3 +110,22 @@ def test_the_compiled_prose_ranges_are_the_toml() -> None:
 
     toml = ROOT / "src" / "zero" / "catalog" / "data" / "prose_ranges.toml"
     assert tomllib.loads(toml.read_text(encoding="utf-8"))["range"] == RANGES
+
+
+def test_the_resolution_mix_in_a_default_list_is_reported_there_once(tmp_path: Path) -> None:
+    """M009 (the fifth planted fault) in the machine's default axis list: one finding, on the
+    default list's line, none repeated in the axis lists it lies under."""
+    import shutil
+
+    from conftest import zero_cli
+
+    shutil.copytree(FIXTURES / "machine-clean", tmp_path / "m")
+    listen = tmp_path / "m" / "listen"
+    (listen / "default_achse.lis").write_text(
+        "kopf.achs_nr 0\ngetriebe[0].wegaufn 10\nantr.feed_const_num 100000\nEnde\n")
+    startup = listen / "hochlauf.lis"
+    startup.write_text(startup.read_text().replace("Ende", "default_achs_mds ./listen/default_achse.lis\nEnde", 1))
+    run = zero_cli("lint", "--machine", str(startup), "--select", "M009", "--output-format", "concise")
+    assert [line.split(" ")[0].rsplit("/", 1)[-1] for line in run.stdout.splitlines()] == [
+        "default_achse.lis:3:21:"], run.stdout
+    assert "`getriebe[0].wegaufn 10`" in run.stdout and "`antr.feed_const_num 100000`" in run.stdout

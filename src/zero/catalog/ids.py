@@ -25,6 +25,9 @@ SWE_NEG, SWE_POS, SWE_TOL = "P-AXIS-00177", "P-AXIS-00178", "P-AXIS-00179"  # so
 SWE_BEHAVIOUR = "P-AXIS-00554"  # kenngr.swe_behaviour
 SWE_CHECK = "P-AXIS-00705"  # kenngr.swe_check
 SOFT_LIMITS = (SWE_NEG, SWE_POS)
+# the position resolution, per gear stage (wegaufz / wegaufn) or by the feed constant
+RES_NUM, RES_DEN = "P-AXIS-00234", "P-AXIS-00233"  # getriebe[g].wegaufz, getriebe[g].wegaufn
+FEED_NUM, FEED_DEN = "P-AXIS-00362", "P-AXIS-00363"  # antr.feed_const_num, antr.feed_const_denom
 ROTARY_TYPES = (2, 4)  # kenngr.achs_typ of a rotary axis and of a spindle
 
 

@@ -6,11 +6,15 @@ from collections.abc import Iterator
 
 from zero.catalog.ids import (
     DEFAULT_INDEX,
+    FEED_DEN,
+    FEED_NUM,
     G53_AVAILABLE,
     INACTIVE,
     OFFSET,
     OFFSET_NEG,
     OFFSET_POS,
+    RES_DEN,
+    RES_NUM,
     SWE_BEHAVIOUR,
     SWE_CHECK,
     SWE_NEG,
@@ -230,3 +234,52 @@ def check_zero_offsets(ctx: Context) -> Iterator[Diagnostic]:
                 "start, but this list has no entry for that group",
                 param_id=DEFAULT_INDEX,
             )
+
+
+# ------------------------------------------------------- position resolution: M009
+
+TWO_RESOLUTIONS = FAMILY.rule(
+    "M009", "two-resolution-settings", E, "The position resolution set both per gear stage and by the feed constant",
+    """
+What it checks: an axis list that sets `getriebe[g].wegaufz`/`wegaufn` (P-AXIS-00234/00233)
+to anything but 1 while `antr.feed_const_num` or `antr.feed_const_denom` (P-AXIS-00362/00363)
+is not 1 either, in the one list.
+
+Why it matters on the machine: the catalogue says a feed constant other than 1 switches the
+controller to the other method: it computes the resolution from the feed constant, the
+encoder increments per motor revolution (P-AXIS-00092) and the gear ratio
+(P-AXIS-00511/00512), so the gear stage's `wegaufz`/`wegaufn` do not decide how far the axis
+moves. The vendor asks for P-AXIS-00362/00363 at 1 wherever P-AXIS-00234/00233 are used, and
+documents no start-up message for the mix: the controller starts without a word.
+
+Example: `getriebe[0].wegaufz 4` with `antr.feed_const_num 100000`
+Fix: keep one method: the feed constant (the vendor's recommendation) with wegaufz/wegaufn at
+1, or wegaufz/wegaufn with the feed constant at 1.
+""")
+
+
+@FAMILY.check(TWO_RESOLUTIONS)
+def check_resolution(ctx: Context) -> Iterator[Diagnostic]:
+    """M009: one finding per list, on the line of this list that completes the mix."""
+    feed = [(pid, idx, res) for pid in (FEED_NUM, FEED_DEN) for idx, res in ctx.ids_of(pid).items()
+            if res.value.number is not None and res.value.number != 1]
+    if not feed:
+        return
+    gear = [(pid, idx, res) for pid in (RES_NUM, RES_DEN) for idx, res in ctx.ids_of(pid).items()
+            if res.value.number is not None and res.value.number != 1]
+    if not gear:
+        return
+    own = [t for t in feed + gear if ctx.layer_of(t[0], t[1]) is ctx]
+    if not own:
+        return  # both come from the default list: its own lint reports them
+    pid, _idx, at = max(own, key=lambda t: t[2].entry.line)
+    g = min(gear, key=lambda t: t[2].entry.line)[2]
+    f = min(feed, key=lambda t: t[2].entry.line)[2]
+    yield ctx.report(
+        "M009", _span(at),
+        f"`{g.entry.key_text} {g.entry.value}` sets the resolution per gear stage, but "
+        f"`{f.entry.key_text} {f.entry.value}` is not 1: the controller then computes it from the "
+        "feed constant (catalogue), and wegaufz/wegaufn do not set how far the axis moves; "
+        "the vendor documents no start-up message for this",
+        param_id=pid,
+    )
