@@ -134,3 +134,37 @@ def test_machine_from_configuration(tmp_path: Path) -> None:
     # the override makes achs_mds[1] the C list: logical axis 2 (Y) has no list any more
     assert {x["name"] for x in rows} == {"X", "C"}
     assert P_BAD.exists()
+
+
+def _with_compensation(tmp_path: Path, table: str, ssfk_in: str = "achse_x.lis") -> Path:
+    """The clean machine with `lr_param.ssfk 1` in one list and a compensation list for X (axis 1)."""
+    import shutil
+
+    shutil.copytree(FIXTURES / "machine-clean", tmp_path / "m")
+    listen = tmp_path / "m" / "listen"
+    (listen / "kw_x.lis").write_text(f"kopf.achs_nr 1\nkw.ssfk.kw_nr_max 2\n{table}Ende\n")
+    target = listen / ssfk_in
+    target.write_text(target.read_text().replace("Ende", "lr_param.ssfk 1\nEnde", 1))
+    startup = listen / "hochlauf.lis"
+    startup.write_text(startup.read_text().replace(
+        "Ende", "zahl_kw 1\nachs_kw[0] ./listen/kw_x.lis\nachs_kw_log_ax_nr[0] 1\nEnde", 1))
+    return startup
+
+
+def test_compensation_switched_on_needs_its_table(tmp_path: Path) -> None:
+    """X013: leadscrew compensation on for X with a table in its compensation list is clean; without
+    one it is a finding on the `lr_param.ssfk` line naming the list; on Y (no list for axis 2) one
+    naming the missing list; the compensation list unread (X005) claims nothing."""
+    with_table = _with_compensation(tmp_path / "a", "kw.ssfk.table[0].pos 0\nkw.ssfk.table[1].pos 10\n")
+    assert x_findings(with_table) == []
+    without = _with_compensation(tmp_path / "b", "")
+    assert [(f["file"], f["code"]) for f in x_findings(without)] == [("achse_x.lis", "X013")]
+    results = lint_machine(load_machine(without, builtin_registry()), builtin_registry())
+    [d] = [d for r in results for d in r.diagnostics]
+    assert "has no `kw.ssfk.table[]` entry" in d.message and "kw_x.lis" in d.message
+    on_y = _with_compensation(tmp_path / "c", "kw.ssfk.table[0].pos 0\n", ssfk_in="achse_y.lis")
+    results = lint_machine(load_machine(on_y, builtin_registry()), builtin_registry())
+    [d] = [d for r in results for d in r.diagnostics]
+    assert d.code == "X013" and "no compensation list of the machine is for axis 2" in d.message
+    (on_y.parent / "kw_x.lis").unlink()
+    assert [f["code"] for f in x_findings(on_y)] == ["X005"]

@@ -52,6 +52,14 @@ CHANNELS = "P-STUP-00001"  # kanal_anzahl
 AXIS_LISTS = "P-STUP-00014"  # zahl_mds
 COMP_LISTS = "P-STUP-00016"  # zahl_kw
 COMP_AXIS = "P-STUP-00036"  # achs_kw_log_ax_nr[i]: the axis of compensation list i
+COMP_LIST_AXIS = "P-COMP-00001"  # kopf.achs_nr of a compensation list
+# a compensation the axis list switches on → the table entries of the compensation list that feed it
+COMPENSATIONS = {
+    "P-AXIS-00175": ("leadscrew error compensation", "kw.ssfk.table[]",
+                     ("P-COMP-00023", "P-COMP-00024", "P-COMP-00025")),
+    "P-AXIS-00047": ("cross compensation", "kw.crosscomp.table[]", ("P-COMP-00006", "P-COMP-00007")),
+    "P-AXIS-00174": ("plane compensation", "kw.crosscomp2.table[][]", ("P-COMP-00016",)),
+}
 
 # Zero-offset list (P-ZERO-…)
 G53_AVAILABLE = "P-ZERO-00001"  # g53_verfuegbar

@@ -15,7 +15,9 @@ from zero.catalog.ids import (
     AXIS_NAME,
     AXIS_NR,
     COMP_AXIS,
+    COMP_LIST_AXIS,
     COMP_LISTS,
+    COMPENSATIONS,
     FULL_TURN,
     G53_AVAILABLE,
     INACTIVE,
@@ -30,7 +32,7 @@ from zero.diagnostics import Diagnostic, Related, Span
 from zero.rules.base import INFO, E, Family, MachineContext, W
 
 if TYPE_CHECKING:  # start-up: a list's lint does not load the machine model
-    from zero.machine.model import Axis
+    from zero.machine.model import Axis, ListFile
 
 FAMILY: Family[MachineContext] = Family("X", "machine (across lists, `zero lint --machine`)", "machine")
 SGN32 = TYPE_LIMITS["SGN32"]
@@ -336,6 +338,92 @@ def check_compensation(ctx: MachineContext) -> Iterator[Diagnostic]:
         yield ctx.report("X009", span, f"`achs_kw_log_ax_nr[{i}]` is {int(nr)}, but no axis list of the start-up "
                          f"list has that `kopf.achs_nr`: the compensation values of `achs_kw[{i}]` apply to no axis",
                          param_id=COMP_AXIS, path=str(startup.path))
+
+
+COMPENSATION_WITHOUT_TABLE = FAMILY.rule(
+    "X013", "compensation-without-table", W, "A compensation switched on for an axis no compensation list feeds",
+    """
+What it checks: an axis list that switches on leadscrew error compensation (`lr_param.ssfk`,
+P-AXIS-00175), cross compensation (`lr_param.crosscomp`, P-AXIS-00047) or plane compensation
+(`lr_param.crosscomp2`, P-AXIS-00174), while no compensation list of the machine (`achs_kw[i]`,
+assigned by `achs_kw_log_ax_nr[i]` or by its own `kopf.achs_nr`) is for that axis, or the one
+that is holds no entry of that compensation's table (`kw.ssfk.table[]`, `kw.crosscomp.table[]`,
+`kw.crosscomp2.table[][]`).
+
+Why it matters on the machine: the compensation values come from the axis's compensation list;
+with none, the axis is switched to a compensation that has nothing to apply, and the machine
+runs with the error it was meant to correct. The vendor documents no start-up message for this.
+Not claimed while a compensation list the start-up list names is not read (X005, X012).
+
+Fix: add the compensation list to the start-up list (`zahl_kw`, `achs_kw[i]`,
+`achs_kw_log_ax_nr[i]`) with its table, or switch the compensation off.
+""")
+COMPENSATION_AXIS_MISMATCH = FAMILY.rule(
+    "X014", "compensation-list-axis-mismatch", W,
+    "A compensation list whose header names another axis than the start-up list assigns it to",
+    """
+What it checks: `kopf.achs_nr` (P-COMP-00001) of the list `achs_kw[i]` is the axis
+`achs_kw_log_ax_nr[i]` (P-STUP-00036) assigns it to, where both are written.
+
+Why it matters on the machine: the start-up list assigns the values to one axis while the list
+says it was measured on another; one of them is wrong, and the documentation does not say
+which of the two the controller follows.
+
+Fix: make the two numbers agree (the axis the values were measured on).
+""")
+
+
+def _compensation_lists(ctx: MachineContext) -> dict[int, list[ListFile]] | None:
+    """Axis number → the compensation lists for it (by the start-up list's assignment or their own
+    header); ``None`` while a compensation list the start-up list names was not read."""
+    machine = ctx.machine
+    if any(n.reference.key == "achs_kw[]" and n.status in ("missing", "unreadable", "not-checked")
+           for n in machine.named):
+        return None
+    out: dict[int, list[ListFile]] = {}
+    for i, lf in machine.compensation:
+        for nr in {machine.startup.number(COMP_AXIS, (i,)), lf.number(COMP_LIST_AXIS)}:
+            if nr:
+                out.setdefault(int(nr), []).append(lf)
+    return out
+
+
+@FAMILY.check(COMPENSATION_WITHOUT_TABLE, COMPENSATION_AXIS_MISMATCH)
+def check_compensation_tables(ctx: MachineContext) -> Iterator[Diagnostic]:
+    """X013, X014: each compensation an axis switches on has a table; each compensation list's
+    header names the axis the start-up list assigns it to."""
+    machine = ctx.machine
+    startup = machine.startup
+    for i, lf in machine.compensation:
+        assigned, own = startup.number(COMP_AXIS, (i,)), lf.number(COMP_LIST_AXIS)
+        e = lf.entry(COMP_LIST_AXIS)
+        if assigned and own and e is not None and int(assigned) != int(own):
+            yield ctx.report("X014", Span.on_line(e.line, e.value_start, e.value_end),
+                             f"`kopf.achs_nr` is {int(own)}, but the start-up list assigns this list to axis "
+                             f"{int(assigned)} (`achs_kw_log_ax_nr[{i}]`): the documentation does not say which "
+                             "of the two the controller follows", param_id=COMP_LIST_AXIS, path=str(lf.path))
+    by_axis = _compensation_lists(ctx)
+    if by_axis is None:
+        return
+    said: set[tuple[str, int]] = set()
+    for nr, ax in sorted(machine.axes().items()):
+        for pid, (what, table, ids) in COMPENSATIONS.items():
+            res = ax.list.values.value_of(pid)
+            if res is None or res.value.number != 1:
+                continue
+            layer = ax.list.values.layer_of(pid) or ax.list.values
+            where = (layer.doc.path, res.entry.line)
+            lists = by_axis.get(nr, [])
+            if any(lf.values.ids_of(t) for lf in lists for t in ids) or where in said:
+                continue
+            said.add(where)
+            why = (f"the compensation list of axis {nr} ({', '.join(f'`{lf.path}`' for lf in lists)}) has no "
+                   f"`{table}` entry" if lists else
+                   f"no compensation list of the machine is for axis {nr} (`achs_kw_log_ax_nr`, `kopf.achs_nr`)")
+            yield ctx.report("X013", Span.on_line(res.entry.line, res.entry.value_start, res.entry.value_end),
+                             f"`{res.entry.key_text} 1` switches {what} on, but {why}: there are no values to "
+                             "apply, and the vendor documents no start-up message for this",
+                             param_id=pid, path=layer.doc.path)
 
 
 CHANNEL_AXIS_TWICE = FAMILY.rule(

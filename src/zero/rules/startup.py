@@ -22,7 +22,7 @@ from zero.catalog.values import Resolved, default_number, parse_int
 from zero.diagnostics import Diagnostic, Span
 from zero.lists.model import Entry, format_key
 from zero.records import record
-from zero.rules.base import Context, E, Family
+from zero.rules.base import Context, E, Family, W
 
 FAMILY: Family[Context] = Family("K", "kernel start-up checks", "list")
 
@@ -78,6 +78,8 @@ def _correction_said(correction: str) -> str:
         return "the kernel uses the parameter's default instead"
     if c == "abort":
         return "the kernel aborts the start-up"
+    if c == "none":
+        return "the kernel only warns: it changes no value"
     target, _, value = c.partition("=")
     value = value.strip()
     what = f"the value of {value}" if value.startswith("P-") else value
@@ -104,7 +106,8 @@ def _declare() -> list[StartupError]:
         if not condition:
             continue  # documented, but not as a condition zero can evaluate (said in the table)
         when = str(row.get("when", ""))
-        FAMILY.rule(str(row["code"]), f"kernel-{row['number']}", E, f"P-ERR-{row['number']}: {row['title']}",
+        severity = W if row.get("correction") == "none" else E  # a documented warning without a reaction
+        FAMILY.rule(str(row["code"]), f"kernel-{row['number']}", severity, f"P-ERR-{row['number']}: {row['title']}",
                     _explanation(row, condition, when))
         out.append(StartupError(str(row["code"]), int(str(row["number"])), str(row["list"]),
                                 tuple(str(p) for p in row.get("params", ()) or ()), condition, when,
