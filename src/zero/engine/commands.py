@@ -83,7 +83,7 @@ class LintRequest:
     kind: str | None = None
     param_desc: str | Path | None = None
     jobs: int | None = None
-    config: str | Path | None = None
+    config: str | Path | Sequence[str] | None = None
     isolated: bool = False
     fix: bool = False
     show_diff: bool = False
@@ -123,7 +123,8 @@ def run_lint(request: LintRequest, registries: Registries, echo: Echo,
     if request.reads_stdin:
         return _lint_stdin(request, project, echo, read_stdin())
     named = [Path(p) for p in request.paths]
-    files = collect_files(named, include=project.included, exclude=project.excluded)
+    files = collect_files(named, include=project.included, exclude=project.excluded,
+                          respect_gitignore=project.respects_gitignore)
     if not files and any(p.is_dir() for p in named):
         raise ZeroError("no list files or NC programs found (looked for *.lis, *.lst, *.nc, *.mpf, *.spf, and *.xml "
                         "holding lists)")
@@ -171,7 +172,8 @@ def _lint_machine(request: LintRequest, project: Project) -> list[LintResult]:
     machine = project.machine(required=True)
     assert machine is not None and project.machine_given is not None
     results = lint_machine(machine, project.registry(project.machine_given), project.options)
-    for f in collect_files([Path(p) for p in request.paths], exclude=project.excluded):
+    for f in collect_files([Path(p) for p in request.paths], exclude=project.excluded,
+                             respect_gitignore=project.respects_gitignore):
         if is_program(f):
             try:
                 data = read_file(f)
@@ -338,7 +340,7 @@ class FormatRun:
 
 
 def run_format(paths: Sequence[str | Path], registries: Registries, echo: Echo, check: bool = False,
-               show_diff: bool = False, config: str | Path | None = None, isolated: bool = False,
+               show_diff: bool = False, config: str | Path | Sequence[str] | None = None, isolated: bool = False,
                param_desc: str | Path | None = None, read_stdin: Callable[[], bytes] | None = None,
                stdin_filename: str | None = None) -> FormatRun:
     """``zero format``: rewrite files in canonical layout; with ``check``/``show_diff`` only
@@ -350,7 +352,8 @@ def run_format(paths: Sequence[str | Path], registries: Registries, echo: Echo, 
         if read_stdin is None:
             raise ZeroError("standard input is not available here")
         return _format_stdin(read_stdin(), stdin_filename or "-", project, echo, check, show_diff)
-    files = collect_files([Path(p) for p in paths], include=project.included, exclude=project.excluded)
+    files = collect_files([Path(p) for p in paths], include=project.included, exclude=project.excluded,
+                          respect_gitignore=project.respects_gitignore)
     lists = [f for f in files if is_list(str(f))]  # NC programs and structured forms are not reformatted
     run = FormatRun(len(lists))
     for f in lists:

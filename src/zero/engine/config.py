@@ -52,7 +52,7 @@ from zero.files import nearest_holding, read_file, within
 from zero.forms import CONFIG_NAMES, DEFAULT_INCLUDE, controller_absolute
 from zero.lists.encoding import declarable
 from zero.lists.model import parse_key
-from zero.records import field, record
+from zero.records import field, record, replace
 from zero.rules import RULES
 
 if TYPE_CHECKING:
@@ -61,8 +61,10 @@ if TYPE_CHECKING:
 MAX_PATTERN_WILDCARDS = 3  # `*` runs in one segment of a glob pattern, and `**` segments
 MAX_PATTERN_LENGTH = 512
 MAX_CONFIG_BYTES = 1 << 20  # a configuration larger than 1 MiB is no configuration
-_KEYS = ("select", "extend-select", "ignore", "per-file-ignores", "severity", "kind", "include",
-         "exclude", "param-desc", "machine", "encoding", "kernel")
+_KEYS = ("extend", "select", "extend-select", "ignore", "extend-ignore", "per-file-ignores",
+         "extend-per-file-ignores", "severity", "kind", "include", "exclude", "extend-exclude", "respect-gitignore",
+         "param-desc", "machine", "encoding", "kernel")
+MAX_EXTEND_DEPTH = 8  # `extend` chains longer than this are a loop or a mistake
 
 
 @functools.lru_cache(maxsize=512)
@@ -133,6 +135,13 @@ class Config:
     machine_workdir: Path | None = None  # the controller's working directory, where it cannot be found
     # a folder of the controller (`C:/TwinCAT/3.1/Components/Mc/CNC`) → where it lies in the project
     machine_roots: tuple[tuple[str, Path], ...] = ()
+    extend_exclude: tuple[str, ...] = ()
+    extend_per_file_ignores: tuple[tuple[str, tuple[str, ...]], ...] = ()
+    respect_gitignore: bool = True
+    # `extend = "../zero.toml"`: the configuration this one inherits (its patterns stay relative to
+    # its own folder), and the keys this file sets itself (they replace the inherited ones)
+    parent: Config | None = None
+    given: frozenset[str] = frozenset()
 
     @property
     def root(self) -> Path:
@@ -152,33 +161,76 @@ class Config:
         rel = self.relative(file)
         return patterns(globs).match_file(rel if rel is not None else file.name)
 
+    def _own(self, key: str) -> bool:
+        """Does this file decide ``key`` (set here, or nothing inherited)?"""
+        return key in self.given or self.parent is None
+
     def excluded(self, file: Path) -> bool:
-        return bool(self.exclude) and self._matches(self.exclude, file)
+        """``exclude`` (this file's, else the inherited one's), or any ``extend-exclude`` of the chain."""
+        if self._own("exclude"):
+            hit = bool(self.exclude) and self._matches(self.exclude, file)
+        else:
+            hit = self.parent is not None and self.parent.excluded(file)
+        return hit or (bool(self.extend_exclude) and self._matches(self.extend_exclude, file)) or (
+            self.parent is not None and self._own("exclude") and self.parent._extend_excluded(file))
+
+    def _extend_excluded(self, file: Path) -> bool:
+        return (bool(self.extend_exclude) and self._matches(self.extend_exclude, file)) or (
+            self.parent is not None and self.parent._extend_excluded(file))
 
     def included(self, file: Path) -> bool:
+        if not self._own("include") and self.parent is not None:
+            return self.parent.included(file)
         return self._matches(self.include, file)
 
     def encoding_for(self, file: Path) -> str | None:
         """The codec the configuration declares for a list (the first pattern that matches), else
         ``None``: the list's encoding is detected."""
+        if not self._own("encoding") and self.parent is not None:
+            return self.parent.encoding_for(file)
         return next((codec for glob, codec in self.encoding if self._matches((glob,), file)), None)
 
+    def kind_for(self, file: Path) -> str | None:
+        if not self._own("kind") and self.parent is not None:
+            return self.parent.kind_for(file)
+        return next((k for glob, k in self.kind if self._matches((glob,), file)), None)
+
+    def ignored_for(self, file: Path) -> tuple[str, ...]:
+        """The codes the per-file ignores drop for one file (``per-file-ignores``, this file's or the
+        inherited one's, and every ``extend-per-file-ignores`` of the chain)."""
+        out: list[str] = []
+        if self._own("per-file-ignores"):
+            out += [c for glob, codes in self.per_file_ignores if self._matches((glob,), file) for c in codes]
+        elif self.parent is not None:
+            out += self.parent.ignored_for(file)
+        out += [c for glob, codes in self.extend_per_file_ignores if self._matches((glob,), file) for c in codes]
+        if self.parent is not None and self._own("per-file-ignores"):
+            out += self.parent._extended_ignores(file)
+        return tuple(out)
+
+    def _extended_ignores(self, file: Path) -> list[str]:
+        out = [c for glob, codes in self.extend_per_file_ignores if self._matches((glob,), file) for c in codes]
+        return out + (self.parent._extended_ignores(file) if self.parent is not None else [])
+
+    @property
+    def layers(self) -> tuple[tuple[tuple[str, ...], tuple[str, ...], tuple[str, ...]], ...]:
+        """The rule selection of the chain, the inherited configuration's first (see
+        :func:`zero.engine.lint.layered_selection`)."""
+        below = self.parent.layers if self.parent is not None else ()
+        return (*below, (self.select, self.extend_select, self.ignore))
+
     def options_for(self, file: Path, cli: LintOptions) -> LintOptions:
-        """The lint options for one file: the command line over this configuration."""
-        select = cli.select or self.select
-        extend = (*self.extend_select, *cli.extend_select)
-        # The command line is a later layer: its --select starts a new selection, which the
-        # configuration's ignore does not cut down (as in ruff); within a layer, ignore wins ties.
-        ignore = (*(() if cli.select else self.ignore), *cli.ignore)
-        for glob, codes in self.per_file_ignores:
-            if self._matches((glob,), file):
-                ignore = (*ignore, *codes)
-        kind = cli.kind
-        if kind is None:
-            kind = next((k for glob, k in self.kind if self._matches((glob,), file)), None)
-        return LintOptions(select=select, ignore=ignore, kind=kind,
-                           severity={**self.severity, **cli.severity}, extend_select=extend,
-                           encoding=cli.encoding or self.encoding_for(file), kernel=cli.kernel or self.kernel)
+        """The lint options for one file: the command line as the last layer over this configuration
+        (and the one it extends), as ruff resolves them; the file's per-file ignores drop what they
+        match whatever selected it."""
+        from zero.engine.lint import layered_selection  # the one place selection is resolved
+
+        chosen = layered_selection((*self.layers, (cli.select, cli.extend_select, cli.ignore)), self.ignored_for(file))
+        severity = {**self.parent.severity, **self.severity} if self.parent is not None else self.severity
+        return LintOptions(select=chosen.select, ignore=chosen.ignore, kind=cli.kind or self.kind_for(file),
+                           severity={**severity, **cli.severity},
+                           encoding=cli.encoding or self.encoding_for(file),
+                           kernel=cli.kernel or self.kernel)
 
     def show(self) -> str:
         """The effective configuration as TOML (``zero config --show``)."""
@@ -254,8 +306,11 @@ def _line_of(text: str, table: tuple[str, ...], key: str | None) -> int | None:
 _TOML_AT = re.compile(r"\s*\(at line (\d+), column (\d+)\)\s*$")
 
 
-def parse_config(path: Path, text: str | None = None) -> Config | None:
-    """Read one configuration file; ``None`` for a pyproject.toml without ``[tool.zero]``."""
+def parse_config(path: Path, text: str | None = None, _chain: tuple[Path, ...] = (),
+                 over: Config | None = None) -> Config | None:
+    """Read one configuration file; ``None`` for a pyproject.toml without ``[tool.zero]``. With
+    ``extend = "other.toml"`` the other file is read first and this one is laid over it; ``over``
+    lays ``text`` over a configuration already read (``--config KEY=VALUE``)."""
     import tomllib  # start-up: only when a configuration file exists
 
     if text is None:
@@ -317,7 +372,11 @@ def parse_config(path: Path, text: str | None = None) -> Config | None:
             raise fail(key, exc.message, sub) from None
         return tuple(value)
 
-    cfg = Config(path=path)
+    cfg = Config(path=path, given=frozenset(data))
+    if over is not None:
+        cfg = _layered(over, over.path, cfg.given)
+    elif "extend" in data:
+        cfg = _extended(cfg, data["extend"], path, _chain, fail)
     for key, value in data.items():
         if key not in _KEYS:
             import difflib  # start-up: only for a configuration error
@@ -325,12 +384,29 @@ def parse_config(path: Path, text: str | None = None) -> Config | None:
             near = difflib.get_close_matches(key.replace("_", "-"), _KEYS, n=1, cutoff=0.6)
             hint = f" (did you mean `{near[0]}`?)" if near else ""
             raise fail(key, f"unknown key{hint}; known: {', '.join(_KEYS)}")
+        if key == "extend":
+            continue  # read first, above
         if key == "select":
             cfg.select = codes(key, value)
+        elif key == "extend-ignore":  # ruff's older spelling: added to this file's `ignore`
+            cfg.ignore = (*cfg.ignore, *codes(key, value))
+        elif key == "extend-exclude":
+            cfg.extend_exclude = globs(key, value)
+        elif key == "respect-gitignore":
+            if not isinstance(value, bool):
+                raise fail(key, "expected true or false")
+            cfg.respect_gitignore = value
+        elif key == "extend-per-file-ignores":
+            if not isinstance(value, dict):
+                raise fail(key, "expected a table of glob = [codes]")
+            for g in value:
+                globs(g, [g], ("extend-per-file-ignores",))
+            cfg.extend_per_file_ignores = tuple((g, codes(g, v, ("extend-per-file-ignores",)))
+                                                for g, v in value.items())
         elif key == "extend-select":
             cfg.extend_select = codes(key, value)
         elif key == "ignore":
-            cfg.ignore = codes(key, value)
+            cfg.ignore = (*codes(key, value), *cfg.ignore)
         elif key == "include":
             cfg.include = globs(key, value)
         elif key == "exclude":
@@ -423,11 +499,56 @@ def parse_config(path: Path, text: str | None = None) -> Config | None:
     return cfg
 
 
+def _extended(cfg: Config, value: Any, path: Path, chain: tuple[Path, ...],
+              fail: Callable[..., ZeroError]) -> Config:
+    """``extend = "../zero.toml"``: the inherited configuration under ``cfg`` (its settings where this
+    file sets none; its rule selection a layer below this file's), as ruff's ``extend``."""
+    if not isinstance(value, str) or not value:
+        raise fail("extend", "expected the path of another configuration file (zero.toml or pyproject.toml)")
+    target = Path(os.path.expanduser(os.path.expandvars(value)))
+    target = target if target.is_absolute() else path.parent / target
+    here = Path(os.path.abspath(path))
+    if Path(os.path.abspath(target)) in (*chain, here) or len(chain) >= MAX_EXTEND_DEPTH:
+        raise fail("extend", f"{value!r} extends in a circle (or more than {MAX_EXTEND_DEPTH} deep)")
+    try:
+        parent = parse_config(target, None, (*chain, here))
+    except ZeroError as exc:
+        raise fail("extend", f"{value!r}: {exc}") from None
+    if parent is None:
+        raise fail("extend", f"{value!r} has no [tool.zero] table")
+    return _layered(parent, path, cfg.given)
+
+
+def _layered(parent: Config, path: Path | None, given: frozenset[str]) -> Config:
+    """A configuration over ``parent``: its settings until the keys in ``given`` replace them, its
+    rule selection and its extending keys (``extend-*``) a layer of their own."""
+    return replace(parent, path=path, given=given, parent=parent, select=(), extend_select=(), ignore=(),
+                   severity={}, extend_exclude=(), extend_per_file_ignores=())
+
+
+def inline_config(text: str, over: Config) -> Config:
+    """``--config 'select = ["R005"]'`` (as ruff's): one ``KEY = VALUE`` of the configuration, in
+    TOML, laid over the configuration that applies (it takes precedence over every file); patterns
+    and paths relative to the current directory where nothing else applies."""
+    if "extend" in text.split("=", 1)[0]:
+        raise ZeroError(f"--config {text!r}: `extend` names a file; use --config FILE")
+    cfg = parse_config(Path("--config"), text, over=over)
+    assert cfg is not None  # only a pyproject.toml may hold no [tool.zero]
+    return cfg
+
+
+def is_inline(value: str) -> bool:
+    """Is a ``--config`` value one ``KEY = VALUE`` rather than a file (as ruff tells them)?"""
+    return "=" in value and not os.path.lexists(value)
+
+
 class ConfigFinder:
     """Finds (and caches) the configuration that applies to each file."""
 
-    def __init__(self, explicit: Path | None = None, isolated: bool = False) -> None:
+    def __init__(self, explicit: Path | None = None, isolated: bool = False, overrides: tuple[str, ...] = ()) -> None:
         self.isolated = isolated
+        self.overrides = overrides  # `--config KEY=VALUE`, in order: over whatever configuration applies
+        self._overlaid: dict[int, tuple[Config, Config]] = {}
         self.explicit: Config | None = None
         if explicit is not None and not isolated:
             cfg = parse_config(explicit)
@@ -437,6 +558,20 @@ class ConfigFinder:
         self._by_dir: dict[Path, Config] = {}
         self._by_name: dict[str, Config] = {}  # the absolute directory → its configuration
         self._default = Config()
+        if overrides:
+            self._overlay(self._default)  # a bad override is an error before any file is read
+
+    def _overlay(self, cfg: Config) -> Config:
+        """``cfg`` with the command line's ``--config KEY=VALUE`` over it (each a layer of its own)."""
+        if not self.overrides:
+            return cfg
+        hit = self._overlaid.get(id(cfg))
+        if hit is None:
+            out = cfg
+            for text in self.overrides:
+                out = inline_config(text, out)
+            hit = self._overlaid[id(cfg)] = (cfg, out)  # the original kept: its id stays unique
+        return hit[1]
 
     def for_path(self, path: Path, directory: bool | None = None) -> Config:
         """The configuration of a file (found from its directory up) or of a directory (found from
@@ -444,16 +579,16 @@ class ConfigFinder:
         Cached by the absolute directory the search starts from (links not resolved, which costs
         nothing per file): a file and a folder share an entry only when they mean one directory."""
         if self.isolated:
-            return self._default
+            return self._overlay(self._default)
         if self.explicit is not None:
-            return self.explicit
+            return self._overlay(self.explicit)
         if directory is None:
             directory = path.is_dir()
         key = os.path.abspath(str(path) if directory else os.path.dirname(str(path)) or ".")
         hit = self._by_name.get(key)
         if hit is None:
             start = path.resolve() if directory else _resolved(path).parent
-            hit = self._by_name[key] = self._lookup(start)
+            hit = self._by_name[key] = self._overlay(self._lookup(start))
         return hit
 
     def _lookup(self, start: Path) -> Config:

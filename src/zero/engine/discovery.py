@@ -59,7 +59,7 @@ def holds_lists(path: Path) -> bool:
 
 def collect_files(paths: Iterable[str | Path], include: Callable[[Path], bool] | None = None,
                   exclude: Callable[[Path], bool] | None = None,
-                  respect_gitignore: bool = True) -> list[Path]:
+                  respect_gitignore: bool | Callable[[Path], bool] = True) -> list[Path]:
     """Files named explicitly, plus list files below named directories (sorted).
 
     ``include`` decides which files a directory walk picks up (default: lists ``*.lis``,
@@ -67,13 +67,15 @@ def collect_files(paths: Iterable[str | Path], include: Callable[[Path], bool] |
     content: :func:`holds_lists`); ``exclude`` drops files and
     directories, named ones included. A
     directory walk skips what ``.gitignore`` ignores when the directory is in a git
-    work tree (named files are always linted).
+    work tree and ``respect_gitignore`` (a flag, or the directory's configuration's
+    ``respect-gitignore``) says so (named files are always linted).
     """
     out: list[Path] = []
     for raw in paths:
         p = Path(raw)
         if p.is_dir():
-            visible = git_visible(p) if respect_gitignore else None
+            respect = respect_gitignore(p) if callable(respect_gitignore) else respect_gitignore
+            visible = git_visible(p) if respect else None
             found: list[Path] = []
             for root, dirs, files in os.walk(p):
                 dirs[:] = sorted(d for d in dirs if not d.startswith(".")

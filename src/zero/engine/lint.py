@@ -131,6 +131,36 @@ def _selected_rules(options: LintOptions) -> dict[str, Severity]:
     return out
 
 
+Layer = tuple[tuple[str, ...], tuple[str, ...], tuple[str, ...]]  # select, extend-select, ignore
+
+
+def layered_selection(layers: Sequence[Layer], dropped: Sequence[str] = ()) -> LintOptions:
+    """Rule selection as ruff resolves it, as options for one file. Each layer (an inherited
+    configuration, the configuration, the command line) changes the rules the one below enabled:
+    a layer with ``select`` starts anew (what the layers below enabled or ignored no longer
+    counts), one without adds its ``extend-select`` and removes its ``ignore``. Within a layer the
+    longest matching prefix decides and, at equal length, ``ignore`` wins; a rule no selector of a
+    layer matches keeps its state. An opt-in rule is enabled only by its full code. ``dropped``
+    (the file's per-file ignores) removes every code it matches, whatever selected it."""
+    enabled = {code for code, r in RULES.items() if not r.opt_in}
+    for select, extend, ignore in layers:
+        if not (select or extend or ignore):
+            continue
+        for code, r in RULES.items():
+            on = max((len(p) for p in (*select, *extend) if code.startswith(p)), default=-1)
+            off = max((len(p) for p in ignore if code.startswith(p)), default=-1)
+            if r.opt_in and code not in select and code not in extend:
+                on = -1
+            if not select and on < 0 and off < 0:
+                continue
+            if on > off:
+                enabled.add(code)
+            else:
+                enabled.discard(code)
+    kept = tuple(sorted(c for c in enabled if not any(c.startswith(p) for p in dropped)))
+    return LintOptions(select=kept) if kept else LintOptions(ignore=("",))  # "" matches every code
+
+
 def lint_document(doc: Document, registry: Registry, options: LintOptions | None = None,
                   extra: Sequence[Diagnostic] = (), default_list: bool = False) -> LintResult:
     """One list's findings; ``extra`` are findings about it from its machine (suppressible in it);
@@ -453,11 +483,13 @@ __all__ = [
     "LIST_SUFFIXES",
     "PROGRAM_SUFFIXES",
     "STRUCTURED_SUFFIXES",
+    "Layer",
     "LintOptions",
     "LintResult",
     "Totals",
     "ZeroError",
     "is_unreadable",
+    "layered_selection",
     "lint_bytes",
     "lint_data",
     "lint_document",

@@ -26,12 +26,12 @@ from __future__ import annotations
 
 import os
 from collections import OrderedDict
-from collections.abc import Callable, Hashable
+from collections.abc import Callable, Hashable, Sequence
 from pathlib import Path
 from typing import TYPE_CHECKING
 
 from zero.catalog.registry import KINDS, Registry
-from zero.engine.config import Config, ConfigFinder
+from zero.engine.config import Config, ConfigFinder, is_inline
 from zero.engine.lint import LintOptions
 from zero.errors import ZeroError
 from zero.files import read_file
@@ -68,11 +68,16 @@ def _signature(machine: Machine, encoding: Callable[[Path], str | None]) -> Sign
 class Project:
     """The answers of one run (or one editor workspace) to "what applies to this file"."""
 
-    def __init__(self, registries: Registries, *, config: str | Path | None = None, isolated: bool = False,
-                 param_desc: str | Path | None = None, cli: LintOptions | None = None,
+    def __init__(self, registries: Registries, *, config: str | Path | Sequence[str] | None = None,
+                 isolated: bool = False, param_desc: str | Path | None = None, cli: LintOptions | None = None,
                  machine: str | Path | None = None) -> None:
         self.registries = registries
-        self.finder = ConfigFinder(Path(config) if config else None, isolated)
+        given = [config] if isinstance(config, (str, Path)) else list(config or ())
+        files = [Path(c) for c in given if not is_inline(str(c))]
+        if len(files) > 1:
+            raise ZeroError(f"--config names {len(files)} files; one file, and any number of KEY=VALUE")
+        self.finder = ConfigFinder(files[0] if files else None, isolated,
+                                   tuple(str(c) for c in given if is_inline(str(c))))
         self.param_desc_given = Path(param_desc) if param_desc else None
         self.cli = cli or LintOptions()
         self.machine_given = absolute(machine) if machine is not None else None
@@ -104,6 +109,10 @@ class Project:
 
     def included(self, path: Path) -> bool:
         return self.config(path).included(path)
+
+    def respects_gitignore(self, directory: Path) -> bool:
+        """Does a walk of ``directory`` skip what git ignores (``respect-gitignore``, default true)?"""
+        return self.config(directory, directory=True).respect_gitignore
 
     # ----------------------------------------------------------------- catalogue
 
