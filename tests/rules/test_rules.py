@@ -17,8 +17,9 @@ RULE_DIRS = sorted(p for p in (FIXTURES / "rules").iterdir() if p.is_dir())
 
 def _fixture(rule_dir: Path, name: str) -> Path:
     """``fail.lis`` / ``pass.lis``; the rules on XML elements have ``.xml`` fixtures (the same list
-    model, read from XML), the U rules update files (``fail-Update.xml``: known by the name)."""
-    for candidate in (f"{name}.xml", f"{name}-Update.xml"):
+    model, read from XML), the U rules update files (``fail-Update.xml``: known by the name), S017 a
+    YAML list form (``fail.yaml``)."""
+    for candidate in (f"{name}.xml", f"{name}-Update.xml", f"{name}.yaml"):
         if (rule_dir / candidate).exists():
             return rule_dir / candidate
     return rule_dir / f"{name}.lis"

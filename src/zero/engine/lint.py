@@ -61,6 +61,7 @@ class LintResult:
     document: Document
     kind: str | None
     diagnostics: list[Diagnostic] = field(default_factory=list)
+    note: str | None = None  # why the file was skipped, unchecked (not a list form): said, not a finding
 
     @property
     def worst(self) -> Severity | None:
@@ -230,12 +231,53 @@ def lint_tree(tree: Tree, registry: Registry, options: LintOptions | None = None
     return LintResult(tree.path, shown, result.kind, out)
 
 
+_P_ID = re.compile(r"P-[A-Z]{4}-[0-9]{5}")
+
+
+def list_form(data: bytes, fmt: str, registry: Registry) -> bool | None:
+    """Is YAML/TOML/JSON a list form: zero's ``_zero`` table, or top-level keys most of which are
+    parameter IDs or the first name of a parameter key (``kopf``, ``np_grp``)? ``None``: it does
+    not parse (a list form or not, it is reported)."""
+    import json
+    import tomllib
+
+    import yaml
+
+    try:
+        text = data.decode("utf-8-sig")
+        top = json.loads(text) if fmt == "json" else tomllib.loads(text) if fmt == "toml" else \
+            yaml.load(text, Loader=getattr(yaml, "CSafeLoader", yaml.SafeLoader))
+    except (UnicodeDecodeError, ValueError, yaml.YAMLError, RecursionError):  # JSON's and TOML's are ValueErrors
+        return None
+    if not isinstance(top, dict):
+        return False
+    heads: dict[str, bool] = registry.memo.setdefault("key-heads", {})
+    if not heads:
+        heads.update((re.split(r"[.\[]", s.key, maxsplit=1)[0], True) for s in registry.specs.values() if s.key)
+    if "_zero" in top:
+        return True
+    ours = sum(1 for k in top if isinstance(k, str) and (k in heads or _P_ID.fullmatch(k) is not None))
+    return ours > 0 and 2 * ours >= len(top)  # most top-level keys: `a`, `tool`, `path` are parameters' too
+
+
 def lint_structured(data: bytes, fmt: str, registry: Registry, path: str = "-",
                     options: LintOptions | None = None) -> LintResult:
-    """Lint YAML/TOML/JSON bytes as the list they convert to."""
+    """Lint YAML/TOML/JSON bytes as the list they convert to. A file that is no list form (see
+    :func:`list_form`) is skipped with a note; a list form that does not read is one S017 finding."""
     from zero.structured.formats import read_tree  # start-up: not for lists
 
-    tree = read_tree(data, fmt, registry, path)
+    if b"_zero" not in data and list_form(data, fmt, registry) is False:
+        return LintResult(path, _shown(path, data), None, [],
+                          note=f"not a {fmt.upper()} list form (its top-level keys are not parameters', no `_zero` "
+                               "table): skipped")
+    try:
+        tree = read_tree(data, fmt, registry, path)
+    except ZeroError as exc:
+        line, col = exc.line or 1, exc.column or 1
+        finding = Diagnostic("S017", RULES["S017"].severity, f"{exc.message}: not checked",
+                             Span(line, col, line, col + 1), path)
+        found = funnel(path, [finding], selected_rules(options or LintOptions()))
+        return LintResult(path, _shown(path, data), None, found)
     source = data.decode("utf-8", "replace").lstrip("\ufeff")
     return lint_tree(tree, registry, options, source, fmt == "json")
 

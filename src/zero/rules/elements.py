@@ -21,7 +21,7 @@ from zero.lists.model import Comment
 from zero.rules.base import INFO, Context, E, W
 from zero.rules.syntax import FAMILY
 
-__all__ = ["FAMILY", "NOT_CHECKED", "UNKNOWN_ID", "XML_REFUSED", "check_elements"]
+__all__ = ["FAMILY", "FORM_REFUSED", "NOT_CHECKED", "UNKNOWN_ID", "XML_REFUSED", "check_elements"]
 
 _ELEMENT_RE = re.compile(r"<(P-[A-Z]{4}-[0-9]{5})((?:\.[0-9]+)*)(?=[\s/>]|$)")
 _VALUE_RE = re.compile(r"""\sValue\s*=\s*(?:"([^"]*)"|'([^']*)')""")
@@ -40,6 +40,22 @@ expand to gigabytes (billion laughs) or make a tool read other files (external e
 
 Example: `<P-AXIS-00016 Value="1">` never closed; `<!DOCTYPE x [<!ENTITY a "...">]>`.
 Fix: repair the XML; remove the DTD.
+""")
+FORM_REFUSED = FAMILY.rule(
+    "S017", "form-not-read", E, "A YAML, TOML or JSON list form zero cannot read",
+    """
+What it checks: a `.yaml`, `.yml`, `.toml` or `.json` file that is a list form (zero's `_zero`
+table, or a top-level key that is a parameter's) must read as the list it converts to: valid
+YAML/TOML/JSON, every key a parameter key or part of one. Anything else is this one finding,
+where the reader stopped; nothing in the file is checked, and the run goes on with the other
+files. A YAML/TOML/JSON file that is no list form at all (a `package.json`, a workflow, an
+editor's settings) is skipped with a note and no finding. The engine reports it.
+
+Why it matters on the machine: a form that does not convert cannot become the list the
+controller reads; `zero convert` refuses it too.
+
+Example: `kopf: {achs_nr: 1` (a mapping never closed)
+Fix: repair the file; `zero convert` writes forms that read back.
 """)
 UNKNOWN_ID = FAMILY.rule(
     "S015", "unknown-parameter-id", W, "An XML element names a parameter the catalogue does not know",
