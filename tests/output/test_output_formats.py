@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import io
 import json
+import os
 import subprocess
 import sys
 import xml.etree.ElementTree as ET
@@ -24,6 +25,8 @@ from zero.output.formats import indented_json, render_json
 SEED = str(FIXTURES / "seed" / "nullp_3achsen.lis")
 CLEAN = str(FIXTURES / "rules" / "M006" / "pass.lis")
 runner = CliRunner()
+# GitLab and GitHub get paths relative to the working directory (the repository in CI)
+SEED_REL = SEED if os.path.relpath(SEED).startswith("..") else Path(os.path.relpath(SEED)).as_posix()
 
 
 def run(*args: str) -> tuple[int, str, str]:
@@ -58,7 +61,7 @@ def test_text_summary_goes_to_stderr() -> None:
 def test_github_annotations() -> None:
     _code, out, _ = run("--output-format", "github", SEED)
     first = out.splitlines()[0]
-    assert first.startswith(f"::error file={SEED},line=19,col=20,endLine=19,endColumn=21,title=zero S004::S004 ")
+    assert first.startswith(f"::error file={SEED_REL},line=19,col=20,endLine=19,endColumn=21,title=zero S004::S004 ")
     assert sum(1 for x in out.splitlines() if x.startswith("::notice ")) == 5
 
 
@@ -68,7 +71,7 @@ def test_gitlab_code_quality() -> None:
     assert len(issues) == 7
     assert {i["severity"] for i in issues} == {"major", "info"}
     assert len({i["fingerprint"] for i in issues}) == 7
-    assert issues[0]["location"] == {"path": SEED, "lines": {"begin": 19, "end": 19}}
+    assert issues[0]["location"] == {"path": SEED_REL, "lines": {"begin": 19, "end": 19}}
 
 
 def test_junit() -> None:

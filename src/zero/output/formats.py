@@ -13,10 +13,20 @@ from pathlib import Path
 from typing import Any, TextIO
 
 from zero import __version__
-from zero.diagnostics import Diagnostic, Severity
-from zero.engine.lint import LintResult
+from zero.diagnostics import Diagnostic, Severity, Span
+from zero.engine.lint import LintResult, is_unreadable
 from zero.output.text import printable
 from zero.rules import RULES
+
+# Where a rule's text is on the web, ``{code}`` replaced by its code: each SARIF rule's
+# ``helpUri``. zero has no public home yet, so there is none by default (SARIF makes it
+# optional; the rule's text is in the log itself, ``help``); whoever publishes the rule texts
+# sets it here, or passes ``rule_docs`` to :func:`render_sarif`.
+RULE_DOCS_URL: str | None = None
+# The tool's home page (SARIF ``informationUri``); none by default, for the same reason.
+PROJECT_URL: str | None = None
+# The name of zero's own fingerprint among a SARIF result's ``partialFingerprints``.
+SARIF_FINGERPRINT = "zeroKeyHash/v1"
 
 
 def _each(results: Iterable[LintResult]) -> Iterator[Diagnostic]:
@@ -59,10 +69,26 @@ def render_json(results: Iterable[LintResult], stream: TextIO) -> None:
 
 
 def render_concise(results: Iterable[LintResult], stream: TextIO) -> None:
-    """One line per finding: ``path:line:col: CODE severity message``."""
+    """One line per finding: ``path:line:col: CODE severity message``. A control character or an
+    undecodable byte in the path or the message is written as its escape (``\\n``, ``\\r``,
+    ``\\xff``): one finding stays one line, and the name can still be told."""
     for d in _each(results):
-        stream.write(f"{d.path}:{d.span.line}:{d.span.column}: {d.code} {d.severity.label} "
-                     f"{printable(d.message)}\n")
+        stream.write(f"{printable(d.path, escape=True)}:{d.span.line}:{d.span.column}: {d.code} "
+                     f"{d.severity.label} {printable(d.message, escape=True)}\n")
+
+
+def repo_path(path: str) -> str:
+    """``path`` relative to the working directory (the repository's root in CI), with ``/``
+    between its parts, as GitLab and GitHub expect; as given where it lies outside (or is ``-``)."""
+    if path == "-":
+        return path
+    try:
+        rel = os.path.relpath(os.path.abspath(path))
+    except ValueError:  # another drive (Windows)
+        return path
+    if rel == os.pardir or rel.startswith(os.pardir + os.sep):
+        return path
+    return rel.replace(os.sep, "/")
 
 
 def _gh_escape(text: str, prop: bool = False) -> str:
@@ -74,62 +100,83 @@ def render_github(results: Iterable[LintResult], stream: TextIO) -> None:
     """GitHub Actions workflow commands: an annotation per finding."""
     level = {Severity.ERROR: "error", Severity.WARNING: "warning", Severity.INFO: "notice"}
     for d in _each(results):
-        props = (f"file={_gh_escape(d.path, True)},line={d.span.line},col={d.span.column},"
+        props = (f"file={_gh_escape(repo_path(d.path), True)},line={d.span.line},col={d.span.column},"
                  f"endLine={d.span.end_line},endColumn={d.span.end_column},"
                  f"title={_gh_escape(f'zero {d.code}', True)}")
         stream.write(f"::{level[d.severity]} {props}::{_gh_escape(f'{d.code} {d.message}')}\n")
 
 
 def _subject(d: Diagnostic, r: LintResult) -> str:
-    """What a finding is about, without its line: the key (or the line's text) it stands on."""
+    """What a finding is about, without its line: the key as written on its line, indices and
+    all (``np_grp[2].achse[0].versch``), or the line's first word."""
     text = r.document.line_text(d.span.line)
     return text.split(None, 1)[0] if text.strip() else ""
 
 
+def fingerprints(r: LintResult) -> list[str]:
+    """A fingerprint per finding of ``r``, in order, that stays the same when lines move or other
+    findings come and go: made of the repository-relative path, the code, the key as written
+    (with its indices: every index of a parameter shares its ID) and which occurrence of that
+    triple it is (a key written twice), never of the line number."""
+    seen: dict[tuple[str, str, str], int] = {}
+    out = []
+    for d in r.diagnostics:
+        ident = (repo_path(d.path), d.code, _subject(d, r))
+        seen[ident] = seen.get(ident, 0) + 1
+        text = "\0".join((*ident, str(seen[ident])))
+        out.append(hashlib.sha256(text.encode("utf-8", "surrogateescape")).hexdigest())
+    return out
+
+
 def render_gitlab(results: Sequence[LintResult], stream: TextIO) -> None:
-    """GitLab code quality report (a JSON array of issues). The fingerprint stays the same when
-    lines move: it is made of the path, the code, the key the finding stands on and which
-    occurrence of that triple it is, not of the line number."""
+    """GitLab code quality report (a JSON array of issues), paths relative to the repository;
+    the fingerprint is :func:`fingerprints`'."""
     severity = {Severity.ERROR: "major", Severity.WARNING: "minor", Severity.INFO: "info"}
     out = []
     for r in results:
-        seen: dict[tuple[str, str, str], int] = {}
-        for d in r.diagnostics:
-            ident = (d.path, d.code, d.param_id or _subject(d, r))
-            seen[ident] = seen.get(ident, 0) + 1
-            fp = hashlib.sha256("\0".join((*ident, str(seen[ident]))).encode("utf-8", "surrogateescape")).hexdigest()
+        for d, fp in zip(r.diagnostics, fingerprints(r), strict=True):
             out.append({"description": f"{d.code} {d.message}", "check_name": d.code, "fingerprint": fp,
                         "severity": severity[d.severity],
-                        "location": {"path": d.path, "lines": {"begin": d.span.line, "end": d.span.end_line}}})
+                        "location": {"path": repo_path(d.path),
+                                     "lines": {"begin": d.span.line, "end": d.span.end_line}}})
     stream.write(json.dumps(out, indent=2) + "\n")
 
 
-def render_junit(results: Sequence[LintResult], stream: TextIO) -> None:
-    """JUnit XML: one test suite per file, one test case per finding. Errors are failures;
-    warnings and infos are passing test cases that carry the finding in ``system-out``, so a CI
-    job fails on what ``zero lint`` exits 1 for (without ``--strict``)."""
+def render_junit(results: Sequence[LintResult], stream: TextIO, fail_on: Severity = Severity.ERROR) -> None:
+    """JUnit XML as Jenkins' ``junit-10.xsd`` has it: one test suite per file, one test case per
+    finding (a clean file: one passing case). A finding of ``fail_on`` or worse is a failure
+    (``Severity.WARNING`` under ``--strict``, as the exit code); a file that could not be read
+    (F001) is an error; the others pass and carry the finding in ``system-out``. Where it is
+    (``path:line:col``) is in each case's text: the schema has no attribute for it."""
     import xml.etree.ElementTree as ET  # start-up: only for JUnit output
 
-    def failing(r: LintResult) -> int:
-        return sum(1 for d in r.diagnostics if d.severity >= Severity.ERROR)
-
-    total = sum(len(r.diagnostics) for r in results)
-    suites = ET.Element("testsuites", name="zero", tests=str(max(total, len(results))),
-                        failures=str(sum(failing(r) for r in results)))
+    suites = ET.Element("testsuites", name="zero")
+    counts = {"tests": 0, "failures": 0, "errors": 0}
     for r in results:
-        suite = ET.SubElement(suites, "testsuite", name=r.path, tests=str(max(len(r.diagnostics), 1)),
-                              failures=str(failing(r)))
+        shown = printable(r.path, escape=True)
+        suite = ET.SubElement(suites, "testsuite", name=shown)
+        tally = {"tests": max(len(r.diagnostics), 1), "failures": 0, "errors": 0}
         if not r.diagnostics:
-            ET.SubElement(suite, "testcase", name=f"{r.path} clean", classname=r.path)
+            ET.SubElement(suite, "testcase", name=f"{shown} clean", classname=shown)
         for d in r.diagnostics:
-            case = ET.SubElement(suite, "testcase", name=f"{d.code} line {d.span.line}",
-                                 classname=r.path, file=r.path, line=str(d.span.line))
-            text = f"{d.path}:{d.span.line}:{d.span.column}: {d.code} {d.severity.label} {printable(d.message)}"
-            if d.severity >= Severity.ERROR:
-                failure = ET.SubElement(case, "failure", message=printable(d.message), type=d.code)
-                failure.text = text
+            case = ET.SubElement(suite, "testcase", name=f"{d.code} line {d.span.line}", classname=shown)
+            message = printable(d.message, escape=True)
+            where = f"{printable(d.path, escape=True)}:{d.span.line}:{d.span.column}"
+            text = f"{where}: {d.code} {d.severity.label} {message}"
+            if d.code == "F001":
+                ET.SubElement(case, "error", message=message, type=d.code).text = text
+                tally["errors"] += 1
+            elif d.severity >= fail_on:
+                ET.SubElement(case, "failure", message=message, type=d.code).text = text
+                tally["failures"] += 1
             else:
                 ET.SubElement(case, "system-out").text = text
+        for k, n in tally.items():
+            suite.set(k, str(n))
+            counts[k] += n
+        suite.set("skipped", "0")
+    for k, n in counts.items():
+        suites.set(k, str(n))
     stream.write(ET.tostring(suites, encoding="unicode", xml_declaration=True) + "\n")
 
 
@@ -137,46 +184,72 @@ def artifact_uri(path: str) -> dict[str, str]:
     """A SARIF artifact location: a percent-encoded URI reference, relative to ``%SRCROOT%`` (the
     working directory) where the file lies below it, else an absolute ``file:`` URI."""
     absolute = os.path.abspath(path)
-    rel = os.path.relpath(absolute)
-    if not rel.startswith(".."):
-        return {"uri": urllib.parse.quote(rel.replace(os.sep, "/")), "uriBaseId": "%SRCROOT%"}
+    rel = repo_path(absolute)
+    if rel != absolute:
+        return {"uri": urllib.parse.quote(rel, errors="surrogateescape"), "uriBaseId": "%SRCROOT%"}
     return {"uri": Path(absolute).as_uri()}
 
 
-def render_sarif(results: Sequence[LintResult], stream: TextIO) -> None:
-    """SARIF 2.1.0: the rules that fired and one result per finding."""
+def _region(span: Span) -> dict[str, int]:
+    return {"startLine": span.line, "startColumn": span.column,
+            "endLine": span.end_line, "endColumn": span.end_column}
+
+
+def render_sarif(results: Sequence[LintResult], stream: TextIO, rule_docs: str | None = None) -> None:
+    """SARIF 2.1.0: the rules that fired (each with its ``helpUri`` where ``rule_docs``, else
+    :data:`RULE_DOCS_URL`, says where the rules' texts are), one result per finding with its
+    fingerprint (``partialFingerprints``: that of :func:`fingerprints`, so a result uploaded again
+    is known again) and the invocation: not successful when a file could not be read (F001, the
+    run exits 2), each such file a notification."""
+    docs = rule_docs if rule_docs is not None else RULE_DOCS_URL
     level = {Severity.ERROR: "error", Severity.WARNING: "warning", Severity.INFO: "note"}
     used = sorted({d.code for d in _each(results)})
-    rules = [{"id": c, "name": RULES[c].name, "shortDescription": {"text": RULES[c].summary},
-              "fullDescription": {"text": RULES[c].explanation.strip()},
-              "defaultConfiguration": {"level": level[RULES[c].severity]},
-              "help": {"text": RULES[c].explanation.strip()}} for c in used if c in RULES]
+    rules: list[dict[str, object]] = []
+    for c in used:
+        if c not in RULES:
+            continue
+        rule: dict[str, object] = {
+            "id": c, "name": RULES[c].name, "shortDescription": {"text": RULES[c].summary},
+            "fullDescription": {"text": RULES[c].explanation.strip()},
+            "defaultConfiguration": {"level": level[RULES[c].severity]},
+            "help": {"text": RULES[c].explanation.strip()}}
+        if docs:
+            rule["helpUri"] = docs.replace("{code}", urllib.parse.quote(c))
+        rules.append(rule)
     index = {c: i for i, c in enumerate(used)}
     res = []
-    for d in _each(results):
-        item: dict[str, object] = {
-            "ruleId": d.code, "ruleIndex": index[d.code], "level": level[d.severity],
-            "message": {"text": printable(d.message)},
-            "locations": [{"physicalLocation": {
-                "artifactLocation": artifact_uri(d.path),
-                "region": {"startLine": d.span.line, "startColumn": d.span.column,
-                           "endLine": d.span.end_line, "endColumn": d.span.end_column}}}],
-        }
-        if d.related:
-            item["relatedLocations"] = [
-                {"id": n, "message": {"text": printable(r.message)}, "physicalLocation": {
-                    "artifactLocation": artifact_uri(r.path or d.path),
-                    "region": {"startLine": r.span.line, "startColumn": r.span.column,
-                               "endLine": r.span.end_line, "endColumn": r.span.end_column}}}
-                for n, r in enumerate(d.related)]
-        properties = {k: v for k, v in (("parameterId", d.param_id), ("kernelError", d.kernel_error)) if v}
-        if properties:
-            item["properties"] = properties
-        res.append(item)
+    notifications = []
+    for r in results:
+        for d, fp in zip(r.diagnostics, fingerprints(r), strict=True):
+            location = {"physicalLocation": {"artifactLocation": artifact_uri(d.path), "region": _region(d.span)}}
+            item: dict[str, object] = {
+                "ruleId": d.code, "ruleIndex": index[d.code], "level": level[d.severity],
+                "message": {"text": printable(d.message)},
+                "locations": [location],
+                "partialFingerprints": {SARIF_FINGERPRINT: fp},
+            }
+            if d.related:
+                item["relatedLocations"] = [
+                    {"id": n, "message": {"text": printable(rel.message)}, "physicalLocation": {
+                        "artifactLocation": artifact_uri(rel.path or d.path), "region": _region(rel.span)}}
+                    for n, rel in enumerate(d.related)]
+            properties = {k: v for k, v in (("parameterId", d.param_id), ("kernelError", d.kernel_error)) if v}
+            if properties:
+                item["properties"] = properties
+            res.append(item)
+            if d.code == "F001":
+                notifications.append({"level": "error", "message": {"text": printable(d.message)},
+                                      "locations": [location], "descriptor": {"id": d.code}})
+    invocation: dict[str, object] = {"executionSuccessful": not any(is_unreadable(r) for r in results)}
+    if notifications:
+        invocation["toolExecutionNotifications"] = notifications
+    driver: dict[str, object] = {"name": "zero", "version": __version__}
+    if PROJECT_URL:
+        driver["informationUri"] = PROJECT_URL
+    driver["rules"] = rules
     log = {"$schema": "https://json.schemastore.org/sarif-2.1.0.json", "version": "2.1.0",
            "runs": [{"originalUriBaseIds": {"%SRCROOT%": {"uri": Path.cwd().as_uri() + "/"}},
-                     "tool": {"driver": {"name": "zero", "version": __version__,
-                                         "informationUri": "https://zero.invalid/", "rules": rules}},
+                     "tool": {"driver": driver}, "invocations": [invocation],
                      "results": res, "columnKind": "unicodeCodePoints"}]}
     stream.write(json.dumps(log, indent=2) + "\n")
 

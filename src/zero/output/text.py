@@ -45,11 +45,27 @@ def _window(text: str, start: int, end: int) -> tuple[str, int, int]:
     return prefix + cut + suffix, start + shift, min(end + shift, len(prefix) + len(cut))
 
 
-def printable(text: str) -> str:
-    """Make control characters and stray bytes visible."""
+_ESCAPES = {"\n": "\\n", "\r": "\\r"}
+
+
+def _escaped(ch: str) -> str:
+    """A control character or a lone surrogate as its escape: ``\\n``, ``\\r``, ``\\x1b``;
+    an undecodable byte kept by ``surrogateescape`` as that byte, ``\\xff``."""
+    code = ord(ch)
+    if ch in _ESCAPES:
+        return _ESCAPES[ch]
+    if 0xDC80 <= code <= 0xDCFF:
+        return f"\\x{code - 0xDC00:02x}"
+    return f"\\x{code:02x}" if code <= 0xFF else f"\\u{code:04x}"
+
+
+def printable(text: str, escape: bool = False) -> str:
+    """Make control characters and stray bytes visible: each one character wide, as U+FFFD (the
+    default: a source line keeps its columns under its caret), or as its escape (``escape``: a
+    file name or a message on one line of a report, ``\\n``, ``\\r``, ``\\xff``)."""
     return "".join(
         ch if ch == "\t" or (" " <= ch < "\x7f") or (ord(ch) > 0x9F and not 0xD800 <= ord(ch) <= 0xDFFF)
-        else "\ufffd"
+        else _escaped(ch) if escape else "\ufffd"
         for ch in text
     )
 
