@@ -240,10 +240,13 @@ class Config:
         table = "[tool.zero]" if self.path is None or self.path.name == "pyproject.toml" else None
         prefix = "tool.zero." if table else ""
         source = f"# from {self.path}" if self.path else "# no configuration file: defaults"
+        if self.parent is not None and self.parent.path is not None:
+            source += f" over {self.parent.path} (the settings it does not set are that file's)"
         lines = [source, *([table] if table else []), f"select = {arr(self.select)}",
                  f"extend-select = {arr(self.extend_select)}",
                  f"ignore = {arr(self.ignore)}", f"include = {arr(self.include)}",
-                 f"exclude = {arr(self.exclude)}"]
+                 f"exclude = {arr(self.exclude)}", f"extend-exclude = {arr(self.extend_exclude)}",
+                 f"respect-gitignore = {'true' if self.respect_gitignore else 'false'}"]
         if self.param_desc:
             lines.append(f'param-desc = "{self.param_desc}"')
         if self.kernel:
