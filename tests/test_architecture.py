@@ -181,10 +181,10 @@ def test_one_error_type() -> None:
 
 
 def readme_tree() -> set[str]:
-    """The files of the README's layout tree (``src/zero/`` block), as paths below ``src/zero``."""
-    readme = (ROOT / "README.md").read_text(encoding="utf-8")
-    section = readme.split("## Layout", 1)[1].split("\n## ", 1)[0]
-    block = section.split("src/zero/\n", 1)[1].split("```", 1)[0]
+    """The files of the layout tree in the architecture page (``src/zero/`` block), as paths below
+    ``src/zero``."""
+    page = (ROOT / "docs" / "contributing" / "architecture.md").read_text(encoding="utf-8")
+    block = page.split("src/zero/\n", 1)[1].split("```", 1)[0]
     out: set[str] = set()
     folder = ""
     for line in block.splitlines():
