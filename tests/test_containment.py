@@ -243,7 +243,8 @@ def test_every_promise_a_test_names_is_in_the_readme() -> None:
         return " ".join(text.replace("*", "").replace("`", "").split())
 
     # the README's promises now live in the documentation site's pages (docs/reading-lists.md)
-    readme = plain(" ".join(p.read_text(encoding="utf-8") for p in [ROOT / "README.md", *(ROOT / "docs").rglob("*.md")]))
+    pages = [ROOT / "README.md", *(ROOT / "docs").rglob("*.md")]
+    readme = plain(" ".join(p.read_text(encoding="utf-8") for p in pages))
     quoted = []
     for path in (ROOT / "tests").rglob("*.py"):
         for m in re.finditer(r'README: "([A-Za-z][^"]*)"', path.read_text(encoding="utf-8")):

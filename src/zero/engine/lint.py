@@ -186,7 +186,12 @@ def lint_tree(tree: Tree, registry: Registry, options: LintOptions | None = None
               source: str | None = None, json_source: bool = False) -> LintResult:
     """Lint the list a tree makes; findings point at the structured file where known (in JSON,
     which its reader does not locate, found in ``source`` when there are findings)."""
-    from zero.structured.tree import encode_list, structured_path, to_list_text  # start-up: not for lists
+    from zero.structured.tree import (  # start-up: not for lists
+        encode_list,
+        source_span,
+        structured_path,
+        to_list_text,
+    )
 
     written = to_list_text(tree)
     data = encode_list(tree, written.text)
@@ -217,14 +222,12 @@ def lint_tree(tree: Tree, registry: Registry, options: LintOptions | None = None
                 positions = scan_json(source)
             at = positions.get(leaf.path)
             if at is not None:
-                leaf = replace(leaf, line=at.line, column=at.column)
+                leaf = replace(leaf, line=at.line, column=at.column, key_at=at.key_at)
         if leaf is None:
             span = Span(1, 1, 1, 1)
             message = f"(list line {d.span.line}) {d.message}"
         else:
-            line = leaf.line or 1
-            col = leaf.column or 1
-            span = Span(line, col, line, col + len(str(leaf.value)))
+            span = source_span(leaf, doc, d.span)  # a key rule's finding on the key, any other on the value
             message = f"{structured_path(leaf.path)}: " + re.sub(r"\bline (\d+)", relocate, d.message)
         out.append(replace(d, span=span, message=message, fix=None, related=()))
     out.sort(key=lambda d: d.sort_key())

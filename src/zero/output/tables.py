@@ -6,13 +6,17 @@ from __future__ import annotations
 
 import sys
 from collections.abc import Iterable, Sequence
-from typing import TextIO
+from typing import TYPE_CHECKING, TextIO
 
 from zero.catalog.ids import fixed, g_code
 from zero.diff import ADDED, CHANGED, COMMENT, REMOVED, SAME, Change
 from zero.machine.effective import Scope
 from zero.machine.limits import Ip247Violation, LimitRow
 from zero.output.text import use_color
+
+if TYPE_CHECKING:
+    from rich.console import Console
+    from rich.table import Table
 
 
 def format_delta(c: Change) -> str:
@@ -54,9 +58,48 @@ def rows(changes: Iterable[Change]) -> list[tuple[str, list[tuple[str, ...]]]]:
     for c in changes:
         if not out or out[-1][0] != c.group:
             out.append((c.group, []))
-        notes = "  ".join(f"({n})" for n in (c.note, "restart" if c.restart else "") if n)
-        out[-1][1].append((_MARK[c.kind], c.key, c.param_id or "", _values(c), format_change(c), notes))
+        out[-1][1].append((_MARK[c.kind], c.key, c.param_id or "", _values(c), format_change(c),
+                           "  ".join(_notes(c))))
     return out
+
+
+def _notes(c: Change) -> list[str]:
+    return [f"({n})" for n in (c.note, "restart" if c.restart else "") if n]
+
+
+def fold(phrases: Sequence[str], width: int, first: str = "", indent: str = "    ", sep: str = "  ") -> list[str]:
+    """Phrases on lines of at most ``width`` columns, joined by ``sep``; the first line starts with
+    ``first``, the others with ``indent``. A phrase moves whole to the next line; only one longer than
+    a line breaks, between its words. Nothing breaks inside a word (a value, an ID, a key): a word
+    longer than a line stands whole on a line of its own, the one case a line is wider than ``width``."""
+    from rich.cells import cell_len  # start-up: rich only on a terminal
+
+    lines: list[str] = []
+    line = ""  # the line being filled, with its indent; "" before its first phrase
+
+    def lead() -> str:
+        return indent if lines else first
+
+    for phrase in (p for p in phrases if p):
+        if line and cell_len(line + sep + phrase) <= width:
+            line += sep + phrase
+            continue
+        if line:
+            lines.append(line)
+        line = lead() + phrase
+        if cell_len(line) <= width or " " not in phrase:
+            continue
+        line = ""
+        for word in phrase.split(" "):  # a phrase longer than a line: between its words
+            if line and cell_len(line + " " + word) <= width:
+                line += " " + word
+                continue
+            if line:
+                lines.append(line)
+            line = lead() + word
+    if line:
+        lines.append(line)
+    return lines
 
 
 def render_plain(changes: list[Change], header: str) -> str:
@@ -89,23 +132,48 @@ def render_diff(changes: Sequence[Change], header: str, stream: TextIO | None = 
         stream.write(render_plain(list(changes), header))
         stream.write(summary(list(changes)) + "\n")
         return
-    from rich.console import Console  # start-up: rich only on a terminal
+    from rich.cells import cell_len  # start-up: rich only on a terminal
+    from rich.console import Console  # start-up: as above
     from rich.table import Table  # start-up: as above
 
     console = Console(file=stream, force_terminal=True, highlight=False, emoji=False, markup=False)
     console.print(header, style="bold")
     styles = {"+": "green", "-": "red", "~": "yellow", "=": "dim", "#": "cyan"}
-    for group, cells in rows(changes):
+    tables = []
+    grouped = rows(changes)
+    names = ("", "key", "ID", "old → new", "change", "")
+    widths = [max((cell_len(r[i]) for _, cells in grouped for r in cells), default=0) for i in range(len(names))]
+    for group, cells in grouped:
         table = Table(title=group, title_justify="left", title_style="bold", box=None, pad_edge=False)
-        for i, name in enumerate(("", "key", "ID", "old → new", "change", "")):
-            if name == "change":  # a delta or the bits that changed: never cut
-                table.add_column(name, no_wrap=True, min_width=max((len(r[i]) for r in cells), default=0))
-            else:  # values and notes fold onto the next line rather than lose characters
-                table.add_column(name, no_wrap=name in ("key", "ID"), overflow="fold")
+        for name, width in zip(names, widths, strict=True):  # the columns of every group aligned
+            # nothing is cut or folded: where the tables are too wide, the changes are records
+            table.add_column(name, no_wrap=True, min_width=max(width, cell_len(name)))
         for r in cells:
             table.add_row(*r, style=styles.get(r[0], ""))
-        console.print(table)
+        tables.append(table)
+    if all(_fits(console, t) for t in tables):
+        for table in tables:
+            console.print(table)
+    else:  # too narrow for the tables: a record per change, its values never split (see fold)
+        shown: str | None = None
+        for c in changes:
+            if c.group != shown:
+                shown = c.group
+                console.print(c.group, style="bold")
+            style = styles.get(_MARK[c.kind], "")
+            for line in fold([f"{_MARK[c.kind]} {c.key}", c.param_id or ""], console.width):
+                console.print(line, style=style, soft_wrap=True)
+            for line in fold([_values(c), format_change(c), *_notes(c)], console.width, "    ", "      "):
+                console.print(line, soft_wrap=True)
     console.print(summary(list(changes)), style="bold")
+
+
+def _fits(console: Console, table: Table) -> bool:
+    """Does the table fit the terminal at its natural width (no cell cut or wrapped)?"""
+    from rich.measure import Measurement  # start-up: rich only on a terminal
+
+    natural = Measurement.get(console, console.options.update_width(1 << 16), table).maximum  # unclamped
+    return natural <= console.width
 
 
 def _ip247_line(v: Ip247Violation) -> str:
@@ -128,29 +196,24 @@ def render_limits(rows: Sequence[LimitRow], violations: Sequence[Ip247Violation]
         from rich.console import Console  # start-up: rich only on a terminal
         from rich.table import Table  # start-up: as above
 
-        table = Table(title="soft limits in the programming coordinate system", title_justify="left",
-                      box=SIMPLE_HEAD, pad_edge=False, collapse_padding=True)
-        for i, name in enumerate(head):
-            # numbers are never cut: their column is as wide as the widest one; the note folds
-            widest = max((len(c[i]) for c in cells), default=0)
-            if i in _NUMBERS:
-                table.add_column(name, justify="right", no_wrap=True, min_width=widest)
-            elif i == len(head) - 1:
-                table.add_column(name, overflow="fold", ratio=1, min_width=8)
-            else:
-                table.add_column(name, no_wrap=True, min_width=widest)
+        title = "soft limits in the programming coordinate system"
+        table = Table(title=title, title_justify="left", box=SIMPLE_HEAD, pad_edge=False,
+                      collapse_padding=True, show_edge=False)
+        shown = len(head) if any(c[-1] for c in cells) else len(head) - 1  # the notes, where there are any
+        for i, name in enumerate(head[:shown]):  # nothing is cut or folded: too wide, and it is records
+            table.add_column(name, justify="right" if i in _NUMBERS else "left", no_wrap=True)
         for c in cells:
-            table.add_row(*c)
+            table.add_row(*c[:shown])
         console = Console(file=stream, force_terminal=True, highlight=False, emoji=False, markup=False)
-        needed = sum(max(len(head[i]), *(len(c[i]) for c in cells)) if cells else len(head[i])
-                     for i in range(len(head) - 1)) + 2 * len(head) + 8
-        if needed <= console.width:
+        if _fits(console, table):
             console.print(table)
-        else:  # too narrow for the table: one line per row, nothing cut (a long line wraps)
-            console.print("soft limits in the programming coordinate system", style="bold")
+        else:  # too narrow for the table: a record per row, folded between its parts (see fold)
+            console.print(title, style="bold")
             for c in cells:
-                console.print(f"ch {c[0]} {c[1]} axis {c[2]} ({c[3]}): ACS {c[4]} .. {c[5]}, offset {c[6]}, "
-                              f"PCS {c[7]} .. {c[8]}" + (f" ({c[9]})" if c[9] else ""))
+                parts = [f"ch {c[0]} {c[1]} axis {c[2]} ({c[3]}):", f"ACS {c[4]} .. {c[5]},",
+                         f"offset {c[6]},", f"PCS {c[7]} .. {c[8]}", f"({c[9]})" if c[9] else ""]
+                for line in fold(parts, console.width, sep=" "):
+                    console.print(line, soft_wrap=True)
         for v in violations:
             console.print(_ip247_line(v), style="bold red")
         return

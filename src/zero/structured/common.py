@@ -70,6 +70,7 @@ class Found:
     column: int
     after: str | None = None
     before: list[str] = field(default_factory=list)
+    key_at: tuple[int, int, int, int] | None = None  # its key's text, as :attr:`Leaf.key_at`
 
 
 def make_leaf(segments: list[str], value: Scalar, native: str, path: str, line: int | None,
@@ -209,6 +210,7 @@ def walk_mapping(data: dict[str, Any], path: str,
             if f is not None:
                 leaf.before = f.before
                 leaf.after = f.after
+                leaf.key_at = f.key_at
             leaves.append(leaf)
         else:
             stack.pop()

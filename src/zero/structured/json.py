@@ -18,7 +18,7 @@ from zero.structured.common import (
     number_too_long,
     walk_mapping,
 )
-from zero.structured.tree import META_KEY, Tree
+from zero.structured.tree import META_KEY, Tree, is_index, split_key
 
 # ------------------------------------------------------------------------- JSON
 
@@ -65,12 +65,19 @@ _TOKEN = re.compile(r'"(?:[^"\\]|\\.)*"|[{}\[\]:,]|[^\s{}\[\]:,"]+')
 
 def scan_json(text: str) -> dict[tuple[str, ...], Found]:
     """The line and column (1-based; a string's first character after its quote) of every value,
-    by its key path: JSON readers give none, and findings belong where the value is written.
-    For text ``json.loads`` has read (so its tokens are well formed). A pass over every token (as
-    long as reading the file): only for a file that has findings to place."""
+    and the text of its key (inside the quotes), by its key path: JSON readers give none, and
+    findings belong where the value (or the key) is written. For text ``json.loads`` has read (so
+    its tokens are well formed). A pass over every token (as long as reading the file): only for a
+    file that has findings to place."""
     found: dict[tuple[str, ...], Found] = {}
     newlines = [m.start() for m in re.finditer("\n", text)]
-    # each open container: [its path, "{" or "[", the key read and not yet given a value, next index]
+
+    def position(at: int) -> tuple[int, int]:
+        line = bisect.bisect_left(newlines, at)
+        return line + 1, at - (newlines[line - 1] + 1 if line else 0) + 1
+
+    # each open container: [its path, "{" or "[", the key read and not yet given a value, next index,
+    # that key's text (line, column, end line, end column)]
     frames: list[list[Any]] = []
     expect_key = False
     for m in _TOKEN.finditer(text):
@@ -84,23 +91,24 @@ def scan_json(text: str) -> dict[tuple[str, ...], Found]:
             expect_key = False
             continue
         if top is not None and top[1] == "{" and expect_key:
-            top[2] = json.loads(tok)  # a key
+            key = json.loads(tok)  # a key: its path segments, as the reader splits a dotted one
+            top[2] = (key,) if is_index(key) else split_key(key) or (key,)
+            top[4] = (*position(m.start() + 1), *position(m.end() - 1))
             expect_key = False
             continue
         if top is None:
             here: tuple[str, ...] = ()
         elif top[1] == "{":
-            here = (*top[0], top[2])
+            here = (*top[0], *top[2])
         else:
             here = (*top[0], str(top[3]))
             top[3] += 1
         if tok in "{[":
-            frames.append([here, tok, None, 0])
+            frames.append([here, tok, None, 0, None])
             expect_key = tok == "{"
             continue
-        at = m.start() + (tok[0] == '"')
-        line = bisect.bisect_left(newlines, at)
-        found[here] = Found(line + 1, at - (newlines[line - 1] + 1 if line else 0) + 1)
+        line, column = position(m.start() + (tok[0] == '"'))
+        found[here] = Found(line, column, key_at=top[4] if top is not None and top[1] == "{" else None)
     return found
 
 

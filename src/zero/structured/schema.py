@@ -8,6 +8,7 @@ YAML extension, taplo, any JSON tool) validate while the engineer types.
 
 from __future__ import annotations
 
+import math
 import re
 from typing import Any
 
@@ -73,8 +74,37 @@ def _constant_bounds(rng: Range | None) -> tuple[float | None, bool, float | Non
     return b.low, b.low_strict, b.high, b.high_strict
 
 
+# JSON tools read numbers into 64-bit machine types: taplo (serde_json) refuses a schema with an integer
+# beyond u64/i64 or a float it rounds to infinity ("number out of range"), JavaScript (VS Code) reads
+# every number as a double. So an integer is written as one only within i64; anything else as a double.
+_I64_MIN, _I64_MAX = -(2**63), 2**63 - 1
+
+
 def _num(x: float) -> int | float:
-    return int(x) if float(x).is_integer() else x
+    """A number for the schema: an integer within i64 as an integer (``1``, not ``1.0``), any other
+    number as a double in exponent form where large (REAL64's limit ``1.7976931348623157e+308``, not
+    its 309 digits, which overflow taplo's reader)."""
+    if isinstance(x, int):
+        return x if _I64_MIN <= x <= _I64_MAX else float(x)
+    if math.isfinite(x) and x.is_integer() and _I64_MIN <= x <= _I64_MAX:
+        return int(x)
+    return x
+
+
+def _bound(x: float, upper: bool) -> int | float:
+    """A minimum or maximum for the schema, never stricter than ``x``: :func:`_num`, and an integer
+    beyond i64 (UNS64's and ADDRESS's maximum 2**64-1) as the nearest double on the far side. For
+    UNS64 that is 2**64 (1.8446744073709552e+19): a validator of exact integers (Python's) then admits
+    one value too many (2**64, which `zero lint` reports as R004), one of doubles (JavaScript) reads
+    2**64-1 as 2**64 and still admits it; an exclusive 2**64 would be exact for the first and refuse
+    the largest valid value for the second. TOML holds no integer beyond i64 anyway."""
+    n = _num(x)
+    if isinstance(n, float) and isinstance(x, int) and n != x:
+        if upper and n < x:
+            n = math.nextafter(n, math.inf)
+        elif not upper and n > x:
+            n = math.nextafter(n, -math.inf)
+    return n
 
 
 def leaf_schema(spec: ParamSpec, registry: Registry) -> dict[str, Any]:
@@ -103,9 +133,9 @@ def leaf_schema(spec: ParamSpec, registry: Registry) -> dict[str, Any]:
         if hi is None and t_hi is not None:
             hi, hi_x = t_hi, False
         if lo is not None:
-            number["exclusiveMinimum" if lo_x else "minimum"] = _num(lo)
+            number["exclusiveMinimum" if lo_x else "minimum"] = _bound(lo, upper=False)
         if hi is not None:
-            number["exclusiveMaximum" if hi_x else "maximum"] = _num(hi)
+            number["exclusiveMaximum" if hi_x else "maximum"] = _bound(hi, upper=True)
         dflt = default_number(spec)
         if dflt is not None and len(number) > 1:
             # The default itself is never faulty, even where a vendor range excludes it.
@@ -120,7 +150,7 @@ def leaf_schema(spec: ParamSpec, registry: Registry) -> dict[str, Any]:
     if spec.default and spec.default.strip() not in NO_DEFAULT:
         d = spec.default.strip()
         if re.fullmatch(r"-?[0-9]+", d) and spec.type != "STRING":
-            out["default"] = int(d)
+            out["default"] = _num(int(d))
         else:
             out["default"] = d
     return out

@@ -84,10 +84,12 @@ def write_toml(tree: Tree) -> str:
 # ------------------------------------------------------------------------- TOML
 
 
-def _toml_key_at(s: str, i: int) -> tuple[list[str], int] | None:
-    """Parse a dotted TOML key at ``s[i:]``; return segments and the position after it."""
+def _toml_key_at(s: str, i: int) -> tuple[list[str], int, tuple[int, int]] | None:
+    """Parse a dotted TOML key at ``s[i:]``; return segments, the position after it, and where its
+    text runs (0-based, end exclusive: from its first segment to its last, inside their quotes)."""
     segs: list[str] = []
     n = len(s)
+    first = -1
     while True:
         while i < n and s[i] in " \t":
             i += 1
@@ -101,25 +103,30 @@ def _toml_key_at(s: str, i: int) -> tuple[list[str], int] | None:
                 segs.append(json.loads(s[i: j + 1]))
             except ValueError:
                 return None
+            text = (i + 1, j)
             i = j + 1
         elif i < n and s[i] == "'":
             j = s.find("'", i + 1)
             if j < 0:
                 return None
             segs.append(s[i + 1: j])
+            text = (i + 1, j)
             i = j + 1
         else:
             m = _TOML_BARE_RE.match(s, i)
             if not m:
                 return None
             segs.append(m.group())
+            text = m.span()
             i = m.end()
+        if first < 0:
+            first = text[0]
         while i < n and s[i] in " \t":
             i += 1
         if i < n and s[i] == ".":
             i += 1
             continue
-        return segs, i
+        return segs, i, (first, text[1])
 
 
 def _toml_value_end(s: str, i: int) -> int | None:
@@ -225,7 +232,8 @@ def scan_toml(text: str) -> tuple[dict[tuple[str, ...], Found], list[str]]:
         parsed = _toml_key_at(line, 0)
         if parsed is None:
             continue
-        segs, i = parsed
+        segs, i, (key_start, key_end) = parsed
+        key_at = (number, key_start + 1, number, key_end + 1)
         while i < len(line) and line[i] in " \t=":
             i += 1
         end = _toml_value_end(line, i)
@@ -233,9 +241,9 @@ def scan_toml(text: str) -> tuple[dict[tuple[str, ...], Found], list[str]]:
         if end is None:
             q = line[i: i + 3]
             open_multiline = q if q in ('"""', "'''") else None
-            found[key] = Found(number, i + 1, None, pending)
+            found[key] = Found(number, i + 1, None, pending, key_at)
         else:
-            found[key] = Found(number, i + 1, strip_comment(line[end:]), pending)
+            found[key] = Found(number, i + 1, strip_comment(line[end:]), pending, key_at)
         pending = []
         tail = []
     if not in_meta:

@@ -26,6 +26,7 @@ from collections.abc import Iterator
 from typing import Any
 
 from zero.catalog.registry import Registry
+from zero.diagnostics import Span
 from zero.errors import ZeroError
 from zero.lists.encoding import declarable
 from zero.lists.model import Blank, Comment, Document, End, Entry, Invalid
@@ -60,6 +61,9 @@ class Leaf:
     line: int | None = None  # where it was read (1-based), when the reader knows
     column: int | None = None
     native: str = "str"  # the reader's own type: int, float, str ("plain": YAML text without quotes)
+    # the text of its key where the reader knows it: line, column, end line, end column (1-based, end
+    # exclusive; a quoted key's text inside its quotes): where a finding about the key points
+    key_at: tuple[int, int, int, int] | None = None
 
 
 @record(eq=False)
@@ -76,6 +80,21 @@ class Tree:
         if self._nested is None:
             self._nested = nest(self.leaves)
         return self._nested
+
+
+def source_span(leaf: Leaf, written: Document, span: Span) -> Span:
+    """Where a finding lies in the YAML/TOML/JSON file ``leaf`` was read from, given its ``span``
+    in ``written``, the list text the tree was written as (and linted): a finding within the key of
+    the leaf's line (R001, R002, R010, R013: the key rules) on the key's text, any other on the
+    value."""
+    line = leaf.line or 1
+    column = leaf.column or 1
+    if leaf.key_at is not None and span.line == span.end_line and 0 < span.line <= len(written.items):
+        e = written.items[span.line - 1]  # one item per line
+        if (type(e) is Entry and e.line == span.line and e.key_start < e.key_end
+                and e.key_start <= span.column - 1 and span.end_column - 1 <= e.key_end):
+            return Span(*leaf.key_at)
+    return Span(line, column, line, column + len(str(leaf.value)))
 
 
 # --------------------------------------------------------------------------- keys
@@ -326,7 +345,8 @@ def from_document(doc: Document, registry: Registry, kind: str | None = None) ->
         value, native = _scalar_from_list(item.value, spec.type if spec else None)
         after = item.comment.rstrip(" \t") if item.comment is not None else None
         leaf = Leaf(item.key_text, path, value, [normalized(x) for x in pending], after,
-                    item.line, item.value_start + 1, native)
+                    item.line, item.value_start + 1, native,
+                    (item.line, item.key_start + 1, item.line, item.key_end + 1))
         if any(x != normalized(x) for x in pending):
             exact_of[id(leaf)] = pending
         pending = []

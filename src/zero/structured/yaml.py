@@ -131,7 +131,7 @@ def _yaml_meta(meta: dict[str, Any]) -> list[str]:
 class _Frame:
     """One open mapping or sequence while streaming YAML events."""
 
-    __slots__ = ("container", "is_map", "key", "key_line", "keys", "meta", "segs")
+    __slots__ = ("container", "is_map", "key", "key_at", "key_line", "keys", "meta", "segs")
 
     def __init__(self, is_map: bool, segs: list[str], meta: bool, container: Any = None) -> None:
         self.is_map = is_map
@@ -140,6 +140,7 @@ class _Frame:
         self.container = container
         self.key: str | None = None
         self.key_line = 0
+        self.key_at: tuple[int, int, int, int] | None = None  # the pending key's text
         self.keys: dict[str, int] = {}
 
 
@@ -171,6 +172,13 @@ def _meta_scalar(value: str, tag: str) -> Any:
     if tag == "null":
         return None
     return value
+
+
+def _text_at(e: Any) -> tuple[int, int, int, int]:
+    """Where a scalar's text runs (1-based, end exclusive; a quoted one's inside its quotes)."""
+    start, end = e.start_mark, e.end_mark
+    inside = 1 if e.style in ("'", '"') else 0
+    return start.line + 1, start.column + 1 + inside, end.line + 1, end.column + 1 - inside
 
 
 def _yaml_stream(text: str, path: str) -> tuple[list[tuple[int, int, int, Leaf]], Any, range]:
@@ -234,6 +242,7 @@ def _yaml_stream(text: str, path: str) -> tuple[list[tuple[int, int, int, Leaf]]
                     f.keys[key] = line + 1
                     f.key = key
                     f.key_line = line
+                    f.key_at = _text_at(e)
                     continue
                 # a value: of the pending key, or an item of a (meta) sequence
                 key = f.key
@@ -288,6 +297,7 @@ def _yaml_stream(text: str, path: str) -> tuple[list[tuple[int, int, int, Leaf]]
                     _refuse_reread(tag, e.value, where, path, f.key_line + 1, m.column + 1)
                     native = tag if tag in ("int", "float") else "plain"  # text written without quotes
                 leaf = make_leaf(here, e.value, native, path, f.key_line + 1, m.column + 1)
+                leaf.key_at = f.key_at
                 spans.append((f.key_line, e.end_mark.line, e.end_mark.column, leaf))
             elif t is MapEnd or t is SeqEnd:
                 f = stack.pop()
