@@ -11,7 +11,11 @@ import pytest
 import typer.main
 from hypothesis import given, settings
 from hypothesis import strategies as st
-from typer._click.exceptions import ClickException
+
+try:  # typer bundles its own click from 0.2x on; before, it used the click package
+    from typer._click.exceptions import ClickException  # type: ignore[import-not-found,unused-ignore]
+except ImportError:  # pragma: no cover - older typer
+    from click.exceptions import ClickException  # type: ignore[import-not-found,no-redef,unused-ignore]
 
 from zero.cli.app import app
 from zero.cli.options import LINT_OPTIONS, parse_lint_args
@@ -29,7 +33,7 @@ def typer_params(args: list[str]) -> dict[str, Any] | None:
     for name, value in params.items():
         if isinstance(value, Enum):
             value = value.value
-        if name in ("select", "ignore", "extend_select", "paths"):
+        if name in ("select", "ignore", "extend_select", "config", "paths"):
             value = list(value or [])
         out[name] = value
     return out

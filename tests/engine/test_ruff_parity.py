@@ -123,6 +123,10 @@ def test_inline_config_on_the_command_line(tmp_path: Path) -> None:
     assert run.stdout.strip() and all(" R005 " in line for line in run.stdout.splitlines()), run.stdout
     none = zero_cli("lint", "--isolated", "--config", 'ignore=["R"]', "--output-format", "concise", str(bad))
     assert " R005 " not in none.stdout
+    warn = FIXTURES / "rules" / "M006" / "fail.lis"  # repeated, each a layer over the one before
+    both = zero_cli("lint", "--isolated", "--config", 'select=["R005"]', "--config", 'extend-select=["M006"]',
+                    "--output-format", "concise", str(bad), str(warn))
+    assert {line.split(" ")[1] for line in both.stdout.splitlines()} == {"R005", "M006"}
 
 
 def test_respect_gitignore_false_walks_ignored_files(tmp_path: Path) -> None:

@@ -297,3 +297,15 @@ def test_concise_escapes_a_newline_in_the_message_of_an_unreadable_file(tmp_path
     (line,) = out.getvalue().splitlines()
     escaped = os.fspath(gone).replace("\n", "\\n")
     assert line.startswith(f"{escaped}:1:1: F001 error ")
+
+
+def test_strict_makes_warnings_junit_failures_on_the_command_line(tmp_path: Path) -> None:
+    """`zero lint --strict --output-format junit`: the run exits 1 on a warning, so the warning is a
+    failing test case (it was a passing one, `failures="0"`)."""
+    from conftest import FIXTURES, zero_cli
+
+    warn = FIXTURES / "rules" / "M006" / "fail.lis"
+    plain = zero_cli("lint", "--isolated", "--output-format", "junit", str(warn))
+    strict = zero_cli("lint", "--isolated", "--strict", "--output-format", "junit", str(warn))
+    assert plain.code == 0 and 'failures="0"' in plain.stdout
+    assert strict.code == 1 and 'failures="1"' in strict.stdout and "<failure" in strict.stdout

@@ -9,19 +9,22 @@ from __future__ import annotations
 
 import inspect
 import json
+import shutil
 import sys
-from collections.abc import Callable
-from enum import StrEnum
+import textwrap
+from collections.abc import Callable, Sequence
+from enum import Enum
 from pathlib import Path
 from typing import Annotated, Any
 
 import typer
+import typer.core
 
 from zero import __version__
 from zero.catalog.registry import KINDS, ParamSpec, Registry
 from zero.cli import exits
-from zero.cli.options import LINT_OPTIONS, PATHS_HELP, Option
-from zero.cli.run import REGISTRIES, echo, read_stdin, render_lint
+from zero.cli.options import LINT_OPTIONS, PATHS_HELP, Option, close_matches
+from zero.cli.run import REGISTRIES, check_kind, echo, kind_completions, read_stdin, render_lint, rule_completions
 from zero.cli.run import lint as run_lint_command
 from zero.diff import SAME, DiffOptions, show_lines
 from zero.engine.commands import parse_kind, run_format
@@ -36,27 +39,273 @@ from zero.output.text import render_text
 from zero.rules import RULES
 from zero.structured.schema import build_schema
 
+# ------------------------------------------------------------------------------ help
+# The help and the usage line are written here from the parameters (their names, metavar, help,
+# default, environment variable), not by typer: what typer/click print differs between their
+# versions (typer 0.29 shows Python types: `PATH... <list[Path]>`, `{FILE...}...`).
+
+HELP_WIDTH = 80  # help lines never exceed this, whatever the terminal
+_COLUMN = 30  # the widest option column before its text goes to the next line
+
+
+def help_width() -> int:
+    """The width of the help: the terminal's (COLUMNS), at most :data:`HELP_WIDTH`."""
+    return max(min(shutil.get_terminal_size((HELP_WIDTH, 24)).columns, HELP_WIDTH), 40)
+
+
+def _wrap(text: str, width: int, indent: str, first: str | None = None) -> list[str]:
+    """Paragraphs (blank-line separated) rewrapped to ``width``; words never broken."""
+    out: list[str] = []
+    for n, paragraph in enumerate(p for p in inspect.cleandoc(text).split("\n\n") if p.strip()):
+        if n:
+            out.append("")
+        out.extend(textwrap.wrap(" ".join(paragraph.split()), width, initial_indent=first if first and not n
+                                 else indent, subsequent_indent=indent, break_long_words=False,
+                                 break_on_hyphens=False))
+    return out
+
+
+def _is_argument(param: Any) -> bool:
+    return getattr(param, "param_type_name", "") == "argument"
+
+
+def _placeholder(param: Any) -> str:
+    """An argument's or option value's placeholder: its metavar, or its name in capitals."""
+    name = getattr(param, "metavar", None) or (param.name or "").upper()
+    return str(name)
+
+
+def _usage_piece(param: Any) -> str:
+    name = _placeholder(param)
+    many = getattr(param, "nargs", 1) != 1
+    piece = name if param.required else f"[{name}]"
+    return f"{piece}..." if many else piece
+
+
+def usage_line(command: Any, ctx: Any) -> str:
+    """``Usage: zero lint [OPTIONS] [PATH]...``: arguments by their placeholders."""
+    pieces = ["[OPTIONS]"] + [_usage_piece(p) for p in command.params if _is_argument(p) and not p.hidden]
+    if isinstance(command, typer.core.TyperGroup):
+        pieces.append("COMMAND [ARGS]...")
+    lines = textwrap.wrap(" ".join(pieces), help_width(), initial_indent=f"Usage: {ctx.command_path} ",
+                          subsequent_indent=" " * 8, break_long_words=False, break_on_hyphens=False)
+    return "\n".join(lines)
+
+
+def _shown(value: Any) -> str:
+    if isinstance(value, Enum):
+        value = value.value
+    if isinstance(value, (list, tuple)):
+        return ", ".join(_shown(v) for v in value)
+    return str(value)
+
+
+def _extras(param: Any) -> list[str]:
+    """``default: …``, ``env var: …``, ``required``: what the help adds in brackets."""
+    extras: list[str] = []
+    show_default = getattr(param, "show_default", None)
+    default = param.default
+    if isinstance(show_default, str):
+        extras.append(f"default: {show_default}")
+    elif show_default is not False and not callable(default):
+        if getattr(param, "is_flag", False):
+            if param.secondary_opts:  # --strict / --no-strict: which one holds
+                name = param.opts[0] if default else param.secondary_opts[0]
+                extras.append(f"default: {name.lstrip('-')}")
+        elif default not in (None, [], (), "") and not param.required:
+            extras.append(f"default: {_shown(default)}")
+    envvar = getattr(param, "envvar", None)
+    if envvar and getattr(param, "show_envvar", True):
+        extras.append(f"env var: {envvar if isinstance(envvar, str) else ', '.join(envvar)}")
+    if param.required and _is_argument(param):
+        extras.append("required")
+    return extras
+
+
+def _record(param: Any) -> tuple[str, str]:
+    """One line of the Arguments or Options section: the names, and the help text."""
+    if _is_argument(param):
+        names = _placeholder(param)
+    else:
+        opts = sorted(param.opts, key=lambda o: len(o) - len(o.lstrip("-")))  # -o before --output
+        names = ", ".join(opts)
+        if param.secondary_opts:
+            names += " / " + ", ".join(param.secondary_opts)
+        if not getattr(param, "is_flag", False) and not getattr(param, "count", False):
+            names += f" {_placeholder(param)}"
+    text = getattr(param, "help", None) or ""
+    extras = _extras(param)
+    if extras:
+        text = f"{text}  [{'; '.join(extras)}]" if text else f"[{'; '.join(extras)}]"
+    return names, text
+
+
+def _section(title: str, rows: Sequence[tuple[str, str]], width: int) -> list[str]:
+    """A titled definition list: names in the first column, the text wrapped beside them."""
+    if not rows:
+        return []
+    column = min(max(len(name) for name, _ in rows), _COLUMN)
+    out = ["", f"{title}:"]
+    for name, text in rows:
+        indent = " " * (2 + column + 2)
+        first = f"  {name:<{column}}  "
+        if len(name) > column:
+            out.append(f"  {name}")
+            first = indent
+        out.extend(_wrap(text, width, indent, first) if text.strip() else [first.rstrip()])
+    return out
+
+
+def _short_help(command: Any, limit: int) -> str:
+    """The first sentence of a command's help, cut at a word to fit ``limit``."""
+    text = " ".join((getattr(command, "short_help", None) or command.help or "").split("\n\n")[0].split())
+    sentence, dot, _ = text.partition(". ")
+    text = sentence + "." if dot else text
+    if len(text) <= limit:
+        return text
+    return text[:limit - 3].rsplit(" ", 1)[0].rstrip(",;:") + "..."
+
+
+def help_text(command: Any, ctx: Any) -> str:
+    """A command's whole --help: usage, description, arguments, options, commands."""
+    width = help_width()
+    lines = [usage_line(command, ctx)]
+    if command.help:
+        lines += ["", *_wrap(command.help, width, "  ")]
+    visible = [p for p in command.get_params(ctx) if not getattr(p, "hidden", False)]
+    lines += _section("Arguments", [_record(p) for p in visible if _is_argument(p)], width)
+    lines += _section("Options", [_record(p) for p in visible if not _is_argument(p)], width)
+    if isinstance(command, typer.core.TyperGroup):
+        commands = {n: command.get_command(ctx, n) for n in command.list_commands(ctx)}
+        shown = {n: c for n, c in commands.items() if c is not None and not c.hidden}
+        if shown:
+            column = max(len(n) for n in shown)
+            lines += _section("Commands", [(n, _short_help(c, width - column - 6)) for n, c in shown.items()], width)
+    return "\n".join(lines)  # echoed with its newline
+
+
+def _suggest_option(command: Any, ctx: Any, exc: Exception) -> None:
+    """A mistyped option: suggest only a close one (click's cutoff offers ``--jobs`` for ``--bogus``)."""
+    name = getattr(exc, "option_name", None)
+    if not isinstance(name, str) or not hasattr(exc, "possibilities"):
+        return
+    known = [o for p in command.get_params(ctx) if not _is_argument(p) for o in (*p.opts, *p.secondary_opts)]
+    near = close_matches(name, known)
+    exc.possibilities = None  # the message says it, in zero's words
+    exc.message = f"No such option: {name}" + (f" (did you mean {near[0]}?)" if near else "")  # type: ignore[attr-defined]
+
+
+class ZeroCommand(typer.core.TyperCommand):
+    """A typer command whose help, usage line and option suggestions are zero's own."""
+
+    def get_help(self, ctx: Any) -> str:
+        return help_text(self, ctx)
+
+    def get_usage(self, ctx: Any) -> str:
+        return usage_line(self, ctx)
+
+    def format_help(self, ctx: Any, formatter: Any) -> None:
+        formatter.write(help_text(self, ctx))
+
+    def parse_args(self, ctx: Any, args: list[str]) -> list[str]:
+        try:
+            return super().parse_args(ctx, args)
+        except Exception as exc:
+            _suggest_option(self, ctx, exc)
+            raise
+
+
+class ZeroGroup(typer.core.TyperGroup):
+    """The ``zero`` group, with the help of :class:`ZeroCommand`."""
+
+    def get_help(self, ctx: Any) -> str:
+        return help_text(self, ctx)
+
+    def get_usage(self, ctx: Any) -> str:
+        return usage_line(self, ctx)
+
+    def format_help(self, ctx: Any, formatter: Any) -> None:
+        formatter.write(help_text(self, ctx))
+
+    def parse_args(self, ctx: Any, args: list[str]) -> list[str]:
+        try:
+            return super().parse_args(ctx, args)
+        except Exception as exc:
+            _suggest_option(self, ctx, exc)
+            raise
+
+
+# ---------------------------------------------------------------- values, completion
+# Values are checked here, not by typer: typer 0.29 checks them with pydantic and says
+# "Value error, 'xml' is not one of …" or "Input should be greater than or equal to 0".
+
+
+def _bad(ctx: Any, param: Any, message: str) -> Exception:
+    """A bad value, said plainly: which option (or environment variable) gave it, and why."""
+    hint = "'" + "' / '".join(param.opts) + "'"
+    source = ctx.get_parameter_source(param.name) if hasattr(ctx, "get_parameter_source") else None
+    envvar = getattr(param, "envvar", None)
+    if envvar and getattr(source, "name", "") == "ENVIRONMENT":
+        hint = f"{hint} (from the environment variable {envvar})"
+    return typer.BadParameter(message, param_hint=hint)
+
+
+def choice(values: Sequence[str]) -> dict[str, Any]:
+    """``typer.Option`` arguments for a value that must be one of ``values``: checked with a plain
+    message, and completed in the shell."""
+
+    def check(ctx, param, value):  # type: ignore[no-untyped-def]  # typer passes them by position
+        if value is None or value in values:
+            return value
+        near = close_matches(value, values)
+        hint = f" (did you mean {near[0]}?)" if near else ""
+        raise _bad(ctx, param, f"{value!r} is not one of {', '.join(values)}{hint}")
+
+    def complete(incomplete: str) -> list[str]:
+        return [v for v in values if v.startswith(incomplete)]
+
+    return {"callback": check, "autocompletion": complete}
+
+
+def count(minimum: int = 0) -> dict[str, Any]:
+    """``typer.Option`` arguments for a whole number at least ``minimum``, checked with a plain message."""
+
+    def check(ctx, param, value):  # type: ignore[no-untyped-def]  # typer passes them by position
+        if value is None or isinstance(value, int):
+            return value
+        text = value.strip()
+        body = text[1:] if text[:1] in "+-" else text
+        if not body.isdigit() or int(text) < minimum:
+            raise _bad(ctx, param, f"{value!r} is not a whole number of at least {minimum}")
+        return int(text)
+
+    return {"callback": check}
+
+
+def complete_kind(incomplete: str) -> list[tuple[str, str]]:
+    """Shell completion of ``--kind``: the list kinds."""
+    return kind_completions(incomplete)
+
+
+def complete_codes(incomplete: str) -> list[tuple[str, str]]:
+    """Shell completion of ``--select``, ``--ignore``, ``--extend-select`` and ``zero rule``: codes and prefixes."""
+    return rule_completions(incomplete)
+
+
+KIND_OPTION: dict[str, Any] = {"autocompletion": complete_kind, "metavar": "KIND"}
+
 app = typer.Typer(
     name="zero",
     help="Lint, diff and convert ISG kernel CNC parameter lists.",
+    cls=ZeroGroup,
     add_completion=True,
     no_args_is_help=True,
     pretty_exceptions_enable=False,
-    rich_markup_mode=None,  # help text is plain: `[tool.zero]` and `[default: …]` stay as written
+    rich_markup_mode=None,  # no rich panels (the help is zero's own; errors plain)
 )
 
-
-class OutputFormat(StrEnum):
-    text = "text"
-    json = "json"
-
-
-class Format(StrEnum):
-    lis = "lis"
-    yaml = "yaml"
-    toml = "toml"
-    json = "json"
-    xml = "xml"
+REPORTS = ("text", "json")  # the output formats of diff, show, explain and limits
+FORMATS = ("lis", "yaml", "toml", "json", "xml")  # the formats of convert's --to and --from
 
 
 class _State:
@@ -117,30 +366,37 @@ def main_callback(
 # ------------------------------------------------------------------------------ lint
 
 
+_CODE_OPTIONS = ("select", "extend_select", "ignore")
+
+
 def _typer_parameter(option: Option) -> inspect.Parameter:
-    """One ``zero lint`` option from the table as a typer parameter."""
+    """One ``zero lint`` option from the table as a typer parameter (values checked by zero, not typer)."""
     names = [f"{option.flags[0]}/{option.negative}"] if option.negative else list(option.flags)
     extra: dict[str, Any] = {}
     annotation: Any
-    default = option.default
     if option.kind == "flag":
         annotation = bool
     elif option.kind == "multi":
         annotation = list[str] | None
     elif option.choices:
-        choices: Any = StrEnum  # the functional form: one enum per option with choices
-        annotation = choices(option.dest.title().replace("_", ""), [(c, c) for c in option.choices])
-        default = annotation(default)
+        annotation = str
+        extra.update(choice(option.choices))
     elif option.type is int:
-        annotation = int | None
-        extra["min"] = option.minimum
+        annotation = str | None  # read by count(): a plain message for a bad number
+        extra.update(count(option.minimum or 0))
     else:
         annotation = option.type | None
+    if option.dest in _CODE_OPTIONS:
+        extra["autocompletion"] = complete_codes
+    elif option.dest == "kind":
+        extra["autocompletion"] = complete_kind
     if option.metavar:
         extra["metavar"] = option.metavar
+    if option.envvar:
+        extra["envvar"] = option.envvar
     marker = typer.Option(*names, help=option.help, **extra)
     return inspect.Parameter(option.dest, inspect.Parameter.KEYWORD_ONLY,
-                             annotation=Annotated[annotation, marker], default=default)
+                             annotation=Annotated[annotation, marker], default=option.default)
 
 
 def _lint(**params: Any) -> None:
@@ -149,37 +405,37 @@ def _lint(**params: Any) -> None:
     params["select"] = params.get("select") or []
     params["ignore"] = params.get("ignore") or []
     params["extend_select"] = params.get("extend_select") or []
-    params = {k: v.value if isinstance(v, StrEnum) else v for k, v in params.items()}
     params["param_desc"] = params.get("param_desc") or state.param_desc
     _run(lambda: run_lint_command(**params))
 
 
 _paths = inspect.Parameter("paths", inspect.Parameter.POSITIONAL_OR_KEYWORD, default=None,
-                           annotation=Annotated[list[Path] | None, typer.Argument(help=PATHS_HELP, metavar="PATH...")])
+                           annotation=Annotated[list[Path] | None, typer.Argument(help=PATHS_HELP, metavar="PATH")])
 _lint.__signature__ = inspect.Signature(  # type: ignore[attr-defined]
     [_paths, *(_typer_parameter(o) for o in LINT_OPTIONS)])
 _lint.__annotations__ = {p.name: p.annotation for p in _lint.__signature__.parameters.values()}  # type: ignore[attr-defined]
-app.command("lint")(_lint)
+app.command("lint", cls=ZeroCommand)(_lint)
 
 
 # --------------------------------------------------------------------------- convert
 
 
-@app.command()
+@app.command(cls=ZeroCommand)
 def convert(
     inputs: Annotated[list[str], typer.Argument(
-        help="Files to convert (list, YAML, TOML or JSON); - reads standard input.", metavar="FILE...")],
-    to: Annotated[Format | None, typer.Option(
+        help="Files to convert (list, YAML, TOML or JSON); - reads standard input.", metavar="FILE")],
+    to: Annotated[str | None, typer.Option(
         "--to", help="Output format [default: from -o's suffix; yaml for a list, lis otherwise].",
-        metavar="FORMAT")] = None,
-    from_: Annotated[Format | None, typer.Option(
-        "--from", help="Input format [default: from the suffix; lis for standard input].", metavar="FORMAT")] = None,
+        metavar="FORMAT", **choice(FORMATS))] = None,
+    from_: Annotated[str | None, typer.Option(
+        "--from", help="Input format [default: from the suffix; lis for standard input].", metavar="FORMAT",
+        **choice(FORMATS))] = None,
     output: Annotated[str | None, typer.Option(
         "-o", "--output", help="Output file; - or nothing writes to standard output.", metavar="FILE")] = None,
     out_dir: Annotated[Path | None, typer.Option(
         "--out-dir", help="Write one file per input here (name.yaml, name.lis, ...).", metavar="DIR")] = None,
     force: Annotated[bool, typer.Option(help="Replace existing output files.")] = False,
-    kind: Annotated[str | None, typer.Option(help="List kind instead of detecting it.", metavar="KIND")] = None,
+    kind: Annotated[str | None, typer.Option(help="List kind instead of detecting it.", **KIND_OPTION)] = None,
     check: Annotated[bool, typer.Option(
         help="Lint the list a YAML/TOML/JSON input makes and report the findings.")] = True,
     strict: Annotated[bool, typer.Option(
@@ -195,16 +451,16 @@ def convert(
     """Convert lists to XML/YAML/TOML/JSON and back, keeping values, order, comments and layout."""
 
     def body() -> int:
-        forced = parse_kind(kind)
+        forced = parse_kind(check_kind(kind))
         if into is not None:
             if len(inputs) != 1 or output is not None or out_dir is not None or to is not None:
                 raise ZeroError("--into puts one list into an export: give one input and no -o/--out-dir/--to")
             write_into(inputs[0], into, item, _registry, read_stdin,
-                       src=from_.value if from_ else None, kind=forced)
+                       src=from_, kind=forced)
             return exits.OK
         check_convert_options(inputs, output, out_dir)
-        items = convert_inputs(inputs, _registry, read_stdin, src=from_.value if from_ else None,
-                               to=to.value if to else None, output=output, kind=forced, check=check,
+        items = convert_inputs(inputs, _registry, read_stdin, src=from_,
+                               to=to, output=output, kind=forced, check=check,
                                strict=strict, element=item, every_list=out_dir is not None)
         for done in items:
             if done.error is not None and done.findings is None:
@@ -229,7 +485,7 @@ def convert(
 # ------------------------------------------------------------------------ diff, show
 
 
-@app.command()
+@app.command(cls=ZeroCommand)
 def diff(
     a: Annotated[str, typer.Argument(help="Old side: list, YAML, TOML or JSON (- for stdin).", metavar="A")],
     b: Annotated[str | None, typer.Argument(help="New side (omit with --defaults).", metavar="B")] = None,
@@ -238,11 +494,12 @@ def diff(
     strict: Annotated[bool, typer.Option(
         help="Also show default-vs-absent and values written differently but equal.")] = False,
     comments: Annotated[bool, typer.Option(help="Comment changes count too.")] = False,
-    output_format: Annotated[OutputFormat, typer.Option(
+    output_format: Annotated[str, typer.Option(
         "--output-format", help="text (a table) or json (one object per change).",
-        metavar="FORMAT")] = OutputFormat.text,
-    from_: Annotated[Format | None, typer.Option("--from", help="Format of both inputs.", metavar="FORMAT")] = None,
-    kind: Annotated[str | None, typer.Option(help="List kind instead of detecting it.", metavar="KIND")] = None,
+        metavar="FORMAT", **choice(REPORTS))] = "text",
+    from_: Annotated[str | None, typer.Option("--from", help="Format of both inputs.", metavar="FORMAT",
+                                              **choice(FORMATS))] = None,
+    kind: Annotated[str | None, typer.Option(help="List kind instead of detecting it.", **KIND_OPTION)] = None,
     machine: Annotated[bool, typer.Option(
         "--machine", help="A and B are start-up lists: compare the machines' effective values list by list.")] = False,
     revert: Annotated[str | None, typer.Option(
@@ -257,11 +514,11 @@ def diff(
     """
 
     def body() -> int:
-        forced = parse_kind(kind)
+        forced = parse_kind(check_kind(kind))
         run = run_diff(a, b, _project(), read_stdin, defaults=defaults,
                        options=DiffOptions(strict=strict, comments=comments),
-                       fmt=from_.value if from_ else None, kind=forced, machine=machine, revert=revert)
-        if output_format is OutputFormat.json:
+                       fmt=from_, kind=forced, machine=machine, revert=revert)
+        if output_format == "json":
             sys.stdout.write(json.dumps([c.to_json() for c in run.changes], indent=2, ensure_ascii=False) + "\n")
         elif run.changes:
             render_diff(run.changes, run.header)
@@ -270,20 +527,21 @@ def diff(
     _run(body)
 
 
-@app.command()
+@app.command(cls=ZeroCommand)
 def show(
     args: Annotated[list[str] | None, typer.Argument(
         help="A list, YAML, TOML or JSON file (- for stdin); with --machine: keys, IDs or patterns.",
-        metavar="FILE|KEY...")] = None,
+        metavar="FILE|KEY")] = None,
     machine: Annotated[Path | None, typer.Option(
         "--machine", help="Show the effective values of every list this start-up list loads, with origins.",
         metavar="STARTUP")] = None,
     effective_: Annotated[bool, typer.Option(
         "--effective", help="With --machine: also the catalogue defaults of what no list sets.")] = False,
-    output_format: Annotated[OutputFormat, typer.Option(
-        "--output-format", help="text or json (with --machine).", metavar="FORMAT")] = OutputFormat.text,
-    from_: Annotated[Format | None, typer.Option("--from", help="Input format.", metavar="FORMAT")] = None,
-    kind: Annotated[str | None, typer.Option(help="List kind instead of detecting it.", metavar="KIND")] = None,
+    output_format: Annotated[str, typer.Option(
+        "--output-format", help="text or json (with --machine).", metavar="FORMAT", **choice(REPORTS))] = "text",
+    from_: Annotated[str | None, typer.Option("--from", help="Input format.", metavar="FORMAT",
+                                              **choice(FORMATS))] = None,
+    kind: Annotated[str | None, typer.Option(help="List kind instead of detecting it.", **KIND_OPTION)] = None,
     param_desc: ParamDesc = None,
 ) -> None:
     """Print a list as the controller reads it: one parameter per line, grouped (for git textconv);
@@ -295,7 +553,7 @@ def show(
         if not args or len(args) != 1:
             raise ZeroError("give one file to show (or --machine STARTUP [KEY...])")
         registry = _registry(args[0])
-        side = load_side(args[0], from_.value if from_ else None, parse_kind(kind), registry, read_stdin)
+        side = load_side(args[0], from_, parse_kind(check_kind(kind)), registry, read_stdin)
         sys.stdout.write("\n".join(show_lines(side, registry)) + "\n")
         return exits.OK
 
@@ -303,24 +561,24 @@ def show(
 
 
 def _effective(machine: Path | None, keys: list[str], with_defaults: bool, explain: bool,
-               output_format: OutputFormat) -> int:
+               output_format: str) -> int:
     run = run_effective(_project(machine), keys, with_defaults, explain)
-    if output_format is OutputFormat.json:
+    if output_format == "json":
         sys.stdout.write(json.dumps(run.to_json(), indent=2, ensure_ascii=False) + "\n")
     else:
         render_effective(run.summary, run.scopes, explain=explain)
     return exits.OK
 
 
-@app.command()
+@app.command(cls=ZeroCommand)
 def explain(
     keys: Annotated[list[str], typer.Argument(
-        help="Keys, IDs or patterns (kenngr.swe_pos, P-AXIS-00178, 'kenngr.*').", metavar="KEY...")],
+        help="Keys, IDs or patterns (kenngr.swe_pos, P-AXIS-00178, 'kenngr.*').", metavar="KEY")],
     machine: Annotated[Path | None, typer.Option(
         "--machine", help="The start-up list [default: [tool.zero.machine] startup].",
         metavar="STARTUP")] = None,
-    output_format: Annotated[OutputFormat, typer.Option("--output-format", help="text or json.",
-        metavar="FORMAT")] = OutputFormat.text,
+    output_format: Annotated[str, typer.Option("--output-format", help="text or json.",
+        metavar="FORMAT", **choice(REPORTS))] = "text",
     param_desc: ParamDesc = None,
 ) -> None:
     """Where the value of a parameter comes from on a machine: the list, the default list under it,
@@ -331,10 +589,10 @@ def explain(
 # ---------------------------------------------------------------------------- schema
 
 
-@app.command()
+@app.command(cls=ZeroCommand)
 def schema(
     kind: Annotated[str | None, typer.Option(
-        help="Only this list kind (zero, axis, channel, ...); all kinds when omitted.", metavar="KIND")] = None,
+        help="Only this list kind (zero, axis, channel, ...); all kinds when omitted.", **KIND_OPTION)] = None,
     output: Annotated[str | None, typer.Option("-o", "--output", help="Write to this file.", metavar="FILE")] = None,
     force: Annotated[bool, typer.Option(help="Replace an existing output file.")] = False,
     allow_unknown: Annotated[bool, typer.Option(
@@ -344,7 +602,7 @@ def schema(
     """Print a JSON Schema of the structured (YAML/TOML/JSON) form for editors."""
 
     def body() -> int:
-        text = json.dumps(build_schema(_registry(), parse_kind(kind), strict=not allow_unknown),
+        text = json.dumps(build_schema(_registry(), parse_kind(check_kind(kind)), strict=not allow_unknown),
                           indent=2, ensure_ascii=False) + "\n"
         if output is None or output == "-":
             sys.stdout.write(text)
@@ -358,13 +616,13 @@ def schema(
 # ---------------------------------------------------------------------------- limits
 
 
-@app.command()
+@app.command(cls=ZeroCommand)
 def limits(
     machine: Annotated[Path | None, typer.Option(
         "--machine", help="The start-up list (hochlauf.lis) [default: [tool.zero.machine] startup].",
         metavar="STARTUP")] = None,
-    output_format: Annotated[OutputFormat, typer.Option(
-        "--output-format", help="text (a table) or json.", metavar="FORMAT")] = OutputFormat.text,
+    output_format: Annotated[str, typer.Option(
+        "--output-format", help="text (a table) or json.", metavar="FORMAT", **choice(REPORTS))] = "text",
     all_groups: Annotated[bool, typer.Option(
         "--all-groups", help="All 97 groups, not only G53..G59 and the ones the list sets.")] = False,
     profile: Annotated[str | None, typer.Option(
@@ -376,7 +634,7 @@ def limits(
 
     def body() -> int:
         run = run_limits(_project(machine), all_groups, profile)
-        if output_format is OutputFormat.json:
+        if output_format == "json":
             data: dict[str, object] = {"limits": [r.to_json() for r in run.rows]}
             if profile:
                 data["violations"] = [{"what": v.what, "value": v.value, "where": v.where} for v in run.violations]
@@ -391,10 +649,10 @@ def limits(
 # ---------------------------------------------------------------------------- format
 
 
-@app.command("format")
+@app.command("format", cls=ZeroCommand)
 def format_cmd(
     paths: Annotated[list[Path], typer.Argument(help="List files or directories; - formats standard input.",
-        metavar="PATH...")],
+        metavar="PATH")],
     check: Annotated[bool, typer.Option("--check", help="Only say which files would change (exit 1).")] = False,
     diff: Annotated[bool, typer.Option("--diff", help="Show the changes as a unified diff; write nothing.")] = False,
     config: Annotated[Path | None, typer.Option("--config", help="Use this configuration file.",
@@ -428,7 +686,7 @@ def format_cmd(
 # ---------------------------------------------------------------------------- server
 
 
-@app.command("server")
+@app.command("server", cls=ZeroCommand)
 def server_cmd(
     stdio: Annotated[bool, typer.Option(
         "--stdio", help="Talk over standard input and output: the default and only transport (accepted for "
@@ -450,7 +708,7 @@ def server_cmd(
 # ------------------------------------------------------------------ config, rule, param
 
 
-@app.command("config")
+@app.command("config", cls=ZeroCommand)
 def config_cmd(
     path: Annotated[Path, typer.Argument(help="A list file or directory whose configuration to show.",
         metavar="PATH")] = Path("."),
@@ -470,9 +728,10 @@ def config_cmd(
     _run(body)
 
 
-@app.command("rule")
+@app.command("rule", cls=ZeroCommand)
 def rule_cmd(
-    code: Annotated[str | None, typer.Argument(help="A rule code such as S004.", metavar="CODE")] = None,
+    code: Annotated[str | None, typer.Argument(help="A rule code such as S004.", metavar="CODE",
+                                               autocompletion=complete_codes)] = None,
     all_: Annotated[bool, typer.Option("--all", help="Explain every rule.")] = False,
 ) -> None:
     """Explain a rule: what it checks, why it matters on the machine, and the fix."""
@@ -491,18 +750,18 @@ def rule_cmd(
     _run(body)
 
 
-@app.command()
+@app.command(cls=ZeroCommand)
 def param(
     name: Annotated[str, typer.Argument(help="A parameter ID (P-AXIS-00178), key (kenngr.swe_pos) or a word to search.",
                                         metavar="NAME")],
-    kind: Annotated[str | None, typer.Option(help="List kind, where a key exists in several.", metavar="KIND")] = None,
+    kind: Annotated[str | None, typer.Option(help="List kind, where a key exists in several.", **KIND_OPTION)] = None,
     param_desc: ParamDesc = None,
 ) -> None:
     """Show what zero knows about a parameter: type, range, default, unit, meaning."""
 
     def body() -> int:
         registry = _registry()
-        found = find_param(registry, name, parse_kind(kind))
+        found = find_param(registry, name, parse_kind(check_kind(kind)))
         if found.spec is None:
             sys.stdout.write(f"{len(found.matches)} parameters match {name.strip()!r}"
                              f"{' (the first 20)' if len(found.matches) == 20 else ''}; `zero param ID` shows one:\n")
@@ -537,7 +796,7 @@ def main() -> None:
 
 def _standalone(application: typer.Typer) -> int:
     try:
-        application(standalone_mode=True)
+        application(prog_name="zero", standalone_mode=True)
     except SystemExit as exc:
         return exc.code if isinstance(exc.code, int) else (0 if exc.code is None else 1)
     return exits.OK

@@ -10,6 +10,8 @@ gives the same result or the error message.
 
 from __future__ import annotations
 
+import os
+from collections.abc import Iterable, Mapping
 from pathlib import Path
 from typing import Literal
 
@@ -29,36 +31,50 @@ class Option:
     negative: str | None = None  # the flag that sets a "flag" option back to False
     default: object = None
     metavar: str | None = None  # the value's placeholder in --help
+    envvar: str | None = None  # the environment variable that gives the value when the option is not given
 
     @property
     def names(self) -> tuple[str, ...]:
         return (*self.flags, self.negative) if self.negative else self.flags
 
 
+# How close a typo must be to be suggested: `--jbos` → `--jobs` (0.83), `axsi` → `axis` (0.75),
+# but not `--bogus` → `--jobs` (0.62) nor `respect-gitignore` → `per-file-ignores` (0.61).
+SUGGEST_CUTOFF = 0.7
+
 PATHS_HELP = "List files or directories (*.lis, *.lst); - reads standard input."
 
 LINT_OPTIONS: tuple[Option, ...] = (
     Option("output_format", ("--output-format",),
            "text (for people), concise (one line each), json (a stable contract), github, gitlab, junit "
-           "or sarif.", choices=OUTPUT_FORMATS, default="text", metavar="FORMAT"),
+           "or sarif.", choices=OUTPUT_FORMATS, default="text", metavar="FORMAT", envvar="ZERO_OUTPUT_FORMAT"),
     Option("output_file", ("--output-file", "-o"),
            "Write the report to this file (atomically) instead of stdout.", type=Path, metavar="FILE"),
     Option("show_statistics", ("--statistics",), "Print the number of findings per code to stderr.", "flag",
            default=False),
     Option("exit_zero", ("--exit-zero",), "Exit 0 even when there are findings (usage errors still exit 2).",
            "flag", default=False),
+    Option("exit_non_zero_on_fix", ("--exit-non-zero-on-fix",),
+           "With --fix: exit 1 when a file was fixed, even if no finding remains.", "flag", default=False),
+    Option("quiet", ("--quiet", "-q"), "Print the findings only: no summary line, no progress, no notes.",
+           "flag", default=False),
+    Option("silent", ("--silent", "-s"), "Print nothing but errors; the exit code still tells.", "flag",
+           default=False),
+    Option("show_files", ("--show-files",), "List the files that would be checked, and exit.", "flag",
+           default=False),
     Option("config", ("--config",),
-           "Use this configuration file for every file (zero.toml or pyproject.toml).", type=Path, metavar="FILE"),
+           "A configuration file for every file (zero.toml or pyproject.toml), or KEY = VALUE over the "
+           "configuration that applies, as in ruff (repeatable).", "multi", metavar="FILE|KEY=VALUE"),
     Option("isolated", ("--isolated",), "Ignore all configuration files.", "flag", default=False),
     Option("strict", ("--strict",), "Exit 1 on warnings too.", "flag", negative="--no-strict", default=False),
     Option("select", ("--select",), "Only these codes or prefixes (repeatable, or comma-separated).", "multi",
-        metavar="CODES"),
+           metavar="CODES"),
     Option("extend_select", ("--extend-select",),
            "Add these codes or prefixes to the selection (opt-in rules by their full code).", "multi", metavar="CODES"),
     Option("ignore", ("--ignore",), "Skip these codes or prefixes (repeatable, or comma-separated).", "multi",
-        metavar="CODES"),
+           metavar="CODES"),
     Option("kind", ("--kind",), "List kind instead of detecting it: zero, axis, channel, tool, startup, ...",
-        metavar="KIND"),
+           metavar="KIND"),
     Option("jobs", ("--jobs", "-j"),
            "Processes for many files (default: all cores; 0 = all cores, 1 = no parallelism).", type=int,
            minimum=0, metavar="N"),
@@ -78,6 +94,22 @@ LINT_OPTIONS: tuple[Option, ...] = (
 )
 
 
+def close_matches(word: str, candidates: Iterable[str], cutoff: float = SUGGEST_CUTOFF) -> list[str]:
+    """The candidates ``word`` is likely a typo of, nearest first (did-you-mean).
+
+    difflib's default cutoff (0.6) suggests ``--jobs`` for ``--bogus`` and ``per-file-ignores``
+    for ``respect-gitignore``: only close ones are offered."""
+    import difflib  # start-up: only for a word that is not known
+
+    return difflib.get_close_matches(word, list(candidates), n=3, cutoff=cutoff)
+
+
+def did_you_mean(word: str, candidates: Iterable[str]) -> str:
+    """`` (did you mean `x`?)`` for a likely typo; empty when nothing is close."""
+    near = close_matches(word, candidates)
+    return f" (did you mean {near[0]}?)" if near else ""
+
+
 def _value(option: Option, text: str) -> object | None:
     """The option's value from its text; ``None`` when typer must judge it."""
     if option.choices and text not in option.choices:
@@ -91,11 +123,15 @@ def _value(option: Option, text: str) -> object | None:
     return Path(text) if option.type is Path else text
 
 
-def parse_lint_args(args: list[str]) -> dict[str, object] | None:
-    """``zero lint`` arguments as keyword arguments; ``None`` when typer must decide."""
+def parse_lint_args(args: list[str], environ: Mapping[str, str] | None = None) -> dict[str, object] | None:
+    """``zero lint`` arguments as keyword arguments; ``None`` when typer must decide.
+
+    An option not given takes its value from its environment variable (``environ``, by default
+    ``os.environ``), as typer does."""
     by_name = {name: o for o in LINT_OPTIONS for name in o.names}
     out: dict[str, object] = {o.dest: [] if o.kind == "multi" else o.default for o in LINT_OPTIONS}
     paths: list[Path] = []
+    given: set[str] = set()
     i = 0
     only_paths = False
     while i < len(args):
@@ -113,6 +149,7 @@ def parse_lint_args(args: list[str]) -> dict[str, object] | None:
         option = by_name.get(name)
         if option is None:
             return None
+        given.add(option.dest)
         if option.kind == "flag":
             if eq:
                 return None
@@ -132,7 +169,16 @@ def parse_lint_args(args: list[str]) -> dict[str, object] | None:
             multi.append(value)
         else:
             out[option.dest] = value
-    if not paths and out["stdin_filename"] is None and out["machine"] is None:
+    if environ is None:
+        environ = os.environ
+    for option in LINT_OPTIONS:
+        variable = environ.get(option.envvar) if option.envvar else None
+        if variable and option.dest not in given:  # an empty variable is not set (as in click)
+            value = _value(option, variable)
+            if value is None:
+                return None
+            out[option.dest] = value
+    if not paths and out["stdin_filename"] is None and out["machine"] is None and not out["show_files"]:
         return None
     out["paths"] = paths
     return out

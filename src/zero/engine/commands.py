@@ -111,6 +111,13 @@ class LintRun:
     changed: int = 0  # files a fix changes (or, with --diff, would change)
 
 
+def lint_files(named: Sequence[Path], project: Project) -> list[Path]:
+    """The files ``zero lint`` checks (``--show-files`` lists them): those named, and the list files
+    below the directories, as each file's or directory's configuration includes and excludes them."""
+    return collect_files(named, include=project.included, exclude=project.excluded,
+                         respect_gitignore=project.respects_gitignore)
+
+
 def run_lint(request: LintRequest, registries: Registries, echo: Echo,
              read_stdin: Callable[[], bytes], progress: Callable[[int], Progress | None] | None = None) -> LintRun:
     """``zero lint``: lint files, a machine or standard input; apply or show fixes."""
@@ -123,8 +130,7 @@ def run_lint(request: LintRequest, registries: Registries, echo: Echo,
     if request.reads_stdin:
         return _lint_stdin(request, project, echo, read_stdin())
     named = [Path(p) for p in request.paths]
-    files = collect_files(named, include=project.included, exclude=project.excluded,
-                          respect_gitignore=project.respects_gitignore)
+    files = lint_files(named, project)
     if not files and any(p.is_dir() for p in named):
         raise ZeroError("no list files or NC programs found (looked for *.lis, *.lst, *.nc, *.mpf, *.spf, and *.xml "
                         "holding lists)")

@@ -46,7 +46,7 @@ from typing import TYPE_CHECKING, Any
 
 from zero.catalog.registry import kind_from_name
 from zero.diagnostics import Severity
-from zero.engine.lint import LintOptions
+from zero.engine.lint import LintOptions, layered_selection
 from zero.errors import ZeroError
 from zero.files import nearest_holding, read_file, within
 from zero.forms import CONFIG_NAMES, DEFAULT_INCLUDE, controller_absolute
@@ -223,8 +223,6 @@ class Config:
         """The lint options for one file: the command line as the last layer over this configuration
         (and the one it extends), as ruff resolves them; the file's per-file ignores drop what they
         match whatever selected it."""
-        from zero.engine.lint import layered_selection  # the one place selection is resolved
-
         chosen = layered_selection((*self.layers, (cli.select, cli.extend_select, cli.ignore)), self.ignored_for(file))
         severity = {**self.parent.severity, **self.severity} if self.parent is not None else self.severity
         return LintOptions(select=chosen.select, ignore=chosen.ignore, kind=cli.kind or self.kind_for(file),
@@ -384,7 +382,7 @@ def parse_config(path: Path, text: str | None = None, _chain: tuple[Path, ...] =
         if key not in _KEYS:
             import difflib  # start-up: only for a configuration error
 
-            near = difflib.get_close_matches(key.replace("_", "-"), _KEYS, n=1, cutoff=0.6)
+            near = difflib.get_close_matches(key.replace("_", "-"), _KEYS, n=1, cutoff=0.7)  # as the CLI
             hint = f" (did you mean `{near[0]}`?)" if near else ""
             raise fail(key, f"unknown key{hint}; known: {', '.join(_KEYS)}")
         if key == "extend":
@@ -533,7 +531,7 @@ def inline_config(text: str, over: Config) -> Config:
     """``--config 'select = ["R005"]'`` (as ruff's): one ``KEY = VALUE`` of the configuration, in
     TOML, laid over the configuration that applies (it takes precedence over every file); patterns
     and paths relative to the current directory where nothing else applies."""
-    if "extend" in text.split("=", 1)[0]:
+    if text.split("=", 1)[0].strip().strip("\"'") in ("extend", "tool.zero.extend"):
         raise ZeroError(f"--config {text!r}: `extend` names a file; use --config FILE")
     cfg = parse_config(Path("--config"), text, over=over)
     assert cfg is not None  # only a pyproject.toml may hold no [tool.zero]
