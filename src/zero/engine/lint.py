@@ -237,42 +237,29 @@ def lint_tree(tree: Tree, registry: Registry, options: LintOptions | None = None
 _P_ID = re.compile(r"P-[A-Z]{4}-[0-9]{5}")
 
 
-def list_form(data: bytes, fmt: str, registry: Registry) -> bool | None:
-    """Is YAML/TOML/JSON a list form: zero's ``_zero`` table, or top-level keys most of which are
-    parameter IDs or the first name of a parameter key (``kopf``, ``np_grp``)? ``None``: it does
-    not parse (a list form or not, it is reported)."""
-    import json
-    import tomllib
-
-    import yaml
-
-    try:
-        text = data.decode("utf-8-sig")
-        top = json.loads(text) if fmt == "json" else tomllib.loads(text) if fmt == "toml" else \
-            yaml.load(text, Loader=getattr(yaml, "CSafeLoader", yaml.SafeLoader))
-    except (UnicodeDecodeError, ValueError, yaml.YAMLError, RecursionError):  # JSON's and TOML's are ValueErrors
-        return None
-    if not isinstance(top, dict):
-        return False
+def list_form(tree: Tree, registry: Registry) -> bool:
+    """Is a YAML/TOML/JSON document a list form: zero's ``_zero`` table, or top-level keys most of
+    which are parameter IDs or the first name of a parameter key (``kopf``, ``np_grp``)? Decided
+    on the tree read with every guard (never by parsing the file again)."""
+    if tree.meta:
+        return True
+    top = {leaf.path[0] for leaf in tree.leaves if leaf.path}
+    if not top:
+        return True  # an empty form: an empty list
     heads: dict[str, bool] = registry.memo.setdefault("key-heads", {})
     if not heads:
         heads.update((re.split(r"[.\[]", s.key, maxsplit=1)[0], True) for s in registry.specs.values() if s.key)
-    if "_zero" in top:
-        return True
-    ours = sum(1 for k in top if isinstance(k, str) and (k in heads or _P_ID.fullmatch(k) is not None))
-    return ours > 0 and 2 * ours >= len(top)  # most top-level keys: `a`, `tool`, `path` are parameters' too
+    ours = sum(1 for k in top if k in heads or _P_ID.fullmatch(k) is not None)
+    return ours > 0 and 2 * ours >= len(top)  # most of them: `a`, `tool`, `path` are parameters' too
 
 
 def lint_structured(data: bytes, fmt: str, registry: Registry, path: str = "-",
                     options: LintOptions | None = None) -> LintResult:
-    """Lint YAML/TOML/JSON bytes as the list they convert to. A file that is no list form (see
-    :func:`list_form`) is skipped with a note; a list form that does not read is one S017 finding."""
+    """Lint YAML/TOML/JSON bytes as the list they convert to. What does not read as a list form
+    (invalid, hostile, keys that are no keys) is one S017 finding where the reader stopped; a
+    document that reads but is no list form (see :func:`list_form`) is skipped with a note."""
     from zero.structured.formats import read_tree  # start-up: not for lists
 
-    if b"_zero" not in data and list_form(data, fmt, registry) is False:
-        return LintResult(path, _shown(path, data), None, [],
-                          note=f"not a {fmt.upper()} list form (its top-level keys are not parameters', no `_zero` "
-                               "table): skipped")
     try:
         tree = read_tree(data, fmt, registry, path)
     except ZeroError as exc:
@@ -281,6 +268,10 @@ def lint_structured(data: bytes, fmt: str, registry: Registry, path: str = "-",
                              Span(line, col, line, col + 1), path)
         found = funnel(path, [finding], selected_rules(options or LintOptions()))
         return LintResult(path, _shown(path, data), None, found)
+    if not list_form(tree, registry):
+        return LintResult(path, _shown(path, data), None, [],
+                          note=f"not a {fmt.upper()} list form (its top-level keys are not parameters', no `_zero` "
+                               "table): skipped")
     source = data.decode("utf-8", "replace").lstrip("\ufeff")
     return lint_tree(tree, registry, options, source, fmt == "json")
 

@@ -24,7 +24,7 @@ def _slim(result: LintResult) -> LintResult:
     doc = result.document
     shown = {d.span.line: doc.lines[d.span.line - 1] for d in result.diagnostics if doc.has_line(d.span.line)}
     slim = Excerpt(doc.path, doc.encoding, [], [], [], [], doc.bom, doc.end_line, shown=shown)
-    return LintResult(result.path, slim, result.kind, result.diagnostics)
+    return LintResult(result.path, slim, result.kind, result.diagnostics, result.note)
 
 
 def _lint_in_worker(path: Path) -> LintResult | ZeroError:

@@ -44,12 +44,13 @@ Fix: repair the XML; remove the DTD.
 FORM_REFUSED = FAMILY.rule(
     "S017", "form-not-read", E, "A YAML, TOML or JSON list form zero cannot read",
     """
-What it checks: a `.yaml`, `.yml`, `.toml` or `.json` file that is a list form (zero's `_zero`
-table, or a top-level key that is a parameter's) must read as the list it converts to: valid
-YAML/TOML/JSON, every key a parameter key or part of one. Anything else is this one finding,
-where the reader stopped; nothing in the file is checked, and the run goes on with the other
-files. A YAML/TOML/JSON file that is no list form at all (a `package.json`, a workflow, an
-editor's settings) is skipped with a note and no finding. The engine reports it.
+What it checks: a `.yaml`, `.yml`, `.toml` or `.json` file zero is given must read as the list
+it converts to: valid YAML/TOML/JSON within zero's limits (no anchors, tags, duplicate keys,
+deep nesting), every key a parameter key or part of one, every value a scalar. Anything else
+is this one finding, where the reader stopped; nothing in the file is checked, and the run goes
+on with the other files. A file that reads as keys and values but whose top-level keys are
+mostly not parameters' (a `package.json`) and that has no `_zero` table is no list form: it is
+skipped with a note and no finding. The engine reports it.
 
 Why it matters on the machine: a form that does not convert cannot become the list the
 controller reads; `zero convert` refuses it too.
