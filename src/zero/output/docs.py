@@ -1,9 +1,23 @@
-"""What zero knows, as text: a rule's explanation, the list of rules, a parameter's facts."""
+"""What zero knows, as text: a rule's explanation, the list of rules, a parameter's facts; and the same
+as the documentation site's Markdown pages (one per rule and per parameter)."""
 
 from __future__ import annotations
 
+import re
+import textwrap
+from collections.abc import Sequence
+from pathlib import Path
+from typing import TYPE_CHECKING
+
 from zero.catalog.registry import KINDS, ParamSpec, Registry
+from zero.diagnostics import Diagnostic, Fix
+from zero.records import record, replace
 from zero.rules import RULES
+
+if TYPE_CHECKING:
+    from zero.engine.lint import LintResult
+    from zero.lists.model import Document
+    from zero.machine.model import Machine
 
 
 def rule_text(code: str) -> str:
@@ -18,7 +32,8 @@ def rules_overview() -> str:
     return "\n".join(lines) + "\n"
 
 
-def param_text(spec: ParamSpec, registry: Registry) -> str:
+def param_rows(spec: ParamSpec, registry: Registry) -> list[tuple[str, str]]:
+    """A parameter's facts as (label, text) rows: what ``zero param`` prints and its page shows."""
     rng = registry.range_of(spec)
     if rng is not None:
         range_text = f"{spec.range_text}  (checked)"
@@ -57,5 +72,476 @@ def param_text(spec: ParamSpec, registry: Registry) -> str:
         rows.append(("restart", "a change takes effect only after a restart"))
     rows.append(("meaning", spec.description or "(no description; load your CncParaDesc.xml with --param-desc)"))
     rows.append(("source", spec.source))
+    return rows
+
+
+def param_text(spec: ParamSpec, registry: Registry) -> str:
+    rows = param_rows(spec, registry)
     width = max(len(k) for k, _ in rows)
     return "\n".join(f"{k:<{width}}  {v}" for k, v in rows) + "\n"
+
+
+# ------------------------------------------------------------------ the documentation site's pages
+# One page per rule and per parameter, as Markdown, for the site (docs/gen_pages.py writes them at
+# build time): nothing on them is typed twice, every fact comes from the rule definitions, the
+# registry and the fixtures the tests run.
+
+_SECTION = re.compile(r"^(What it checks(?: \([^)]*\))?|Why it matters on the machine|Example|Fix):\s*(.*)$")
+_MAX_LINES = 80  # an example list shown longer than this is cut
+_MAX_WIDTH = 100  # and so is a line (the binary-file fixture is one long line of stray bytes)
+
+
+def rule_page_path(code: str) -> str:
+    """Where a rule's page lies in the site (relative to ``docs/``)."""
+    return f"rules/{code}.md"
+
+
+def param_page_path(param_id: str) -> str:
+    """Where a parameter's page lies in the site (relative to ``docs/``)."""
+    return f"parameters/{param_id}.md"
+
+
+def kind_page_path(kind: str) -> str:
+    """Where the index of one list kind's parameters lies in the site."""
+    return f"parameters/{kind}.md"
+
+
+def md_text(text: str) -> str:
+    """Plain text made safe as Markdown: no HTML, emphasis, links or table cells where there are none."""
+    out = text.replace("\\", "\\\\").replace("&", "&amp;").replace("<", "&lt;").replace(">", "&gt;")
+    for ch in "`*_[]|":
+        out = out.replace(ch, "\\" + ch)
+    return " ".join(out.split())
+
+
+def md_code(text: str) -> str:
+    """Text as an inline code span (a table cell's ``|`` escaped)."""
+    fence = "``" if "`" in text else "`"
+    pad = " " if text.startswith("`") or text.endswith("`") else ""
+    return f"{fence}{pad}{text}{pad}{fence}".replace("|", "\\|")
+
+
+def explanation_markdown(explanation: str) -> str:
+    """A rule's explanation with its fixed headings (what it checks, why, example, fix) as headings."""
+    out: list[str] = []
+    for line in textwrap.dedent(explanation).strip().split("\n"):
+        m = _SECTION.match(line)
+        if m:
+            out += ["", f"## {m.group(1)}", ""]
+            if m.group(2):
+                out.append(m.group(2)[:1].upper() + m.group(2)[1:])
+        else:
+            out.append(line)
+    return "\n".join(out).strip() + "\n"
+
+
+@record(frozen=True)
+class Example:
+    """A list a rule's page shows: its name, its text, the lines zero reports and what it reports."""
+
+    title: str
+    name: str  # where it lies (relative to the repository)
+    text: str
+    lines: tuple[int, ...] = ()
+    report: str = ""
+
+
+@record(frozen=True)
+class RuleExamples:
+    """A rule's failing and passing example and the fixes zero offered on the failing one."""
+
+    failing: Example | None
+    passing: Example | None
+    fixes: tuple[Fix, ...] = ()
+    note: str = ""  # where the examples come from, or why there are none
+
+
+def shown_list(data: bytes) -> tuple[str, int]:
+    """A list's bytes as a page shows them: control characters and stray bytes as escapes
+    (``\\r``, ``\\x00``, ``\\xe4``), long lines and long files cut; and its number of lines."""
+    from zero.output.text import printable  # start-up: only the documentation site renders lists
+
+    text = data.decode("utf-8", "surrogateescape")
+    lines = text.split("\n")
+    if lines and lines[-1] == "":
+        lines.pop()
+    shown = []
+    for line in lines[:_MAX_LINES]:
+        p = printable(line, escape=True)
+        shown.append(p if len(p) <= _MAX_WIDTH else p[:_MAX_WIDTH] + "…")
+    if len(lines) > _MAX_LINES:
+        shown.append(f"… ({len(lines) - _MAX_LINES} more lines)")
+    return "\n".join(shown), len(lines)
+
+
+def findings_text(diagnostics: Sequence[Diagnostic], document: Document, name: str) -> str:
+    """Findings as ``zero lint`` prints them (without colour), each placed in the file ``name``."""
+    from zero.output.text import diagnostic_lines  # start-up: only the documentation site renders findings
+
+    lines: list[str] = []
+    for d in diagnostics:
+        source = document.line_text(d.span.line) if document.has_line(d.span.line) else None
+        for segments in diagnostic_lines(replace(d, path=name), source):
+            lines.append("".join(text for text, _ in segments).rstrip())
+    return "\n".join(lines).strip("\n")
+
+
+def _fixture(folder: Path, stem: str) -> Path | None:
+    """``fail.lis`` / ``pass.lis``, or the XML, update-file or YAML form a rule's fixtures take."""
+    for suffix in (".xml", "-Update.xml", ".yaml", ".lis"):
+        if (folder / f"{stem}{suffix}").is_file():
+            return folder / f"{stem}{suffix}"
+    return None
+
+
+def _list_examples(code: str, folder: Path, root: Path, registry: Registry, select: tuple[str, ...],
+                   extend: bool) -> RuleExamples:
+    from zero.engine.lint import LintOptions, lint_data  # start-up: only the documentation site lints its examples
+
+    options = LintOptions(extend_select=select) if extend else LintOptions(select=select)
+    examples: list[Example | None] = []
+    fixes: list[Fix] = []
+    for stem, title in (("fail", "A failing list"), ("pass", "A passing list")):
+        path = _fixture(folder, stem)
+        if path is None:
+            examples.append(None)
+            continue
+        data = path.read_bytes()
+        result = lint_data(data, path.name, registry, options)
+        mine = [d for d in result.diagnostics if d.code == code]
+        fixes += [d.fix for d in mine if d.fix is not None]
+        text, _ = shown_list(data)
+        examples.append(Example(title, path.relative_to(root).as_posix(), text,
+                                tuple(sorted({d.span.line for d in mine})),
+                                findings_text(result.diagnostics, result.document, path.name)))
+    return RuleExamples(examples[0], examples[1], tuple(fixes))
+
+
+_MACHINES: dict[tuple[Path, int], tuple[list[LintResult], list[LintResult]]] = {}
+
+
+def _machine(startup: Path, registry: Registry) -> Machine | None:
+    """A fixture machine as `zero lint --machine` builds it: through the one resolver, with no
+    configuration but the catalogue given."""
+    from zero.engine.project import Project  # start-up: only the documentation site lints its examples
+
+    return Project(lambda _path: registry, isolated=True).machine(startup=startup, required=True)
+
+
+def _machine_results(root: Path, registry: Registry) -> tuple[list[LintResult], list[LintResult]]:
+    """The fixture machines' results, read once: ``fixtures/machine`` (every X rule fails there but
+    X007/X011) and ``fixtures/machine-clean`` (the same machine without the faults)."""
+    from zero.engine.lint import lint_machine  # start-up: only the documentation site lints its examples
+
+    hit = _MACHINES.get((root, id(registry)))
+    if hit is not None:
+        return hit
+    out = []
+    for name in ("machine", "machine-clean"):
+        startup = root / "fixtures" / name / "listen" / "hochlauf.lis"
+        machine = _machine(startup, registry) if startup.is_file() else None
+        out.append(lint_machine(machine, registry) if machine is not None else [])
+    hit = _MACHINES[(root, id(registry))] = (out[0], out[1])
+    return hit
+
+
+def _machine_examples(code: str, root: Path, registry: Registry) -> RuleExamples:
+    failing, clean = _machine_results(root, registry)
+    for result in failing:
+        mine = [d for d in result.diagnostics if d.code == code]
+        if not mine:
+            continue
+        path = Path(result.path)
+        text, _ = shown_list(path.read_bytes())
+        name = path.relative_to(root).as_posix()
+        fail = Example("A failing machine: one of its lists", name, text, tuple(sorted({d.span.line for d in mine})),
+                       findings_text(mine, result.document, path.name))
+        twin = root / "fixtures" / "machine-clean" / "listen" / path.name
+        passing = None
+        if twin.is_file() and clean and not any(d.code == code for r in clean for d in r.diagnostics):
+            passing = Example("The same list in a machine without the fault", twin.relative_to(root).as_posix(),
+                              shown_list(twin.read_bytes())[0])
+        return RuleExamples(fail, passing, tuple(d.fix for d in mine if d.fix is not None),
+                            "The examples are lists of the fixture machines `fixtures/machine` and "
+                            "`fixtures/machine-clean`, read through their start-up list as `zero lint --machine` "
+                            "reads them.")
+    return RuleExamples(None, None, (), "The fixture machine (`fixtures/machine`) has no finding of this rule, so "
+                        "this page shows no example.")
+
+
+def _program_examples(code: str, root: Path, registry: Registry) -> RuleExamples:
+    from zero.engine.lint import lint_program  # start-up: only the documentation site lints its examples
+
+    folder = root / "fixtures" / "programs"
+    startup = root / "fixtures" / "machine" / "listen" / "hochlauf.lis"
+    if not (folder / "bad.nc").is_file() or not startup.is_file():
+        return RuleExamples(None, None, (), "There is no example program for this rule.")
+    machine = _machine(startup, registry)
+    out: list[Example | None] = []
+    fixes: list[Fix] = []
+    for name, title in (("bad.nc", "A failing NC program"), ("good.nc", "A passing NC program")):
+        path = folder / name
+        if not path.is_file():
+            out.append(None)
+            continue
+        data = path.read_bytes()
+        result = lint_program(data, registry, path.name, machine=machine)
+        mine = [d for d in result.diagnostics if d.code == code]
+        if title.startswith("A failing") and not mine:
+            out.append(None)
+            continue
+        fixes += [d.fix for d in mine if d.fix is not None]
+        out.append(Example(title, path.relative_to(root).as_posix(), shown_list(data)[0],
+                           tuple(sorted({d.span.line for d in mine})), findings_text(mine, result.document, name)))
+    return RuleExamples(out[0], out[1], tuple(fixes), "The programs run on the fixture machine `fixtures/machine`.")
+
+
+def rule_examples(code: str, root: Path, registry: Registry) -> RuleExamples:
+    """A rule's examples from the fixtures the tests run (``root`` is the repository): a rule's own
+    folder under ``fixtures/rules``, a K rule's by its error number under ``fixtures/startup``, the
+    fixture machines for the X rules, the fixture programs for the N rules; none is made up."""
+    from zero.rules.startup import CHECKS  # start-up: only the documentation site
+
+    folder = root / "fixtures" / "rules" / code
+    if folder.is_dir():
+        return _list_examples(code, folder, root, registry, (code,), extend=True)
+    kernel = {c.code: c for c in CHECKS}.get(code)
+    if kernel is not None:
+        folder = root / "fixtures" / "startup" / str(kernel.number)
+        if folder.is_dir():
+            return _list_examples(code, folder, root, registry, ("K",), extend=False)
+    if code.startswith("X"):
+        return _machine_examples(code, root, registry)
+    if code.startswith("N"):
+        return _program_examples(code, root, registry)
+    return RuleExamples(None, None, (), "zero has no example list for this rule in its fixtures; its tests make "
+                        "the case they check (see the tests named in the explanation, or search the tests for the "
+                        "code).")
+
+
+def _fence(text: str) -> str:
+    longest = max((len(m) for m in re.findall(r"`+", text)), default=0)
+    return "`" * max(3, longest + 1)
+
+
+def _language(name: str) -> str:
+    return {".xml": "xml", ".yaml": "yaml", ".yml": "yaml", ".json": "json", ".toml": "toml"}.get(
+        Path(name).suffix.lower(), "text")
+
+
+def example_markdown(example: Example, code: str) -> str:
+    """An example list as a titled code block (the reported lines marked), and what zero says about it."""
+    fence = _fence(example.text)
+    marks = f' hl_lines="{" ".join(map(str, example.lines))}"' if example.lines else ""
+    out = [f"### {example.title}", "", f"`{example.name}`:", "",
+           f'{fence}{_language(example.name)} title="{Path(example.name).name}"{marks}', example.text, fence, ""]
+    if example.report:
+        fence = _fence(example.report)
+        out += ["What `zero lint` reports:", "", f"{fence}text", example.report, fence, ""]
+    else:
+        out += [f"`zero lint` reports no {code} here.", ""]
+    return "\n".join(out)
+
+
+def fix_markdown(fixes: tuple[Fix, ...], have_example: bool) -> str:
+    """Whether zero fixes the rule's findings, and how safe that is, from the fixes its failing example got."""
+    if not fixes:
+        if have_example:
+            return ("zero offers no automatic fix for this finding (none on the failing example): correct the list "
+                    "as the explanation says.\n")
+        return "This page has no example to show a fix on; the explanation says how to correct the list.\n"
+    lines = []
+    for title, safe in dict.fromkeys((f.title, f.safe) for f in fixes):
+        if safe:
+            lines.append(f"- {md_text(title)}: **safe** (it keeps what the controller reads): `zero lint --fix` "
+                         "applies it, `zero lint --diff` shows it first.")
+        else:
+            lines.append(f"- {md_text(title)}: **unsafe** (it changes what the controller reads): applied only "
+                         "with `zero lint --fix --unsafe-fixes`; `zero lint --diff --unsafe-fixes` shows it "
+                         "first. Check the result.")
+    return "On the failing example, zero offers:\n\n" + "\n".join(lines) + "\n"
+
+
+def rule_page(code: str, root: Path, registry: Registry) -> str:
+    """A rule's page: code, name, severity, summary, explanation, the kernel's error number, the
+    parameters a K rule reads, the examples and the fix with its safety."""
+    from zero.rules import FAMILIES  # start-up: only the documentation site
+    from zero.rules.startup import CHECKS, compiled  # start-up: as above
+
+    r = RULES[code]
+    rows = [("Code", f"`{r.code}`"), ("Name", f"`{r.name}`"), ("Default severity", r.severity.label),
+            ("Family", f"{code[0]}: {FAMILIES.get(code[0], code[0])}"), ("Scope", r.scope)]
+    if r.opt_in:
+        rows.append(("Opt-in", f"runs only when selected by its full code: `--extend-select {code}`"))
+    kernel = {c.code: c for c in CHECKS}.get(code)
+    params: list[str] = []
+    if kernel is not None:
+        rows.append(("Kernel error", f"`{kernel.kernel_error}` (list: {md_text(kernel.kind)})"))
+        params = list(dict.fromkeys([*kernel.params, *compiled(kernel).read]))
+        links = [f"[{p}](../{param_page_path(p)})" if p in registry.specs else f"`{p}`" for p in params]
+        rows.append(("Parameters", ", ".join(links)))
+    out = [f"# {code} {r.name}", "", md_text(r.summary), ""]
+    out += [f"| {k} | {v} |" for k, v in rows[:1]] + ["| --- | --- |"] + [f"| {k} | {v} |" for k, v in rows[1:]]
+    out += ["", explanation_markdown(r.explanation)]
+    ex = rule_examples(code, root, registry)
+    out += ["## Examples", ""]
+    if ex.note:
+        out += [ex.note, ""]
+    for example in (ex.failing, ex.passing):
+        if example is not None:
+            out.append(example_markdown(example, code))
+    if ex.failing is None and ex.passing is None and not ex.note:
+        out += ["zero has no example list for this rule in its fixtures.", ""]
+    out += ["## Automatic fix", "", fix_markdown(ex.fixes, ex.failing is not None)]
+    out += ["## Turning it off", "",
+            f"`zero lint --ignore {code}`, `ignore = [\"{code}\"]` in `[tool.zero]`, or `# zero: ignore[{code}]` "
+            "on the line. `zero rule " + code + "` prints this explanation in the terminal.", ""]
+    return "\n".join(out)
+
+
+def rules_index_page() -> str:
+    """The table of every rule, by family."""
+    from zero.rules import FAMILIES  # start-up: only the documentation site
+
+    out = ["# Rules", "", f"zero has {len(RULES)} rules. Each has a page: what it checks, why it matters on the "
+           "machine, a failing and a passing example, and the fix.", ""]
+    for letter, title in FAMILIES.items():
+        codes = [c for c in RULES if c.startswith(letter)]
+        if not codes:
+            continue
+        out += [f"## {letter}: {title}", "", "| Code | Name | Severity | Summary |",
+                "| --- | --- | --- | --- |"]
+        for c in codes:
+            r = RULES[c]
+            out.append(f"| [{c}]({c}.md) | `{r.name}` | {r.severity.label} | {md_text(r.summary)} |")
+        out.append("")
+    return "\n".join(out)
+
+
+@record(frozen=True)
+class Checked:
+    """A rule that checks a parameter, and how."""
+
+    code: str
+    how: str
+
+
+def param_checks(registry: Registry) -> dict[str, list[Checked]]:
+    """Which rules check each parameter, where zero knows it from its tables: the type (R004), the
+    indices (R003), the formal range or listed values (R005, R006 where the range names other
+    parameters, and R006 on each parameter named), the prose ranges zero evaluates (R006), the
+    kernel's start-up checks (K rules) and the restart flag (U001)."""
+    from zero.catalog.conditions import parse  # start-up: only the documentation site
+    from zero.catalog.conditions import refs as condition_refs  # start-up: as above
+    from zero.catalog.data.prose_ranges import RANGES  # start-up: as above
+    from zero.rules.startup import CHECKS, compiled  # start-up: as above
+
+    out: dict[str, list[Checked]] = {pid: [] for pid in registry.specs}
+
+    def add(pid: str, code: str, how: str) -> None:
+        if pid in out and code in RULES:
+            out[pid].append(Checked(code, how))
+
+    prose = {row["id"]: row for row in RANGES}
+    named_by: dict[str, list[str]] = {}
+    for pid, spec in registry.specs.items():
+        if spec.dims:
+            add(pid, "R003", "its indices must lie within the array")
+        add(pid, "R004", f"its value must be of type {spec.type}")
+        rng = registry.range_of(spec)
+        if rng is not None:
+            refs = list(dict.fromkeys(r.id for r in rng.refs))
+            if refs:
+                add(pid, "R006", f"its range `{spec.range_text}` names other parameters")
+                for ref in refs:
+                    named_by.setdefault(ref, []).append(pid)
+            else:
+                add(pid, "R005", f"its value must lie in `{spec.range_text}`")
+        elif spec.enum:
+            add(pid, "R005", f"its value must be {'a combination' if spec.enum_flags else 'one'} of "
+                f"{spec.enum_listed()}")
+        row = prose.get(pid)
+        if row is not None:
+            add(pid, "R006", f"the catalogue's prose range `{row['prose']}`, evaluated as `{row['condition']}`")
+            for ref in condition_refs(parse(row["condition"])):
+                if ref != pid:
+                    named_by.setdefault(ref, []).append(pid)
+        if spec.restart:
+            add(pid, "U001", "an update file that changes it takes effect only after a restart")
+    for ref, pids in named_by.items():
+        links = ", ".join(f"[{pid}](../{param_page_path(pid)})" for pid in sorted(set(pids)))
+        add(ref, "R006", f"it is named in the range of {links}")
+    for err in CHECKS:
+        for pid in dict.fromkeys([*err.params, *compiled(err).read]):
+            add(pid, err.code, f"the kernel's start-up check {err.kernel_error}: {err.title}")
+    order = {code: n for n, code in enumerate(RULES)}
+    for checks in out.values():
+        checks.sort(key=lambda c: (order[c.code], c.how))
+    return out
+
+
+_ID = re.compile(r"\bP-[A-Z]{4}-\d{5}\b")
+
+
+def _linked(text: str, registry: Registry) -> str:
+    """Markdown with each parameter ID that has a page linked to it (from another parameter's page)."""
+    return _ID.sub(lambda m: f"[{m.group()}](../{param_page_path(m.group())})" if m.group() in registry.specs
+                   else m.group(), text)
+
+
+def param_page(spec: ParamSpec, registry: Registry, checks: Sequence[Checked]) -> str:
+    """A parameter's page: its facts (as ``zero param`` shows them) and the rules that check it."""
+    title = f"{spec.id} {spec.key}" if spec.key else spec.id
+    out = [f"# {md_text(title)}", ""]
+    if spec.description:
+        out += [md_text(spec.description), ""]
+    for n, (label, value) in enumerate(param_rows(spec, registry)):
+        if label == "meaning" and spec.description:
+            continue  # said above the table
+        if label == "key" and spec.key:
+            value = md_code(spec.key)
+        elif label == "list":
+            value = f"[{md_text(value)}](../{kind_page_path(spec.kind)})"
+        elif label in ("ID", "range", "default") and value and value != "–":
+            value = md_code(value) if label != "range" else _linked(md_text(value), registry)
+        else:
+            value = md_text(value)
+        out += [f"| {label} | {value} |"] + (["| --- | --- |"] if n == 0 else [])
+    out += ["", "## Checked by", ""]
+    if checks:
+        out += [f"- [{c.code}](../{rule_page_path(c.code)}) `{RULES[c.code].name}`: {c.how}" for c in checks]
+    else:
+        out.append("No rule zero knows of checks this parameter by its ID.")
+    out += ["", f"`zero param {spec.key or spec.id}` prints these facts in the terminal.", ""]
+    return "\n".join(out)
+
+
+def kind_page(kind: str, registry: Registry) -> str:
+    """The index of one list kind's parameters: ID, key, type, default, unit."""
+    specs = sorted((s for s in registry.specs.values() if s.kind == kind), key=lambda s: s.id)
+    name = KINDS.get(kind, (kind, kind))[1]
+    out = [f"# {md_text(name[:1].upper() + name[1:])} ({kind})", "",
+           f"{len(specs)} parameters of the {md_text(name)}, by ID.", "",
+           "| ID | Key | Type | Default | Unit |", "| --- | --- | --- | --- | --- |"]
+    for s in specs:
+        out.append(f"| [{s.id}]({s.id}.md) | {md_code(s.key) if s.key else '–'} | {s.type} | "
+                   f"{md_code(s.default_display) if s.default_display else '–'} | "
+                   f"{md_text(' or '.join(s.units)) if s.units else '–'} |")
+    out.append("")
+    return "\n".join(out)
+
+
+def params_index_page(registry: Registry) -> str:
+    """The parameters' index: one row per list kind."""
+    counts: dict[str, int] = {}
+    for s in registry.specs.values():
+        counts[s.kind] = counts.get(s.kind, 0) + 1
+    out = ["# Parameters", "", f"zero's catalogue ({md_text(registry.source)}) has {len(registry.specs)} "
+           "parameters. Each has a page: ID, key, list, type, unit, default, range, symbols, the restart flag "
+           "and the rules that check it. Use the search to find a key (`swe_pos`) or an ID.", "",
+           "| List | Kind | Parameters |", "| --- | --- | --- |"]
+    for kind in sorted(counts, key=lambda k: (list(KINDS).index(k) if k in KINDS else len(KINDS), k)):
+        name = KINDS.get(kind, (kind, kind))[1]
+        out.append(f"| [{md_text(name)}]({kind}.md) | `{kind}` | {counts[kind]} |")
+    out.append("")
+    return "\n".join(out)

@@ -1,0 +1,271 @@
+"""The documentation site: every rule and every parameter has its generated page (and every page
+its rule or parameter), the site builds with warnings as errors, and a real browser finds things
+in it (Playwright driving Debian's Chromium; skipped where either is absent)."""
+
+from __future__ import annotations
+
+import functools
+import http.server
+import importlib.util
+import os
+import shutil
+import subprocess
+import sys
+import threading
+import time
+from collections.abc import Callable, Iterator
+from pathlib import Path
+from types import ModuleType
+
+import pytest
+
+from conftest import ROOT
+from zero.catalog.registry import Registry
+from zero.output import docs
+from zero.rules import RULES
+
+CHROMIUM = Path("/usr/bin/chromium")
+QUIET = {"NO_MKDOCS_2_WARNING": "1", "DISABLE_MKDOCS_2_WARNING": "true"}  # the plugins' banners, not warnings
+
+
+@functools.cache
+def generator() -> ModuleType:
+    """docs/gen_pages.py, imported as a module (mkdocs-gen-files runs it as a script)."""
+    spec = importlib.util.spec_from_file_location("gen_pages", ROOT / "docs" / "gen_pages.py")
+    assert spec is not None and spec.loader is not None
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+@functools.cache
+def generated() -> dict[str, Callable[[], str]]:
+    pages: dict[str, Callable[[], str]] = generator().pages()
+    return pages
+
+
+# --------------------------------------------------------------------------- the generated pages
+
+
+def test_every_rule_has_a_page_and_every_rule_page_a_rule() -> None:
+    pages = {p.removeprefix("rules/").removesuffix(".md") for p in generated() if p.startswith("rules/")}
+    assert pages - {"index"} == set(RULES)
+
+
+def test_every_parameter_has_a_page_and_every_parameter_page_a_parameter(registry: Registry) -> None:
+    kinds = {s.kind for s in registry.specs.values()}
+    pages = {p.removeprefix("parameters/").removesuffix(".md") for p in generated() if p.startswith("parameters/")}
+    assert pages - {"index", "SUMMARY"} - kinds == set(registry.specs)
+    assert len(registry.specs) >= 1766
+
+
+def test_every_command_has_a_page() -> None:
+    import typer.main
+
+    from zero.cli.app import app
+
+    group = typer.main.get_command(app)
+    pages = {p.removeprefix("commands/").removesuffix(".md") for p in generated() if p.startswith("commands/")}
+    shown = {n for n, c in group.commands.items() if not c.hidden}  # type: ignore[attr-defined]
+    assert pages - {"index", "SUMMARY"} == shown
+
+
+def test_the_hand_written_pages_the_nav_names_exist() -> None:
+    import yaml
+
+    config = yaml.safe_load((ROOT / "mkdocs.yml").read_text(encoding="utf-8"))
+
+    def leaves(items: list[object]) -> Iterator[str]:
+        for item in items:
+            for value in (item.values() if isinstance(item, dict) else [item]):
+                if isinstance(value, list):
+                    yield from leaves(value)
+                else:
+                    yield str(value)
+
+    made = set(generated())
+    for page in leaves(config["nav"]):
+        if page.endswith("/"):
+            assert f"{page}SUMMARY.md" in made, page
+        else:
+            assert page in made or (ROOT / "docs" / page).is_file(), page
+
+
+def test_a_rule_page_says_everything() -> None:
+    page = generated()["rules/R006.md"]()
+    assert page.startswith("# R006 range-reference")
+    assert "| Default severity | error |" in page and "## Why it matters on the machine" in page
+    assert "`fixtures/rules/R006/fail.lis`" in page and 'hl_lines="4"' in page
+    assert "getriebe[0].dynamik.a_emergency 5000" in page  # the failing list
+    assert "getriebe[0].dynamik.a_emergency 4000" in page  # the passing one
+    assert "fail.lis:4:33: R006 error 5000 violates" in page  # what zero reports on it
+    assert "offers no automatic fix" in page
+
+
+def test_a_kernel_rule_page_has_its_error_number_and_parameters() -> None:
+    page = generated()["rules/K031.md"]()
+    assert "`P-ERR-110051`" in page and "`fixtures/startup/110051/fail.lis`" in page
+    assert "[P-AXIS-00015](../parameters/P-AXIS-00015.md)" in page
+
+
+def test_fixes_and_their_safety_come_from_the_failing_example() -> None:
+    assert "**unsafe**" in generated()["rules/R001.md"]() and "--unsafe-fixes" in generated()["rules/R001.md"]()
+    assert "**safe**" in generated()["rules/S005.md"]()
+
+
+def test_machine_and_program_rules_show_the_fixture_machine() -> None:
+    x001 = generated()["rules/X001.md"]()
+    assert "`fixtures/machine/listen/nullp.lis`" in x001 and "X001 warning" in x001
+    assert "`fixtures/machine-clean/listen/nullp.lis`" in x001
+    assert "`fixtures/programs/bad.nc`" in generated()["rules/N001.md"]()
+    assert "no example list" in generated()["rules/F001.md"]()  # said, not made up
+
+
+def test_a_parameter_page_says_what_checks_it() -> None:
+    page = generated()["parameters/P-AXIS-00178.md"]()
+    assert page.startswith("# P-AXIS-00178 kenngr.swe\\_pos")
+    assert "| key | `kenngr.swe_pos` |" in page and "| default | `100000000` |" in page
+    assert "[P-AXIS-00177](../parameters/P-AXIS-00177.md) &lt; swe\\_pos" in page  # the range, linked
+    assert "[R006](../rules/R006.md)" in page and "[K042](../rules/K042.md)" in page
+    assert "[axis parameter list](../parameters/AXIS.md)" in page
+
+
+def test_param_checks(registry: Registry) -> None:
+    checks = docs.param_checks(registry)
+    assert set(checks) == set(registry.specs)
+    assert {c.code for c in checks["P-AXIS-00152"]} >= {"R006"}  # its prose range, evaluated
+    restart = next(s.id for s in registry.specs.values() if s.restart)
+    assert "U001" in {c.code for c in checks[restart]}
+    ranged = next(s for s in registry.specs.values()
+                  if (r := registry.range_of(s)) is not None and not r.refs)
+    assert "R005" in {c.code for c in checks[ranged.id]}
+
+
+def test_markdown_helpers() -> None:
+    assert docs.md_text("a < b | *c* [d] `e` x_y") == "a &lt; b \\| \\*c\\* \\[d\\] \\`e\\` x\\_y"
+    assert docs.md_code("a|b") == "`a\\|b`"
+    text, lines = docs.shown_list(b"a 1\r\nb\x00 2\n\xe4\n")
+    assert text.split("\n") == ["a 1\\r", "b\\x00 2", "\\xe4"] and lines == 3
+    md = docs.explanation_markdown("What it checks: one thing.\n\nWhy it matters on the machine: x\nFix: y")
+    assert "## What it checks\n\nOne thing." in md and "## Fix\n\nY" in md
+
+
+# --------------------------------------------------------------------------------- the built site
+
+
+def _mkdocs_missing() -> str | None:
+    for module in ("mkdocs", "material", "mkdocs_gen_files", "mkdocs_literate_nav"):
+        if importlib.util.find_spec(module) is None:
+            return f"{module} is not installed (pip install -e '.[docs]')"
+    return None
+
+
+@pytest.fixture(scope="module")
+def site(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    """The site built once with ``mkdocs build --strict`` (warnings are errors)."""
+    reason = _mkdocs_missing()
+    if reason:
+        pytest.skip(reason)
+    out = tmp_path_factory.mktemp("site")
+    start = time.perf_counter()
+    run = subprocess.run([sys.executable, "-m", "mkdocs", "build", "--strict", "--site-dir", str(out)],
+                         cwd=ROOT, capture_output=True, text=True, env={**os.environ, **QUIET}, timeout=600)
+    took = time.perf_counter() - start
+    assert run.returncode == 0, run.stderr[-5000:]
+    pages = sum(1 for _ in out.rglob("index.html"))
+    print(f"\nmkdocs build --strict: {took:.1f} s, {pages} pages, into {out}")
+    return out
+
+
+@pytest.mark.slow
+def test_the_site_builds_with_warnings_as_errors(site: Path, registry: Registry) -> None:
+    assert (site / "index.html").is_file() and (site / "search" / "search_index.json").is_file()
+    assert (site / "rules" / "R006" / "index.html").is_file()
+    assert (site / "parameters" / "P-AXIS-00178" / "index.html").is_file()
+    assert (site / "commands" / "lint" / "index.html").is_file()
+    assert sum(1 for _ in (site / "parameters").glob("P-*/index.html")) == len(registry.specs)
+    home = (site / "index.html").read_text(encoding="utf-8")
+    assert "fonts.googleapis.com" not in home  # nothing is fetched from the network
+
+
+def _browser_missing() -> str | None:
+    if importlib.util.find_spec("playwright") is None:
+        return "playwright is not installed (pip install -e '.[docs]')"
+    if not CHROMIUM.is_file():
+        return f"no Chromium at {CHROMIUM} (apt-get install chromium)"
+    return None
+
+
+@pytest.fixture(scope="module")
+def served(site: Path) -> Iterator[str]:
+    """The built site on a local port, served from a thread."""
+    handler = functools.partial(_QuietHandler, directory=str(site))
+    server = http.server.ThreadingHTTPServer(("127.0.0.1", 0), handler)
+    thread = threading.Thread(target=server.serve_forever, daemon=True)
+    thread.start()
+    try:
+        yield f"http://127.0.0.1:{server.server_address[1]}/"
+    finally:
+        server.shutdown()
+        server.server_close()
+
+
+class _QuietHandler(http.server.SimpleHTTPRequestHandler):
+    def log_message(self, format: str, *args: object) -> None:  # the base class names it `format`
+        pass
+
+
+def _search(page: object, base: str, text: str) -> list[str]:
+    """Type ``text`` into Material's search box and return the result links' addresses."""
+    from playwright.sync_api import Page
+
+    assert isinstance(page, Page)
+    page.goto(base)
+    box = page.locator("input.md-search__input")  # in the header, on a wide screen
+    box.click()
+    box.fill(text)
+    page.wait_for_selector("li.md-search-result__item a", timeout=60_000)
+    return [str(a.get_attribute("href")) for a in page.locator("li.md-search-result__item a").all()]
+
+
+@pytest.mark.slow
+def test_a_browser_finds_things_in_the_site(served: str, tmp_path: Path) -> None:
+    reason = _browser_missing()
+    if reason:
+        pytest.skip(reason)
+    from playwright.sync_api import sync_playwright
+
+    with sync_playwright() as p:
+        browser = p.chromium.launch(executable_path=str(CHROMIUM), args=["--no-sandbox"])
+        try:
+            page = browser.new_page(viewport={"width": 1280, "height": 900})
+            errors: list[str] = []
+            page.on("pageerror", lambda exc: errors.append(str(exc)))
+            links = _search(page, served, "swe_pos")
+            assert any("parameters/P-AXIS-00178/" in link for link in links), links
+            found = tmp_path / "search-swe_pos.png"
+            page.screenshot(path=str(found))
+            links = _search(page, served, "R006")
+            assert any("rules/R006/" in link for link in links), links
+
+            page.goto(served)
+            home = tmp_path / "home.png"
+            page.screenshot(path=str(home), full_page=True)
+            assert "zero" in page.title()
+
+            page.goto(served + "rules/R006/")
+            example = page.locator("pre", has_text="getriebe[0].dynamik.a_emergency 5000").first
+            example.wait_for(state="visible", timeout=10_000)
+            assert page.locator(".hll", has_text="a_emergency 5000").count() >= 1  # the reported line, marked
+            assert page.get_by_text("fail.lis:4:33: R006 error").first.is_visible()
+            rule = tmp_path / "rule-R006.png"
+            page.screenshot(path=str(rule), full_page=True)
+            assert not errors, errors
+            print(f"\nscreenshots: {home} {rule} {found}")
+            keep = os.environ.get("ZERO_DOCS_SCREENSHOTS")  # a folder to keep them in, for a review
+            if keep:
+                Path(keep).mkdir(parents=True, exist_ok=True)
+                for shot in (home, rule, found):
+                    shutil.copy(shot, Path(keep) / shot.name)
+        finally:
+            browser.close()
