@@ -309,3 +309,17 @@ def test_strict_makes_warnings_junit_failures_on_the_command_line(tmp_path: Path
     strict = zero_cli("lint", "--isolated", "--strict", "--output-format", "junit", str(warn))
     assert plain.code == 0 and 'failures="0"' in plain.stdout
     assert strict.code == 1 and 'failures="1"' in strict.stdout and "<failure" in strict.stdout
+
+
+def test_sarif_help_uri_points_at_the_documentation_site(monkeypatch: pytest.MonkeyPatch) -> None:
+    """With the site's address in ZERO_DOCS_URL, each rule's helpUri is its generated page (the
+    path the site's generator writes, with MkDocs' directory URLs); without one there is none."""
+    from zero.output.docs import rule_page_path
+    from zero.output.formats import rule_docs_template
+
+    monkeypatch.delenv("ZERO_DOCS_URL", raising=False)
+    assert rule_docs_template() is None
+    monkeypatch.setenv("ZERO_DOCS_URL", "https://zero.example.org/docs/")
+    template = rule_docs_template()
+    assert template is not None
+    assert template.format(code="R006") == "https://zero.example.org/docs/" + rule_page_path("R006")[:-3] + "/"

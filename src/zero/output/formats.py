@@ -23,6 +23,18 @@ from zero.rules import RULES
 # optional; the rule's text is in the log itself, ``help``); whoever publishes the rule texts
 # sets it here, or passes ``rule_docs`` to :func:`render_sarif`.
 RULE_DOCS_URL: str | None = None
+DOCS_URL_VARIABLE = "ZERO_DOCS_URL"  # the documentation site's address (`https://…`): rule pages below it
+
+
+def rule_docs_template() -> str | None:
+    """Where each rule's page is (``{code}`` for its code): :data:`RULE_DOCS_URL` where set, else
+    below the documentation site ``$ZERO_DOCS_URL`` names (``<site>/rules/R006/``, the page the
+    site's generator writes); ``None`` where zero knows no address (the rule's text then travels
+    in the report itself)."""
+    if RULE_DOCS_URL:
+        return RULE_DOCS_URL
+    site = os.environ.get(DOCS_URL_VARIABLE, "").strip()
+    return f"{site.rstrip('/')}/rules/{{code}}/" if site.startswith(("https://", "http://")) else None
 # The tool's home page (SARIF ``informationUri``); none by default, for the same reason.
 PROJECT_URL: str | None = None
 # The name of zero's own fingerprint among a SARIF result's ``partialFingerprints``.
@@ -201,7 +213,7 @@ def render_sarif(results: Sequence[LintResult], stream: TextIO, rule_docs: str |
     fingerprint (``partialFingerprints``: that of :func:`fingerprints`, so a result uploaded again
     is known again) and the invocation: not successful when a file could not be read (F001, the
     run exits 2), each such file a notification."""
-    docs = rule_docs if rule_docs is not None else RULE_DOCS_URL
+    docs = rule_docs if rule_docs is not None else rule_docs_template()
     level = {Severity.ERROR: "error", Severity.WARNING: "warning", Severity.INFO: "note"}
     used = sorted({d.code for d in _each(results)})
     rules: list[dict[str, object]] = []

@@ -9,7 +9,7 @@ import os
 import sys
 from collections import Counter
 from collections.abc import Iterable
-from typing import TextIO
+from typing import Any, TextIO
 
 from zero.diagnostics import Diagnostic, Severity
 from zero.engine.lint import LintResult, Totals, tallied
@@ -172,24 +172,32 @@ PROGRESS_MIN_FILES = 200
 
 
 class ProgressBar:
-    """A one-line progress bar on stderr, only on a terminal and only for long runs."""
+    """A progress bar on stderr (rich's), only on a terminal and only for long runs; gone when done."""
 
     def __init__(self, stream: TextIO | None = None) -> None:
         self.stream = stream or sys.stderr
         self.shown = False
+        self._progress: Any = None
+        self._task: Any = None
 
     def start(self, total: int) -> ProgressBar | None:
         if total < PROGRESS_MIN_FILES or not self.stream.isatty():
             return None
+        from rich.console import Console  # start-up: only a long run on a terminal shows a bar
+        from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeRemainingColumn
+
+        self._progress = Progress(TextColumn("zero:"), BarColumn(), MofNCompleteColumn(), TextColumn("files"),
+                                  TimeRemainingColumn(), console=Console(file=self.stream), transient=True)
+        self._progress.start()
+        self._task = self._progress.add_task("lint", total=total)
         self.shown = True
         return self
 
     def __call__(self, done: int, total: int) -> None:
-        width = 30
-        filled = width * done // max(total, 1)
-        self.stream.write(f"\r\033[Kzero: [{'#' * filled}{'.' * (width - filled)}] {done}/{total} files")
-        self.stream.flush()
+        if self._progress is not None:
+            self._progress.update(self._task, completed=done, total=total)
 
     def finish(self) -> None:
-        if self.shown:
-            self.stream.write("\r\033[K")
+        if self._progress is not None:
+            self._progress.stop()
+            self._progress = None

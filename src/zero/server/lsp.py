@@ -41,6 +41,7 @@ from zero.errors import ZeroError
 from zero.files import read_file
 from zero.forms import CONFIG_NAMES
 from zero.lists.encoding import decode
+from zero.output.formats import rule_docs_template
 from zero.server import actions, completion, findings, hover, outline
 from zero.server.documents import Analysis, Projects
 from zero.server.positions import path_of
@@ -107,7 +108,7 @@ class ZeroServer(LanguageServer):
                          protocol_cls=ZeroProtocol)
         self.settings = Settings()
         self.projects = Projects(registries, param_desc, self.settings)
-        self.rule_docs = findings.RuleDocs()
+        self.rule_docs = findings.RuleDocs(rule_docs_template())
         self.analyses: dict[str, Analysis] = {}
         self.timers: dict[str, asyncio.TimerHandle] = {}
         self.snippets = False
@@ -211,7 +212,7 @@ def create_server(registries: Registries, param_desc: Path | None = None) -> Zer
     @server.feature(types.INITIALIZE)
     def initialize(params: types.InitializeParams) -> None:
         refused = server.settings.update(params.initialization_options)
-        server.rule_docs = findings.RuleDocs(server.settings.rule_docs)
+        server.rule_docs = findings.RuleDocs(server.settings.rule_docs or rule_docs_template())
         caps = params.capabilities.text_document
         item = caps.completion.completion_item if caps and caps.completion else None
         server.snippets = bool(item and item.snippet_support)
@@ -263,7 +264,7 @@ def create_server(registries: Registries, param_desc: Path | None = None) -> Zer
     @server.feature(types.WORKSPACE_DID_CHANGE_CONFIGURATION)
     def configuration(params: types.DidChangeConfigurationParams) -> None:
         server.settings.update(params.settings)
-        server.rule_docs = findings.RuleDocs(server.settings.rule_docs)
+        server.rule_docs = findings.RuleDocs(server.settings.rule_docs or rule_docs_template())
         server.refresh_all()
 
     @server.feature(types.TEXT_DOCUMENT_HOVER)
