@@ -184,7 +184,13 @@ class ProgressBar:
         if total < PROGRESS_MIN_FILES or not self.stream.isatty():
             return None
         from rich.console import Console  # start-up: only a long run on a terminal shows a bar
-        from rich.progress import BarColumn, MofNCompleteColumn, Progress, TextColumn, TimeRemainingColumn
+        from rich.progress import (  # start-up: as above
+            BarColumn,
+            MofNCompleteColumn,
+            Progress,
+            TextColumn,
+            TimeRemainingColumn,
+        )
 
         self._progress = Progress(TextColumn("zero:"), BarColumn(), MofNCompleteColumn(), TextColumn("files"),
                                   TimeRemainingColumn(), console=Console(file=self.stream), transient=True)
