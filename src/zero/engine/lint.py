@@ -135,7 +135,19 @@ def _selected_rules(options: LintOptions) -> dict[str, Severity]:
 Layer = tuple[tuple[str, ...], tuple[str, ...], tuple[str, ...]]  # select, extend-select, ignore
 
 
+_layered: dict[tuple[tuple[Layer, ...], tuple[str, ...]], LintOptions] = {}
+
+
 def layered_selection(layers: Sequence[Layer], dropped: Sequence[str] = ()) -> LintOptions:
+    """:func:`_layered_selection`, memoised: every file of a run asks with the same few layers."""
+    key = (tuple(layers), tuple(dropped))
+    hit = _layered.get(key)
+    if hit is None:
+        hit = _layered[key] = _layered_selection(key[0], key[1])
+    return hit
+
+
+def _layered_selection(layers: Sequence[Layer], dropped: Sequence[str] = ()) -> LintOptions:
     """Rule selection as ruff resolves it, as options for one file. Each layer (an inherited
     configuration, the configuration, the command line) changes the rules the one below enabled:
     a layer with ``select`` starts anew (what the layers below enabled or ignored no longer
