@@ -195,44 +195,32 @@ def _suggest_option(command: Any, ctx: Any, exc: Exception) -> None:
     exc.message = f"No such option: {name}" + (f" (did you mean {near[0]}?)" if near else "")  # type: ignore[attr-defined]
 
 
-class ZeroCommand(typer.core.TyperCommand):
+class _ZeroHelp:
+    """Help, usage line and option suggestions in zero's own words (for a command or the group)."""
+
+    def get_help(self, ctx: Any) -> str:
+        return help_text(self, ctx)
+
+    def get_usage(self, ctx: Any) -> str:
+        return usage_line(self, ctx)
+
+    def format_help(self, ctx: Any, formatter: Any) -> None:
+        formatter.write(help_text(self, ctx))
+
+    def parse_args(self, ctx: Any, args: list[str]) -> list[str]:
+        try:
+            return super().parse_args(ctx, args)  # type: ignore[misc,no-any-return]
+        except Exception as exc:
+            _suggest_option(self, ctx, exc)
+            raise
+
+
+class ZeroCommand(_ZeroHelp, typer.core.TyperCommand):
     """A typer command whose help, usage line and option suggestions are zero's own."""
 
-    def get_help(self, ctx: Any) -> str:
-        return help_text(self, ctx)
 
-    def get_usage(self, ctx: Any) -> str:
-        return usage_line(self, ctx)
-
-    def format_help(self, ctx: Any, formatter: Any) -> None:
-        formatter.write(help_text(self, ctx))
-
-    def parse_args(self, ctx: Any, args: list[str]) -> list[str]:
-        try:
-            return super().parse_args(ctx, args)
-        except Exception as exc:
-            _suggest_option(self, ctx, exc)
-            raise
-
-
-class ZeroGroup(typer.core.TyperGroup):
+class ZeroGroup(_ZeroHelp, typer.core.TyperGroup):
     """The ``zero`` group, with the help of :class:`ZeroCommand`."""
-
-    def get_help(self, ctx: Any) -> str:
-        return help_text(self, ctx)
-
-    def get_usage(self, ctx: Any) -> str:
-        return usage_line(self, ctx)
-
-    def format_help(self, ctx: Any, formatter: Any) -> None:
-        formatter.write(help_text(self, ctx))
-
-    def parse_args(self, ctx: Any, args: list[str]) -> list[str]:
-        try:
-            return super().parse_args(ctx, args)
-        except Exception as exc:
-            _suggest_option(self, ctx, exc)
-            raise
 
 
 # ---------------------------------------------------------------- values, completion
