@@ -8,13 +8,19 @@ Lists: the 6,208-entry zero-offset list (97 groups x 32 axes x versch/inaktiv, a
 ``benchmarks/workloads.py`` builds it) and the vendor's axis list from ``../shared/corpus``
 (skipped where absent). Prints figures; it passes or fails nothing.
 
-usage: python benchmarks/bench_lsp.py [--rounds N]
+Then a pathological list, 60,000 faulty entries (50,002 findings: zero reports at most 10,000 of
+one code in one file, so five kinds of fault: R001, R004, R005, R007, S004), with the cap on the
+findings published per file on (``maxFindings`` 2000, the default) and off (0): open and edit to
+findings, and the size of one publish as JSON.
+
+usage: python benchmarks/bench_lsp.py [--rounds N] [--cap-only]
 """
 
 from __future__ import annotations
 
 import argparse
 import asyncio
+import json
 import statistics
 import sys
 import tempfile
@@ -89,11 +95,48 @@ async def measure(client: LanguageClient, path: Path, text: str, line: int, edit
 
 
 
-async def main(rounds: int) -> None:
+FAULTS = ("np_grp[1].achse[0].versch 100", "np_grp[1].achse[1].inaktiv 7", "np_grp[1].achse[2].versch x",
+          "np_grp[1].achse[3]. versch 1", "np_grp[1].achse[4].fooo 1", "np_grp[1].achse[5].versch 99999999999")
+
+
+def publish_bytes(client: LanguageClient, path: Path) -> int:
+    """The size of the last publish for ``path`` as JSON (as the server wrote it, near enough)."""
+    published: list[types.PublishDiagnosticsParams] = client.published  # type: ignore[attr-defined]
+    last = next(p for p in reversed(published) if p.uri == path.as_uri())
+    return len(json.dumps(client.protocol._converter.unstructure(last)).encode("utf-8"))
+
+
+async def measure_cap(folder: Path, cap: int) -> dict[str, float]:
+    """A list with 50,002 findings: open and edit to findings, with ``maxFindings`` ``cap``."""
+    text = "".join(FAULTS[i % len(FAULTS)] + "\n" for i in range(60_000))
+    path = folder / f"viele-{cap}.lis"
+    figures: dict[str, list[float]] = {}
+    async for client in session(folder / f"cache-{cap}", options={"debounce": 0, "maxFindings": cap}):
+        ms, found = await timed(lambda c=client: open_document(c, path, text))  # type: ignore[misc]
+        figures["open → findings"] = [ms]
+        figures["published"] = [len(found)]
+        figures["publish JSON MB"] = [publish_bytes(client, path) / 1e6]
+        for v in range(2, 2 + ROUNDS):
+            changed = text.replace(" 100\n", f" {v}00\n", 1)  # the first entry's value
+            ms, found = await timed(lambda c=client, v=v, t=changed: change_document(c, path, t, v))  # type: ignore[misc]
+            figures.setdefault("edit → findings", []).append(ms)
+        close_document(client, path)
+    medians = {k: statistics.median(v) for k, v in figures.items()}
+    print(f"\n60,000 faulty entries (50,002 findings), maxFindings {cap or 'off (0)'}: open → findings "
+          f"{medians['open → findings']:.0f} ms, edit → findings {medians['edit → findings']:.0f} ms, "
+          f"{medians['published']:.0f} published, {medians['publish JSON MB']:.2f} MB of JSON per publish")
+    return medians
+
+
+async def main(rounds: int, cap_only: bool = False) -> None:
     global ROUNDS
     ROUNDS = rounds
     with tempfile.TemporaryDirectory() as tmp:
         folder = Path(tmp)
+        await measure_cap(folder, 2000)
+        await measure_cap(folder, 0)
+        if cap_only:
+            return
         async for client in session(folder / "cache", options={"debounce": 0}):
             text = full_zero_list().decode()
             lines = text.split("\n")
@@ -124,4 +167,6 @@ async def main(rounds: int) -> None:
 if __name__ == "__main__":
     a = argparse.ArgumentParser()
     a.add_argument("--rounds", type=int, default=ROUNDS)
-    asyncio.run(main(a.parse_args().rounds))
+    a.add_argument("--cap-only", action="store_true", help="only the 50,000-finding list, cap on and off")
+    args = a.parse_args()
+    asyncio.run(main(args.rounds, args.cap_only))

@@ -7,14 +7,22 @@ can be suppressed on its line in the list's own comment syntax, written as ``zer
 --add-noqa`` writes it (:func:`zero.engine.baseline.add_noqa`), and in the trailing comment
 of a YAML/TOML line. ``source.fixAll.zero`` applies the safe fixes as ``zero lint --fix``
 does, ``source.zero.fixAllUnsafe`` the unsafe ones too; formatting is ``zero format``.
+
+Commands (``workspace/executeCommand``): ``zero.fixAll`` (arguments: the document's URI) makes
+the edit of ``zero lint --fix``, which the server asks the client to apply
+(``workspace/applyEdit``); ``zero.showEffectiveValue`` (arguments: the URI and a position
+``{line, character}``) says where the value of the parameter there comes from on the machine,
+as ``zero explain KEY`` says it (:func:`zero.machine.effective.scope_values`).
 """
 
 from __future__ import annotations
 
 import re
 from collections.abc import Sequence
+from typing import Any
 
 from lsprotocol import types
+from pygls.exceptions import JsonRpcInvalidParams
 
 from zero.diagnostics import Diagnostic
 from zero.engine.baseline import NOT_RECORDED, add_noqa
@@ -25,6 +33,7 @@ from zero.forms import LIST, PROGRAM, STRUCTURED
 from zero.lists.encoding import BOM, decode
 from zero.server.documents import Analysis
 from zero.server.findings import RuleDocs, span_range, to_lsp
+from zero.server.hover import machine_lines, target_at
 from zero.server.positions import Text
 
 FIX_ALL = "source.fixAll.zero"
@@ -169,7 +178,8 @@ def _wanted(kind: str, only: Sequence[str] | None) -> bool:
     return not only or any(kind == o or kind.startswith(o + ".") for o in only)
 
 
-def _fix_all(a: Analysis, unsafe: bool) -> list[types.TextEdit]:
+def fix_all_edits(a: Analysis, unsafe: bool) -> list[types.TextEdit]:
+    """The edits of ``zero lint --fix`` (``unsafe``: ``--unsafe-fixes`` too) to the document."""
     fixed = fix_bytes(a.data, a.name, a.registry, a.options, unsafe)
     if fixed.fixed == a.data:
         return []
@@ -207,7 +217,7 @@ def code_actions(a: Analysis, rng: types.Range, only: Sequence[str] | None, docs
             if lazy:
                 out.append(types.CodeAction(title, kind=kind, data={"uri": a.uri, "unsafe": unsafe}))
                 continue
-            edits = _fix_all(a, unsafe)
+            edits = fix_all_edits(a, unsafe)
             if edits:
                 out.append(types.CodeAction(title, kind=kind, edit=types.WorkspaceEdit(changes={a.uri: edits})))
     return out
@@ -217,5 +227,56 @@ def resolve(a: Analysis, action: types.CodeAction) -> types.CodeAction:
     """A whole-file fix with its edit (for the current text of the document)."""
     data = action.data if isinstance(action.data, dict) else {}
     if action.edit is None and a.form == LIST and a.result is not None:
-        action.edit = types.WorkspaceEdit(changes={a.uri: _fix_all(a, bool(data.get("unsafe")))})
+        action.edit = types.WorkspaceEdit(changes={a.uri: fix_all_edits(a, bool(data.get("unsafe")))})
     return action
+
+
+# ------------------------------------------------------------------ commands
+
+
+FIX_ALL_COMMAND = "zero.fixAll"
+SHOW_EFFECTIVE_VALUE = "zero.showEffectiveValue"
+COMMANDS = [FIX_ALL_COMMAND, SHOW_EFFECTIVE_VALUE]
+
+
+def uri_argument(command: str, args: tuple[Any, ...], count: int) -> str:
+    if len(args) != count or not isinstance(args[0], str):
+        wanted = "[uri]" if count == 1 else "[uri, {line, character}]"
+        raise JsonRpcInvalidParams(f"{command} takes the arguments {wanted}, not {list(args)!r}"[:300])
+    return args[0]
+
+
+def position_argument(command: str, value: Any) -> tuple[int, int]:
+    if isinstance(value, dict) and isinstance(value.get("line"), int) and isinstance(value.get("character"), int) \
+            and value["line"] >= 0 and value["character"] >= 0:
+        return value["line"], value["character"]
+    raise JsonRpcInvalidParams(f"{command}: the position is not {{line, character}}: {value!r}"[:300])
+
+
+def fix_all_edit(a: Analysis) -> types.WorkspaceEdit | None:
+    """The edit ``zero lint --fix`` makes to the document (``None``: nothing to fix)."""
+    if a.form != LIST or a.result is None:
+        return None
+    edits = fix_all_edits(a, unsafe=False)
+    return types.WorkspaceEdit(changes={a.uri: edits}) if edits else None
+
+
+def effective_value(a: Analysis, line: int, character: int) -> dict[str, Any]:
+    """Where the value of the parameter at the position comes from: ``key``, ``message`` (the text
+    shown), ``lines`` (each layer, as ``zero explain`` lists them); ``key`` None where there is no
+    parameter."""
+    if line >= len(a.text.lines):
+        return {"key": None, "message": "zero: no parameter here", "lines": []}
+    t = target_at(a, line, a.text.column(line, character))
+    if t is None:
+        return {"key": None, "message": "zero: no parameter here", "lines": []}
+    key = t.key or t.spec.key or t.spec.id
+    lines = machine_lines(a, t)
+    if lines:
+        message = f"{key} ({t.spec.id}): " + "; ".join(x.removeprefix("- ") for x in lines)
+    elif a.machine_list() is None:
+        written = f" = `{t.entry.value}` in this list" if t.entry is not None else ""
+        message = f"{key} ({t.spec.id}){written}: this file is not a list of a machine ([tool.zero.machine])"
+    else:
+        message = f"{key} ({t.spec.id}): not set on the machine"
+    return {"key": key, "id": t.spec.id, "message": message, "lines": lines}

@@ -221,7 +221,7 @@ def _range_lines(t: Target, values: ListValues | None, registry: Registry) -> li
     return out
 
 
-def _machine_lines(a: Analysis, t: Target) -> list[str]:
+def machine_lines(a: Analysis, t: Target) -> list[str]:
     """The effective value on the machine and the layers under it (``zero explain``)."""
     lf = a.machine_list()
     if lf is None or t.entry is None or t.entry.key is None:
@@ -256,7 +256,7 @@ def hover_text(a: Analysis, t: Target) -> str:
     value = _value_lines(t, values)
     if value:
         lines.append(" ".join(value))
-    for block in (_range_lines(t, values, a.registry), _machine_lines(a, t)):
+    for block in (_range_lines(t, values, a.registry), machine_lines(a, t)):
         if block:
             lines.append("\n".join(block))
     lines.append(f"```text\n{param_text(spec, a.registry)}```")

@@ -3,14 +3,20 @@
 Documents are synchronised incrementally; a document is linted when it is opened, and again
 after a quiet spell once it changes (``debounce``, 250 ms by default), on the event loop's one
 thread (the engine is never run twice at once). A request about a document whose findings are
-not current lints it first, so that answers always match the text. Saving any file, or a
-configuration file changing, reads the projects' configuration and machines again and
-re-lints every open document.
+not current lints it first, so that answers always match the text. Once an edited list of a
+machine is linted, the other open documents of that machine (its lists, NC programs checked
+against it) are linted again right after it: their X findings follow its unsaved text; a list
+closed unsaved does the same. Saving any file, or a configuration file changing, reads the
+projects' configuration and machines again and re-lints every open document. At most
+``maxFindings`` findings (2000 by default) are published per document, then one saying how many
+more ``zero lint`` reports. A client that pulls findings (``textDocument/diagnostic``) and can be
+asked to pull again (``workspace/diagnostic/refresh``) gets them pulled and none pushed.
 
 Nothing stops the server but ``exit``: a request whose parameters cannot be read is answered
-with ``InvalidParams``; a document that cannot be read (a FIFO, a missing file named by a
-request) with ``RequestFailed`` and its reason; an error inside zero with ``InternalError``
-for a request, and for a document's findings as one diagnostic saying so.
+with ``InvalidParams`` and said in one line on stderr (no traceback); a document that cannot be
+read (a FIFO, a missing file named by a request) with ``RequestFailed`` and its reason; an error
+inside zero with ``InternalError`` for a request, and for a document's findings as one diagnostic
+saying so.
 """
 
 from __future__ import annotations
@@ -48,6 +54,7 @@ from zero.server.positions import path_of
 from zero.server.settings import Settings
 
 REQUEST_FAILED = -32803  # LSP ErrorCodes.RequestFailed
+INVALID_PARAMS = -32602
 WATCHED = "**/{" + ",".join(CONFIG_NAMES) + "}"  # the configuration files, as the resolver finds them
 logger = logging.getLogger("zero.server")
 
@@ -65,14 +72,17 @@ class ZeroProtocol(LanguageServerProtocol):
 
     def structure_message(self, data: dict[str, Any]) -> Any:
         try:
-            return super().structure_message(data)
+            return super().structure_message(data)  # its traceback dropped (_QuietRefusals): said here in a line
         except JsonRpcException as exc:
-            if isinstance(data, dict) and "id" in data and "method" in data:
-                cause = exc.__cause__
-                detail = str(cause).splitlines()[0] if cause is not None and str(cause) else exc.message
-                error = JsonRpcInvalidParams(f"{data.get('method')}: the parameters cannot be read: {detail}")
-                self._send_response(data["id"], error=error.to_response_error())
+            if isinstance(data, dict) and "method" in data:
+                why = f"{data.get('method')}: the parameters cannot be read: {_unreadable(exc)}"
+                if "id" in data:
+                    logger.warning("request %s refused: %s", _shown_id(data["id"]), why)
+                    self._send_response(data["id"], error=JsonRpcInvalidParams(why).to_response_error())
+                else:
+                    logger.warning("notification ignored: %s", why)
                 return ANSWERED
+            logger.warning("a message from the client cannot be read: %s", _unreadable(exc))
             raise
 
     def handle_message(self, message: Any) -> None:
@@ -86,6 +96,34 @@ class ZeroProtocol(LanguageServerProtocol):
         super().handle_message(message)
 
 
+def _unreadable(exc: JsonRpcException) -> str:
+    """What is wrong with a message's parameters, in one line (``$.params.position.line: invalid
+    literal for int() with base 10: 'x'``), from the exception group cattrs raises."""
+    cause = exc.__cause__
+    said = "; ".join(_leaves(cause, "$")) if cause is not None else ""
+    return (said or exc.message or type(exc).__name__)[:500]
+
+
+_ATTRIBUTE = re.compile(r"@ (?:attribute|index|key) (.+)$")
+
+
+def _leaves(exc: BaseException, path: str) -> list[str]:
+    subs = getattr(exc, "exceptions", None)
+    if not subs:
+        text = str(exc).splitlines()[0] if str(exc) else type(exc).__name__
+        return [f"{path}: {text}"]
+    out = []
+    for sub in subs:
+        where = next((m.group(1) for note in getattr(sub, "__notes__", []) if isinstance(note, str)
+                      and (m := _ATTRIBUTE.search(note))), None)
+        out.extend(_leaves(sub, f"{path}.{where}" if where is not None else path))
+    return out
+
+
+def _shown_id(msg_id: Any) -> str:
+    return json.dumps(msg_id)[:80] if isinstance(msg_id, (str, int)) else "?"
+
+
 def failed(message: str) -> JsonRpcException:
     return JsonRpcException(message, code=REQUEST_FAILED)
 
@@ -95,11 +133,22 @@ def expected(error: BaseException | None) -> bool:
     return isinstance(error, JsonRpcException) and error.code == REQUEST_FAILED
 
 
+def refused(error: BaseException | None) -> bool:
+    """A request refused for its parameters (``InvalidParams``): the client's fault, said in one line."""
+    return isinstance(error, JsonRpcException) and error.code == INVALID_PARAMS
+
+
 class _QuietRefusals(logging.Filter):
-    """pygls logs every error answer with its traceback; a refusal is no error: dropped."""
+    """pygls logs every error answer with its traceback, and every message it cannot read with the
+    traceback of its reading (40 lines at ERROR for a request with a bad position). A refusal is no
+    error of the server: dropped here, and said in one line where it is answered
+    (:meth:`ZeroProtocol.structure_message`, :meth:`ZeroServer.report_server_error`)."""
 
     def filter(self, record: logging.LogRecord) -> bool:
-        return not (record.exc_info is not None and expected(record.exc_info[1]))
+        if record.exc_info is not None and (expected(record.exc_info[1]) or refused(record.exc_info[1])):
+            return False
+        return not (record.name.startswith("pygls") and isinstance(record.msg, str)
+                    and record.msg.startswith("Unable to deserialize message"))
 
 
 class ZeroServer(LanguageServer):
@@ -111,6 +160,9 @@ class ZeroServer(LanguageServer):
         self.rule_docs = findings.RuleDocs(rule_docs_template())
         self.analyses: dict[str, Analysis] = {}
         self.timers: dict[str, asyncio.TimerHandle] = {}
+        self.edited: set[str] = set()  # documents changed since they were last linted by their timer
+        self.pull = False  # the client pulls findings (textDocument/diagnostic): none pushed
+        self.refresh = False  # … and may be told to pull again (workspace/diagnostic/refresh)
         self.snippets = False
         self.lazy_actions = False
         self.shut_down = False  # the client asked to shut down (exit then ends the process with 0, else 1)
@@ -120,6 +172,10 @@ class ZeroServer(LanguageServer):
         on purpose (``RequestFailed``: a list `zero format` cannot read) is answered with its reason
         and is no error of the server: not logged."""
         if expected(error):
+            return
+        if refused(error):
+            message = error.message if isinstance(error, JsonRpcException) else str(error)
+            logger.warning("request refused: %s", message.splitlines()[0] if message else type(error).__name__)
             return
         logger.error("%s", error)
         with contextlib.suppress(Exception):  # the client is gone: nothing to tell
@@ -167,22 +223,83 @@ class ZeroServer(LanguageServer):
         self.analyses[key] = a
         return a
 
+    def found(self, uri: str) -> list[types.Diagnostic]:
+        """The findings of a document as published or pulled (at most ``maxFindings`` and one saying
+        how many more; an error inside zero is said as one)."""
+        try:
+            a = self.analysis(uri)
+            return findings.diagnostics(a, self.rule_docs, self.settings.max_findings)
+        except JsonRpcException:
+            raise
+        except Exception as exc:  # a fault in zero: said on the document, never the end of the server
+            logger.error("zero could not check %s:\n%s", uri, traceback.format_exc())
+            return [types.Diagnostic(types.Range(types.Position(0, 0), types.Position(0, 0)),
+                                     f"zero could not check this file (an error in zero, please report it): "
+                                     f"{type(exc).__name__}: {exc}", severity=types.DiagnosticSeverity.Error,
+                                     source="zero")]
+
     def publish(self, uri: str) -> None:
-        """Lint a document and publish its findings (an error inside zero is said as one)."""
-        self.timers.pop(unquote(uri), None)
+        """Lint a document and publish its findings; where it was edited, the other open documents of
+        its machine are linted again next (their X findings follow its unsaved text)."""
+        key = unquote(uri)
+        self.timers.pop(key, None)
         doc = self.document(uri)
         if doc is None:
             return
-        try:
-            a = self.analysis(uri)
-            found = findings.diagnostics(a, self.rule_docs)
-        except Exception as exc:  # a fault in zero: said on the document, never the end of the server
-            logger.error("zero could not check %s:\n%s", uri, traceback.format_exc())
-            found = [types.Diagnostic(types.Range(types.Position(0, 0), types.Position(0, 0)),
-                                      f"zero could not check this file (an error in zero, please report it): "
-                                      f"{type(exc).__name__}: {exc}", severity=types.DiagnosticSeverity.Error,
-                                      source="zero")]
-        self.text_document_publish_diagnostics(types.PublishDiagnosticsParams(doc.uri, found, version=doc.version))
+        before = self.analyses.get(key)
+        if self.pull:
+            with contextlib.suppress(Exception):  # said when the client pulls them
+                self.analysis(uri)
+        else:
+            found = self.found(uri)
+            self.text_document_publish_diagnostics(types.PublishDiagnosticsParams(doc.uri, found,
+                                                                                  version=doc.version))
+        if key in self.edited:
+            self.edited.discard(key)
+            self.relint_machine(uri, before, self.analyses.get(key))
+
+    def neighbours(self, uri: str, *analyses: Analysis | None) -> list[str]:
+        """The other open documents on the machine of ``uri`` (as saved, and as ``analyses`` read it:
+        an unsaved start-up list may name other lists): its lists, and NC programs checked against it."""
+        lists: set[str] = set()
+        startups: set[str] = set()
+        machines = [a.machine for a in analyses if a is not None and a.machine is not None]
+        path = path_of(uri)
+        if path is not None:
+            with contextlib.suppress(Exception):  # a machine that cannot be read: as the analyses read it
+                saved = self.projects.machine(path)
+                if saved is not None:
+                    machines.append(saved)
+        for m in machines:
+            startups.add(os.path.realpath(m.startup.path))
+            lists.update(os.path.realpath(lf.path) for lf in m.lists)
+        lists |= startups
+        me = os.path.realpath(path) if path is not None else None
+        if me is None or me not in lists:
+            return []  # not a list of a machine (an NC program, a list of none): nothing depends on its text
+        out = []
+        for doc in self.workspace.text_documents.values():
+            other = path_of(doc.uri)
+            real = os.path.realpath(other) if other is not None else None
+            if real is None or real == me:
+                continue
+            a = self.analyses.get(unquote(doc.uri))
+            if real in lists or (a is not None and a.machine is not None
+                                 and os.path.realpath(a.machine.startup.path) in startups):
+                out.append(doc.uri)
+        return out
+
+    def relint_machine(self, uri: str, *analyses: Analysis | None) -> None:
+        """Lint the other open documents of the machine again (pushed a moment later, each after the
+        other; a client that pulls is asked to pull again)."""
+        others = self.neighbours(uri, *analyses)
+        for other in others:
+            self.analyses.pop(unquote(other), None)
+            if not self.pull:
+                self.schedule(other, MIN_DEBOUNCE)
+        if others and self.pull and self.refresh:
+            future = self.workspace_diagnostic_refresh(None)
+            future.add_done_callback(lambda f: f.cancelled() or f.exception())
 
     def schedule(self, uri: str, delay: float | None = None) -> None:
         self.cancel(uri)
@@ -218,6 +335,14 @@ def create_server(registries: Registries, param_desc: Path | None = None) -> Zer
         server.snippets = bool(item and item.snippet_support)
         resolve = caps.code_action.resolve_support if caps and caps.code_action else None
         server.lazy_actions = bool(resolve and "edit" in resolve.properties)
+        workspace = params.capabilities.workspace
+        server.refresh = bool(workspace and workspace.diagnostics and workspace.diagnostics.refresh_support)
+        # pull where the client pulls and can be told to pull again (a neighbour's edit changes the
+        # findings of a list it does not touch): else pushed, and no diagnosticProvider advertised
+        if caps is not None and caps.diagnostic is not None and server.refresh and not server.pull:
+            server.pull = True
+            server.feature(types.TEXT_DOCUMENT_DIAGNOSTIC, types.DiagnosticOptions(
+                inter_file_dependencies=True, workspace_diagnostics=False, identifier="zero"))(on_diagnostic)
         if refused:
             logger.warning("unknown or bad settings ignored: %s", ", ".join(refused))
 
@@ -244,6 +369,7 @@ def create_server(registries: Registries, param_desc: Path | None = None) -> Zer
 
     @server.feature(types.TEXT_DOCUMENT_DID_CHANGE)
     def did_change(params: types.DidChangeTextDocumentParams) -> None:
+        server.edited.add(unquote(params.text_document.uri))
         server.schedule(params.text_document.uri)
 
     @server.feature(types.TEXT_DOCUMENT_DID_SAVE)
@@ -254,8 +380,12 @@ def create_server(registries: Registries, param_desc: Path | None = None) -> Zer
     def did_close(params: types.DidCloseTextDocumentParams) -> None:
         uri = params.text_document.uri
         server.cancel(uri)
-        server.analyses.pop(unquote(uri), None)
-        server.text_document_publish_diagnostics(types.PublishDiagnosticsParams(uri, []))
+        server.edited.discard(unquote(uri))
+        closed = server.analyses.pop(unquote(uri), None)
+        if closed is not None and not closed.saved:  # its unsaved text no longer counts for the machine
+            server.relint_machine(uri, closed)
+        if not server.pull:
+            server.text_document_publish_diagnostics(types.PublishDiagnosticsParams(uri, []))
 
     @server.feature(types.WORKSPACE_DID_CHANGE_WATCHED_FILES)
     def watched(params: types.DidChangeWatchedFilesParams) -> None:
@@ -266,6 +396,38 @@ def create_server(registries: Registries, param_desc: Path | None = None) -> Zer
         server.settings.update(params.settings)
         server.rule_docs = findings.RuleDocs(server.settings.rule_docs or rule_docs_template())
         server.refresh_all()
+
+    def on_diagnostic(params: types.DocumentDiagnosticParams) -> types.RelatedFullDocumentDiagnosticReport:
+        return types.RelatedFullDocumentDiagnosticReport(items=server.found(params.text_document.uri))
+
+    @server.feature(types.TEXT_DOCUMENT_DOCUMENT_LINK)
+    def on_document_link(params: types.DocumentLinkParams) -> list[types.DocumentLink]:
+        return outline.document_links(server.analysis(params.text_document.uri))
+
+    @server.feature(types.TEXT_DOCUMENT_FOLDING_RANGE)
+    def on_folding_range(params: types.FoldingRangeParams) -> list[types.FoldingRange]:
+        return outline.folding_ranges(server.analysis(params.text_document.uri))
+
+    @server.command(actions.FIX_ALL_COMMAND)
+    async def fix_all(*args: Any) -> dict[str, Any]:
+        uri = actions.uri_argument(actions.FIX_ALL_COMMAND, args, 1)
+        a = server.analysis(uri)
+        edit = actions.fix_all_edit(a)
+        if edit is None or not edit.changes:
+            return {"applied": True, "edits": 0}
+        count = sum(len(e) for e in edit.changes.values())
+        answer = await server.workspace_apply_edit_async(types.ApplyWorkspaceEditParams(
+            edit, label="zero: fix all (zero lint --fix)"))
+        return {"applied": bool(answer.applied), "edits": count,
+                **({"reason": answer.failure_reason} if answer.failure_reason else {})}
+
+    @server.command(actions.SHOW_EFFECTIVE_VALUE)
+    def show_effective_value(*args: Any) -> dict[str, Any]:
+        uri = actions.uri_argument(actions.SHOW_EFFECTIVE_VALUE, args, 2)
+        line, character = actions.position_argument(actions.SHOW_EFFECTIVE_VALUE, args[1])
+        shown = actions.effective_value(server.analysis(uri), line, character)
+        server.window_show_message(types.ShowMessageParams(types.MessageType.Info, shown["message"]))
+        return shown
 
     @server.feature(types.TEXT_DOCUMENT_HOVER)
     def on_hover(params: types.HoverParams) -> types.Hover | None:

@@ -1,4 +1,4 @@
-"""Document symbols (the outline) and go to definition.
+"""Document symbols (the outline), folding ranges, document links and go to definition.
 
 The outline groups a list's entries as its keys do: ``np_grp[1]`` (G54) → ``achse[0]`` →
 ``versch``, ``kenngr`` → ``swe_pos``, at most two levels of groups; a YAML/TOML form the
@@ -9,6 +9,12 @@ Go to definition: on a start-up list's reference (``achs_mds[0]  ./listen/achse_
 list file, resolved as the controller resolves it (:data:`zero.machine.model.REFERENCES`,
 the working directory, ``[tool.zero.machine]`` overrides); on a value that refers to another
 parameter (``P-AXIS-00212.0``) the entry that sets it, in this list or the default list under it.
+
+Document links: every list a start-up list names, on the path as written, to the file the
+controller would open (resolved as for go to definition); a path whose file does not exist has
+no link (X005 says so). Folding: a block of two or more consecutive ``#`` comment lines, and a
+run of entries whose keys share their first member (``np_grp[1]``, ``kenngr``), within it a run
+sharing the second (``np_grp[1].achse[0]``), as the outline groups them.
 """
 
 from __future__ import annotations
@@ -212,3 +218,75 @@ def definition(a: Analysis, line: int, character: int) -> list[types.Location]:
     if target is None or not target.is_file():
         return []
     return [types.Location(uri_of(target), types.Range(types.Position(0, 0), types.Position(0, 0)))]
+
+
+# ------------------------------------------------------------------ links, folding
+
+
+def document_links(a: Analysis) -> list[types.DocumentLink]:
+    if a.form != LIST or not a.references:
+        return []
+    out = []
+    for _, values in a.lists():
+        doc = values.doc
+        for e in doc.entries:
+            target = a.references.get(e.key_text)
+            if target is None or not target.is_file() or e.value_end <= e.value_start:
+                continue
+            line, start = file_position(doc, e.line - 1, e.value_start)
+            end = max(start, file_position(doc, e.line - 1, e.value_end, end=True)[1])
+            rng = types.Range(types.Position(line, a.text.character(line, start)),
+                              types.Position(line, a.text.character(line, end)))
+            out.append(types.DocumentLink(rng, target=uri_of(target), tooltip=f"{e.key_text}: {target}"))
+    return out
+
+
+def _comment_blocks(a: Analysis) -> list[types.FoldingRange]:
+    out = []
+    start: int | None = None
+    lines = a.text.lines
+    for i in range(len(lines) + 1):
+        is_comment = i < len(lines) and a.text.line(i).lstrip().startswith("#")
+        if is_comment and start is None:
+            start = i
+        elif not is_comment and start is not None:
+            if i - 1 > start:
+                out.append(types.FoldingRange(start, i - 1, kind=types.FoldingRangeKind.Comment))
+            start = None
+    return out
+
+
+def _key_groups(rows: list[tuple[int, list[str]]], level: int) -> list[types.FoldingRange]:
+    """Runs of rows (0-based line, key members) sharing member ``level``; then within each run the same
+    one level down (two levels, as the outline)."""
+    out: list[types.FoldingRange] = []
+    i = 0
+    while i < len(rows):
+        j = i
+        head = rows[i][1][level] if len(rows[i][1]) > level + 1 else None
+        while head is not None and j + 1 < len(rows) and len(rows[j + 1][1]) > level + 1 \
+                and rows[j + 1][1][level] == head:
+            j += 1
+        if head is not None and rows[j][0] > rows[i][0]:
+            out.append(types.FoldingRange(rows[i][0], rows[j][0], kind=types.FoldingRangeKind.Region))
+            if level == 0:
+                inner = _key_groups(rows[i:j + 1], 1)
+                out.extend(r for r in inner if (r.start_line, r.end_line) != (rows[i][0], rows[j][0]))
+        i = j + 1
+    return out
+
+
+def folding_ranges(a: Analysis) -> list[types.FoldingRange]:
+    if a.form != LIST:
+        return []
+    out = _comment_blocks(a) if a.markup is None else []
+    for _, values in a.lists():
+        doc = values.doc
+        rows = []
+        for e in doc.items:
+            if isinstance(e, Entry) and e.key_text:
+                line = file_position(doc, e.line - 1, e.key_start)[0]
+                rows.append((line, e.key_text.split(".")))
+        out.extend(_key_groups(rows, 0))
+    out.sort(key=lambda r: (r.start_line, -r.end_line))
+    return out

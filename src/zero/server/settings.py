@@ -17,6 +17,7 @@ class Settings:
     rule_docs: str | None = None  # URL of a rule's text, `{code}` replaced; None: rendered files
     structured: str = "zero"  # "zero": YAML/TOML/JSON with a `_zero` record or matched by `include`; "all"
     machine: bool = True  # X findings and NC program checks against [tool.zero.machine]
+    max_findings: int = 2000  # findings published per document, then one summary finding; 0: all
 
     def update(self, given: object) -> list[str]:
         """Take the known keys of a settings object; the names of values that were refused."""
@@ -36,6 +37,9 @@ class Settings:
                 self.structured = value
             elif key == "machine" and isinstance(value, bool):
                 self.machine = value
+            elif key == "maxFindings" and isinstance(value, int) and not isinstance(value, bool) \
+                    and 0 <= value <= 10_000_000:
+                self.max_findings = value
             else:
                 refused.append(key)
         return refused
