@@ -54,12 +54,34 @@ def keys_of(registry: Registry, kind: str | None) -> list[ParamSpec]:
     return hit
 
 
+# Where a word starts for the common clients: after these characters, which are neither in Neovim's
+# default 'iskeyword' nor Helix's word characters nor Emacs's word or symbol characters of a plain mode
+# (fundamental-, text- or prog-mode). Emacs takes `-`, `+`, `=`, `<`, `>`, `/`, `*`, `&`, `|`, `$`, `%`
+# into a symbol, so no word ends there: `P-AXIS-002` is one (Neovim, seeing `002`, starts at the
+# edit's range all the same; Helix matches `002` within the label fuzzily).
+_WORD_END = re.compile(r"""[\s!"#'(),.:;?@\[\\\]^`{}~]""")
+
+
 class _Items:
-    """Completion items replacing the text typed from ``start`` to the cursor."""
+    """Completion items replacing the text typed from ``start`` to the cursor.
+
+    The clients complete the word before the cursor as they see it: Neovim's omnifunc (0.7 to 0.9)
+    starts at the keyword before the cursor when an item has a ``filterText``, else at the start of
+    the items' ``textEdit``, and keeps the items whose text starts with what is typed from there; eglot
+    matches the symbol before the cursor against the label; Helix and VS Code filter with the word
+    before the cursor. So an item starts where that word starts, after the last `.`, `[`, `]` (or `#`,
+    `"`, blank) typed: after ``np_grp[1].achse[0].ve`` the item is ``versch``, its label, its text and
+    its edit's range (from the `v`) alike, and no ``filterText`` (the label is). An item whose text
+    does not continue what is typed before that word (``np_grp[]`` typed, ``np_grp[1]`` offered)
+    replaces the whole of it instead."""
 
     def __init__(self, a: Analysis, line: int, start: int, end: int, snippets: bool) -> None:
+        typed = a.text.line(line)[start:end]
+        cut = max((m.end() for m in _WORD_END.finditer(typed)), default=0)
+        self.prefix = typed[:cut].lower()
         self.range = types.Range(types.Position(line, a.text.character(line, start)),
                                  types.Position(line, a.text.character(line, end)))
+        self.word = types.Range(types.Position(line, a.text.character(line, start + cut)), self.range.end)
         self.snippets = snippets
         self.items: list[types.CompletionItem] = []
 
@@ -67,11 +89,17 @@ class _Items:
             sort: str | None = None, data: object = None, documentation: str | None = None,
             snippet: bool = False) -> None:
         snippet = snippet and self.snippets
+        text = insert if insert is not None else label
+        where = self.range
+        n = len(self.prefix)
+        if (n and len(label) > n and label[:n].lower() == self.prefix and text[:n].lower() == self.prefix
+                and not (snippet and ("$" in text[:n] or "\\" in text[:n]))):
+            label, text, where = label[n:], text[n:], self.word
         self.items.append(types.CompletionItem(
-            label, kind=kind, detail=detail, sort_text=sort, filter_text=label, data=data,
+            label, kind=kind, detail=detail, sort_text=sort, data=data,
             documentation=types.MarkupContent(types.MarkupKind.Markdown, documentation) if documentation else None,
             insert_text_format=types.InsertTextFormat.Snippet if snippet else types.InsertTextFormat.PlainText,
-            text_edit=types.TextEdit(self.range, insert if insert is not None else label)))
+            text_edit=types.TextEdit(where, text)))
 
 
 def _fill(spec: ParamSpec, typed: list[int | None], previous: tuple[int, ...], taken: set[str],
@@ -248,6 +276,8 @@ def _program_items(a: Analysis, line: int, col: int, snippets: bool) -> list[typ
         for spec in keys_of(a.registry, "AXIS"):
             assert spec.key is not None
             key = spec.key.replace("[]", "[0]")
+            if not key.lower().startswith(items.prefix):
+                continue  # another member than the one typed
             items.add(key, types.CompletionItemKind.Field, f"{spec.id} · {spec.type}", sort=key, data={"id": spec.id})
         return items.items
     md = _MACHINE_DATA.search(before)

@@ -1,0 +1,104 @@
+;;; zero.el --- zero's language server for ISG lists and NC programs, with eglot  -*- lexical-binding: t -*-
+
+;; Emacs 29 and later have eglot built in; Emacs 28 takes it from ELPA (M-x package-install RET eglot)
+;; or, on Debian and Ubuntu, from `apt-get install elpa-eglot'.
+;;
+;; Put this file on the load path and add (require 'zero) to init.el, or load it:
+;;
+;;   (load "/path/to/zero/editors/emacs/zero.el")
+;;   (setq zero-command '("/path/to/.venv/bin/zero" "server"))   ; before the first list is opened
+;;
+;; Lists (*.lis, *.lst) open in `zero-list-mode', NC programs (*.nc, *.mpf, *.spf) in `zero-nc-mode';
+;; both start eglot (`eglot-ensure'), so flymake shows zero's findings as you type, M-. follows a
+;; start-up list's paths, C-M-i (`completion-at-point') completes keys and values, M-x eglot-format
+;; formats and M-x eglot-code-actions fixes.
+;;
+;; Completion mid-key: the modes leave `.', `[' and `]' out of words and symbols (as Emacs's plain
+;; modes do), so the symbol before point is the word zero's completion items start at:
+;; `np_grp[1].achse[0].ve' C-M-i gives `np_grp[1].achse[0].versch'.  (A mode that makes `.[]' symbol
+;; characters would match the whole key against items that start after the last `.', and find none.)
+;;
+;; A server that dies (killed, crashed) is started again by eglot itself: `eglot-autoreconnect'
+;; (by default 3) reconnects every buffer of the project when the dead server had run for more than
+;; that many seconds.  M-x eglot-reconnect does so by hand.  tests/server/test_emacs.py loads this
+;; file as it is.
+
+;;; Code:
+
+(require 'eglot)
+
+(defgroup zero nil
+  "zero, the linter for ISG/Beckhoff CNC parameter lists."
+  :group 'tools
+  :prefix "zero-")
+
+(defcustom zero-command '("zero" "server")
+  "The command that starts zero's language server, and its arguments."
+  :type '(repeat string))
+
+(defcustom zero-initialization-options nil
+  "Server settings sent as initializationOptions, a plist: e.g. (:debounce 250 :machine t)."
+  :type 'plist)
+
+(defvar zero-list-mode-syntax-table
+  (let ((table (make-syntax-table)))
+    (modify-syntax-entry ?# "<" table)   ; `# comment', to the end of the line
+    (modify-syntax-entry ?\n ">" table)
+    (modify-syntax-entry ?_ "_" table)   ; part of a key (`np_grp'), as in every plain mode
+    (modify-syntax-entry ?. "." table)   ; ends a word: completion starts after it
+    (modify-syntax-entry ?\[ "(]" table)
+    (modify-syntax-entry ?\] ")[" table)
+    (modify-syntax-entry ?\" "." table)
+    table)
+  "Syntax of a list: `#' starts a comment; `.', `[', `]' end a word.")
+
+(defvar zero-nc-mode-syntax-table
+  (let ((table (make-syntax-table)))
+    (modify-syntax-entry ?\; "<" table)  ; `; comment', to the end of the line
+    (modify-syntax-entry ?\n ">" table)
+    (modify-syntax-entry ?_ "_" table)
+    (modify-syntax-entry ?. "." table)
+    (modify-syntax-entry ?# "." table)   ; `#MACHINE DATA': completion starts after the `#'
+    table)
+  "Syntax of an NC program: `;' starts a comment; `.', `[', `]', `#' end a word.")
+
+(defconst zero--list-font-lock
+  '(("^[ \t]*\\([A-Za-z_][A-Za-z0-9_.]*\\(?:\\[[0-9]*\\][A-Za-z0-9_.]*\\)*\\)" 1 font-lock-variable-name-face)
+    ("([^)\n]*)" . font-lock-comment-face))
+  "Keys at the start of a line; `( … )' remarks after a value.")
+
+;;;###autoload
+(define-derived-mode zero-list-mode prog-mode "ISG-list"
+  "Major mode for ISG/Beckhoff CNC parameter lists, with zero's language server."
+  :syntax-table zero-list-mode-syntax-table
+  (setq-local comment-start "# ")
+  (setq-local comment-start-skip "#+[ \t]*")
+  (setq-local font-lock-defaults '(zero--list-font-lock)))
+
+;;;###autoload
+(define-derived-mode zero-nc-mode prog-mode "ISG-NC"
+  "Major mode for ISG NC programs, with zero's language server."
+  :syntax-table zero-nc-mode-syntax-table
+  (setq-local comment-start "; ")
+  (setq-local comment-start-skip ";+[ \t]*"))
+
+(defun zero--contact (&optional _interactive)
+  "The command of `zero-command', with `zero-initialization-options'."
+  (append zero-command
+          (when zero-initialization-options
+            (list :initializationOptions zero-initialization-options))))
+
+;;;###autoload
+(progn
+  (add-to-list 'auto-mode-alist '("\\.\\(?:lis\\|lst\\|LIS\\|LST\\)\\'" . zero-list-mode))
+  (add-to-list 'auto-mode-alist '("\\.\\(?:nc\\|mpf\\|spf\\|NC\\|MPF\\|SPF\\)\\'" . zero-nc-mode)))
+
+(with-eval-after-load 'eglot
+  (add-to-list 'eglot-server-programs '((zero-list-mode zero-nc-mode) . zero--contact)))
+
+(add-hook 'zero-list-mode-hook #'eglot-ensure)
+(add-hook 'zero-nc-mode-hook #'eglot-ensure)
+
+(provide 'zero)
+
+;;; zero.el ends here
