@@ -66,12 +66,17 @@ def nvim_version() -> tuple[int, int] | None:
     return (int(m.group(1)), int(m.group(2))) if m else None
 
 
-def test_neovim_shows_the_findings_of_a_faulty_list(tmp_path: Path) -> None:
+def need_nvim(minimum: tuple[int, int], why: str) -> None:
+    """Skip, with the reason, where Neovim is missing or older than ``minimum``."""
     version = nvim_version()
     if version is None:
         pytest.skip("nvim is not on PATH (apt-get install neovim)")
-    if version < (0, 6):
-        pytest.skip(f"nvim {version[0]}.{version[1]} has no vim.diagnostic (0.6 or later needed)")
+    if version < minimum:
+        pytest.skip(f"nvim {version[0]}.{version[1]}: {why}")
+
+
+def test_neovim_shows_the_findings_of_a_faulty_list(tmp_path: Path) -> None:
+    need_nvim((0, 6), "has no vim.diagnostic (0.6 or later needed)")
     path = tmp_path / "nullp.lis"
     shutil.copy(FIXTURES / "seed" / "nullp_3achsen.lis", path)
     lua = tmp_path / "attach.lua"
@@ -186,11 +191,7 @@ SETUP = ROOT / "editors" / "nvim" / "zero.lua"
 
 def drive_nvim(tmp_path: Path, step: str, typed: list[str] | None = None) -> list[str]:
     """What the driver says for a faulty copy of the zero-offset list, opened in headless Neovim."""
-    version = nvim_version()
-    if version is None:
-        pytest.skip("nvim is not on PATH (apt-get install neovim)")
-    if version < (0, 7):
-        pytest.skip(f"nvim {version[0]}.{version[1]}: the set-up needs 0.7 (nvim_create_autocmd)")
+    need_nvim((0, 7), "the set-up needs 0.7 (nvim_create_autocmd)")
     path = tmp_path / "nullp.lis"
     shutil.copy(FIXTURES / "seed" / "nullp_3achsen.lis", path)
     lua = tmp_path / "driver.lua"
