@@ -12,8 +12,8 @@ import typer.main
 from conftest import FIXTURES, zero_cli
 from zero.cli.app import app
 
-COMMANDS = ["", "lint", "convert", "diff", "show", "explain", "schema", "limits", "format", "config", "rule", "param",
-            "server"]
+COMMANDS = ["", "lint", "convert", "diff", "show", "explain", "schema", "limits", "report", "format", "config", "rule",
+            "param", "server"]
 TERMINAL = {"COLUMNS": "80", "NO_COLOR": "1", "TERM": "dumb"}
 # what typer 0.29 printed: `PATH... <list[Path]>`, `<str>`, `<path>`, `{FILE...}...`, `{A}`, `[x>=0]`
 LEAKS = re.compile(r"<(list\[|str>|path>|int>|bool>|float>|Path>)|\{[A-Z|.]+\}|\[x>=")
@@ -68,7 +68,7 @@ def test_brackets_in_help_text_survive() -> None:
     (["lint", "a.lis", "-j", "-1"], "Invalid value for '--jobs' / '-j': '-1' is not a whole number of at least 0"),
     (["lint", "a.lis", "--jobs", "many"], "'many' is not a whole number of at least 0"),
     (["convert", "a.lis", "--to", "foo"], "Invalid value for '--to': 'foo' is not one of lis, yaml, toml, json, xml"),
-    (["diff", "a.lis", "b.lis", "--output-format", "jsn"], "'jsn' is not one of text, json (did you mean json?)"),
+    (["diff", "a.lis", "b.lis", "--output-format", "jsn"], "'jsn' is not one of text, json, csv (did you mean json?)"),
     (["diff"], "Missing argument 'A'"),
 ])
 def test_usage_errors_are_plain(args: list[str], message: str) -> None:

@@ -30,7 +30,7 @@ from zero.diff import SAME, DiffOptions, show_lines
 from zero.engine.commands import parse_kind, run_format
 from zero.engine.convert import check_convert_options, convert_inputs, write_into, write_outputs
 from zero.engine.project import Project
-from zero.engine.queries import find_param, load_side, run_diff, run_effective, run_limits
+from zero.engine.queries import find_param, load_side, machine_of, run_diff, run_effective, run_limits
 from zero.errors import ZeroError
 from zero.files import write_atomic
 from zero.output.docs import param_text, rule_text, rules_overview
@@ -292,7 +292,8 @@ app = typer.Typer(
     rich_markup_mode=None,  # no rich panels (the help is zero's own; errors plain)
 )
 
-REPORTS = ("text", "json")  # the output formats of diff, show, explain and limits
+REPORTS = ("text", "json")  # the output formats of diff, show and explain
+LIMITS_FORMATS = (*REPORTS, "svg")  # zero limits also draws
 FORMATS = ("lis", "yaml", "toml", "json", "xml")  # the formats of convert's --to and --from
 
 
@@ -476,15 +477,17 @@ def convert(
 @app.command(cls=ZeroCommand)
 def diff(
     a: Annotated[str, typer.Argument(help="Old side: list, YAML, TOML or JSON (- for stdin).", metavar="A")],
-    b: Annotated[str | None, typer.Argument(help="New side (omit with --defaults).", metavar="B")] = None,
+    b: Annotated[list[str] | None, typer.Argument(
+        help="New side (omit with --defaults); with --fleet: machines (start-up lists or folders of machines).",
+        metavar="B")] = None,
     defaults: Annotated[bool, typer.Option(
         "--defaults", help="Compare A with the registry defaults: what this machine changed.")] = False,
     strict: Annotated[bool, typer.Option(
         help="Also show default-vs-absent and values written differently but equal.")] = False,
     comments: Annotated[bool, typer.Option(help="Comment changes count too.")] = False,
     output_format: Annotated[str, typer.Option(
-        "--output-format", help="text (a table) or json (one object per change).",
-        metavar="FORMAT", **choice(REPORTS))] = "text",
+        "--output-format", help="text (a table), json (one object per change), or csv (with --fleet).",
+        metavar="FORMAT", **choice((*REPORTS, "csv")))] = "text",
     from_: Annotated[str | None, typer.Option("--from", help="Format of both inputs.", metavar="FORMAT",
                                               **choice(FORMATS))] = None,
     kind: Annotated[str | None, typer.Option(help="List kind instead of detecting it.", **KIND_OPTION)] = None,
@@ -493,6 +496,12 @@ def diff(
     revert: Annotated[str | None, typer.Option(
         "--revert", help="With A a list and B its update file: apply B, then this revert file, and show what "
         "is not put back (nothing: exit 0).", metavar="REVERT")] = None,
+    fleet: Annotated[str | None, typer.Option(
+        "--fleet", help="Compare every machine given (A, B...: start-up lists, or folders holding one machine per "
+        "subfolder) with this golden machine: which parameters differ, on which machines, with which values.",
+        metavar="GOLDEN")] = None,
+    jobs: Annotated[int | None, typer.Option(
+        "--jobs", "-j", help="With --fleet: compare in this many processes [default: all cores].", metavar="N")] = None,
     param_desc: ParamDesc = None,
 ) -> None:
     """Compare two lists by parameter: added, removed, changed, with mm/° deltas.
@@ -502,8 +511,17 @@ def diff(
     """
 
     def body() -> int:
+        if fleet is not None:
+            other = [name for name, given in (("--defaults", defaults), ("--machine", machine), ("--strict", strict),
+                                              ("--comments", comments), ("--revert", revert is not None),
+                                              ("--from", from_ is not None), ("--kind", kind is not None)) if given]
+            return _fleet_diff(fleet, [a, *(b or [])], output_format, jobs, other)
+        if output_format == "csv":
+            raise ZeroError("--output-format csv is the report of --fleet")
+        if b is not None and len(b) > 1:
+            raise ZeroError(f"give two files to compare, not {1 + len(b)} (many machines: --fleet GOLDEN MACHINE...)")
         forced = parse_kind(check_kind(kind))
-        run = run_diff(a, b, _project(), read_stdin, defaults=defaults,
+        run = run_diff(a, b[0] if b else None, _project(), read_stdin, defaults=defaults,
                        options=DiffOptions(strict=strict, comments=comments),
                        fmt=from_, kind=forced, machine=machine, revert=revert)
         if output_format == "json":
@@ -513,6 +531,17 @@ def diff(
         return exits.found(any(c.kind != SAME for c in run.changes))
 
     _run(body)
+
+
+def _fleet_diff(golden: str, machines: list[str], output_format: str, jobs: int | None, other: list[str]) -> int:
+    """``zero diff --fleet GOLDEN MACHINE...``: the report on standard output, and its exit code."""
+    if other:
+        raise ZeroError(f"--fleet compares machines' effective values: {', '.join(other)} does not apply to it")
+    from zero.engine.fleet import FleetRequest  # start-up: only with --fleet
+    from zero.output.fleet import run_fleet_diff  # start-up: as above
+
+    return run_fleet_diff(FleetRequest(golden, machines, jobs=jobs, param_desc=state.param_desc), REGISTRIES,
+                          output_format, sys.stdout)
 
 
 @app.command(cls=ZeroCommand)
@@ -610,7 +639,8 @@ def limits(
         "--machine", help="The start-up list (hochlauf.lis) [default: [tool.zero.machine] startup].",
         metavar="STARTUP")] = None,
     output_format: Annotated[str, typer.Option(
-        "--output-format", help="text (a table) or json.", metavar="FORMAT", **choice(REPORTS))] = "text",
+        "--output-format", help="text (a table), json, or svg (a picture of every axis).", metavar="FORMAT",
+        **choice(LIMITS_FORMATS))] = "text",
     all_groups: Annotated[bool, typer.Option(
         "--all-groups", help="All 97 groups, not only G53..G59 and the ones the list sets.")] = False,
     profile: Annotated[str | None, typer.Option(
@@ -621,8 +651,13 @@ def limits(
     """Soft limits in the programming coordinate system, per work offset (G53..G59, G159=n) and axis."""
 
     def body() -> int:
-        run = run_limits(_project(machine), all_groups, profile)
-        if output_format == "json":
+        project = _project(machine)
+        run = run_limits(project, all_groups, profile)
+        if output_format == "svg":
+            from zero.output.svg import limits_svg  # start-up: only for a picture
+
+            sys.stdout.write(limits_svg(machine_of(project), run.rows))
+        elif output_format == "json":
             data: dict[str, object] = {"limits": [r.to_json() for r in run.rows]}
             if profile:
                 data["violations"] = [{"what": v.what, "value": v.value, "where": v.where} for v in run.violations]
@@ -630,6 +665,47 @@ def limits(
         else:
             render_limits(run.rows, run.violations)
         return exits.found(bool(run.violations))
+
+    _run(body)
+
+
+# ---------------------------------------------------------------------------- report
+
+
+@app.command(cls=ZeroCommand)
+def report(
+    machine: Annotated[Path | None, typer.Option(
+        "--machine", help="The start-up list (hochlauf.lis) [default: [tool.zero.machine] startup].",
+        metavar="STARTUP")] = None,
+    output: Annotated[str | None, typer.Option(
+        "-o", "--output", help="The HTML file to write; - or nothing writes to standard output.",
+        metavar="FILE")] = None,
+    against: Annotated[str | None, typer.Option(
+        "--against", help="Also show the differences from this machine: a golden start-up list, or a git "
+        "revision (HEAD~1) of this machine's lists.", metavar="GOLDEN")] = None,
+    fleet: Annotated[list[str] | None, typer.Option(
+        "--fleet", help="Also show the fleet's drift from this machine (repeatable): start-up lists of other "
+        "machines, or folders of machines, as zero diff --fleet.", metavar="MACHINE")] = None,
+    jobs: Annotated[int | None, typer.Option(
+        "--jobs", "-j", help="With --fleet: compare in this many processes [default: all cores].", metavar="N")] = None,
+    force: Annotated[bool, typer.Option(help="Replace an existing output file.")] = False,
+    param_desc: ParamDesc = None,
+) -> None:
+    """Write one self-contained HTML page about a machine: its channels and axes, a picture of each
+    axis's travel range with the work offsets, the effective values with their origin, every finding,
+    the differences from a golden machine or a git revision, and a fleet's drift from it. Needs the
+    report extra (Jinja2)."""
+
+    def body() -> int:
+        from zero.output.report import build_report, render_report  # start-up: Jinja2 only for a report
+
+        target = Path(output) if output not in (None, "-") else None
+        page = render_report(build_report(_project(machine), target, against, fleet or (), jobs))
+        if target is None:
+            sys.stdout.write(page)
+        else:
+            write_atomic(target, page.encode("utf-8"), force)
+        return exits.OK
 
     _run(body)
 
