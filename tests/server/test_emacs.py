@@ -80,7 +80,7 @@ DRIVER = r""";; -*- lexical-binding: t -*-
     (signal-process pid 'SIGKILL)
     (zero-test-then (lambda () (let ((now (eglot-current-server)))
                                  (and now (not (eq now zero-test-server)) (eglot--capabilities now))))
-                    30
+                    60
                     (lambda (restarted)
                       (zero-test-say "restarted %s" (and restarted t))
                       (setq eglot--diagnostics nil)
@@ -89,7 +89,7 @@ DRIVER = r""";; -*- lexical-binding: t -*-
                       (zero-test-findings (lambda (codes) (zero-test-say "findings %s" codes) (kill-emacs 0)))))))
 (setq zero-command (list (getenv "ZERO_EMACS_PYTHON") "-m" "zero" "server")
       zero-initialization-options '(:debounce 20))
-(run-with-timer 120 nil (lambda () (zero-test-say "killed: took too long") (kill-emacs 1)))
+(run-with-timer 240 nil (lambda () (zero-test-say "killed: took too long") (kill-emacs 1)))
 (add-hook 'emacs-startup-hook
           (lambda ()
             (find-file (getenv "ZERO_EMACS_FILE"))
@@ -155,7 +155,7 @@ def drive_emacs(tmp_path: Path, typed: list[str]) -> list[str]:
     with log.open("wb") as err, subprocess.Popen(["script", "-qec", command, "/dev/null"], cwd=tmp_path, env=env,
                                                  stdin=subprocess.PIPE, stdout=subprocess.DEVNULL, stderr=err) as proc:
         try:
-            proc.wait(timeout=180)  # stdin stays open (no keys typed) until Emacs exits
+            proc.wait(timeout=300)  # stdin stays open (no keys typed) until Emacs exits
         except subprocess.TimeoutExpired:
             proc.kill()
             proc.wait()
