@@ -97,22 +97,31 @@ def _default_list_side(path: Path | None, kind: str | None, project: Project) ->
 
 
 def _diff_machines(a: str, b: str, project: Project, registry: Registry, options: DiffOptions) -> DiffRun:
-    """Two machines' effective configurations, list by list (a value a default list supplies
-    counts as the machine's value; a removed one falls back to the catalogue default); each
-    machine with the list overrides of its own configuration."""
-    def sides(startup: str) -> dict[str, Side]:
+    """Two machines' effective configurations, each machine with the list overrides of its own
+    configuration: :func:`machine_changes`."""
+    def machine(startup: str) -> Machine:
         m = project.machine(Path(startup), startup=startup, required=True)
         assert m is not None
+        return m
+
+    return DiffRun(machine_changes(machine(a), machine(b), registry, options), f"--- {a} (machine)\n+++ {b} (machine)")
+
+
+def machine_changes(old: Machine, new: Machine, registry: Registry, options: DiffOptions | None = None) -> list[Change]:
+    """Two machines' effective configurations, list by list, as ``zero diff --machine OLD NEW`` gives
+    them (a value a default list supplies counts as the machine's value; a removed one falls back
+    to the catalogue default)."""
+    def sides(m: Machine) -> dict[str, Side]:
         return {name: Side(str(lf.path), lf.values.kind, entries_of(lf.values)) for name, lf in m.scopes()}
 
-    left, right = sides(a), sides(b)
+    left, right = sides(old), sides(new)
     changes: list[Change] = []
     for name in [*left, *(n for n in right if n not in left)]:
         empty = Side("-", (left.get(name) or right[name]).kind, {})
-        for c in diff_sides(left.get(name, empty), right.get(name, empty), registry, options):
+        for c in diff_sides(left.get(name, empty), right.get(name, empty), registry, options or DiffOptions()):
             c.group = f"{name}: {c.group}"
             changes.append(c)
-    return DiffRun(changes, f"--- {a} (machine)\n+++ {b} (machine)")
+    return changes
 
 
 # ---------------------------------------------------------------------------- param

@@ -27,10 +27,11 @@ from typing import Any
 from zero import __version__
 from zero.catalog.ids import AXIS_TYPE, SPINDLE_AXIS, SWE_NEG, SWE_POS, SWE_TOL
 from zero.catalog.registry import Registry
-from zero.diff import Change, DiffOptions, Side, default_effective, diff_sides
+from zero.diff import Change, DiffOptions, default_effective
 from zero.diff import effective as value_of
 from zero.engine.lint import LintResult, lint_machine
 from zero.engine.project import Project
+from zero.engine.queries import machine_changes
 from zero.errors import ZeroError
 from zero.forms import split_part
 from zero.machine.effective import CATALOGUE, DEFAULT_LIST, LIST, Scope, effective, entries_of, scope_values
@@ -179,21 +180,8 @@ def machine_against(project: Project, against: str) -> tuple[Machine, str, Regis
 
 
 def diff_machines(old: Machine, new: Machine, registry: Registry, options: DiffOptions | None = None) -> list[Change]:
-    """Two machines' effective configurations, list by list, as ``zero diff --machine OLD NEW`` gives them
-    (a value a default list supplies counts as the machine's; a removed one falls back to the catalogue)."""
-    options = options or DiffOptions()
-
-    def sides(m: Machine) -> dict[str, Side]:
-        return {name: Side(str(lf.path), lf.values.kind, entries_of(lf.values)) for name, lf in m.scopes()}
-
-    left, right = sides(old), sides(new)
-    changes: list[Change] = []
-    for name in [*left, *(n for n in right if n not in left)]:
-        empty = Side("-", (left.get(name) or right[name]).kind, {})
-        for c in diff_sides(left.get(name, empty), right.get(name, empty), registry, options):
-            c.group = f"{name}: {c.group}"
-            changes.append(c)
-    return changes
+    """The differences ``zero diff --machine OLD NEW`` gives (:func:`zero.engine.queries.machine_changes`)."""
+    return machine_changes(old, new, registry, options)
 
 
 # ---------------------------------------------------------------------------- the report
