@@ -382,7 +382,7 @@ def group_of(key: str, kind: str | None) -> str:
     return first if "." in key else "general"
 
 
-def _sort_key(key: str) -> tuple[Any, ...]:
+def key_order(key: str) -> tuple[Any, ...]:
     parts = re.split(r"(\[[0-9]+\])", key)
     return tuple((0, int(p[1:-1]), "") if p.startswith("[") and len(p) < 22 else (1, 0, p)
                  for p in parts if p)
@@ -473,7 +473,7 @@ def diff_sides(a: Side, b: Side, registry: Registry, options: DiffOptions | None
 
 
 def _grouped(changes: list[Change]) -> list[Change]:
-    return sorted(changes, key=lambda c: (_group_rank(c.group), _sort_key(c.key)))
+    return sorted(changes, key=lambda c: (group_order(c.group), key_order(c.key)))
 
 
 def diff_defaults(side: Side, registry: Registry, options: DiffOptions | None = None) -> list[Change]:
@@ -481,7 +481,7 @@ def diff_defaults(side: Side, registry: Registry, options: DiffOptions | None = 
     options = options or DiffOptions()
     length_unit = side_unit(side, registry)
     out: list[Change] = []
-    for key in sorted(side.entries, key=_sort_key):
+    for key in sorted(side.entries, key=key_order):
         e = side.entries[key]
         spec = spec_for(key, side.kind, registry)
         dflt = default_effective(spec)
@@ -510,7 +510,7 @@ def show_lines(side: Side, registry: Registry) -> list[str]:
     out: list[str] = [f"# zero: {side.path} ({side.kind or 'unknown kind'}), "
                       f"{len(side.entries)} parameters as the controller reads them"]
     current = None
-    for key in sorted(side.entries, key=lambda k: (_group_rank(group_of(k, side.kind)), _sort_key(k))):
+    for key in sorted(side.entries, key=lambda k: (group_order(group_of(k, side.kind)), key_order(k))):
         group = group_of(key, side.kind)
         if group != current:
             out.append(f"[{group}]")
@@ -528,7 +528,7 @@ def show_lines(side: Side, registry: Registry) -> list[str]:
     return out
 
 
-def _group_rank(group: str) -> tuple[Any, ...]:
+def group_order(group: str) -> tuple[Any, ...]:
     """General first, then G53, G54..G59, G159=7.., clamp groups, then families by name."""
     if group == "general":
         return (0, 0, "")

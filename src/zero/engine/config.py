@@ -167,12 +167,12 @@ class Config:
 
     def excluded(self, file: Path) -> bool:
         """``exclude`` (this file's, else the inherited one's), or any ``extend-exclude`` of the chain."""
-        if self._own("exclude"):
-            hit = bool(self.exclude) and self._matches(self.exclude, file)
-        else:
-            hit = self.parent is not None and self.parent.excluded(file)
-        return hit or (bool(self.extend_exclude) and self._matches(self.extend_exclude, file)) or (
-            self.parent is not None and self._own("exclude") and self.parent._extend_excluded(file))
+        return self._excluded(file) or self._extend_excluded(file)
+
+    def _excluded(self, file: Path) -> bool:
+        if not self._own("exclude") and self.parent is not None:
+            return self.parent._excluded(file)
+        return bool(self.exclude) and self._matches(self.exclude, file)
 
     def _extend_excluded(self, file: Path) -> bool:
         return (bool(self.extend_exclude) and self._matches(self.extend_exclude, file)) or (
@@ -198,15 +198,12 @@ class Config:
     def ignored_for(self, file: Path) -> tuple[str, ...]:
         """The codes the per-file ignores drop for one file (``per-file-ignores``, this file's or the
         inherited one's, and every ``extend-per-file-ignores`` of the chain)."""
-        out: list[str] = []
-        if self._own("per-file-ignores"):
-            out += [c for glob, codes in self.per_file_ignores if self._matches((glob,), file) for c in codes]
-        elif self.parent is not None:
-            out += self.parent.ignored_for(file)
-        out += [c for glob, codes in self.extend_per_file_ignores if self._matches((glob,), file) for c in codes]
-        if self.parent is not None and self._own("per-file-ignores"):
-            out += self.parent._extended_ignores(file)
-        return tuple(out)
+        return (*self._ignored(file), *self._extended_ignores(file))
+
+    def _ignored(self, file: Path) -> list[str]:
+        if not self._own("per-file-ignores") and self.parent is not None:
+            return self.parent._ignored(file)
+        return [c for glob, codes in self.per_file_ignores if self._matches((glob,), file) for c in codes]
 
     def _extended_ignores(self, file: Path) -> list[str]:
         out = [c for glob, codes in self.extend_per_file_ignores if self._matches((glob,), file) for c in codes]

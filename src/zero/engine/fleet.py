@@ -48,11 +48,11 @@ from zero.diff import (
     REMOVED,
     DiffOptions,
     Side,
-    _group_rank,
-    _sort_key,
     default_effective,
     default_name,
     diff_sides,
+    group_order,
+    key_order,
     spec_for,
 )
 from zero.diff import effective as value_of
@@ -459,7 +459,7 @@ def _gather(golden: str, g: _Golden, startups: list[str], results: list[_Machine
     for p, _ in params.values():
         p.values.sort(key=lambda v: (-v.count, order[v.machines[0]]))
     drift.params = sorted((p for p, _ in params.values()),
-                          key=lambda p: (rank.get(p.scope, len(rank)), _group_rank(p.group), _sort_key(p.key)))
+                          key=lambda p: (rank.get(p.scope, len(rank)), group_order(p.group), key_order(p.key)))
     defaults = [key for key, _ in g.defaults.values()]
     drift.lists = sorted(lists.values(), key=lambda ld: (
         0 if ld.scope in defaults else 1, rank.get(ld.scope, len(rank)), ld.scope, ld.status,

@@ -275,11 +275,7 @@ def lint_structured(data: bytes, fmt: str, registry: Registry, path: str = "-",
     try:
         tree = read_tree(data, fmt, registry, path)
     except ZeroError as exc:
-        line, col = exc.line or 1, exc.column or 1
-        finding = Diagnostic("S017", RULES["S017"].severity, f"{exc.message}: not checked",
-                             Span(line, col, line, col + 1), path)
-        found = funnel(path, [finding], selected_rules(options or LintOptions()))
-        return LintResult(path, _shown(path, data), None, found)
+        return refused(path, data, exc, options, "S017")
     if not list_form(tree, registry):
         return LintResult(path, _shown(path, data), None, [],
                           note=f"not a {fmt.upper()} list form (its top-level keys are not parameters', no `_zero` "
@@ -350,10 +346,12 @@ def _shown(path: str, data: bytes) -> Document:
     return Document(path, "utf-8", [x.rstrip("\r") for x in lines], ["\n"] * len(lines), [])
 
 
-def refused(path: str, data: bytes, error: ZeroError, options: LintOptions | None = None) -> LintResult:
-    """The result for an XML file zero will not read: one S014 finding where the reader stopped."""
+def refused(path: str, data: bytes, error: ZeroError, options: LintOptions | None = None,
+            code: str = "S014") -> LintResult:
+    """The result for a file zero will not read (XML: S014; a YAML/TOML/JSON form: S017): one
+    finding where the reader stopped, nothing checked."""
     line, col = error.line or 1, error.column or 1
-    finding = Diagnostic("S014", RULES["S014"].severity, f"{error.message}: not checked",
+    finding = Diagnostic(code, RULES[code].severity, f"{error.message}: not checked",
                          Span(line, col, line, col + 1), path)
     found = funnel(path, [finding], selected_rules(options or LintOptions()))
     return LintResult(path, _shown(path, data), None, found)

@@ -27,7 +27,7 @@ from typing import Any
 from zero import __version__
 from zero.catalog.ids import AXIS_TYPE, SPINDLE_AXIS, SWE_NEG, SWE_POS, SWE_TOL
 from zero.catalog.registry import Registry
-from zero.diff import Change, DiffOptions, default_effective
+from zero.diff import Change, default_effective
 from zero.diff import effective as value_of
 from zero.engine.lint import LintResult, lint_machine
 from zero.engine.project import Project
@@ -179,11 +179,6 @@ def machine_against(project: Project, against: str) -> tuple[Machine, str, Regis
     return old, f"git revision {against} ({short})", project.registry(start)
 
 
-def diff_machines(old: Machine, new: Machine, registry: Registry, options: DiffOptions | None = None) -> list[Change]:
-    """The differences ``zero diff --machine OLD NEW`` gives (:func:`zero.engine.queries.machine_changes`)."""
-    return machine_changes(old, new, registry, options)
-
-
 # ---------------------------------------------------------------------------- the report
 
 
@@ -291,7 +286,7 @@ def build_report(project: Project, output: Path | None = None, against: str | No
     old: Machine | None = None
     if against is not None:
         old, label, diff_registry = machine_against(project, against)
-        compared = Against(against, label, diff_machines(old, machine, diff_registry))
+        compared = Against(against, label, machine_changes(old, machine, diff_registry))
     views = []
     for pic in axis_pictures(machine, pcs_limits(machine), old):
         ax = machine.axes().get(pic.log_nr)
@@ -347,4 +342,4 @@ def render_report(report: MachineReport) -> str:
                                                     svg_style=Markup(STYLE))
 
 
-__all__ = ["MachineReport", "build_report", "diff_machines", "git_reader", "machine_against", "render_report"]
+__all__ = ["MachineReport", "build_report", "git_reader", "machine_against", "render_report"]
