@@ -68,6 +68,12 @@ DRIVER = r""";; -*- lexical-binding: t -*-
   ;; what C-M-i (`completion-at-point') does with eglot's answer, kept for the candidates written out
   (let* ((capf (eglot-completion-at-point))
          (candidates (all-completions (buffer-substring-no-properties (nth 0 capf) (nth 1 capf)) (nth 2 capf))))
+    ;; about one run in six, under load, the first answer comes back empty (not diagnosed: see the
+    ;; closing note of issue 29); ask once more after a pause, as a user pressing C-M-i again would
+    (unless candidates
+      (sleep-for 0.5)
+      (setq capf (eglot-completion-at-point)
+            candidates (all-completions (buffer-substring-no-properties (nth 0 capf) (nth 1 capf)) (nth 2 capf))))
     (let ((completion-extra-properties (nthcdr 3 capf)) (inhibit-message t))
       (completion-in-region (nth 0 capf) (nth 1 capf) (nth 2 capf)))
     (zero-test-say "complete %s -> %s | %s" typed
@@ -179,7 +185,7 @@ def test_emacs_eglot_findings_completion_and_reconnect(tmp_path: Path) -> None:
     # after the dot: both members offered, nothing to insert but what they share
     assert done["np_grp[1].achse[0]."] == "np_grp[1].achse[0]. | inaktiv versch"
     line, candidates = done["np_grp[1].ach"].split(" | ")
-    assert re.fullmatch(r"np_grp\[1\]\.achse\[\d+\]\.", line), line  # the common part of the two
+    assert re.fullmatch(r"np_grp\[1\]\.achse\[\d+\]\.", line), done  # the common part of the two
     assert all(c.startswith("achse[") for c in candidates.split()) and len(candidates.split()) == 2
     assert restarted == "restarted t"
     assert after == before
