@@ -41,14 +41,16 @@ def _columns(width: int) -> Iterator[None]:
 
 @functools.cache
 def _commands() -> tuple[Any, Any, dict[str, Any]]:
-    """The ``zero`` group, its context, and its visible commands by name, in the help's order."""
-    import click
+    """The ``zero`` group, its context, and its visible commands by name, in the help's order.
+
+    Contexts are made by the commands' own ``context_class``: typer 0.29 carries its own copy of
+    click and no longer installs click, so this module never imports it."""
     import typer.main
 
     from zero.cli.app import app
 
     group = typer.main.get_command(app)
-    ctx = click.Context(group, info_name="zero")
+    ctx = group.context_class(group, info_name="zero")
     shown = {}
     for name in group.list_commands(ctx):  # type: ignore[attr-defined]
         command = group.get_command(ctx, name)  # type: ignore[attr-defined]
@@ -59,14 +61,12 @@ def _commands() -> tuple[Any, Any, dict[str, Any]]:
 
 def _help_page(name: str) -> str:
     """A command's page: what it does, its usage, arguments and options, and ``--help`` as printed."""
-    import click
-
     from zero.cli.app import _record, _short_help, help_text, usage_line
     from zero.output.docs import md_code, md_text
 
     _, root_ctx, commands = _commands()
     command = commands[name]
-    ctx = click.Context(command, info_name=name, parent=root_ctx)
+    ctx = command.context_class(command, info_name=name, parent=root_ctx)
     with _columns(80):
         text = help_text(command, ctx)
         usage = usage_line(command, ctx)

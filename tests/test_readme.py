@@ -29,3 +29,18 @@ def test_the_quick_start_is_two_commands() -> None:
     blocks = re.findall(r"```sh\n(.*?)```", section, re.S)
     assert [b.strip().count("\n") for b in blocks] == [0, 0]
     assert "zero lint fixtures/seed/nullp_3achsen.lis" in blocks[0] and "pytest" in blocks[1]
+
+
+def readme_test_command() -> str:
+    """The README's test command: its first ``sh`` block that runs pytest (as the before-stop check reads it)."""
+    blocks = re.findall(r"```(?:sh|bash|console)?\n(.*?)```", README, re.S)
+    return next(b.strip() for b in blocks if "pytest" in b)
+
+
+def test_ci_runs_the_readmes_test_command_verbatim() -> None:
+    """CI runs exactly what a new user runs (issue 35): extra tools are installed in steps before it."""
+    command = readme_test_command()
+    assert command == "python3 -m venv .venv && .venv/bin/pip install -e '.[test]' && .venv/bin/python -m pytest"
+    lines = [line.strip() for line in (ROOT / ".ci" / "run").read_text(encoding="utf-8").splitlines()]
+    assert command in lines, "the README's test command is not a line of .ci/run"
+    assert lines[-1] == command, "the README's test command is not the last step of .ci/run"
