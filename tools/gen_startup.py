@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """Compile ``src/zero/catalog/data/startup_errors.toml`` (the kernel's documented start-up errors a
-list can cause, edited by hand, each row with its source) to ``startup_errors.py``, and
+list can cause, edited by hand, each row with its source) to ``startup_errors.py``,
+``drive_types.toml`` (the drive types each axis parameter is documented for) to ``drive_types.py``, and
 ``prose_ranges.toml`` (the catalogue's prose ranges written as conditions) to ``prose_ranges.py``,
 and ``releases.toml`` (key renames and removals, each row checked to have a source) to
 ``releases_table.py``
@@ -28,6 +29,10 @@ def main() -> None:
     write_module(DATA / "startup_errors.py", "The kernel's start-up errors of startup_errors.toml, compiled.",
                  {"ERRORS": rows}, rows_name="ERRORS")
     print(f"wrote {DATA / 'startup_errors.py'}: {len(rows)} errors")
+    drives = tomllib.loads((DATA / "drive_types.toml").read_text(encoding="utf-8"))["drive"]
+    write_module(DATA / "drive_types.py", "The drive types of each parameter, drive_types.toml compiled.",
+                 {"DRIVE_TYPES": drives}, rows_name="DRIVE_TYPES")
+    print(f"wrote {DATA / 'drive_types.py'}: {len(drives)} parameters")
     ranges = tomllib.loads((DATA / "prose_ranges.toml").read_text(encoding="utf-8"))["range"]
     write_module(DATA / "prose_ranges.py", "The prose ranges of prose_ranges.toml written as conditions, compiled.",
                  {"RANGES": ranges}, rows_name="RANGES")

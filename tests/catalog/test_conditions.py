@@ -7,7 +7,7 @@ import pytest
 from zero.catalog.conditions import DEFAULT_LIST, compile_condition, parse, ref_elements, refs
 
 
-def run(text: str, values: dict[str, float | int | None]) -> object:
+def run(text: str, values: dict[str, float | int | str | None]) -> object:
     return compile_condition(parse(text))(lambda pid, index: values.get(pid if index is None else f"{pid}.{index}"))
 
 
@@ -35,7 +35,54 @@ def test_elements_and_the_list_fact() -> None:
 
 
 @pytest.mark.parametrize("text", ["__import__('os')", "P-AXIS-00016 ==", "P-AXIS-00016 = 1", "x < 1",
-                                  "(P-AXIS-00016 < 1", "P-AXIS-00016 < 1)", "len(P-AXIS-00016)"])
+                                  "(P-AXIS-00016 < 1", "P-AXIS-00016 < 1)", "size(P-AXIS-00016)",
+                                  "len(P-AXIS-00016, 2)", "startswith(P-CHAN-00007)", "supports(3)",
+                                  "P-AXIS-00018 in (P-AXIS-00016)", "P-AXIS-00018 in 1", "P-CHAN-00007 == \"S"])
 def test_anything_else_is_refused(text: str) -> None:
     with pytest.raises(ValueError):
         parse(text)
+
+
+def test_strings_prefix_length_and_sets() -> None:
+    """Issue 38: what the documentation says of names (20971: a spindle name starts with S)."""
+    assert run('startswith(P-CHAN-00007, "S")', {"P-CHAN-00007": "S1"}) is True
+    assert run("startswith(P-CHAN-00007, 'S')", {"P-CHAN-00007": "X1"}) is False
+    assert run('startswith(P-CHAN-00007, "S")', {}) is None
+    assert run("len(P-CHAN-00007) <= 16", {"P-CHAN-00007": "S" * 17}) is False
+    assert run('P-CHAN-00007 == "S"', {"P-CHAN-00007": "S"}) is True
+    assert run('P-AXIS-00320 in ("DRIVE_DEFAULT", "CNC_POSITION_CONTROL")', {"P-AXIS-00320": "OTHER"}) is False
+    assert run('P-AXIS-00320 not in ("A", "B")', {"P-AXIS-00320": "A"}) is False
+    assert run("P-AXIS-00018 in (1, 2, -4)", {"P-AXIS-00018": -4}) is True
+    assert run('P-AXIS-00018 in ("1")', {"P-AXIS-00018": 1}) is False  # text is never a number
+    # a string against a number is unknown, never an exception
+    assert run('P-CHAN-00007 < 3', {"P-CHAN-00007": "S"}) is None
+    assert run("len(P-AXIS-00018) == 1", {"P-AXIS-00018": 1}) is None
+    assert refs(parse('startswith(P-CHAN-00007, "S") and P-CHAN-00036 in (1, 2)')) == ["P-CHAN-00007", "P-CHAN-00036"]
+
+
+def test_supports_reads_the_drive_type_table() -> None:
+    """`supports(P)`: the drive type P-AXIS-00020 is one the table (the parameter page's "Drive
+    types" row) lists for P; unknown where the table has no row."""
+    from zero.catalog.conditions import supported_drive_types
+
+    assert supported_drive_types("P-AXIS-00539") == frozenset({2, 3})  # SERCOS, Profidrive
+    assert run("supports(P-AXIS-00539)", {"P-AXIS-00020": 2}) is True
+    assert run("supports(P-AXIS-00539)", {"P-AXIS-00020": 4}) is False
+    assert run("supports(P-AXIS-00539)", {}) is None
+    assert run("supports(P-AXIS-00016)", {"P-AXIS-00020": 4}) is None  # no row: nothing said
+    assert run("P-AXIS-00539 == 0 or supports(P-AXIS-00539)", {"P-AXIS-00539": 0}) is True
+    assert refs(parse("P-AXIS-00539 == 0 or supports(P-AXIS-00539)")) == ["P-AXIS-00539", "P-AXIS-00020"]
+
+
+def test_every_drive_type_row_is_sourced_and_known(registry: object) -> None:
+    import tomllib
+
+    from conftest import ROOT
+    from zero.catalog.data.drive_types import DRIVE_TYPES
+
+    toml = ROOT / "src" / "zero" / "catalog" / "data" / "drive_types.toml"
+    assert tomllib.loads(toml.read_text(encoding="utf-8"))["drive"] == DRIVE_TYPES  # gen_startup.py was run
+    for row in DRIVE_TYPES:
+        assert str(row["source"]).startswith("https://infosys.beckhoff.com/"), row
+        assert set(row["types"]) <= {1, 2, 3, 4, 5, 6, 7, 8, 16, 32}, row  # P-AXIS-00020's documented values
+        assert registry.get(row["param"]) is not None, row  # type: ignore[attr-defined]

@@ -129,3 +129,17 @@ def test_the_resolution_mix_in_a_default_list_is_reported_there_once(tmp_path: P
     assert [line.split(" ")[0].rsplit("/", 1)[-1] for line in run.stdout.splitlines()] == [
         "default_achse.lis:3:21:"], run.stdout
     assert "`getriebe[0].wegaufn 10`" in run.stdout and "`antr.feed_const_num 100000`" in run.stdout
+
+
+def test_two_axis_lists_with_one_logical_axis_number_carry_110064() -> None:
+    """Issue 38: X004 (one `kopf.achs_nr` in two axis lists) is the kernel's P-ERR-110064, whose page
+    says the second axis's data is not taken over; P-ERR-1001121 aborts the start-up."""
+    import json
+
+    from conftest import zero_cli
+
+    run = zero_cli("lint", "--machine", str(FIXTURES / "machine" / "listen" / "hochlauf.lis"), "--select", "X004", "--output-format", "json")
+    found = [d for d in json.loads(run.stdout) if d["code"] == "X004" and d["param_id"] == "P-AXIS-00016"]
+    assert found and all(d["kernel_error"] == "P-ERR-110064" for d in found), run.stdout
+    assert all("does not take over this axis's data" in d["message"] and "1001121" in d["message"] for d in found)
+    assert "262200203.html" in RULES["X004"].explanation and "269224331.html" in RULES["X004"].explanation

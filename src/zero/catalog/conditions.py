@@ -7,7 +7,14 @@ element ``P-AXIS-00212.0``, without one the element of the parameter being check
 parentheses, comparisons ``< <= > >= == !=``, ``and``, ``or``, ``not``, ``abs(x)`` and ``&`` for bit
 tests (``(P-AXIS-00015 & 0x40) != 0``), and one fact about the list itself: ``DEFAULT_LIST`` (1 in
 a default list, the template the controller reads under the lists of its kind, else 0).
-:func:`parse` raises :class:`ValueError` for anything else.
+
+What the documentation says of text and of the drive type can be said too: string literals
+(``"S"`` or ``'S'``), ``len(x)`` (a string's length), ``startswith(x, "S")``, set membership
+``x in ("X", "Y", 4)`` and ``x not in (...)``, and ``supports(P-AXIS-00294)``: 1 where the axis's
+drive type (P-AXIS-00020) is one the drive-type table (``data/drive_types.toml``, each row from the
+parameter page's "Drive types" row) lists for that parameter, 0 where it is not, unknown where the
+table has no row or the drive type is not known. A comparison of a string with a number is
+unknown, never an error. :func:`parse` raises :class:`ValueError` for anything else.
 """
 
 from __future__ import annotations
@@ -18,13 +25,16 @@ from typing import Union
 
 Number = int | float
 # A parameter's value by (ID, element index or None for "the checked parameter's"); None: not known.
-Lookup = Callable[[str, int | None], Number | None]
+# A STRING parameter's value is its text.
+Lookup = Callable[[str, int | None], Number | str | None]
 
 DEFAULT_LIST = "DEFAULT_LIST"  # a fact of the list, not a parameter: read by the lookup like one
 _TOKEN = re.compile(r"\s*(?:(P-[A-Z]{4}-[0-9]{5}(?:\.[0-9]+)?|DEFAULT_LIST\b)|(0x[0-9A-Fa-f]+|[0-9]+(?:\.[0-9]+)?)"
-                    r"|(<=|>=|==|!=|<|>|\+|-|\*|/|&|\(|\)|,)|(and|or|not|abs)\b)")
+                    r"|(\"[^\"\\\n]*\"|'[^'\\\n]*')"
+                    r"|(<=|>=|==|!=|<|>|\+|-|\*|/|&|\(|\)|,)|(and|or|not|in|abs|len|startswith|supports)\b)")
+_FUNCTIONS = {"abs": 1, "len": 1, "startswith": 2, "supports": 1}
 
-Node = Union["Num", "Ref", "Unary", "Binary", "Call"]
+Node = Union["Num", "Str", "Ref", "Unary", "Binary", "Call", "Member"]
 
 
 class Num:
@@ -32,6 +42,22 @@ class Num:
 
     def __init__(self, value: Number) -> None:
         self.value = value
+
+
+class Str:
+    __slots__ = ("value",)
+
+    def __init__(self, value: str) -> None:
+        self.value = value
+
+
+class Member:
+    """``x in (a, b)``; ``negated``: ``x not in (a, b)``."""
+
+    __slots__ = ("arg", "choices", "negated")
+
+    def __init__(self, arg: Node, choices: tuple[Number | str, ...], negated: bool) -> None:
+        self.arg, self.choices, self.negated = arg, choices, negated
 
 
 class Ref:
@@ -56,10 +82,14 @@ class Binary:
 
 
 class Call:
-    __slots__ = ("arg", "name")
+    __slots__ = ("args", "name")
 
-    def __init__(self, name: str, arg: Node) -> None:
-        self.name, self.arg = name, arg
+    def __init__(self, name: str, *args: Node) -> None:
+        self.name, self.args = name, args
+
+    @property
+    def arg(self) -> Node:
+        return self.args[0]
 
 
 def _tokens(text: str) -> list[str]:
@@ -118,10 +148,34 @@ class _Parser:
 
     def compare(self) -> Node:
         node = self.bits()
-        while self.peek() in ("<", "<=", ">", ">=", "==", "!="):
+        while self.peek() in ("<", "<=", ">", ">=", "==", "!=", "in", "not"):
+            if self.peek() in ("in", "not"):
+                negated = self.take() == "not"
+                if negated:
+                    self.take("in")
+                node = Member(node, self.choices(), negated)
+                continue
             op = self.take()
             node = Binary(op, node, self.bits())
         return node
+
+    def choices(self) -> tuple[Number | str, ...]:
+        """``("X", "Y", 4)``: literals only."""
+        self.take("(")
+        out: list[Number | str] = []
+        while True:
+            lit = self.atom()
+            if isinstance(lit, Unary) and lit.op == "-" and isinstance(lit.arg, Num):
+                out.append(-lit.arg.value)
+            elif isinstance(lit, Num | Str):
+                out.append(lit.value)
+            else:
+                raise ValueError("a set holds literals only")
+            sep = self.take()
+            if sep == ")":
+                return tuple(out)
+            if sep != ",":
+                raise ValueError(f"expected , or ) in a set, found {sep!r}")
 
     def bits(self) -> Node:
         node = self.sum()
@@ -156,11 +210,22 @@ class _Parser:
             node = self.or_()
             self.take(")")
             return node
-        if tok == "abs":
+        if tok == "-":
+            return Unary("-", self.atom())
+        if tok in _FUNCTIONS:
             self.take("(")
-            arg = self.or_()
+            args = [self.or_()]
+            while self.peek() == ",":
+                self.take()
+                args.append(self.or_())
             self.take(")")
-            return Call("abs", arg)
+            if len(args) != _FUNCTIONS[tok]:
+                raise ValueError(f"{tok}() takes {_FUNCTIONS[tok]} argument(s)")
+            if tok == "supports" and not (isinstance(args[0], Ref) and args[0].pid != DEFAULT_LIST):
+                raise ValueError("supports() takes a parameter ID")
+            return Call(tok, *args)
+        if tok[:1] in "\"'":
+            return Str(tok[1:-1])
         if tok == DEFAULT_LIST:
             return Ref(tok, None)
         if tok.startswith("P-"):
@@ -192,18 +257,39 @@ def ref_elements(node: Node) -> list[tuple[str, int | None]]:
         n = stack.pop()
         if isinstance(n, Ref) and n.pid != DEFAULT_LIST:
             out.append((n.pid, n.index))
-        elif isinstance(n, Unary | Call):
+        elif isinstance(n, Call) and n.name == "supports":
+            out.append((DRIVE_TYPE, None))  # the drive type is read; the parameter named is not
+        elif isinstance(n, Call):
+            stack.extend(reversed(n.args))
+        elif isinstance(n, Unary | Member):
             stack.append(n.arg)
         elif isinstance(n, Binary):
             stack.extend((n.right, n.left))
     return list(dict.fromkeys(out))
 
 
-_Value = Number | bool | None
+_Value = Number | str | bool | None
+DRIVE_TYPE = "P-AXIS-00020"  # kenngr.antr_typ: what supports() reads
 
 
 def _num(v: Number | bool) -> Number:
     return v if isinstance(v, float) else int(v)
+
+
+def _drive_types() -> dict[str, frozenset[int]]:
+    from zero.catalog.data.drive_types import DRIVE_TYPES  # compiled from drive_types.toml
+
+    return {str(row["param"]): frozenset(int(str(t)) for t in row["types"]) for row in DRIVE_TYPES}
+
+
+_SUPPORTED: dict[str, frozenset[int]] = {}
+
+
+def supported_drive_types(pid: str) -> frozenset[int] | None:
+    """The drive types (P-AXIS-00020 values) the table lists for ``pid``; ``None``: no row."""
+    if not _SUPPORTED:
+        _SUPPORTED.update(_drive_types())
+    return _SUPPORTED.get(pid)
 
 
 Compiled = Callable[[Lookup], "_Value"]
@@ -219,9 +305,19 @@ def compile_condition(node: Node) -> Compiled:
     """A condition as a function of the lookup, built once (a fleet evaluates each condition once per
     list). ``None`` where a parameter it needs is not known: then nothing is said; ``and``/``or`` decide
     without the unknown side where the known side decides."""
-    if isinstance(node, Num):
+    if isinstance(node, Num | Str):
         value = node.value
         return lambda _lookup: value
+    if isinstance(node, Member):
+        arg, choices, negated = compile_condition(node.arg), node.choices, node.negated
+
+        def member(lookup: Lookup) -> _Value:
+            v = arg(lookup)
+            if v is None:
+                return None
+            hit = any(v == c for c in choices if isinstance(v, str) == isinstance(c, str))
+            return hit != negated
+        return member
     if isinstance(node, Ref):
         pid, index = node.pid, node.index
         return lambda lookup: lookup(pid, index)
@@ -229,10 +325,9 @@ def compile_condition(node: Node) -> Compiled:
         arg = compile_condition(node.arg)
         if node.op == "not":
             return lambda lookup: None if (v := arg(lookup)) is None else (not v)
-        return lambda lookup: None if (v := arg(lookup)) is None else -v
+        return lambda lookup: None if (v := arg(lookup)) is None or isinstance(v, str) else -v
     if isinstance(node, Call):
-        arg = compile_condition(node.arg)
-        return lambda lookup: None if (v := arg(lookup)) is None else abs(v)
+        return _compile_call(node)
     left, right = compile_condition(node.left), compile_condition(node.right)
     if node.op == "and":
         def both(lookup: Lookup) -> _Value:
@@ -252,7 +347,41 @@ def compile_condition(node: Node) -> Compiled:
         return either
     op = _OPS[node.op]
 
+    equality = node.op in ("==", "!=")
+
     def binary(lookup: Lookup) -> _Value:
         a, b = left(lookup), right(lookup)
-        return None if a is None or b is None else op(_num(a), _num(b))
+        if a is None or b is None:
+            return None
+        if isinstance(a, str) or isinstance(b, str):  # text compares with text, for equality only
+            return op(a, b) if equality and isinstance(a, str) and isinstance(b, str) else None  # type: ignore[arg-type]
+        return op(_num(a), _num(b))
     return binary
+
+
+def _compile_call(node: Call) -> Compiled:
+    if node.name == "supports":
+        ref = node.args[0]
+        assert isinstance(ref, Ref)
+        pid = ref.pid
+
+        def supports(lookup: Lookup) -> _Value:
+            types = supported_drive_types(pid)
+            drive = lookup(DRIVE_TYPE, None)
+            if types is None or drive is None or isinstance(drive, str):
+                return None
+            return int(drive) in types
+        return supports
+    args = [compile_condition(a) for a in node.args]
+    if node.name == "abs":
+        arg = args[0]
+        return lambda lookup: None if (v := arg(lookup)) is None or isinstance(v, str) else abs(v)
+    if node.name == "len":
+        arg = args[0]
+        return lambda lookup: len(v) if isinstance(v := arg(lookup), str) else None
+    text, prefix = args
+
+    def startswith(lookup: Lookup) -> _Value:
+        a, b = text(lookup), prefix(lookup)
+        return a.startswith(b) if isinstance(a, str) and isinstance(b, str) else None
+    return startswith

@@ -131,8 +131,11 @@ DUPLICATE_AXIS = FAMILY.rule(
 What it checks: `kopf.achs_nr` (and `kopf.log_achs_name`) differ between the axis lists of one
 start-up list.
 
-Why it matters on the machine: the controller maps a channel axis to one of them; the other
-list's soft limits, gears and drive data are not the ones in effect.
+Why it matters on the machine: the kernel reports error P-ERR-110064 at start-up and does not take
+over the data of the second axis with the same logical axis number; P-ERR-1001121 (axis cannot be
+configured) aborts the start-up. The other list's soft limits, gears and drive data are not the
+ones in effect. Sources: https://infosys.beckhoff.com/content/1033/tf5200_diagnosis/262200203.html
+(110064), https://infosys.beckhoff.com/content/1033/tf5200_diagnosis/269224331.html (1001121).
 
 Fix: give each axis list its own `kopf.achs_nr` and name.
 """)
@@ -164,9 +167,11 @@ def check_axes(ctx: MachineContext) -> Iterator[Diagnostic]:
         e = lf.entry(AXIS_NR)
         span = Span.on_line(e.line, e.value_start, e.value_end) if e else Span(1, 1, 1, 1)
         if ax.nr in seen_nr:
-            yield ctx.report("X004", span, f"logical axis number {ax.nr} is also claimed by "
-                             f"{seen_nr[ax.nr]}: only one of the two lists is in effect", param_id=AXIS_NR,
-                             path=str(lf.path))
+            yield ctx.report("X004", span, f"P-ERR-110064: logical axis number {ax.nr} is also claimed by "
+                             f"{seen_nr[ax.nr]}: the controller reports error 110064 at start-up and does not "
+                             "take over this axis's data (P-ERR-1001121: the axis cannot be configured and the "
+                             "start-up is aborted)", param_id=AXIS_NR, path=str(lf.path),
+                             kernel_error="P-ERR-110064")
         seen_nr.setdefault(ax.nr, str(lf.path))
         en = lf.entry(AXIS_NAME)
         if ax.name in seen_name and en is not None:

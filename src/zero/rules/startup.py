@@ -18,6 +18,7 @@ from collections.abc import Iterator
 from zero.catalog.conditions import DEFAULT_LIST, Compiled, compile_condition, parse, ref_elements, refs
 from zero.catalog.data.startup_errors import ERRORS
 from zero.catalog.ranges import format_number
+from zero.catalog.registry import ParamSpec
 from zero.catalog.values import Resolved, default_number, parse_int
 from zero.diagnostics import Diagnostic, Span
 from zero.lists.model import Entry, format_key
@@ -154,7 +155,7 @@ def _check(ctx: Context, err: StartupError) -> Iterator[tuple[Diagnostic, bool]]
     """Each failing element's finding, and whether it lies on the line of the parameter it reports."""
     c = compiled(err)
     for idx in _elements(ctx, err):
-        def lookup(pid: str, index: int | None, idx: tuple[int, ...] = idx) -> float | int | None:
+        def lookup(pid: str, index: int | None, idx: tuple[int, ...] = idx) -> float | int | str | None:
             if pid == DEFAULT_LIST:
                 return int(ctx.default_list)
             return _value(ctx, pid, (index,) if index is not None else idx)
@@ -173,13 +174,25 @@ def _check(ctx: Context, err: StartupError) -> Iterator[tuple[Diagnostic, bool]]
             continue  # the list sets none of the values the condition reads: not this list's doing
         entry, pid_on_line = hit
         values = ", ".join(f"{_named(ctx, pid, idx if index is None else (index,))} = "
-                           f"{format_number(lookup(pid, index))}" for pid, index in c.shown)
+                           f"{_shown(lookup(pid, index))}" for pid, index in c.shown)
         yield ctx.report(
             err.code, Span.on_line(entry.line, entry.value_start, entry.value_end),
             f"P-ERR-{err.number}: {err.title} ({values}): the controller reports error {err.number} at start-up, "
             f"and {_correction_said(err.correction)}", hint=f"the documented condition: {err.condition_text}",
             param_id=err.params[0] if err.params else None, kernel_error=err.kernel_error), \
             bool(err.params) and pid_on_line == err.params[0]
+
+
+def _text(spec: ParamSpec | None) -> bool:
+    """Is the value text (a STRING without symbols: a name), not a number or a symbol's number?"""
+    return spec is not None and spec.type == "STRING" and not spec.symbols
+
+
+def _shown(value: float | int | str | None) -> str:
+    """A value as a finding shows it: a number as the catalogue writes it, text quoted."""
+    if isinstance(value, str):
+        return f'"{value}"'
+    return format_number(value)
 
 
 def _element(ctx: Context, pid: str, idx: tuple[int, ...]) -> tuple[int, ...]:
@@ -194,9 +207,13 @@ def _own(ctx: Context, pid: str, idx: tuple[int, ...]) -> Resolved | None:
     return ctx.by_id.get(pid, {}).get(_element(ctx, pid, idx))
 
 
-def _value(ctx: Context, pid: str, idx: tuple[int, ...]) -> float | int | None:
+def _value(ctx: Context, pid: str, idx: tuple[int, ...]) -> float | int | str | None:
     """The value as written, where the list writes a number (also one the catalogue's range refuses:
-    the kernel's own check sees it), else the value the controller uses (the default where unset)."""
+    the kernel's own check sees it), else the value the controller uses (the default where unset); a
+    STRING parameter's text (the list's, else the default list's, else the catalogue default)."""
+    spec = ctx.registry.get(pid)
+    if _text(spec):
+        return ctx.text_of(pid, _element(ctx, pid, idx))
     res = _own(ctx, pid, idx)
     if res is not None:
         if res.value.number is not None:
@@ -220,10 +237,12 @@ def _fails_on_defaults(ctx: Context, err: StartupError, idx: tuple[int, ...]) ->
     it fail: a default of 0 that means "not used" (an emergency deceleration of 0 takes the normal
     one), which the documented condition leaves unsaid."""
 
-    def defaults(pid: str, index: int | None) -> float | int | None:
+    def defaults(pid: str, index: int | None) -> float | int | str | None:
         if pid == DEFAULT_LIST:
             return int(ctx.default_list)
         spec = ctx.registry.get(pid)
+        if spec is not None and _text(spec):
+            return spec.default or ""
         return default_number(spec) if spec is not None else None
 
     c = compiled(err)

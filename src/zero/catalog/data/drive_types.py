@@ -1,0 +1,14 @@
+"""The drive types of each parameter, drive_types.toml compiled.
+
+Generated: do not edit."""
+
+from typing import Any
+
+DRIVE_TYPES: list[dict[str, Any]] = [
+    {'param': 'P-AXIS-00294', 'types': [5], 'names': 'Lightbus', 'source': 'https://infosys.beckhoff.com/content/1031/tf5200_axis_parameter/117257867.html'},
+    {'param': 'P-AXIS-00388', 'types': [2], 'names': 'SERCOS ("this parameter is currently supported only for SERCOS")', 'source': 'https://infosys.beckhoff.com/content/1031/tf5200_axis_parameter/117920395.html'},
+    {'param': 'P-AXIS-00539', 'types': [2, 3], 'names': 'SERCOS, Profidrive (remarks: a value other than 0 for other drive types is error 110614)', 'source': 'https://infosys.beckhoff.com/content/1033/tf5200_axis_parameter/117333003.html'},
+    {'param': 'P-AXIS-00355', 'types': [2, 5, 8], 'names': 'SERCOS, Lightbus, CANopen', 'source': 'https://infosys.beckhoff.com/content/1033/tf5200_axis_parameter/117260939.html'},
+    {'param': 'P-AXIS-00584', 'types': [2, 8], 'names': 'SERCOS, CANopen', 'source': 'https://infosys.beckhoff.com/content/1033/tf5200_axis_parameter/478018443.html'},
+    {'param': 'P-AXIS-00346', 'types': [2], 'names': 'SERCOS, KUKA (KUKA has no P-AXIS-00020 number)', 'source': 'https://infosys.beckhoff.com/content/1033/tf5200_axis_parameter/117292939.html'},
+]
