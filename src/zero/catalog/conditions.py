@@ -10,7 +10,10 @@ a default list, the template the controller reads under the lists of its kind, e
 
 What the documentation says of text and of the drive type can be said too: string literals
 (``"S"`` or ``'S'``), ``len(x)`` (a string's length), ``startswith(x, "S")``, set membership
-``x in ("X", "Y", 4)`` and ``x not in (...)``, and ``supports(P-AXIS-00294)``: 1 where the axis's
+``x in ("X", "Y", 4)`` and ``x not in (...)``, ``unique(P-CHAN-00007)`` (a fact of the whole list,
+answered by the lookup under the name ``unique:P-CHAN-00007``: 1 where the checked element's value
+is no other element's value of the parameters named, 0 where it is one, unknown where it is not
+set), and ``supports(P-AXIS-00294)``: 1 where the axis's
 drive type (P-AXIS-00020) is one the drive-type table (``data/drive_types.toml``, each row from the
 parameter page's "Drive types" row) lists for that parameter, 0 where it is not, unknown where the
 table has no row or the drive type is not known. A comparison of a string with a number is
@@ -31,8 +34,9 @@ Lookup = Callable[[str, int | None], Number | str | None]
 DEFAULT_LIST = "DEFAULT_LIST"  # a fact of the list, not a parameter: read by the lookup like one
 _TOKEN = re.compile(r"\s*(?:(P-[A-Z]{4}-[0-9]{5}(?:\.[0-9]+)?|DEFAULT_LIST\b)|(0x[0-9A-Fa-f]+|[0-9]+(?:\.[0-9]+)?)"
                     r"|(\"[^\"\\\n]*\"|'[^'\\\n]*')"
-                    r"|(<=|>=|==|!=|<|>|\+|-|\*|/|&|\(|\)|,)|(and|or|not|in|abs|len|startswith|supports)\b)")
-_FUNCTIONS = {"abs": 1, "len": 1, "startswith": 2, "supports": 1}
+                    r"|(<=|>=|==|!=|<|>|\+|-|\*|/|&|\(|\)|,)|(and|or|not|in|abs|len|startswith|supports|unique)\b)")
+_FUNCTIONS = {"abs": 1, "len": 1, "startswith": 2, "supports": 1, "unique": 0}  # 0: one or more IDs
+UNIQUE = "unique:"  # the lookup's name of the fact unique(...) asks for
 
 Node = Union["Num", "Str", "Ref", "Unary", "Binary", "Call", "Member"]
 
@@ -219,10 +223,11 @@ class _Parser:
                 self.take()
                 args.append(self.or_())
             self.take(")")
-            if len(args) != _FUNCTIONS[tok]:
+            if _FUNCTIONS[tok] and len(args) != _FUNCTIONS[tok]:
                 raise ValueError(f"{tok}() takes {_FUNCTIONS[tok]} argument(s)")
-            if tok == "supports" and not (isinstance(args[0], Ref) and args[0].pid != DEFAULT_LIST):
-                raise ValueError("supports() takes a parameter ID")
+            if tok in ("supports", "unique") and not all(isinstance(a, Ref) and a.pid != DEFAULT_LIST
+                                                         and a.index is None for a in args):
+                raise ValueError(f"{tok}() takes parameter IDs")
             return Call(tok, *args)
         if tok[:1] in "\"'":
             return Str(tok[1:-1])
@@ -259,6 +264,8 @@ def ref_elements(node: Node) -> list[tuple[str, int | None]]:
             out.append((n.pid, n.index))
         elif isinstance(n, Call) and n.name == "supports":
             out.append((DRIVE_TYPE, None))  # the drive type is read; the parameter named is not
+        elif isinstance(n, Call) and n.name == "unique":
+            out.extend((a.pid, None) for a in n.args if isinstance(a, Ref))
         elif isinstance(n, Call):
             stack.extend(reversed(n.args))
         elif isinstance(n, Unary | Member):
@@ -355,7 +362,10 @@ def compile_condition(node: Node) -> Compiled:
             return None
         if isinstance(a, str) or isinstance(b, str):  # text compares with text, for equality only
             return op(a, b) if equality and isinstance(a, str) and isinstance(b, str) else None  # type: ignore[arg-type]
-        return op(_num(a), _num(b))
+        try:
+            return op(_num(a), _num(b))
+        except OverflowError:  # an integer beyond a float's range in arithmetic with a float: not known
+            return None
     return binary
 
 
@@ -372,6 +382,9 @@ def _compile_call(node: Call) -> Compiled:
                 return None
             return int(drive) in types
         return supports
+    if node.name == "unique":
+        key = UNIQUE + ",".join(a.pid for a in node.args if isinstance(a, Ref))
+        return lambda lookup: None if (v := lookup(key, None)) is None else bool(v)
     args = [compile_condition(a) for a in node.args]
     if node.name == "abs":
         arg = args[0]

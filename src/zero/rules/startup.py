@@ -15,7 +15,7 @@ from __future__ import annotations
 import itertools
 from collections.abc import Iterator
 
-from zero.catalog.conditions import DEFAULT_LIST, Compiled, compile_condition, parse, ref_elements, refs
+from zero.catalog.conditions import DEFAULT_LIST, UNIQUE, Compiled, compile_condition, parse, ref_elements, refs
 from zero.catalog.data.startup_errors import ERRORS
 from zero.catalog.ranges import format_number
 from zero.catalog.registry import ParamSpec
@@ -158,6 +158,8 @@ def _check(ctx: Context, err: StartupError) -> Iterator[tuple[Diagnostic, bool]]
         def lookup(pid: str, index: int | None, idx: tuple[int, ...] = idx) -> float | int | str | None:
             if pid == DEFAULT_LIST:
                 return int(ctx.default_list)
+            if pid.startswith(UNIQUE):
+                return _unique(ctx, pid[len(UNIQUE):].split(","), idx)
             return _value(ctx, pid, (index,) if index is not None else idx)
 
         if c.when is not None and c.when(lookup) is not True:
@@ -173,8 +175,9 @@ def _check(ctx: Context, err: StartupError) -> Iterator[tuple[Diagnostic, bool]]
         if hit is None:
             continue  # the list sets none of the values the condition reads: not this list's doing
         entry, pid_on_line = hit
+        shown = c.shown[:1] if err.condition_text.startswith("unique(") else c.shown  # the value others share
         values = ", ".join(f"{_named(ctx, pid, idx if index is None else (index,))} = "
-                           f"{_shown(lookup(pid, index))}" for pid, index in c.shown)
+                           f"{_shown(lookup(pid, index))}" for pid, index in shown)
         yield ctx.report(
             err.code, Span.on_line(entry.line, entry.value_start, entry.value_end),
             f"P-ERR-{err.number}: {err.title} ({values}): the controller reports error {err.number} at start-up, "
@@ -183,9 +186,29 @@ def _check(ctx: Context, err: StartupError) -> Iterator[tuple[Diagnostic, bool]]
             bool(err.params) and pid_on_line == err.params[0]
 
 
+def _unique(ctx: Context, pids: list[str], idx: tuple[int, ...]) -> int | None:
+    """``unique(P, Q…)`` for element ``idx`` of ``P``: 1 where its value is the value of no other element
+    of ``P`` set on an earlier line (the later of two is the one reported) and of no element of ``Q…``;
+    0 where it is; unknown where this list does not set it, or sets it empty or 0 (not configured)."""
+    first = pids[0]
+    element = _element(ctx, first, idx)
+    own = _own(ctx, first, idx)
+    mine = _value(ctx, first, idx)
+    if own is None or mine in (None, "", 0):
+        return None
+    for pid in pids:
+        for other, res in ctx.ids_of(pid).items():
+            if pid == first and (other == element or res.entry.line >= own.entry.line):
+                continue
+            if _value(ctx, pid, other) == mine:
+                return 0
+    return 1
+
+
 def _text(spec: ParamSpec | None) -> bool:
-    """Is the value text (a STRING without symbols: a name), not a number or a symbol's number?"""
-    return spec is not None and spec.type == "STRING" and not spec.symbols
+    """Is the value text (a STRING that is a name, or whose symbols have no numbers: `homing_type
+    TORQ`), not a number or a symbol's number (`achs_typ ACHSTYP_ROTATOR` is 2)?"""
+    return spec is not None and spec.type == "STRING" and all(n is None for _, n in spec.symbols)
 
 
 def _shown(value: float | int | str | None) -> str:
