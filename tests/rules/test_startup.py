@@ -32,7 +32,7 @@ def test_every_row_is_sourced_and_well_formed(registry: Registry) -> None:
     numbers = [row["number"] for row in ROWS]
     assert len(set(codes)) == len(codes) and len(set(numbers)) == len(numbers)
     for row in ROWS:
-        assert row["source"].startswith("https://"), row
+        assert row["source"].startswith(("https://", "CncParaDesc.xml (")), row
         assert row["title"] and row["list"] in {"AXIS", "CHAN", "ZERO", "TOOL", "COMP", "STUP", "CLMP", "EXTV",
                                                 "MANU", "RTCF"}, row
         for text in (row.get("condition", ""), row.get("when", "")):
@@ -138,7 +138,8 @@ def test_two_axis_lists_with_one_logical_axis_number_carry_110064() -> None:
 
     from conftest import zero_cli
 
-    run = zero_cli("lint", "--machine", str(FIXTURES / "machine" / "listen" / "hochlauf.lis"), "--select", "X004", "--output-format", "json")
+    startup = FIXTURES / "machine" / "listen" / "hochlauf.lis"
+    run = zero_cli("lint", "--machine", str(startup), "--select", "X004", "--output-format", "json")
     found = [d for d in json.loads(run.stdout) if d["code"] == "X004" and d["param_id"] == "P-AXIS-00016"]
     assert found and all(d["kernel_error"] == "P-ERR-110064" for d in found), run.stdout
     assert all("does not take over this axis's data" in d["message"] and "1001121" in d["message"] for d in found)

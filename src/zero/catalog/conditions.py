@@ -1,8 +1,8 @@
 """Conditions between parameters, as the kernel's documentation states them: parsed once, evaluated
 on a list's values.
 
-The language is small and closed (no names but parameter IDs, no calls but ``abs``), so a table row
-can never run code: numbers (``12``, ``0x40``, ``1.5``), parameter IDs (``P-AXIS-00219``; with an
+The language is small and closed (no names but parameter IDs, no calls but the few below), so a table
+row can never run code: numbers (``12``, ``0x40``, ``1.5``, ``1e199``), parameter IDs (``P-AXIS-00219``; with an
 element ``P-AXIS-00212.0``, without one the element of the parameter being checked), ``+ - * /``,
 parentheses, comparisons ``< <= > >= == !=``, ``and``, ``or``, ``not``, ``abs(x)`` and ``&`` for bit
 tests (``(P-AXIS-00015 & 0x40) != 0``), and one fact about the list itself: ``DEFAULT_LIST`` (1 in
@@ -32,7 +32,8 @@ Number = int | float
 Lookup = Callable[[str, int | None], Number | str | None]
 
 DEFAULT_LIST = "DEFAULT_LIST"  # a fact of the list, not a parameter: read by the lookup like one
-_TOKEN = re.compile(r"\s*(?:(P-[A-Z]{4}-[0-9]{5}(?:\.[0-9]+)?|DEFAULT_LIST\b)|(0x[0-9A-Fa-f]+|[0-9]+(?:\.[0-9]+)?)"
+_TOKEN = re.compile(r"\s*(?:(P-[A-Z]{4}-[0-9]{5}(?:\.[0-9]+)?|DEFAULT_LIST\b)"
+                    r"|(0x[0-9A-Fa-f]+|[0-9]+(?:\.[0-9]+)?(?:e[+-]?[0-9]+)?)"
                     r"|(\"[^\"\\\n]*\"|'[^'\\\n]*')"
                     r"|(<=|>=|==|!=|<|>|\+|-|\*|/|&|\(|\)|,)|(and|or|not|in|abs|len|startswith|supports|unique)\b)")
 _FUNCTIONS = {"abs": 1, "len": 1, "startswith": 2, "supports": 1, "unique": 0}  # 0: one or more IDs
@@ -239,7 +240,7 @@ class _Parser:
         if tok.startswith("0x"):
             return Num(int(tok, 16))
         if tok[:1].isdigit():
-            return Num(float(tok) if "." in tok else int(tok))
+            return Num(float(tok) if "." in tok or "e" in tok else int(tok))
         raise ValueError(f"unexpected {tok!r} in the condition")
 
 

@@ -13,9 +13,19 @@ does, the message says so.
 from __future__ import annotations
 
 import itertools
+import re
 from collections.abc import Iterator
 
-from zero.catalog.conditions import DEFAULT_LIST, UNIQUE, Compiled, compile_condition, parse, ref_elements, refs
+from zero.catalog.conditions import (
+    DEFAULT_LIST,
+    UNIQUE,
+    Compiled,
+    compile_condition,
+    parse,
+    ref_elements,
+    refs,
+    supported_drive_types,
+)
 from zero.catalog.data.startup_errors import ERRORS
 from zero.catalog.ranges import format_number
 from zero.catalog.registry import ParamSpec
@@ -40,6 +50,7 @@ class StartupError:
     title: str
     source: str
     written: bool = False  # checked only where the list writes the reported parameter (absent is fine)
+    reported: str = "at start-up"  # when the kernel reports it (the page's error type)
 
     @property
     def kernel_error(self) -> str:
@@ -81,18 +92,25 @@ def _correction_said(correction: str) -> str:
         return "the kernel aborts the start-up"
     if c == "none":
         return "the kernel only warns: it changes no value"
+    if not c.startswith("P-"):  # the documented reaction in words: "switches the I position controller off"
+        return f"the kernel {c}"
     target, _, value = c.partition("=")
     value = value.strip()
     what = f"the value of {value}" if value.startswith("P-") else value
     return f"the kernel sets {target.strip()} to {what}"
 
 
+def _when_reported(row: dict[str, object]) -> str:
+    reported = str(row.get("reported", "at start-up"))
+    return "" if reported == "at start-up" else f" ({reported})"
+
+
 def _explanation(row: dict[str, object], condition: str, when: str) -> str:
     correction = _correction_said(str(row.get("correction", "")))
     guard = f" (checked where {when} holds)" if when else ""
     return f"""
-What it checks: {row["title"]}. At start-up the kernel checks that `{condition}` holds{guard}, and
-reports error P-ERR-{row["number"]} when it does not.
+What it checks: {row["title"]}. When it takes over the list, the kernel checks that `{condition}` holds{guard}, and
+reports error P-ERR-{row["number"]} when it does not{_when_reported(row)}.
 
 Why it matters on the machine: the message appears when the controller starts, and {correction}.
 
@@ -113,7 +131,7 @@ def _declare() -> list[StartupError]:
         out.append(StartupError(str(row["code"]), int(str(row["number"])), str(row["list"]),
                                 tuple(str(p) for p in row.get("params", ()) or ()), condition, when,
                                 str(row.get("correction", "")), str(row["title"]), str(row["source"]),
-                                bool(row.get("written", False))))
+                                bool(row.get("written", False)), str(row.get("reported", "at start-up"))))
     return out
 
 
@@ -180,8 +198,9 @@ def _check(ctx: Context, err: StartupError) -> Iterator[tuple[Diagnostic, bool]]
                            f"{_shown(lookup(pid, index))}" for pid, index in shown)
         yield ctx.report(
             err.code, Span.on_line(entry.line, entry.value_start, entry.value_end),
-            f"P-ERR-{err.number}: {err.title} ({values}): the controller reports error {err.number} at start-up, "
-            f"and {_correction_said(err.correction)}", hint=f"the documented condition: {err.condition_text}",
+            f"P-ERR-{err.number}: {err.title} ({values}): the controller reports error {err.number} {err.reported}, "
+            f"and {_correction_said(err.correction)}", hint=f"the documented condition: {err.condition_text}"
+            f"{_drive_types_said(err)}",
             param_id=err.params[0] if err.params else None, kernel_error=err.kernel_error), \
             bool(err.params) and pid_on_line == err.params[0]
 
@@ -203,6 +222,16 @@ def _unique(ctx: Context, pids: list[str], idx: tuple[int, ...]) -> int | None:
             if _value(ctx, pid, other) == mine:
                 return 0
     return 1
+
+
+def _drive_types_said(err: StartupError) -> str:
+    """For a condition on the drive type: which drive types (P-AXIS-00020) the parameter page lists."""
+    said = []
+    for pid in re.findall(r"supports\((P-[A-Z]{4}-[0-9]{5})\)", err.condition_text):
+        types = supported_drive_types(pid)
+        if types is not None:
+            said.append(f"the {pid} page lists drive types (P-AXIS-00020) {', '.join(str(t) for t in sorted(types))}")
+    return f"; {'; '.join(said)}" if said else ""
 
 
 def _text(spec: ParamSpec | None) -> bool:
