@@ -144,3 +144,32 @@ def test_two_axis_lists_with_one_logical_axis_number_carry_110064() -> None:
     assert found and all(d["kernel_error"] == "P-ERR-110064" for d in found), run.stdout
     assert all("does not take over this axis's data" in d["message"] and "1001121" in d["message"] for d in found)
     assert "262200203.html" in RULES["X004"].explanation and "269224331.html" in RULES["X004"].explanation
+
+
+def test_a_pre_output_time_below_the_real_time_cycle_is_21203(tmp_path: Path) -> None:
+    """Issue 38: a value from another list of the machine: the channel list's MET_SVS pre-output time
+    (P-CHAN-00070) against the real-time configuration's cycle time (P-RTCF-00002), X015 with
+    P-ERR-21203; none without a real-time configuration, none at or above the cycle time."""
+    import json
+    import shutil
+
+    from conftest import zero_cli
+
+    shutil.copytree(FIXTURES / "machine-clean", tmp_path / "m")
+    listen = tmp_path / "m" / "listen"
+    (listen / "rtconf.lis").write_text("cycle_time 2000\nEnde\n")
+    kanal = listen / "kanal.lis"
+    kanal.write_text(kanal.read_text().replace(
+        "Ende", "m_synch[97] 0x02000000\nm_pre_outp[97] 1000\nm_synch[98] MET_SVS\nm_pre_outp[98] 2000\nEnde", 1))
+    startup = listen / "hochlauf.lis"
+
+    def x015() -> list[dict[str, object]]:
+        run = zero_cli("lint", "--machine", str(startup), "--select", "X015", "--output-format", "json")
+        return [d for d in json.loads(run.stdout) if d["code"] == "X015"]
+
+    assert x015() == []  # the start-up list names no real-time configuration: the cycle time is not known
+    startup.write_text(startup.read_text().replace("Ende", "rtconf_lis ./listen/rtconf.lis\nEnde", 1))
+    [found] = x015()
+    assert found["kernel_error"] == "P-ERR-21203" and found["param_id"] == "P-CHAN-00070"
+    assert "M97" in str(found["message"]) and "1000 µs" in str(found["message"]) and "2000 µs" in str(found["message"])
+    assert str(found["path"]).endswith("kanal.lis")

@@ -514,3 +514,58 @@ def check_unchecked(ctx: MachineContext) -> Iterator[Diagnostic]:
         yield _on_reference(ctx, "X012", n.line, f"`{n.key}` names `{n.raw}`, which {n.reason}: zero does not read "
                             "it, so that list is not checked (`[tool.zero.machine]` can name where it lies in the "
                             "repository)")
+
+
+PRE_OUTPUT_BELOW_CYCLE = FAMILY.rule(
+    "X015", "pre-output-below-cycle", E, "P-ERR-21203: pre-output time of an MET_SVS M/H function below the cycle time",
+    """
+What it checks: an M or H function synchronised with MET_SVS (`m_synch[i]` P-CHAN-00041, `h_synch[i]`
+P-CHAN-00027, bit 0x2000000) whose pre-output time (`m_pre_outp[i]` P-CHAN-00070, `h_pre_outp[i]`
+P-CHAN-00107, µs) is shorter than the cycle time of the machine's real-time configuration
+(`cycle_time`, P-RTCF-00002, µs, in the list `rtconf_lis` names). A value from another list: checked
+with `zero lint --machine` only, and only where the machine's real-time configuration sets its cycle
+time. The NC cycle is not shorter than that base cycle, so a pre-output time below it is below the NC
+cycle time too; one between the two is not reported (the NC cycle itself is the real-time threads').
+
+Why it matters on the machine: at start-up the kernel reports error P-ERR-21203 (class 1), sets the
+pre-output time to the cycle time and continues the start-up. Source:
+https://infosys.beckhoff.com/content/1033/tf5200_diagnosis/253779083.html
+
+Fix: give the function a pre-output time of at least one NC cycle.
+""")
+
+_MET_SVS = 0x2000000
+_PRE_OUTPUT = (("P-CHAN-00041", "P-CHAN-00070", "M"), ("P-CHAN-00027", "P-CHAN-00107", "H"))
+
+
+@FAMILY.check(PRE_OUTPUT_BELOW_CYCLE)
+def check_pre_output(ctx: MachineContext) -> Iterator[Diagnostic]:
+    """X015 (P-ERR-21203): MET_SVS pre-output times against the real-time configuration's cycle time."""
+    rtconf = ctx.machine.singles.get("rtconf_lis")
+    if rtconf is None or rtconf.entry("P-RTCF-00002") is None:
+        return  # no real-time configuration, or it does not set the cycle time: nothing known
+    cycle = rtconf.number("P-RTCF-00002")
+    if cycle is None or cycle <= 0:
+        return
+    for ch in ctx.machine.channels:
+        lf = ch.lists
+        if lf is None:
+            continue
+        for synch, pre, letter in _PRE_OUTPUT:
+            for idx in sorted(lf.values.ids_of(synch)):
+                mode = lf.number(synch, idx)
+                if mode is None or not int(mode) & _MET_SVS:
+                    continue
+                time = lf.number(pre, idx)
+                if time is None or time >= cycle:
+                    continue
+                entry = lf.entry(pre, idx) or lf.entry(synch, idx)
+                if entry is None:
+                    continue
+                yield ctx.report(
+                    "X015", Span.on_line(entry.line, entry.value_start, entry.value_end),
+                    f"P-ERR-21203: {letter}{idx[0]} is synchronised with MET_SVS, but its pre-output time is "
+                    f"{int(time)} µs, shorter than the real-time configuration's cycle time {int(cycle)} µs "
+                    f"(P-RTCF-00002 in {rtconf.path.name}): the controller reports error 21203 at start-up and sets "
+                    "the pre-output time to the cycle time", param_id=pre, path=str(lf.path),
+                    kernel_error="P-ERR-21203")
