@@ -15,6 +15,7 @@ import stat
 import subprocess
 import sys
 import threading
+import time
 from pathlib import Path
 
 import pytest
@@ -427,7 +428,13 @@ def test_a_hard_linked_file_killed_half_way_is_completed_never_mixed(tmp_path: P
         os.link(target, tmp_path / f"other{attempt}.lis")
         child = subprocess.Popen([sys.executable, "-c", _WRITER, str(target), str(source)], stdout=subprocess.PIPE)
         assert child.stdout is not None and child.stdout.readline() == b"ready\n"
-        threading.Event().wait(rng.uniform(0.05, 0.6))
+        if attempt % 2:  # during the copy: once its journal is there
+            deadline = time.monotonic() + 20
+            while not any(p.name.endswith(".journal") for p in tmp_path.iterdir()) and time.monotonic() < deadline:
+                threading.Event().wait(0.002)
+            threading.Event().wait(rng.uniform(0.0, 0.08))
+        else:  # at any moment
+            threading.Event().wait(rng.uniform(0.05, 0.8))
         child.kill()
         child.wait()
         data = read_file(target)  # this process: the killed writer's journal is completed here
@@ -438,19 +445,139 @@ def test_a_hard_linked_file_killed_half_way_is_completed_never_mixed(tmp_path: P
     assert outcomes["new"] >= 1 and outcomes["old"] >= 1, outcomes
 
 
-def test_a_stale_journal_is_completed_by_the_next_write_not_deleted(tmp_path: Path) -> None:
-    target = tmp_path / "a.lis"
-    target.write_bytes(b"NEW NEW NEW" + b"old tail")  # what a copy stopped half way leaves
-    os.link(target, tmp_path / "b.lis")
-    dead = subprocess.run([sys.executable, "-c", "import os; print(os.getpid())"], capture_output=True, text=True,
+def _dead_pid() -> str:
+    return subprocess.run([sys.executable, "-c", "import os; print(os.getpid())"], capture_output=True, text=True,
                           check=True).stdout.strip()
-    journal = tmp_path / f".a.lis.zero-{dead}-0123abcd.journal"
-    journal.write_bytes(b"NEW NEW NEW\n")
-    write_atomic(tmp_path / "unrelated.lis", b"x\n")  # another target: its journal is not touched
-    assert journal.exists()
-    write_atomic(target, b"NEWER\n", force=True)
-    assert target.read_bytes() == b"NEWER\n" and (tmp_path / "b.lis").read_bytes() == b"NEWER\n"
+
+
+# Every command that reads a list (each may complete a journal), and every one that writes it.
+_READERS = [["lint", "{d}"], ["lint", "{f}"], ["show", "{f}"], ["format", "--check", "{f}"], ["diff", "{f}", "{f}"],
+            ["convert", "{f}", "--to", "yaml"], ["lint", "--machine", "{f}"], ["format", "{f}"], ["lint", "--fix", "{f}"]]
+
+
+@pytest.mark.skipif(not hasattr(os, "chown") or os.geteuid() != 0, reason="needs root to give a file another owner")
+@pytest.mark.parametrize("command", _READERS)
+def test_a_planted_journal_never_writes_through_a_link_onto_another_users_file(tmp_path: Path,
+                                                                            command: list[str]) -> None:
+    """README: "A journal is applied only when it is proven zero's own". Issue 43: `mkdir v p; echo ORIG >v/t;
+    chown 1234 v/t; ln -s $PWD/v/t p/x.lis; echo PWNED >p/.x.lis.zero-999999-0.journal; zero lint p` wrote
+    PWNED into v/t. A journal planted beside the link, beside the file itself, or forged with a header
+    for another file, is never applied, by any command that reads or writes the file."""
+    victim = tmp_path / "v" / "t"
+    victim.parent.mkdir()
+    victim.write_bytes(b"ORIG\n")
+    os.chown(victim, 1234, 1234)
+    folder = tmp_path / "p"
+    folder.mkdir()
+    (folder / "x.lis").symlink_to(victim)
+    dead = _dead_pid()
+    (folder / f".x.lis.zero-{dead}-0.journal").write_bytes(b"PWNED\n")
+    (victim.parent / f".t.zero-{dead}-0.journal").write_bytes(b"PWNED\n")
+    from zero.files import _journal_bytes  # a well-formed journal for another inode: forged
+
+    other = tmp_path / "other"
+    other.write_bytes(b"ORIG\n")
+    (victim.parent / f".t.zero-{dead}-1.journal").write_bytes(_journal_bytes(other.stat(), "t", b"ORIG\n",
+                                                                             b"PWNED\n"))
+    args = [a.format(d=str(folder), f=str(folder / "x.lis")) for a in command]
+    run = zero_cli(*args, cwd=tmp_path)
+    assert victim.read_bytes() == b"ORIG\n", run
+    assert victim.stat().st_uid == 1234
+    assert "completed from its journal" not in run.stderr
+
+
+@pytest.mark.parametrize("command", _READERS)
+def test_a_journal_that_is_not_zeros_own_is_left_and_said(tmp_path: Path, command: list[str]) -> None:
+    """A file with two hard links (journals are looked for): a journal without zero's header, or one
+    written for another file, is not applied; it is left, and said once."""
+    target = tmp_path / "a.lis"
+    target.write_bytes(LIST)
+    os.link(target, tmp_path / "b.lis")
+    journal = tmp_path / f".a.lis.zero-{_dead_pid()}-0123abcd.journal"
+    journal.write_bytes(b"PWNED\n")
+    args = [a.format(d=str(tmp_path), f=str(target)) for a in command]
+    run = zero_cli(*args, cwd=tmp_path)
+    assert b"PWNED" not in target.read_bytes(), run
+    assert journal.read_bytes() == b"PWNED\n"
+    assert f"{journal.name} not applied: not a journal zero wrote" in run.stderr, run
+
+
+def test_a_stale_journal_never_undoes_a_newer_edit_through_the_other_name(tmp_path: Path) -> None:
+    """Issue 43: a journal of a killed rewrite of `a.lis`, then an edit through the other hard-link
+    name `b.lis`: the next zero replayed the journal and the edit was lost. A journal of zero's own
+    for this very file whose old content is no longer there is removed, unapplied."""
+    from zero.files import _journal_bytes
+
+    target = tmp_path / "a.lis"
+    target.write_bytes(b"np_grp[1].achse[0].versch 1\nEnde\n")
+    os.link(target, tmp_path / "b.lis")
+    journal = tmp_path / f".a.lis.zero-{_dead_pid()}-0123abcd.journal"
+    journal.write_bytes(_journal_bytes(target.stat(), "a.lis", target.read_bytes(), b"np_grp[1].achse[0].versch 2\n"))
+    with (tmp_path / "b.lis").open("r+b") as f:  # an edit in place, through the other name
+        f.write(b"np_grp[1].achse[0].versch 7\nEnde\n")
+    assert read_file(target) == b"np_grp[1].achse[0].versch 7\nEnde\n"
     assert not journal.exists()
+    # the same journal over the old content, or over a copy stopped half way, is completed
+    for current in (b"np_grp[1].achse[0].versch 1\nEnde\n", b"np_grp[1].achse[0].versch 2\nEnde\n",
+                    b"np_grp[1].achse[0].versch 1\nEnde\n\0\0"[:30]):
+        target.write_bytes(b"np_grp[1].achse[0].versch 1\nEnde\n")
+        journal.write_bytes(_journal_bytes(target.stat(), "a.lis", target.read_bytes(),
+                                           b"np_grp[1].achse[0].versch 2\n"))
+        with target.open("r+b") as f:
+            f.write(current)
+        write_atomic(target, b"NEWER\n", force=True)
+        assert target.read_bytes() == b"NEWER\n" == (tmp_path / "b.lis").read_bytes()
+        assert not journal.exists()
+
+
+def test_a_signal_never_leaves_a_padded_or_mixed_file(tmp_path: Path) -> None:
+    """Issue 43: SIGTERM while the journal appeared left the old text plus 38,050 NUL bytes (3 of 15
+    runs) while zero said "nothing was replaced". Now a signal at any moment leaves the old or the new
+    content, and what zero says matches what it left."""
+    import random
+
+    old = b"np_grp[1].achse[0].versch 1\n" * 2000
+    new = old * 20  # longer: its blocks are claimed before the copy
+    source = tmp_path / "new.bin"
+    source.write_bytes(new)
+    rng = random.Random(43)
+    seen = set()
+    for attempt in range(15):
+        target = tmp_path / f"l{attempt}.lis"
+        target.write_bytes(old)
+        os.link(target, tmp_path / f"o{attempt}.lis")
+        child = subprocess.Popen([sys.executable, "-c", _WRITER, str(target), str(source)], stdout=subprocess.PIPE,
+                                 stderr=subprocess.PIPE)
+        assert child.stdout is not None and child.stdout.readline() == b"ready\n"
+        threading.Event().wait(rng.uniform(0.0, 0.12))
+        child.send_signal(signal.SIGTERM)
+        _, err = child.communicate(timeout=30)
+        data = target.read_bytes()
+        assert data in (old, new), f"attempt {attempt}: {len(data)} bytes, {data.count(0)} NUL"
+        if b"nothing was replaced" in err:
+            assert data == old, attempt
+        elif b"written completely" in err or child.returncode == 0:
+            assert data == new, attempt
+        seen.add(data == new)
+        assert not [p for p in tmp_path.iterdir() if ".zero-" in p.name]
+    assert seen == {True, False}, seen
+
+
+@pytest.mark.skipif(not hasattr(os, "chown") or os.geteuid() != 0, reason="needs root to give a file another owner")
+@pytest.mark.parametrize("command", [["format", "{f}"], ["lint", "--fix", "{f}"], ["lint", "--add-noqa", "{f}"],
+                                     ["convert", "{g}", "--to", "lis", "-o", "{f}", "--force"]])
+def test_zero_never_writes_through_a_link_to_another_users_file(tmp_path: Path, command: list[str]) -> None:
+    """README: "never through a symbolic link to a file of another user"."""
+    victim = tmp_path / "v" / "t.lis"
+    victim.parent.mkdir()
+    victim.write_bytes(CP1252)
+    os.chown(victim, 1234, 1234)
+    (tmp_path / "x.lis").symlink_to(victim)
+    (tmp_path / "g.yaml").write_text("kind: zero\n")
+    args = [a.format(f="x.lis", g="g.yaml") for a in command]
+    run = zero_cli(*args, cwd=tmp_path)
+    assert victim.read_bytes() == CP1252, run
+    assert "belongs to another user" in run.stderr or "not" in run.stderr, run
 
 
 def test_a_full_disk_leaves_a_hard_linked_file_as_it_was(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:

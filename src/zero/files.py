@@ -136,8 +136,9 @@ def read_file(path: str | Path, limit: int | None = None) -> bytes:
         if st.st_size > limit:
             raise ZeroError(f"file is {st.st_size} bytes, larger than the {_mib(limit)} zero reads "
                             "(ZERO_MAX_FILE_SIZE raises the limit)", where)
-        if (st.st_nlink > 1 or (hasattr(os, "getuid") and st.st_uid != os.getuid())) \
-                and recover_journals(Path(path)):  # an in-place rewrite was stopped half way
+        # an in-place rewrite stopped half way is completed (never through a link to another's file)
+        if (st.st_nlink > 1 or _foreign(st)) and not (_foreign(st) and through_link(path)) \
+                and recover_journals(Path(path)):
             return read_file(path, limit)
         data = _read_at_most(fd, st.st_size, limit)
         if data is None:  # the file grew while it was read: never more than the limit is held
@@ -270,30 +271,172 @@ def remove_stale_temps(target: Path) -> list[Path]:
     return removed
 
 
+_JOURNAL_MAGIC = b"ZERO-JOURNAL 1\n"
+_warned: set[str] = set()
+
+
+def _euid() -> int | None:
+    return os.geteuid() if hasattr(os, "geteuid") else None
+
+
+def through_link(path: str | Path) -> bool:
+    """Is ``path`` reached through a symbolic link (of the file itself or of a folder on the way)?"""
+    return os.path.realpath(path) != os.path.normpath(os.path.abspath(path))
+
+
+def _foreign(st: os.stat_result) -> bool:
+    """A file of another owner than the user zero runs as."""
+    euid = _euid()
+    return euid is not None and st.st_uid != euid
+
+
+def _journal_bytes(target_st: os.stat_result, name: str, old: bytes, new: bytes) -> bytes:
+    """A journal: what zero writes before an in-place rewrite, proving for which file (device, inode,
+    owner, name) and which old content (size, SHA-256) the new content (size, SHA-256) is meant; the
+    header carries its own checksum. It holds the old content too, so that a copy stopped half way is
+    recognised byte for byte (old and new, a prefix of the new over the old, nothing else)."""
+    import hashlib  # start-up: only an in-place rewrite needs it
+    import json  # start-up: as above
+
+    head = {"dev": target_st.st_dev, "ino": target_st.st_ino, "uid": target_st.st_uid, "name": name,
+            "old": [len(old), hashlib.sha256(old).hexdigest()], "new": [len(new), hashlib.sha256(new).hexdigest()]}
+    text = json.dumps(head, sort_keys=True)
+    line = json.dumps({**head, "sum": hashlib.sha256(text.encode()).hexdigest()}, sort_keys=True).encode()
+    return _JOURNAL_MAGIC + line + b"\n" + old + new
+
+
+def _parse_journal(data: bytes, target: Path, st: os.stat_result) -> tuple[bytes, bytes]:
+    """The old and new content of a journal proven to be zero's own for ``target`` as it is (``st``);
+    :class:`ValueError` saying why it is not."""
+    import hashlib  # start-up: only a journal needs it
+    import json  # start-up: as above
+
+    if not data.startswith(_JOURNAL_MAGIC):
+        raise ValueError("not a journal zero wrote")
+    end = data.find(b"\n", len(_JOURNAL_MAGIC))
+    try:
+        head = json.loads(data[len(_JOURNAL_MAGIC):end]) if end > 0 else None
+    except ValueError:
+        head = None
+    if not isinstance(head, dict) or not isinstance(head.get("sum"), str):
+        raise ValueError("its header does not read")
+    claimed = head.pop("sum")
+    if hashlib.sha256(json.dumps(head, sort_keys=True).encode()).hexdigest() != claimed:
+        raise ValueError("its header's checksum does not match")
+    if (head.get("dev"), head.get("ino"), head.get("uid"), head.get("name")) != (
+            st.st_dev, st.st_ino, st.st_uid, target.name):
+        raise ValueError("it was written for another file (device, inode, owner or name differ)")
+    body = data[end + 1:]
+    (old_size, old_sum), (new_size, new_sum) = head["old"], head["new"]
+    old, new = body[:old_size], body[old_size:]
+    if len(old) != old_size or len(new) != new_size or hashlib.sha256(old).hexdigest() != old_sum \
+            or hashlib.sha256(new).hexdigest() != new_sum:
+        raise ValueError("its content does not match its checksums")
+    return old, new
+
+
+def _stopped_copy(current: bytes, old: bytes, new: bytes) -> bool:
+    """Is ``current`` what an in-place copy of ``new`` over ``old`` leaves when stopped at any point:
+    the old content (with the blocks claimed for a longer new one: NUL bytes after it), a prefix of
+    the new content over that, or the new content before the file is cut to its length?"""
+    base = old + b"\0" * max(0, len(new) - len(old))
+    if len(current) not in (len(old), len(base)):
+        return False
+    k = 0
+    step = 1 << 16
+    limit = min(len(current), len(new))
+    while k < limit and current[k:k + step] == new[k:k + step]:
+        k = min(k + step, limit)
+    while k < limit and current[k] == new[k]:
+        k += 1
+    return current[k:] == base[k:len(current)]
+
+
+def _note(key: str, text: str) -> None:
+    if key not in _warned:
+        _warned.add(key)
+        sys.stderr.write(text)
+
+
 def recover_journals(target: Path) -> bool:
-    """Complete an in-place rewrite that a killed zero left half done: its journal holds the whole
-    new content, so ``target`` gets it (in place, every link kept) and the journal goes. ``True``
-    when something was recovered."""
+    """Complete an in-place rewrite that a killed zero left half done, from its journal, beside the
+    file itself (links followed). A journal is applied only when it is proven zero's own for this
+    very file and its content: a regular file of zero's user (or root, or the file's owner) with one
+    link, its header's checksum right, written for this device, inode, owner and name, and the file
+    as the copy leaves it (old, new, or a prefix of the new over the old). A journal proven zero's
+    but stale (the file was changed since) is removed unapplied; anything else is left alone, said
+    once. ``True`` when something was recovered."""
+    real = Path(os.path.realpath(target))
     recovered = False
-    for journal in _stale(target, "journal"):
+    for journal in _stale(real, "journal"):
         try:
-            data = journal.read_bytes()
-            _rewrite_in_place(target, data)
-            os.unlink(journal)
+            jst = os.lstat(journal)
+            st = os.stat(real)
+        except OSError:
+            continue
+        why = ""
+        if not stat.S_ISREG(jst.st_mode) or jst.st_nlink != 1:
+            why = "not a regular file with one name"
+        elif jst.st_uid not in {_euid(), 0, st.st_uid} and _euid() is not None:
+            why = f"it belongs to another user (uid {jst.st_uid})"
+        elif not stat.S_ISREG(st.st_mode):
+            why = "the file is not a regular file"
+        elif jst.st_size > 2 * max_file_bytes() + 4096:
+            why = "it is larger than any journal zero writes"
+        try:
+            old, new = _parse_journal(_read_plain(journal), real, st) if not why else (b"", b"")
+            current = _read_plain(real) if not why else b""
+        except ValueError as exc:
+            why = str(exc)
+        except OSError as exc:
+            why = f"it cannot be read: {exc.strerror or exc}"
+        if why:
+            _note(str(journal), f"zero: {real}: {journal.name} not applied: {why}; it is left as it is\n")
+            continue
+        if current == new:
+            with contextlib.suppress(OSError):
+                os.unlink(journal)
+            continue
+        if not _stopped_copy(current, old, new):
+            with contextlib.suppress(OSError):
+                os.unlink(journal)
+            _note(str(journal), f"zero: {real}: {journal.name} not applied: the file was changed after that "
+                                "rewrite was stopped; the journal is removed\n")
+            continue
+        try:
+            with _signals_held():
+                _rewrite_in_place(real, new, (st.st_dev, st.st_ino))
+                os.unlink(journal)
             recovered = True
         except OSError as exc:
             raise ZeroError(f"a rewrite stopped half way and cannot be completed from {journal.name}: "
-                            f"{exc.strerror or exc}; copy it over the file by hand", str(target)) from None
+                            f"{exc.strerror or exc}", str(target)) from None
     if recovered:
-        _fsync_directory(target.parent if str(target.parent) else Path("."))
+        _fsync_directory(real.parent)
         sys.stderr.write(f"zero: {target}: an earlier rewrite was stopped half way; completed from its journal\n")
     return recovered
 
 
+def _read_plain(path: Path) -> bytes:
+    """A regular file's bytes, without following a final link and without blocking."""
+    fd = os.open(path, os.O_RDONLY | getattr(os, "O_NONBLOCK", 0) | getattr(os, "O_NOFOLLOW", 0) | _O_BINARY)
+    try:
+        st = os.fstat(fd)
+        if not stat.S_ISREG(st.st_mode):
+            raise OSError(errno.EINVAL, "not a regular file")
+        data = _read_at_most(fd, st.st_size, 2 * max_file_bytes() + 4096)
+        if data is None:
+            raise OSError(errno.EFBIG, "it grew while it was read")
+        return data
+    finally:
+        os.close(fd)
+
+
 @contextlib.contextmanager
-def _signals_unwind() -> Iterator[None]:
+def _signals_unwind(done: list[bool]) -> Iterator[None]:
     """While writing, turn SIGTERM and SIGHUP into SystemExit (Ctrl-C already raises), so that
-    the temporary file is removed on the way out."""
+    the temporary file is removed on the way out; what is said depends on ``done[0]`` (the file was
+    replaced: a signal held during an in-place copy arrives after it)."""
     import signal  # start-up: only a write needs them (with threading, 1.8 ms of every lint)
     import threading  # start-up: as above
 
@@ -302,7 +445,8 @@ def _signals_unwind() -> Iterator[None]:
         return
 
     def unwind(signum: int, _frame: object) -> None:
-        sys.stderr.write(f"zero: stopped by signal {signum}; nothing was replaced\n")
+        what = "the file was written completely" if done[0] else "nothing was replaced"
+        sys.stderr.write(f"zero: stopped by signal {signum}; {what}\n")
         raise SystemExit(128 + signum)
 
     names = [s for s in ("SIGTERM", "SIGHUP") if hasattr(signal, s)]
@@ -355,7 +499,7 @@ def _claim_blocks(target: Path, size: int) -> None:
     """Claim the disk blocks a longer content needs before the first byte of the file is changed, so
     that a full disk fails with the file as it was (:class:`OSError`); a file system that cannot
     claim them ahead is written as it comes."""
-    fd = os.open(target, os.O_WRONLY | _O_BINARY)
+    fd = os.open(target, os.O_WRONLY | getattr(os, "O_NOFOLLOW", 0) | _O_BINARY)
     try:
         old = os.fstat(fd).st_size
         if size > old and hasattr(os, "posix_fallocate"):
@@ -370,11 +514,15 @@ def _claim_blocks(target: Path, size: int) -> None:
         os.close(fd)
 
 
-def _rewrite_in_place(target: Path, data: bytes) -> None:
+def _rewrite_in_place(target: Path, data: bytes, inode: tuple[int, int] | None = None) -> None:
     """Overwrite the file itself (same inode: every hard link and the owner stay); its blocks are
-    claimed already (:func:`_claim_blocks`)."""
-    fd = os.open(target, os.O_WRONLY | _O_BINARY)
+    claimed already (:func:`_claim_blocks`). Never through a link; ``inode`` (device, inode): only
+    that file."""
+    fd = os.open(target, os.O_WRONLY | getattr(os, "O_NOFOLLOW", 0) | _O_BINARY)
     try:
+        st = os.fstat(fd)
+        if inode is not None and (st.st_dev, st.st_ino) != inode:
+            raise OSError(errno.ESTALE, "the file was replaced meanwhile")
         _write_all(fd, data)
         os.ftruncate(fd, len(data))
         os.fsync(fd)
@@ -434,27 +582,40 @@ def write_atomic(path: Path, data: bytes, force: bool = False, inputs: tuple[Pat
             raise ZeroError(f"is {describe(st.st_mode)}, not a regular file: not replaced", where)
         if not force:
             raise ZeroError("already exists (use --force to replace it)", where)
+        if _foreign(st) and through_link(given):
+            raise ZeroError(f"is reached through a symbolic link and belongs to another user (uid {st.st_uid}); "
+                            "zero never writes through a link to another user's file: not replaced", where)
         if not os.access(target, os.W_OK):
             raise ZeroError("not writable (permission denied): not replaced", where)
     directory = target.parent if str(target.parent) else Path(".")
     remove_stale_temps(target)
     recover_journals(target)
     tmp = temp_name(target)
+    done = [False]
     try:
-        fd = os.open(tmp, os.O_WRONLY | os.O_CREAT | os.O_EXCL | _O_BINARY, 0o600)
-    except OSError as exc:
-        raise ZeroError(f"cannot write here: {exc.strerror or exc}", where) from None
-    try:
-        with _signals_unwind():
+        with _signals_unwind(done):  # from before the temporary file exists: a signal never leaves it
+            with _signals_held():
+                try:
+                    fd = os.open(tmp, os.O_WRONLY | os.O_CREAT | os.O_EXCL | _O_BINARY, 0o600)
+                except OSError as exc:
+                    raise ZeroError(f"cannot write here: {exc.strerror or exc}", where) from None
+            in_place = False
             try:
-                _write_all(fd, data)
+                in_place = st is not None and _keeps_owner_in_place(tmp, st)
+                # in place: the temporary file becomes the journal, complete before its name says so
+                _write_all(fd, _journal_for(target, data) if in_place else data)
                 os.fsync(fd)
             finally:
                 os.close(fd)
             if st is None:
                 _create(tmp, target, force, where)
+                done[0] = True
+            elif in_place:
+                _rewrite_journaled(tmp, target, data, done)
             else:
-                _replace(tmp, target, st, data)
+                with _signals_held():
+                    os.replace(tmp, target)
+                    done[0] = True
             _fsync_directory(directory)
     except BaseException as exc:
         with contextlib.suppress(OSError):
@@ -546,33 +707,57 @@ def _exclusive(target: Path, where: str, tmp: Path) -> Path:
     return target
 
 
-def _replace(tmp: Path, target: Path, st: os.stat_result, data: bytes) -> None:
-    """An existing regular file: keep its mode, owner and group, and every hard link."""
+def _keeps_owner_in_place(tmp: Path, st: os.stat_result) -> bool:
+    """Give the (still empty) temporary file the mode, owner and group of the existing file; ``True``
+    where the file must be rewritten in place instead: it has several hard links, or a rename would
+    change its owner (the owner could not be given)."""
     os.chmod(tmp, stat.S_IMODE(st.st_mode))
-    in_place = st.st_nlink > 1
-    if not in_place and hasattr(os, "chown"):
+    if st.st_nlink > 1:
+        return True
+    if hasattr(os, "chown"):
         mine = os.stat(tmp)
         if (mine.st_uid, mine.st_gid) != (st.st_uid, st.st_gid):
             try:
                 os.chown(tmp, st.st_uid, st.st_gid)
             except OSError:
-                in_place = True  # a rename would change the owner: rewrite the file itself
-    if in_place:
+                return True
+    return False
+
+
+def _journal_for(target: Path, data: bytes) -> bytes:
+    """The journal of an in-place rewrite of ``target`` with ``data`` (:func:`_journal_bytes`)."""
+    fd = os.open(target, os.O_RDONLY | getattr(os, "O_NOFOLLOW", 0) | _O_BINARY)
+    try:
+        now = os.fstat(fd)
+        old = _read_at_most(fd, now.st_size, max_file_bytes())
+    finally:
+        os.close(fd)
+    if old is None:
+        raise ZeroError("not written: the file grew while it was rewritten; the file is unchanged", str(target))
+    return _journal_bytes(now, target.name, old, data)
+
+
+def _rewrite_journaled(tmp: Path, target: Path, data: bytes, done: list[bool]) -> None:
+    """Rewrite the file itself (every hard link and the owner stay): first a journal, complete and on
+    disk, proving for which file and which old content the new content is meant; then, with Ctrl-C,
+    SIGTERM and SIGHUP held, the disk blocks a longer content needs are claimed (a full disk: the
+    file is as it was, the journal removed), the copy is made, and the journal removed. SIGKILL or a
+    power cut at any point leaves the old file, the new one, or a prefix of the new over the old with
+    the journal beside it: the next zero proves the journal and completes the copy."""
+    journal = tmp.with_name(tmp.name[: -len(".tmp")] + ".journal")
+    with _signals_held():
+        os.replace(tmp, journal)
+        _fsync_directory(target.parent if str(target.parent) else Path("."))
         try:  # a full disk fails here, with the file as it was and nothing left to complete later
             _claim_blocks(target, len(data))
         except OSError as exc:
+            with contextlib.suppress(OSError):
+                os.unlink(journal)
             raise ZeroError(f"not written: {exc.strerror or exc}; the file is unchanged", str(target)) from None
-        # The temporary file is complete and on disk: renamed to a journal, it says so, and the next
-        # zero completes the copy from it if this one dies half way (never deletes it as stale).
-        journal = tmp.with_name(tmp.name[: -len(".tmp")] + ".journal")
-        os.replace(tmp, journal)
-        _fsync_directory(target.parent if str(target.parent) else Path("."))
-        with _signals_held():
-            try:
-                _rewrite_in_place(target, data)
-            except OSError as exc:
-                raise ZeroError(f"not written completely: {exc.strerror or exc}; the next zero that reads or "
-                                f"writes it completes it from {journal.name}", str(target)) from None
-            os.unlink(journal)
-    else:
-        os.replace(tmp, target)
+        try:
+            _rewrite_in_place(target, data)
+        except OSError as exc:
+            raise ZeroError(f"not written completely: {exc.strerror or exc}; the next zero that reads or "
+                            f"writes it completes it from {journal.name}", str(target)) from None
+        os.unlink(journal)
+        done[0] = True
