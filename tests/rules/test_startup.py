@@ -173,3 +173,37 @@ def test_a_pre_output_time_below_the_real_time_cycle_is_21203(tmp_path: Path) ->
     assert found["kernel_error"] == "P-ERR-21203" and found["param_id"] == "P-CHAN-00070"
     assert "M97" in str(found["message"]) and "1000 µs" in str(found["message"]) and "2000 µs" in str(found["message"])
     assert str(found["path"]).endswith("kanal.lis")
+
+
+def test_cross_list_kernel_checks_of_a_machine(tmp_path: Path) -> None:
+    """Issue 38: values from two lists of a machine, each with its kernel number: a channel spindle
+    whose axis list is no spindle (X016, P-ERR-110304), a gantry slave whose modulo limits differ
+    from its master's (X017, P-ERR-70202) and whose master lacks the gantry master bit (X018,
+    P-ERR-70124, a documented warning); the clean machine has none."""
+    import json
+    import shutil
+
+    from conftest import zero_cli
+
+    def found(startup: Path) -> list[tuple[str, str, str, str]]:
+        run = zero_cli("lint", "--machine", str(startup), "--select", "X016,X017,X018", "--output-format", "json")
+        return sorted((d["code"], Path(str(d["path"])).name, str(d["kernel_error"]), d["severity"])
+                      for d in json.loads(run.stdout))
+
+    shutil.copytree(FIXTURES / "machine-clean", tmp_path / "m")
+    listen = tmp_path / "m" / "listen"
+    startup = listen / "hochlauf.lis"
+    assert found(startup) == []
+    kanal = listen / "kanal.lis"
+    kanal.write_text(kanal.read_text().replace("Ende", "spdl_anzahl 1\nspindel[0].bezeichnung S1\n"
+                                               "spindel[0].log_achs_nr 3\nEnde", 1))  # axis 3 is rotary (2)
+    y = listen / "achse_y.lis"  # Y becomes X's gantry slave, X is no gantry master; X's modulo is the default
+    y.write_text(y.read_text().replace("Ende", "kenngr.gantry_ax_nr 1\ngetriebe[0].moduloo 1000\nEnde", 1))
+    assert found(startup) == [("X016", "kanal.lis", "P-ERR-110304", "error"),
+                              ("X017", "achse_y.lis", "P-ERR-70202", "error"),
+                              ("X018", "achse_y.lis", "P-ERR-70124", "warning")]
+    x = listen / "achse_x.lis"  # X becomes a gantry master with Y's modulo limits, C a spindle
+    x.write_text(x.read_text().replace("Ende", "kenngr.achs_mode 0x10001\ngetriebe[0].moduloo 1000\nEnde", 1))
+    c = listen / "achse_c.lis"
+    c.write_text(c.read_text().replace("kenngr.achs_typ                                       2", "kenngr.achs_typ 4"))
+    assert found(startup) == []

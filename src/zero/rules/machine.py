@@ -569,3 +569,105 @@ def check_pre_output(ctx: MachineContext) -> Iterator[Diagnostic]:
                     f"(P-RTCF-00002 in {rtconf.path.name}): the controller reports error 21203 at start-up and sets "
                     "the pre-output time to the cycle time", param_id=pre, path=str(lf.path),
                     kernel_error="P-ERR-21203")
+
+
+SPINDLE_NOT_A_SPINDLE = FAMILY.rule(
+    "X016", "channel-spindle-not-spindle", E, "P-ERR-110304: a channel spindle whose axis list is no spindle",
+    """
+What it checks: every spindle of a channel list (`spindel[i].log_achs_nr`, P-CHAN-00036) names an axis
+list whose axis type (`kenngr.achs_typ`, P-AXIS-00018) is a spindle (4). Values from two lists of the
+machine: checked with `zero lint --machine`.
+
+Why it matters on the machine: the kernel reports error P-ERR-110304 (class 2): the start-up continues,
+but no axes are available in the channel where the spindle is configured. Source:
+https://infosys.beckhoff.com/content/1033/tf5200_diagnosis/262857355.html
+
+Fix: give the axis list the spindle axis type, or name the spindle's own logical axis number.
+""")
+GANTRY_MODULO_DIFFERS = FAMILY.rule(
+    "X017", "gantry-modulo-differs", E, "P-ERR-70202: gantry master and slave with different modulo limits",
+    """
+What it checks: a gantry slave axis (`kenngr.gantry_ax_nr`, P-AXIS-00070, names its master) has the
+same modulo limits (`getriebe[0].moduloo` P-AXIS-00126, `getriebe[0].modulou` P-AXIS-00127) as the
+axis list of its master. Values from two lists of the machine: checked with `zero lint --machine`.
+
+Why it matters on the machine: the kernel warns with P-ERR-70202; the gantry manual says that at
+start-up a warning is output and the master axis's values are adopted, so the slave's own limits
+are not the ones in effect. Sources:
+https://infosys.beckhoff.com/content/1033/tf5200_diagnosis/260298379.html,
+https://infosys.beckhoff.com/content/1033/tf5200_gantry_operation/285690635.html
+
+Fix: give both axes the same modulo limits.
+""")
+GANTRY_MASTER_NOT_MASTER = FAMILY.rule(
+    "X018", "gantry-master-not-master", W, "P-ERR-70124: a gantry slave's master axis is not marked gantry master",
+    """
+What it checks: the axis a gantry slave names as its master (`kenngr.gantry_ax_nr`, P-AXIS-00070) has
+the gantry master bit 0x10000 in its axis mode (`kenngr.achs_mode`, P-AXIS-00015). Values from two
+lists of the machine: checked with `zero lint --machine`, where the master's axis list is read.
+
+Why it matters on the machine: the kernel warns with P-ERR-70124 (class 1, warning); the page documents
+no other reaction. Source: https://infosys.beckhoff.com/content/1033/tf5200_diagnosis/260115595.html
+
+Fix: set the gantry master bit in the master axis's `kenngr.achs_mode`, or name the right master.
+""")
+_SPINDLE_NR, _AXIS_TYPE, _GANTRY_MASTER_NR, _AXIS_MODE = "P-CHAN-00036", "P-AXIS-00018", "P-AXIS-00070", "P-AXIS-00015"
+_MODULO = ("P-AXIS-00126", "P-AXIS-00127")
+
+
+@FAMILY.check(SPINDLE_NOT_A_SPINDLE)
+def check_channel_spindles(ctx: MachineContext) -> Iterator[Diagnostic]:
+    """X016 (P-ERR-110304): a channel's spindle names an axis list of another axis type."""
+    axes = ctx.machine.axes()
+    for ch in ctx.machine.channels:
+        lf = ch.lists
+        if lf is None:
+            continue
+        count = lf.number("P-CHAN-00082")  # spdl_anzahl: spindles beyond it are not configured
+        for idx, res in sorted(lf.values.ids_of(_SPINDLE_NR).items()):
+            nr = lf.number(_SPINDLE_NR, idx)
+            if nr is None or nr == 0 or (count is not None and idx and idx[0] >= count):
+                continue
+            ax = axes.get(int(nr))
+            kind = ax.list.number(_AXIS_TYPE) if ax is not None else None
+            if ax is None or kind is None or int(kind) == 4:
+                continue
+            e = res.entry
+            yield ctx.report(
+                "X016", Span.on_line(e.line, e.value_start, e.value_end),
+                f"P-ERR-110304: spindle {idx[0] if idx else 0} is logical axis {int(nr)}, whose axis list "
+                f"({ax.list.path.name}) has axis type {int(kind)}, not 4 (spindle): the controller reports error "
+                "110304 at start-up, continues the start-up, and no axes are available in this channel",
+                param_id=_SPINDLE_NR, path=str((lf.values.layer_of(_SPINDLE_NR, idx) or lf.values).doc.path),
+                kernel_error="P-ERR-110304")
+
+
+@FAMILY.check(GANTRY_MODULO_DIFFERS, GANTRY_MASTER_NOT_MASTER)
+def check_gantry(ctx: MachineContext) -> Iterator[Diagnostic]:
+    """X017 (P-ERR-70202), X018 (P-ERR-70124): a gantry slave against its master's axis list."""
+    axes = ctx.machine.axes()
+    for lf in ctx.machine.axis_lists:
+        master_nr = lf.number(_GANTRY_MASTER_NR)
+        entry = lf.entry(_GANTRY_MASTER_NR)
+        if not master_nr or entry is None:
+            continue  # not a slave, or its master is set in a default list (reported there)
+        master = axes.get(int(master_nr))
+        if master is None or master.list is lf:
+            continue  # no such axis list (another rule's), or itself (the kernel's 110342 family)
+        span = Span.on_line(entry.line, entry.value_start, entry.value_end)
+        mode = master.list.number(_AXIS_MODE)
+        if mode is not None and not int(mode) & 0x10000:
+            yield ctx.report(
+                "X018", span, f"P-ERR-70124: the gantry master of this axis is logical axis {int(master_nr)}, whose "
+                f"axis mode ({master.list.path.name}: {hex(int(mode))}) lacks the gantry master bit 0x10000: the "
+                "controller warns with 70124 at start-up", param_id=_GANTRY_MASTER_NR, path=str(lf.path),
+                kernel_error="P-ERR-70124")
+        own = [lf.number(pid, (0,)) for pid in _MODULO]
+        theirs = [master.list.number(pid, (0,)) for pid in _MODULO]
+        if None in own or None in theirs or own == theirs:
+            continue
+        yield ctx.report(
+            "X017", span, f"P-ERR-70202: this gantry slave's modulo limits ({own[0]:g} / {own[1]:g}) differ from its "
+            f"master's, logical axis {int(master_nr)} ({theirs[0]:g} / {theirs[1]:g}, {master.list.path.name}): the "
+            "controller warns with 70202 at start-up and adopts the master axis's values",
+            param_id="P-AXIS-00126", path=str(lf.path), kernel_error="P-ERR-70202")
