@@ -242,3 +242,46 @@ def test_the_architecture_check_sees_a_machine_loaded_elsewhere(tmp_path: Path) 
     bad = tmp_path / "bad.py"
     bad.write_text("from zero.machine.model import load_machine\nm = load_machine(p, r)\n")
     assert "load_machine" in _names_used(bad)
+
+
+GIT_MODULE = "zero.engine.git"
+# What starts another program: only the one module that runs git may (issue 43: git was run in two
+# places with two sets of protections, and one of them let a repository run a command).
+SPAWNERS = {"subprocess", "pty", "system", "popen", "spawnl", "spawnle", "spawnlp", "spawnlpe", "spawnv", "spawnve",
+            "spawnvp", "spawnvpe", "execl", "execle", "execlp", "execlpe", "execv", "execve", "execvp", "execvpe",
+            "posix_spawn", "posix_spawnp", "startfile"}
+
+
+def _spawns(path: Path) -> set[str]:
+    """The ways of starting a program a module imports or calls (``import subprocess``,
+    ``os.system``, ``os.posix_spawn``, ...)."""
+    tree = ast.parse(path.read_text(encoding="utf-8"))
+    out: set[str] = set()
+    for node in ast.walk(tree):
+        if isinstance(node, ast.Import):
+            out.update(a.name.split(".")[0] for a in node.names if a.name.split(".")[0] in SPAWNERS)
+        elif isinstance(node, ast.ImportFrom) and node.module is not None:
+            if node.module.split(".")[0] in SPAWNERS:
+                out.add(node.module)
+            out.update(a.name for a in node.names if node.module == "os" and a.name in SPAWNERS)
+        elif isinstance(node, ast.Attribute) and isinstance(node.value, ast.Name) and node.value.id == "os" \
+                and node.attr in SPAWNERS:
+            out.add(f"os.{node.attr}")
+    return out
+
+
+def test_only_the_git_module_starts_a_program() -> None:
+    """Every git call goes through zero.engine.git, with its one set of protections: no other module
+    imports subprocess or calls os.system, os.popen, os.exec*, os.spawn* or os.posix_spawn*."""
+    wrong = sorted(f"{m}: {', '.join(sorted(found))}" for m, path in MODULES.items() if m != GIT_MODULE
+                   if (found := _spawns(path)))
+    assert wrong == []
+    assert "subprocess" in _spawns(MODULES[GIT_MODULE])
+
+
+def test_the_architecture_check_sees_a_program_started_elsewhere(tmp_path: Path) -> None:
+    for text in ("import subprocess\n", "from subprocess import run\n", "import os\nos.system('git status')\n",
+                 "from os import posix_spawn\n", "def f():\n    import subprocess  # start-up\n"):
+        bad = tmp_path / "bad.py"
+        bad.write_text(text)
+        assert _spawns(bad), text

@@ -11,7 +11,8 @@ from pathlib import Path
 
 import pytest
 
-from conftest import zero_cli
+from conftest import FIXTURES, zero_cli
+from zero.errors import ZeroError
 
 pytestmark = pytest.mark.slow
 GIT = shutil.which("git")
@@ -301,3 +302,143 @@ def test_a_drive_letter_path_is_followed_through_the_configured_roots(tmp_path: 
     (project / "zero.toml").write_text('[machine]\nroots = { "C:/TwinCAT" = "../.." }\n')
     refused = zero_cli("limits", "--machine", "hochlauf.lis", cwd=project)
     assert refused.code == 2 and "lies outside the project" in refused.stderr, refused
+
+
+# ------------------------------------------------------------------ git (issue 43): one module, one set
+
+
+def _git_env(tmp_path: Path) -> dict[str, str]:
+    return {**os.environ, "GIT_CONFIG_GLOBAL": os.devnull, "GIT_CONFIG_NOSYSTEM": "1", "GIT_AUTHOR_NAME": "t",
+            "GIT_AUTHOR_EMAIL": "t@example.invalid", "GIT_COMMITTER_NAME": "t",
+            "GIT_COMMITTER_EMAIL": "t@example.invalid", "HOME": str(tmp_path)}
+
+
+def _partial_clone(tmp_path: Path) -> tuple[Path, Path]:
+    """A machine in a partial clone (`--filter=blob:none`) whose promisor remote is ssh and whose
+    `core.sshCommand` leaves a marker: any lazy fetch of the missing blob would run it. No network."""
+    assert GIT is not None
+    env = _git_env(tmp_path)
+    origin = tmp_path / "origin"
+    shutil.copytree(FIXTURES / "machine-clean", origin)
+
+    def git(*args: str, cwd: Path = origin) -> None:
+        assert GIT is not None
+        subprocess.run([GIT, *args], cwd=cwd, env=env, check=True, capture_output=True)
+
+    git("init", "-q")
+    git("config", "uploadpack.allowFilter", "true")
+    git("add", ".")
+    git("commit", "-qm", "one")
+    with (origin / "listen" / "hochlauf.lis").open("a") as f:
+        f.write("# changed\n")
+    git("commit", "-qam", "two")
+    clone = tmp_path / "clone"
+    git("clone", "-q", "--no-local", "--filter=blob:none", f"file://{origin}", str(clone), cwd=tmp_path)
+    marker = tmp_path / "PWNED"
+    git("config", "remote.origin.url", "ssh://example.invalid/machine", cwd=clone)
+    git("config", "core.sshCommand", f"touch {marker}; false", cwd=clone)
+    return clone, marker
+
+
+@pytest.mark.skipif(GIT is None, reason="git is not installed")
+def test_a_partial_clone_never_fetches_and_runs_no_command_it_configures(tmp_path: Path) -> None:
+    """README: "never fetches a missing object". Issue 43: `zero report --against HEAD~1` in a partial clone
+    with an ssh promisor remote ran `core.sshCommand` (git fetched the missing blob lazily). Now
+    nothing is fetched: zero says the content is not in the repository, and stops."""
+    clone, marker = _partial_clone(tmp_path)
+    run = zero_cli("report", "--machine", "listen/hochlauf.lis", "--against", "HEAD~1", "-o", "r.html", cwd=clone,
+                   env=_git_env(tmp_path))
+    assert not marker.exists(), "zero let git run the repository's core.sshCommand"
+    assert run.code == 2 and "zero fetches nothing" in run.stderr, run
+    assert not (clone / "r.html").exists()
+    # the walk of the same clone asks git too: still nothing runs
+    zero_cli("lint", str(clone), "--output-format", "concise", env=_git_env(tmp_path))
+    assert not marker.exists()
+
+
+def test_every_git_call_carries_every_protection(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """Every git call zero makes (the walk's ignore rules, a revision's files) goes through
+    zero.engine.git.run (the architecture test allows no other module to start a program); a `git`
+    that records how it is called sees every protection on every call, whatever the caller's
+    environment says."""
+    import json
+    import sys
+
+    from zero.engine import git as zgit
+
+    log = tmp_path / "calls.jsonl"
+    fake = tmp_path / "bin" / "git"
+    fake.parent.mkdir()
+    fake.write_text(f"#!{sys.executable}\nimport json, os, sys\n"
+                    f"open({str(log)!r}, 'a').write(json.dumps([sys.argv[1:], dict(os.environ)]) + '\\n')\n"
+                    "sys.exit(1)\n")
+    fake.chmod(0o755)
+    monkeypatch.setenv("PATH", f"{fake.parent}{os.pathsep}{os.environ['PATH']}")
+    for name, value in (("GIT_DIR", "/elsewhere"), ("GIT_SSH_COMMAND", "touch x"), ("GIT_ASKPASS", "touch y"),
+                        ("SSH_ASKPASS", "touch z"), ("GIT_CONFIG_PARAMETERS", "'core.fsmonitor'='touch w'"),
+                        ("GIT_EXTERNAL_DIFF", "touch v"), ("GIT_ALLOW_PROTOCOL", "ssh")):
+        monkeypatch.setenv(name, value)
+    (tmp_path / "m").mkdir()
+    zgit.visible_files(tmp_path / "m")
+    with pytest.raises(ZeroError):
+        zgit.revision_reader(tmp_path / "m" / "hochlauf.lis", "HEAD~1")
+    calls = [json.loads(line) for line in log.read_text().splitlines()]
+    assert len(calls) >= 2
+    for argv, env in calls:
+        settings = {argv[i + 1] for i, a in enumerate(argv) if a == "-c"}
+        assert set(zgit.SAFE_CONFIG) <= settings, argv
+        assert "protocol.allow=never" in settings and "core.sshCommand=false" in settings
+        assert {k: v for k, v in env.items() if k.startswith("GIT_")} == \
+            {k: v for k, v in zgit.SAFE_ENV.items() if k.startswith("GIT_")}, argv
+        assert "SSH_ASKPASS" not in env and env["GIT_NO_LAZY_FETCH"] == "1"
+
+
+def _ignored_repo(tmp_path: Path) -> Path:
+    assert GIT is not None
+    repo = tmp_path / "repo"
+    repo.mkdir()
+    subprocess.run([GIT, "init", "-q"], cwd=repo, env=_git_env(tmp_path), check=True)
+    for name in ("a.lis", "ignored.lis"):
+        (repo / name).write_text("np_grp[1].achse[0].versch 5\nEnde\n")
+    return repo
+
+
+@pytest.mark.skipif(GIT is None or not hasattr(os, "mkfifo"), reason="git and FIFOs needed")
+@pytest.mark.parametrize("where", [".gitignore", "sub/.gitignore", ".git/info/exclude", "core.excludesFile",
+                                   "xdg"])
+def test_a_fifo_as_an_ignore_file_never_stalls_and_is_said(tmp_path: Path, where: str) -> None:
+    """Issue 43: a FIFO as `.gitignore`, `.git/info/exclude` or `core.excludesFile` stalled the walk
+    60 s, then the ignored file was linted without a note. Now zero sees it before git would wait,
+    and says that the ignore rules are not applied."""
+    repo = _ignored_repo(tmp_path)
+    env = _git_env(tmp_path)
+    (repo / ".gitignore").write_text("ignored.lis\n")
+    if where == "core.excludesFile":
+        os.mkfifo(tmp_path / "excludes")
+        assert GIT is not None
+        subprocess.run([GIT, "config", "core.excludesFile", str(tmp_path / "excludes")], cwd=repo, env=env, check=True)
+    elif where == "xdg":
+        (tmp_path / "xdg" / "git").mkdir(parents=True)
+        os.mkfifo(tmp_path / "xdg" / "git" / "ignore")
+        env["XDG_CONFIG_HOME"] = str(tmp_path / "xdg")
+    else:
+        (repo / where).parent.mkdir(parents=True, exist_ok=True)
+        (repo / where).unlink(missing_ok=True)
+        os.mkfifo(repo / where)
+    run = zero_cli("lint", str(repo), "--output-format", "concise", env=env, timeout=30)
+    assert run.seconds < 20, run
+    assert ".gitignore not applied" in run.stderr and "FIFO" in run.stderr, run
+
+
+@pytest.mark.skipif(GIT is None or not hasattr(os, "geteuid") or os.geteuid() != 0,
+                    reason="needs git and root to give the repository another owner")
+def test_a_repository_git_refuses_is_said_not_silently_unignored(tmp_path: Path) -> None:
+    """Issue 43: in a repository owned by another user git refuses to work (its safe.directory) and
+    `.gitignore` was dropped silently. zero does not override git's protection: it says so."""
+    repo = _ignored_repo(tmp_path)
+    (repo / ".gitignore").write_text("ignored.lis\n")
+    for p in (repo, *repo.rglob("*")):
+        os.lchown(p, 1234, 1234)
+    run = zero_cli("lint", str(repo), "--output-format", "concise", env=_git_env(tmp_path))
+    assert ".gitignore not applied: git refuses this repository" in run.stderr, run
+    assert "safe.directory" in run.stderr

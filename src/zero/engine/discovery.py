@@ -5,38 +5,29 @@ named directories, without what ``.gitignore`` ignores.
 from __future__ import annotations
 
 import os
+import sys
 from collections.abc import Callable, Iterable
 from pathlib import Path
 
+from zero.engine.git import visible_files
 from zero.errors import ZeroError
 from zero.files import check_regular
 from zero.forms import LIST_SUFFIXES, PROGRAM_SUFFIXES, xml_form
 
 
-def git_visible(directory: Path) -> set[str] | None:
+def git_visible(directory: Path, note: Callable[[str], None] | None = None) -> set[str] | None:
     """Files below ``directory`` that git does not ignore, as paths relative to it
-    (``os.sep``-separated); ``None`` outside a git work tree or without git."""
-    import shutil  # start-up: only when a directory is walked
-    import subprocess  # start-up: as above
+    (``os.sep``-separated); ``None`` outside a git work tree, without git, or where git gives no
+    answer (:func:`zero.engine.git.visible_files`: then ``note`` is told why, in one line: the walk
+    goes on without the ignore rules, and says so)."""
+    seen = visible_files(directory)
+    if seen.files is None and seen.reason:
+        (note or _stderr)(f"zero: {directory}: .gitignore not applied: {seen.reason}\n")
+    return seen.files
 
-    if shutil.which("git") is None:
-        return None
-    # A repository's own configuration must not make zero run anything: `core.fsmonitor` names a
-    # program git runs for `ls-files` (an untrusted checkout could run its code through zero).
-    # Only the ignore rules are wanted; every setting that can start a program is switched off.
-    safe = ["-c", "core.fsmonitor=false", "-c", "core.untrackedCache=false", "-c", "core.hooksPath=/dev/null"]
-    env = {**os.environ, "GIT_OPTIONAL_LOCKS": "0", "GIT_TERMINAL_PROMPT": "0"}
-    for name in ("GIT_DIR", "GIT_WORK_TREE", "GIT_INDEX_FILE"):  # the folder walked decides, not the caller's shell
-        env.pop(name, None)
-    try:
-        proc = subprocess.run(["git", *safe, "-C", str(directory), "ls-files", "-z", "--cached", "--others",
-                               "--exclude-standard", "."], capture_output=True, timeout=60, check=False,
-                              stdin=subprocess.DEVNULL, env=env)
-    except (OSError, subprocess.SubprocessError):
-        return None
-    if proc.returncode != 0:
-        return None
-    return {os.path.normpath(os.fsdecode(name)) for name in proc.stdout.split(b"\0") if name}
+
+def _stderr(text: str) -> None:
+    sys.stderr.write(text)
 
 
 _WALKED = (*LIST_SUFFIXES, *PROGRAM_SUFFIXES, ".xml")
@@ -59,7 +50,8 @@ def holds_lists(path: Path) -> bool:
 
 def collect_files(paths: Iterable[str | Path], include: Callable[[Path], bool] | None = None,
                   exclude: Callable[[Path], bool] | None = None,
-                  respect_gitignore: bool | Callable[[Path], bool] = True) -> list[Path]:
+                  respect_gitignore: bool | Callable[[Path], bool] = True,
+                  note: Callable[[str], None] | None = None) -> list[Path]:
     """Files named explicitly, plus list files below named directories (sorted).
 
     ``include`` decides which files a directory walk picks up (default: lists ``*.lis``,
@@ -75,7 +67,7 @@ def collect_files(paths: Iterable[str | Path], include: Callable[[Path], bool] |
         p = Path(raw)
         if p.is_dir():
             respect = respect_gitignore(p) if callable(respect_gitignore) else respect_gitignore
-            visible = git_visible(p) if respect else None
+            visible = git_visible(p, note) if respect else None
             found: list[Path] = []
             for root, dirs, files in os.walk(p):
                 dirs[:] = sorted(d for d in dirs if not d.startswith(".")

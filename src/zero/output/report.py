@@ -16,7 +16,6 @@ nothing (no script, font, style or image from anywhere): CSS and a small script 
 from __future__ import annotations
 
 import os
-import subprocess
 import urllib.request
 from collections.abc import Callable, Sequence
 from datetime import UTC, datetime
@@ -29,6 +28,7 @@ from zero.catalog.ids import AXIS_TYPE, SPINDLE_AXIS, SWE_NEG, SWE_POS, SWE_TOL
 from zero.catalog.registry import Registry
 from zero.diff import Change, default_effective
 from zero.diff import effective as value_of
+from zero.engine.git import revision_reader
 from zero.engine.lint import LintResult, lint_machine
 from zero.engine.project import Project
 from zero.engine.queries import machine_changes
@@ -129,37 +129,10 @@ def link(path: str | Path | None, line: int | None, base: Path) -> Link | None:
 
 
 def git_reader(startup: Path, revision: str) -> tuple[str, Reader]:
-    """A reader of the files of ``revision`` in the git work tree ``startup`` lies in: each list's
-    bytes as that commit has them (``git cat-file blob``: no filter, no text conversion, no hook;
-    nothing the repository configures runs). The commit's short name, and the reader."""
-    if revision.startswith("-") or not revision.strip():
-        raise ZeroError(f"--against {revision!r}: not a start-up list, nor a git revision")
-    folder = Path(os.path.abspath(split_part(startup)[0])).parent
-
-    def git(*args: str) -> subprocess.CompletedProcess[bytes]:
-        try:
-            return subprocess.run(["git", "-c", "core.fsmonitor=false", *args], cwd=folder, capture_output=True,
-                                  check=False, timeout=60, env={**os.environ, "GIT_TERMINAL_PROMPT": "0"})
-        except (OSError, subprocess.SubprocessError) as exc:
-            raise ZeroError(f"--against {revision}: git cannot be run ({exc})") from None
-
-    top = git("rev-parse", "--show-toplevel")
-    commit = git("rev-parse", "--verify", "--quiet", "--end-of-options", f"{revision}^{{commit}}")
-    if top.returncode or commit.returncode:
-        raise ZeroError(f"--against {revision}: no such file, and not a revision of a git repository here")
-    root = os.path.realpath(top.stdout.decode().strip())
-    sha = commit.stdout.decode().strip()
-
-    def read(path: Path) -> bytes:
-        rel = os.path.relpath(os.path.realpath(path), root)
-        if rel == os.pardir or rel.startswith(os.pardir + os.sep):
-            raise ZeroError("no such file", str(path))  # outside the repository: not in the revision
-        blob = git("cat-file", "blob", f"{sha}:{rel.replace(os.sep, '/')}")
-        if blob.returncode:
-            raise ZeroError("no such file", str(path))
-        return blob.stdout
-
-    return sha[:12], read
+    """A reader of the files of ``revision`` in the git work tree ``startup`` lies in, through the one
+    module that runs git (:func:`zero.engine.git.revision_reader`: nothing the repository configures
+    runs, nothing is fetched). The commit's short name, and the reader."""
+    return revision_reader(startup, revision)
 
 
 def machine_against(project: Project, against: str) -> tuple[Machine, str, Registry]:
