@@ -198,7 +198,8 @@ def _check(ctx: Context, err: StartupError) -> Iterator[tuple[Diagnostic, bool]]
                            f"{_shown(lookup(pid, index))}" for pid, index in shown)
         yield ctx.report(
             err.code, Span.on_line(entry.line, entry.value_start, entry.value_end),
-            f"P-ERR-{err.number}: {err.title} ({values}): the controller reports error {err.number} {err.reported}, "
+            f"P-ERR-{err.number}: {err.title} ({values}): the controller reports {_kind(err)} {err.number} "
+            f"{err.reported}, "
             f"and {_correction_said(err.correction)}", hint=f"the documented condition: {err.condition_text}"
             f"{_drive_types_said(err)}",
             param_id=err.params[0] if err.params else None, kernel_error=err.kernel_error), \
@@ -222,6 +223,11 @@ def _unique(ctx: Context, pids: list[str], idx: tuple[int, ...]) -> int | None:
             if _value(ctx, pid, other) == mine:
                 return 0
     return 1
+
+
+def _kind(err: StartupError) -> str:
+    """"warning" for a documented warning without a reaction, else "error"."""
+    return "warning" if err.correction == "none" else "error"
 
 
 def _drive_types_said(err: StartupError) -> str:
