@@ -207,3 +207,17 @@ def test_cross_list_kernel_checks_of_a_machine(tmp_path: Path) -> None:
     c = listen / "achse_c.lis"
     c.write_text(c.read_text().replace("kenngr.achs_typ                                       2", "kenngr.achs_typ 4"))
     assert found(startup) == []
+
+
+def test_unique_reads_only_the_elements_the_count_configures(registry: Registry) -> None:
+    """unique(): a spindle beyond `spdl_anzahl` is not configured, so its name is no duplicate
+    (20419); within the count the later of two lines is the one reported."""
+    from zero.engine.lint import lint_bytes
+
+    def k002(text: str) -> list[int]:
+        result = lint_bytes(text.encode(), registry, "sda_mds.lis", LintOptions(select=("K002",)))
+        return [d.span.line for d in result.diagnostics]
+
+    names = "spindel[0].bezeichnung S1\nspindel[1].bezeichnung S2\nspindel[2].bezeichnung S1\n"
+    assert k002(f"spdl_anzahl 2\n{names}Ende\n") == []
+    assert k002(f"spdl_anzahl 3\n{names}Ende\n") == [4]

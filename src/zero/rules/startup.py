@@ -214,15 +214,28 @@ def _unique(ctx: Context, pids: list[str], idx: tuple[int, ...]) -> int | None:
     element = _element(ctx, first, idx)
     own = _own(ctx, first, idx)
     mine = _value(ctx, first, idx)
-    if own is None or mine in (None, "", 0):
+    if own is None or mine in (None, "", 0) or not _counted(ctx, first, element):
         return None
     for pid in pids:
         for other, res in ctx.ids_of(pid).items():
             if pid == first and (other == element or res.entry.line >= own.entry.line):
                 continue
-            if _value(ctx, pid, other) == mine:
+            if _counted(ctx, pid, other) and _value(ctx, pid, other) == mine:
                 return 0
     return 1
+
+
+def _counted(ctx: Context, pid: str, idx: tuple[int, ...]) -> bool:
+    """Is element ``idx`` of ``pid`` within its count (`spindel[2]` with `spdl_anzahl 2` is not: the
+    controller does not configure it)? True where no count is known."""
+    spec = ctx.registry.get(pid)
+    if spec is None:
+        return True
+    for count_pid, pos in ctx.registry.counted_by(spec):
+        count = ctx.number_of(count_pid, idx[:pos] if pos else ())
+        if count is not None and pos < len(idx) and idx[pos] >= count:
+            return False
+    return True
 
 
 def _kind(err: StartupError) -> str:
