@@ -17,6 +17,7 @@ from typer.testing import CliRunner
 
 from conftest import lint_text
 from zero.cli.app import app
+from zero.catalog.registry import Registry
 from zero.engine.lint import LintResult
 from zero.output.text import render_text
 
@@ -220,3 +221,120 @@ def test_invalid_utf8_inside_keys_is_located() -> None:
     assert [(d.code, d.span.line) for d in result.diagnostics] == [("S001", 1), ("S001", 2)]
     proc = _run_capped(["convert", "--to", "yaml"], b"np_grp[1].ach\xffse[0].versch 5\n", "k.lis")
     assert proc.returncode == 1 and b"k.lis:1:1: not an entry" in proc.stderr
+
+
+# --------------------------------------------------------------------------- issue 43: bounded time, no internal error
+
+sys.path.insert(0, str(Path(__file__).resolve().parent.parent / "fuzz"))
+from regex_timing import growth  # noqa: E402  (the timing fuzzer's own comparison of two sizes)
+
+
+def test_root_of_grows_linearly_with_comments() -> None:
+    """`forms.root_of` over a run of comments: a lazy comment inside a repetition backtracked
+    exponentially (28 comments: 86 s). Sizes compared, not a time: 12 → 20 comments took 250 times
+    as long before; 1,000 → 4,000 comments now take about 4 times as long."""
+    from zero.forms import root_of, xml_form
+
+    assert growth(root_of, lambda n: b"<!--a-->" * n, 12, 20) < 8
+    assert growth(root_of, lambda n: b"<!--a-->" * n + b"<-", 1000, 4000) < 10
+    assert root_of(b"<?xml version='1.0'?>\n<!-- a --><!-- b -->\n<AX_MDS>") == "AX_MDS"
+    assert root_of(b"<!-- a --> <!-- b --x> -->") is None
+    assert xml_form(b"<!-- a -- > --><?pi x?><AX_MDS/>") == "xml"
+
+
+def test_guard_toml_grows_linearly_with_a_run_of_letters() -> None:
+    """`guard_toml` (every TOML form and configuration, the language server too): a run of
+    letters was quadratic (80 KB: 31-52 s; 2,000 → 8,000 letters 16 times as long)."""
+    from zero.errors import ZeroError
+    from zero.structured.toml import guard_toml
+
+    assert growth(guard_toml, lambda n: "a" * n, 2000, 8000) < 10  # quadratic: 16
+    assert growth(guard_toml, lambda n: ("a." * 63 + "!") * n, 200, 800) < 10
+    assert growth(guard_toml, lambda n: '"' + "a" * n, 100_000, 400_000) < 10
+    guard_toml("x = " + ".".join(["k"] * 64))  # 64 parts: read
+    with pytest.raises(ZeroError, match="more than 64 dotted parts") as got:
+        guard_toml("x = 1\ny = 2\nz." + '"a.b"' + ". c ." + ".".join(["k"] * 62) + " = 1")
+    assert (got.value.line, got.value.column) == (3, 1)
+
+
+@pytest.mark.parametrize("command", [["lint"], ["show"], ["format", "--diff"], ["convert", "--to", "yaml"]])
+def test_commands_on_an_xml_file_of_many_comments_answer_at_once(tmp_path: Path, command: list[str]) -> None:
+    """Every command sniffs an XML file's root element: 40 comments (hours before) answer in seconds."""
+    path = tmp_path / "c.xml"
+    path.write_bytes(b"<!--a-->" * 40 + b"\n")
+    proc = subprocess.run([sys.executable, "-m", "zero", *command, str(path)], capture_output=True,
+                          timeout=60, check=False)
+    assert b"Traceback" not in proc.stderr and b"internal error" not in proc.stderr
+
+
+@pytest.mark.parametrize("name", ["f.toml", "zero.toml"])
+def test_toml_form_and_configuration_with_a_run_of_letters_answer_at_once(tmp_path: Path, name: str) -> None:
+    path = tmp_path / name
+    path.write_text("a" * 80_000 + "\n", encoding="utf-8")
+    target = tmp_path / ("f.toml" if name == "f.toml" else "x.lis")
+    if name == "zero.toml":
+        target.write_bytes(b"kanal_anzahl 1\n")
+    proc = subprocess.run([sys.executable, "-m", "zero", "lint", str(target)], capture_output=True,
+                          timeout=30, cwd=tmp_path, check=False)
+    assert proc.returncode in (1, 2), proc.stderr
+    assert b"Traceback" not in proc.stderr and b"internal error" not in proc.stderr
+
+
+_DIGITS = "1" * 4400  # beyond Python's int conversion limit (4,300 digits)
+_HUGE_INDEX_FORMS = {
+    "idx.lis": f"getriebe[{_DIGITS}].dynamik.a_max 1\nkopf.achs_mode P-AXIS-00001.{_DIGITS}\n",
+    "idx.xml": f'<?xml version="1.0"?>\n<AX_MDS>\n<P-AXIS-00008.{_DIGITS} Value="1" />\n'
+               f'<P-AXIS-00001 Value="P-AXIS-00008.{_DIGITS}" />\n</AX_MDS>\n',
+    "idx.yaml": f"getriebe:\n  {_DIGITS}:\n    dynamik:\n      a_max: 1\n",
+    "idx.json": f'{{"getriebe": {{"{_DIGITS}": {{"dynamik": {{"a_max": 1}}}}}}}}',
+    "idx.toml": f'[getriebe.{_DIGITS}.dynamik]\na_max = 1\n',
+}
+
+
+@pytest.mark.parametrize("name", sorted(_HUGE_INDEX_FORMS))
+def test_an_index_of_4400_digits_is_a_finding_in_every_form(registry: Registry, name: str) -> None:
+    """An index (of a key, an XML element or a reference) beyond Python's int limit: a finding, never
+    `internal error: ValueError`, in lint and --fix, in every form."""
+    from zero.engine.fixes import fix_bytes
+    from zero.engine.lint import lint_data
+
+    data = _HUGE_INDEX_FORMS[name].encode()
+    result = lint_data(data, name, registry)
+    assert result.diagnostics
+    assert all(1 <= d.span.line <= data.count(b"\n") + 1 for d in result.diagnostics)
+    fix_bytes(data, name, registry, unsafe=True)
+
+
+@pytest.mark.parametrize("value", ["0x" + "F" * 260, "9" * 401, "-" + "9" * 401, "1e400", "9" * 401 + ".5"])
+@pytest.mark.parametrize("name", ["achsmds1.lis", "sda_mds1.lis", "wzd1.lis"])
+def test_a_number_beyond_a_double_is_a_finding_for_every_parameter(registry: Registry, name: str,
+                                                                   value: str) -> None:
+    """Every parameter of a list kind set to a number no double holds (`a_max 0x` + 260 `F`, a
+    401-digit `vb_max`): lint and --fix find it (R004 for a REAL64), never `OverflowError` from the
+    ranges, conditions and start-up checks that compute with it."""
+    from zero.engine.fixes import fix_bytes
+    from zero.engine.lint import lint_data
+
+    kind = {"achsmds1.lis": "AXIS", "sda_mds1.lis": "CHAN", "wzd1.lis": "TOOL"}[name]
+    specs = [s for s in registry.specs.values() if s.key and s.kind == kind]
+    data = "".join(f"{s.key.replace('[]', '[0]')} {value}\n" for s in specs).encode()
+    result = lint_data(data, name, registry)
+    reals = {i + 1 for i, s in enumerate(specs) if s.type == "REAL64"}
+    flagged = {d.span.line for d in result.diagnostics if d.code == "R004"}
+    assert reals <= flagged
+    fix_bytes(data, name, registry, unsafe=True)
+
+
+def test_an_xml_list_with_cr_only_line_breaks_places_s014_on_its_one_line(registry: Registry) -> None:
+    """Expat counts a lone CR as a line break, zero (and the controller's list reader) does not:
+    S014 was placed on line 5 of a one-line file."""
+    from zero.engine.lint import lint_data
+
+    for data, where in [
+        (b'<?xml version="1.0"?>\r<AX_MDS>\r<P-AXIS-00001 Value="1" />\r<bad\r</AX_MDS>\r', (1, 64)),
+        ('<?xml version="1.0"?>\r<AX_MDS>\u00c4\u00d6\u00dc\r&</AX_MDS>\n'.encode(), (1, 36)),
+        (b"<a>\r\n\r<b", (2, 2)),
+        (b'<?xml version="1.0"?>\n<AX_MDS>\n<bad\n</AX_MDS>\n', (4, 1)),
+    ]:
+        result = lint_data(data, "cr.xml", registry)
+        assert [(d.code, d.span.line, d.span.column) for d in result.diagnostics] == [("S014", *where)], data

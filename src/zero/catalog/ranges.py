@@ -106,11 +106,14 @@ class BinOp:
         b = self.right.eval(resolve)
         if a is None or b is None:
             return None
-        if self.op == "*":
-            return a * b
-        if self.op == "+":
-            return a + b
-        return a - b
+        try:
+            if self.op == "*":
+                return a * b
+            if self.op == "+":
+                return a + b
+            return a - b
+        except OverflowError:  # an integer beyond a float's range with a float (a 401-digit value): not known
+            return None
 
     def __str__(self) -> str:
         return f"{self.left}{self.op}{self.right}"

@@ -10,13 +10,15 @@ and ``zero diff`` all read values through this module.
 
 from __future__ import annotations
 
+import math
 import re
+import sys
 from typing import TypeVar
 
 from zero.catalog.ids import AXIS_TYPE, is_rotary
 from zero.catalog.ranges import TYPE_LIMITS, Number
 from zero.catalog.registry import INTEGER_TYPES, NO_DEFAULT, ParamSpec, Registry
-from zero.lists.model import Document, Entry, ValueKind, format_key
+from zero.lists.model import HUGE_INDEX, MAX_INDEX_DIGITS, Document, Entry, ValueKind, format_key
 from zero.records import field, record
 
 __all__ = ["NO_DEFAULT", "ListValues", "Resolved", "Slot", "Value", "canonical_key", "default_number", "parse_int",
@@ -94,6 +96,9 @@ class Resolved:
     via_alias: bool = False
 
 
+REAL64_MAX = sys.float_info.max
+
+
 def parse_int(text: str) -> int | None:
     """A decimal or hexadecimal integer as the controller reads it; ``None`` if it is none."""
     if text.isdigit() and text.isascii() and len(text) <= 40:
@@ -163,8 +168,8 @@ def read_value(spec: ParamSpec, entry: Entry) -> Value:
     raw = entry.value
     t = spec.type
     if kind is ValueKind.REF:
-        rid, _, ridx = raw.partition(".")
-        return Value(ref=(rid, int(ridx) if ridx else None))
+        rid, _, ridx = raw.partition(".")  # an index beyond every array is never converted (Python's int limit)
+        return Value(ref=(rid, (int(ridx) if len(ridx) <= MAX_INDEX_DIGITS else HUGE_INDEX) if ridx else None))
 
     if t == "STRING":
         if kind is ValueKind.QUOTED:
@@ -203,14 +208,16 @@ def read_value(spec: ParamSpec, entry: Entry) -> Value:
             return got if isinstance(got, Value) else Value(number=got)
         return Value(problem="type", detail="integer")
 
-    if t == "REAL64":
+    if t == "REAL64":  # beyond a double's range: does not fit (no arithmetic on it overflows later)
         if kind in (ValueKind.INT, ValueKind.HEX):
-            return Value(number=parse_int(raw))
+            n = parse_int(raw)
+            return Value(number=n, problem="overflow" if n is not None and abs(n) > REAL64_MAX else None)
         if kind is ValueKind.REAL:
             try:
-                return Value(number=float(raw))
+                r = float(raw)
             except ValueError:
                 return Value(problem="type", detail="number")
+            return Value(number=r, problem="overflow" if math.isinf(r) else None)
         if spec.symbols and kind is ValueKind.WORD:
             ok, val = _symbol_number(spec, raw)
             return Value(number=val) if ok else Value(problem="symbol", detail=raw)
@@ -306,7 +313,8 @@ class ListValues:
         return {**self.base.ids_of(param_id), **own}
 
     def number_of(self, param_id: str, indices: tuple[int, ...] = (), _depth: int = 0) -> Number | None:
-        """The numeric value the controller will use: the list's, else the default."""
+        """The numeric value the controller will use: the list's, else the default; ``None`` where it is
+        not known (the list's value is one zero cannot read: not the default in its place)."""
         spec = self.registry.get(param_id)
         if spec is None or _depth > 6:
             return None
@@ -314,7 +322,9 @@ class ListValues:
         if spec.dims and len(indices) < len(spec.dims):
             indices = indices + (0,) * (len(spec.dims) - len(indices))
         res = self.value_of(param_id, indices)
-        if res is not None and res.value.problem is None:
+        if res is not None and res.value.problem is not None:
+            return None  # a value zero cannot read (R004/R005 say so): nothing reasons on a guessed one
+        if res is not None:
             if res.value.number is not None:
                 return res.value.number
             if res.value.ref is not None:

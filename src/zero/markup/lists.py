@@ -31,7 +31,7 @@ from zero.catalog.registry import KINDS, Registry
 from zero.errors import ZeroError
 from zero.forms import XML_ROOTS
 from zero.lists.encoding import BOM
-from zero.lists.model import Blank, Comment, Document, End, Entry, Origin, Problem, parse_key
+from zero.lists.model import MAX_INDEX_DIGITS, Blank, Comment, Document, End, Entry, Origin, Problem, parse_key
 from zero.lists.tokenizer import scan_line, split_lines
 from zero.markup.safe import Scan, Tag, scan
 
@@ -120,7 +120,11 @@ def key_of(tag_name: str, registry: Registry, kind: str | None = None) -> tuple[
         return None, f"{m.group(1)} is not a parameter the catalogue ({registry.source}) knows"
     if kind is not None and spec.kind != kind:
         return None, f"{spec.id} belongs to another list kind"
-    indices = [int(x) for x in m.group(2).split(".")[1:]]
+    digits = m.group(2).split(".")[1:]
+    longest = max(digits, key=len, default="")
+    if len(longest) > MAX_INDEX_DIGITS:  # never converted: 4,400 digits are beyond Python's int limit
+        return None, f"{spec.id} has an index of {len(longest)} digits, beyond every array"
+    indices = [int(x) for x in digits]
     parts = spec.key.split("[]")
     if len(parts) - 1 != len(indices):
         return None, (f"{spec.id} (`{spec.key}`) takes {len(parts) - 1} indices, the element gives "

@@ -16,6 +16,7 @@ Every refusal is a :class:`~zero.errors.ZeroError` with line and column; nothing
 from __future__ import annotations
 
 import bisect
+import itertools
 import re
 import xml.sax
 from xml.sax.handler import ContentHandler
@@ -35,6 +36,7 @@ _TOKEN_RE = re.compile(
     r"|<\?.*?\?>"  # the declaration, a processing instruction
     r"|<(?P<close>/)?(?P<name>[^\s/>!?]+)(?P<attrs>(?:\s+[^\s=/>]+\s*=\s*(?:\"[^\"]*\"|'[^']*'))*)\s*(?P<empty>/)?>",
     re.S)
+_BREAK_RE = re.compile(rb"\r\n?|\n")  # a line break as expat counts lines
 _ATTR_RE = re.compile(r"""([^\s=/>]+)\s*=\s*(?:"([^"]*)"|'([^']*)')""")
 
 
@@ -161,8 +163,41 @@ def scan(data: bytes, path: str = "-") -> Scan:
     return Scan(text, encoding, bom, root, tags, cdata, starts)
 
 
-def _parse(data: bytes, path: str, handler: _Collect) -> None:
-    parser = defusedxml.expatreader.DefusedExpatParser(forbid_dtd=True, forbid_entities=True, forbid_external=True)
+def _relocate(data: bytes, line: int | None, column: int | None) -> tuple[int | None, int | None]:
+    """Expat's line and column (a line ends at CR LF, CR or LF) as zero's (a line ends at LF): the
+    same place in a file with lone CRs, which is one line for zero (S014 never past the last line)."""
+    if line is None or column is None or line < 2 or b"\r" not in data:
+        return line, column
+    found = next(itertools.islice(_BREAK_RE.finditer(data), line - 2, None), None)
+    if found is None:
+        return line, column
+    at = found.end()
+    if data[at - 1:at] == b"\n":  # the same line for both
+        return data.count(b"\n", 0, at) + 1, column
+    start = data.rfind(b"\n", 0, at) + 1
+    return data.count(b"\n", 0, at) + 1, len(data[start:at].decode("utf-8", "replace").lstrip("\ufeff")) + column
+
+
+class _Lean(defusedxml.expatreader.DefusedExpatParser):
+    """The hardened parser without content handlers: expat checks a whole file (a TwinCAT project of
+    tens of MB) at its own speed, while the guards against DTDs, entities and external references stay."""
+
+    def reset(self) -> None:
+        super().reset()
+        for name in ("StartElementHandler", "EndElementHandler", "CharacterDataHandler",
+                     "ProcessingInstructionHandler", "CommentHandler"):
+            setattr(self._parser, name, None)  # type: ignore[attr-defined]
+
+
+def check(data: bytes, path: str = "-") -> None:
+    """Is ``data`` XML zero reads (well-formed, no DTD, entities or external references)? Nothing is
+    collected (:mod:`zero.markup.tsproj` locates what it needs); :class:`ZeroError` (located) if not."""
+    _parse(data, path, _Collect(), lean=True)
+
+
+def _parse(data: bytes, path: str, handler: _Collect, lean: bool = False) -> None:
+    kind = _Lean if lean else defusedxml.expatreader.DefusedExpatParser
+    parser = kind(forbid_dtd=True, forbid_entities=True, forbid_external=True)
     parser.setContentHandler(handler)
     parser.setFeature(xml.sax.handler.feature_external_ges, False)
     parser.setFeature(xml.sax.handler.feature_external_pes, False)
@@ -171,7 +206,7 @@ def _parse(data: bytes, path: str, handler: _Collect) -> None:
         loc = handler.locator
         if loc is None:
             return None, None
-        return loc.getLineNumber(), (loc.getColumnNumber() or 0) + 1
+        return _relocate(data, loc.getLineNumber(), (loc.getColumnNumber() or 0) + 1)
 
     def first(marker: bytes) -> tuple[int | None, int | None]:
         """Where ``marker`` first occurs (the declaration the hardened parser refused)."""
@@ -203,7 +238,7 @@ def _parse(data: bytes, path: str, handler: _Collect) -> None:
             raise ZeroError("not well-formed XML: a CDATA section is never closed (`]]>` is missing)", path,
                             data.count(b"\n", 0, opened) + 1,
                             len(data[start:opened].decode("utf-8", "replace").lstrip("\ufeff")) + 1) from None
-        raise ZeroError(f"not well-formed XML: {message}", path, exc.getLineNumber(),
-                        (exc.getColumnNumber() or 0) + 1) from None
+        line, col = _relocate(data, exc.getLineNumber(), (exc.getColumnNumber() or 0) + 1)
+        raise ZeroError(f"not well-formed XML: {message}", path, line, col) from None
     except (ValueError, LookupError, UnicodeError) as exc:  # an encoding expat cannot read
         raise ZeroError(f"not readable as XML: {exc}", path, 1, 1) from None
