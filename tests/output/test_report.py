@@ -277,6 +277,8 @@ def _check_in_browser(page: Any, html: Path, startup: Path, shots: Path, name: s
             assert ax["left"] < ax["right"]  # drawn: the negative limit left of the positive one
 
     total = page.locator("#value-table tbody tr").count()
+    assert page.is_checked("#filter-differs")  # --values changed: the page opens with what it prints
+    page.uncheck("#filter-differs")
     page.fill("#search", "swe_pos")
     visible = page.locator("#value-table tbody tr:visible")
     shown = visible.count()
@@ -285,7 +287,7 @@ def _check_in_browser(page: Any, html: Path, startup: Path, shots: Path, name: s
     assert page.inner_text("#value-count") == str(shown)
     page.fill("#search", "")
     page.check("#filter-differs")
-    differing = page.eval_on_selector_all("#value-table tbody tr:not([hidden])", "rs => rs.map(r => r.dataset.differs)")
+    differing = page.eval_on_selector_all("#value-table tbody tr:not([hidden])", "rs => rs.map(r => r.dataset.printed)")
     assert differing and set(differing) == {"1"} and len(differing) < total
     page.uncheck("#filter-differs")
     page.select_option("#filter-origin", "catalogue default")

@@ -688,6 +688,9 @@ def report(
         "machines, or folders of machines, as zero diff --fleet.", metavar="MACHINE")] = None,
     jobs: Annotated[int | None, typer.Option(
         "--jobs", "-j", help="With --fleet: compare in this many processes [default: all cores].", metavar="N")] = None,
+    values: Annotated[str, typer.Option(
+        "--values", help="The value table printed (and shown first): changed (the values that differ from their "
+        "defaults, are changed by the controller or have a finding) or all.", metavar="all|changed")] = "changed",
     force: Annotated[bool, typer.Option(help="Replace an existing output file.")] = False,
     param_desc: ParamDesc = None,
 ) -> None:
@@ -700,7 +703,7 @@ def report(
         from zero.output.report import build_report, render_report  # start-up: Jinja2 only for a report
 
         target = Path(output) if output not in (None, "-") else None
-        page = render_report(build_report(_project(machine), target, against, fleet or (), jobs))
+        page = render_report(build_report(_project(machine), target, against, fleet or (), jobs, values))
         if target is None:
             sys.stdout.write(page)
         else:

@@ -1,11 +1,15 @@
 """``zero report``: one self-contained HTML page about a machine.
 
-The page holds the machine's structure (channels, their axes and spindles, which list sets what),
-a picture of every axis's travel range (:mod:`zero.output.svg`), the effective values with their
-origin (searchable, filterable by list, by origin and by "differs from the default"), every
-finding of ``zero lint --machine`` grouped by list with its rule's text, and, against a golden
-machine or a git revision, the differences of ``zero diff --machine`` with the changed soft limits
-drawn over the old ones.
+The page is in the order of work: a summary whose cards link to the sections; every finding of
+``zero lint --machine``, errors first, a class of many findings of one code collapsed to its count;
+against a golden machine or a git revision, the differences of ``zero diff --machine``; a fleet's
+drift; the machine's structure (channels, their axes and spindles, which list sets what); a
+picture of every axis's travel range (:mod:`zero.output.svg`), marked where its soft limits do not
+stop it; and last, collapsible, the effective values with their origin, the value the controller
+uses where a finding with documented evidence says it changes one (linked to the finding), the
+default, and the value in engineering units (searchable, filterable by list, by origin and by
+"differs from the default"). Printed, the page is the hand-over document: everything but the
+values that equal their defaults (``values="all"``: the full table).
 
 Everything comes from the one resolver (:class:`zero.engine.project.Project`): the machine, its
 lint results and the machine compared against (a revision's lists are read from git through the
@@ -16,6 +20,7 @@ nothing (no script, font, style or image from anywhere): CSS and a small script 
 from __future__ import annotations
 
 import os
+import re
 import urllib.request
 from collections.abc import Callable, Sequence
 from datetime import UTC, datetime
@@ -24,8 +29,8 @@ from pathlib import Path
 from typing import Any
 
 from zero import __version__
-from zero.catalog.ids import AXIS_TYPE, SPINDLE_AXIS, SWE_NEG, SWE_POS, SWE_TOL
-from zero.catalog.registry import Registry
+from zero.catalog.ids import AXIS_TYPE, SPINDLE_AXIS, SWE_BEHAVIOUR, SWE_CHECK, SWE_NEG, SWE_POS, SWE_TOL, is_rotary
+from zero.catalog.registry import ParamSpec, Registry
 from zero.diff import Change, default_effective
 from zero.diff import effective as value_of
 from zero.engine.git import revision_reader
@@ -41,9 +46,13 @@ from zero.output.formats import rule_docs_template
 from zero.output.svg import REF_POINT, STYLE, AxisPicture, axis_pictures, axis_svg
 from zero.records import field, record
 from zero.rules import RULES
+from zero.rules.startup import CHECKS
 
 Reader = Callable[[Path], bytes]
 ORIGINS = (LIST, DEFAULT_LIST, CATALOGUE)  # the layers a value comes from, named as zero show --machine does
+VALUES = ("changed", "all")  # --values: the printed table holds the values that differ from their defaults, or all
+SEVERITIES = ("error", "warning", "info")  # the order of work
+NOISE = 5  # this many warnings (or infos) of one code are a class, collapsed to its count
 
 
 @record
@@ -59,10 +68,27 @@ class ValueRow:
     scope: str
     key: str
     param_id: str | None
-    value: str | None
+    value: str | None  # as written (or the catalogue's default where no list sets it)
     origin: str  # list, default list, catalogue default
     where: Link | None
     differs: bool  # from the catalogue default
+    shown: str | None = None  # the value in engineering units (1,040 mm), where the catalogue gives a unit
+    default: str | None = None  # the catalogue's default as written, and in engineering units
+    default_shown: str | None = None
+    used: str | None = None  # the value the controller uses where a finding with documented evidence changes it
+    used_by: str | None = None  # the anchor of that finding
+    findings: list[tuple[str, str, str]] = field(default_factory=list)  # anchor, code, severity on this line
+    also: list[str] = field(default_factory=list)  # the other lists that take this same line of a default list
+    repeated: bool = False  # a default list's line printed once, under the first list that takes it
+
+    @property
+    def anchor(self) -> str:
+        return "value-" + "".join(c if c.isalnum() else "-" for c in f"{self.scope}-{self.key}")
+
+    @property
+    def printed(self) -> bool:
+        """In the hand-over print with ``--values changed``: differs, is corrected or has a finding."""
+        return not self.repeated and (self.differs or self.used is not None or bool(self.findings))
 
 
 @record
@@ -70,14 +96,26 @@ class AxisView:
     picture: AxisPicture
     svg: str
     settings: list[tuple[str, str | None, str, Link | None]] = field(default_factory=list)  # key, value, origin, where
+    monitor_where: Link | None = None  # the line that switches the monitoring off or to warnings
 
 
 @record
 class FindingGroup:
-    scope: str
-    path: str
-    link: Link
+    """The findings of one code and severity: a class, collapsed to its count where it is noise."""
+
+    code: str
+    severity: str
+    name: str
+    summary: str
     results: list[dict[str, Any]] = field(default_factory=list)
+
+    @property
+    def noise(self) -> bool:
+        return self.severity != "error" and len(self.results) >= NOISE
+
+    @property
+    def lists(self) -> list[str]:
+        return list(dict.fromkeys(d["scope"] for d in self.results))
 
 
 @record
@@ -87,6 +125,7 @@ class Against:
     given: str
     label: str  # "start-up list golden/hochlauf.lis" or "git revision HEAD~1 (1a2b3c4)"
     changes: list[Change] = field(default_factory=list)
+    deltas: list[str] = field(default_factory=list)  # each change's delta in engineering units ("" where none)
 
 
 @record
@@ -107,6 +146,16 @@ class MachineReport:
     against: Against | None = None
     counts: dict[str, int] = field(default_factory=dict)
     fleet: dict[str, Any] | None = None  # `--fleet`: the JSON of `zero diff --fleet` with this machine golden
+    values_printed: str = "changed"  # --values: changed (the values that differ from their defaults) or all
+
+    def by_severity(self) -> list[tuple[str, list[FindingGroup]]]:
+        """The finding classes in the order of work: errors, warnings, infos; noise last in each."""
+        return [(s, sorted((g for g in self.findings if g.severity == s), key=lambda g: (g.noise, g.code)))
+                for s in SEVERITIES if any(g.severity == s for g in self.findings)]
+
+    @property
+    def unmonitored(self) -> list[AxisView]:
+        return [v for v in self.axes if v.picture.monitoring_said]
 
 
 # ---------------------------------------------------------------------------- links
@@ -155,8 +204,111 @@ def machine_against(project: Project, against: str) -> tuple[Machine, str, Regis
 # ---------------------------------------------------------------------------- the report
 
 
-def _values(machine: Machine, base: Path) -> list[ValueRow]:
+# ------------------------------------------------------------------------- engineering units
+
+# The catalogue's units (linear, rotary) and what an engineer reads: factor and unit for each.
+_UNIT_PAIRS: dict[tuple[str, ...], tuple[tuple[float, str], tuple[float, str]]] = {
+    ("0.1um", "0.1mdeg"): ((1e-4, "mm"), (1e-4, "°")),
+    ("um/s", "mdeg/s"): ((6e-5, "m/min"), (0.06, "°/min")),
+    ("mm/s^2", "deg/s^2"): ((1, "mm/s²"), (1, "°/s²")),
+    ("mm/s^3", "deg/s^3"): ((1, "mm/s³"), (1, "°/s³")),
+    ("m/s^3", "kdeg/min^3"): ((1, "m/s³"), (1, "k°/min³")),
+    ("um", "mdeg"): ((1, "µm"), (1e-3, "°")),
+    ("mm", "deg"): ((1, "mm"), (1, "°")),
+    ("0.1um/rev", "0.1mdeg/rev"): ((1e-4, "mm/rev"), (1e-4, "°/rev")),
+}
+_UNIT_ONE: dict[str, tuple[float, str]] = {
+    "us": (1, "µs"), "ms": (1, "ms"), "s": (1, "s"), "Hz": (1, "Hz"), "0.1%": (0.1, "%"), "%": (1, "%"),
+    "0.01/s": (0.01, "1/s"), "deg": (1, "°"), "rev/min": (1, "rpm"), "mm/min": (1, "mm/min"),
+    "um/m": (1, "µm/m"), "0.1um/m": (0.1, "µm/m"), "rev": (1, "rev"),
+}
+
+
+def _number(value: float) -> str:
+    """1040 → "1,040"; up to four decimals."""
+    text = f"{value:,.4f}".rstrip("0").rstrip(".")
+    return "0" if text in ("-0", "") else text
+
+
+def in_engineering(units: Sequence[str], number: float | int, rotary: bool | None) -> str | None:
+    """A number in the catalogue's ``units`` as an engineer reads it: 10400000 0.1 µm → "1,040 mm",
+    2000000 µm/s → "120 m/min"; ``rotary`` None (not known): both readings. None: no known unit."""
+    pair = _UNIT_PAIRS.get(tuple(units))
+    try:
+        if pair is not None:
+            if rotary is None:
+                return " or ".join(f"{_number(number * f)} {u}" for f, u in pair)
+            factor, unit = pair[1 if rotary else 0]
+        elif len(units) == 1 and units[0] in _UNIT_ONE:
+            factor, unit = _UNIT_ONE[units[0]]
+        else:
+            return None
+        return f"{_number(number * factor)} {unit}"
+    except (OverflowError, ValueError):
+        return None
+
+
+def _engineering(spec: ParamSpec | None, value: tuple[str, Any] | None, rotary: bool | None) -> str | None:
+    if spec is None or value is None or value[0] != "num" or not spec.units:
+        return None
+    return in_engineering(spec.units, value[1], rotary)
+
+
+def delta_in_engineering(c: Change, rotary: bool | None) -> str:
+    """A change's delta in engineering units: ``zero diff`` gives lengths in mm or degrees ("mm or °"
+    where it does not know the axis) and other quantities in the catalogue's units ("um/s, mdeg/s")."""
+    if c.delta is None or c.unit is None:
+        return ""
+    if c.unit in ("mm or °", "mm", "°"):
+        unit = c.unit if c.unit != "mm or °" or rotary is None else ("°" if rotary else "mm")
+        return f"{'+' if c.delta > 0 else ''}{_number(c.delta)} {unit}"
+    shown = in_engineering(c.unit.split(", "), c.delta, rotary)
+    if shown is None:
+        return f"{'+' if c.delta > 0 else ''}{_number(c.delta)} {c.unit}"
+    return ("+" if c.delta > 0 else "") + shown
+
+
+_AXIS_INDEX = re.compile(r"\bachse\[(\d+)\]")
+
+
+def _rotary_by_scope(machine: Machine) -> dict[str, bool | dict[int, bool]]:
+    """For each list of the machine: whether its lengths are degrees (an axis list), or per channel
+    axis ``j`` (a channel's zero-offset list: ``np_grp[i].achse[j]``); absent: not known."""
+    axes = machine.axes()
+    out: dict[str, bool | dict[int, bool]] = {}
+    for name, lf in machine.scopes():
+        if lf.values.kind == "AXIS":
+            out[name] = is_rotary(lf.number(AXIS_TYPE))
+    for ch in machine.channels:
+        per_axis = {ca.index: axes[ca.log_nr].rotary for ca in ch.axes if ca.log_nr in axes}
+        for per_channel in (ch.zero, ch.lists):
+            if per_channel is not None:
+                out[f"channel {ch.index} ({per_channel.key})"] = per_axis
+    return out
+
+
+def _rotary(known: dict[str, bool | dict[int, bool]], scope: str, key: str) -> bool | None:
+    hit = known.get(scope)
+    if isinstance(hit, dict):
+        m = _AXIS_INDEX.search(key)
+        return hit.get(int(m.group(1))) if m else None
+    return hit
+
+
+# ---------------------------------------------------------------------------- the values
+
+
+def _file_key(path: str | Path | None) -> str:
+    return os.path.abspath(split_part(str(path))[0]) if path is not None else ""
+
+
+def _values(machine: Machine, base: Path, findings: Sequence[FindingGroup] = ()) -> list[ValueRow]:
     rows: list[ValueRow] = []
+    rotary = _rotary_by_scope(machine)
+    on_line: dict[tuple[str, int], list[dict[str, Any]]] = {}
+    for g in findings:
+        for d in g.results:
+            on_line.setdefault((_file_key(d["path"]), d["line"]), []).append(d)
     for scope in effective(machine, with_defaults=True):
         entries = entries_of(scope.file.values)
         registry = scope.file.values.registry
@@ -164,13 +316,62 @@ def _values(machine: Machine, base: Path) -> list[ValueRow]:
             spec = registry.get(v.param_id) if v.param_id else None
             entry = entries.get(v.key)
             differs = False
+            now = value_of(entry, spec) if entry is not None else default_effective(spec)
+            dflt = default_effective(spec)
             if v.origin.source != CATALOGUE and entry is not None:
-                differs = value_of(entry, spec) != default_effective(spec)
-            rows.append(ValueRow(scope.name, v.key, v.param_id, v.value, v.origin.source,
-                                 link(v.origin.path, v.origin.line, base), differs))
+                differs = now != dflt
+            ax = _rotary(rotary, scope.name, v.key)
+            here = on_line.get((_file_key(v.origin.path), v.origin.line or 0), []) \
+                if v.origin.source != CATALOGUE else []
+            row = ValueRow(scope.name, v.key, v.param_id, v.value, v.origin.source,
+                           link(v.origin.path, v.origin.line, base), differs, _engineering(spec, now, ax),
+                           spec.default_display if spec is not None else None,
+                           _engineering(spec, dflt, ax),
+                           findings=[(d["anchor"], d["code"], d["severity"]) for d in here])
+            for d in here:
+                if d.get("param_id") == v.param_id or "value" not in d:
+                    d["value"] = row.anchor  # the finding links its parameter's row (else the line's first)
+                used = d.get("corrects", {}).get(v.param_id) if v.param_id else None
+                if used is not None and row.used is None:
+                    row.used, row.used_by = used, d["anchor"]
+            rows.append(row)
+    _resolve_references(rows)
+    first: dict[tuple[str, str], ValueRow] = {}
+    for row in rows:  # a default list's line that differs: printed once, not under every axis that takes it
+        if row.origin == DEFAULT_LIST and row.where is not None and row.used is None and not row.findings:
+            hit = first.setdefault((row.where.text, row.key), row)
+            if hit is not row:
+                hit.also.append(row.scope)
+                row.repeated = True
     return rows
 
 
+def _resolve_references(rows: list[ValueRow]) -> None:
+    """A correction "to the value of P-AXIS-00268" as that value, where the same list holds it."""
+    by_id = {(r.scope, r.param_id): r for r in rows if r.param_id}
+    for r in rows:
+        if r.used is not None and r.used.startswith("the value of "):
+            other = by_id.get((r.scope, r.used.removeprefix("the value of ")))
+            if other is not None and other.value is not None:
+                r.used = f"{other.value} (the value of {other.key})"
+
+
+_CORRECTIONS = {err.code: err.correction.strip() for err in CHECKS}
+
+
+def corrects(code: str, param_id: str | None, registry: Registry) -> dict[str, str]:
+    """What the documented correction of a K rule's start-up error sets: parameter → the value the
+    controller then uses (the default, a number, or "the value of P-…"); empty where the
+    documentation says nothing, the kernel aborts or only warns (``catalog/data/startup_errors.toml``)."""
+    c = _CORRECTIONS.get(code, "")
+    if c == "default" and param_id:
+        spec = registry.get(param_id)
+        return {param_id: f"{spec.default_display} (the default)"} if spec is not None else {}
+    target, eq, value = c.partition("=")
+    if not eq or not target.strip().startswith("P-"):
+        return {}
+    value = value.strip()
+    return {target.strip(): f"the value of {value}" if value.startswith("P-") else value}
 def _structure(machine: Machine, base: Path) -> tuple[list[dict[str, Any]], list[dict[str, Any]], list[dict[str, Any]]]:
     doc = machine.startup.values.doc
     named = [{"key": n.key, "raw": n.raw, "status": n.status, "reason": n.reason,
@@ -221,33 +422,45 @@ def doc_line(path: Path | None, line: int | None, machine: Machine) -> int | Non
 
 
 def _axis_settings(lf: ListFile, base: Path) -> list[tuple[str, str | None, str, Link | None]]:
-    scope: Scope = scope_values("", lf, keys=[SWE_NEG, SWE_POS, SWE_TOL, REF_POINT])
+    scope: Scope = scope_values("", lf, keys=[SWE_NEG, SWE_POS, SWE_TOL, REF_POINT, SWE_CHECK, SWE_BEHAVIOUR])
     return [(v.key, v.value, v.origin.source, link(v.origin.path, v.origin.line, base)) for v in scope.values]
 
 
-def _findings(machine: Machine, results: list[LintResult], base: Path) -> list[FindingGroup]:
+def _findings(machine: Machine, results: list[LintResult], base: Path, registry: Registry) -> list[FindingGroup]:
+    """Every finding, by code (a class of one rule), each with its anchor, its list's name and, for a
+    K rule with a documented correction, what the controller then uses."""
     scope_of = {str(lf.path): name for name, lf in machine.scopes()}
     for lf in machine.defaults.values():
         scope_of.setdefault(str(lf.path), f"default list ({lf.key})")
-    groups = []
+    groups: dict[tuple[str, str], FindingGroup] = {}
+    n = 0
     for r in results:
-        if not r.diagnostics:
-            continue
-        group = FindingGroup(scope_of.get(r.path, r.path), r.path, link(r.path, None, base) or Link(r.path, None))
         for d in r.diagnostics:
-            group.results.append({"code": d.code, "severity": d.severity.label, "line": d.span.line,
-                                  "column": d.span.column, "message": d.message, "path": d.path,
-                                  "where": link(d.path, d.span.line, base), "hint": d.hint})
-        groups.append(group)
-    return groups
+            n += 1
+            rule = RULES.get(d.code)
+            group = groups.get((d.code, d.severity.label))
+            if group is None:
+                group = groups[(d.code, d.severity.label)] = FindingGroup(
+                    d.code, d.severity.label, rule.name if rule else "", rule.summary if rule else "")
+            group.results.append({"anchor": f"finding-{n}", "code": d.code, "severity": d.severity.label,
+                                  "line": d.span.line, "column": d.span.column, "message": d.message,
+                                  "path": d.path, "scope": scope_of.get(r.path, r.path),
+                                  "where": link(d.path, d.span.line, base), "hint": d.hint,
+                                  "param_id": d.param_id, "kernel_error": d.kernel_error,
+                                  "corrects": corrects(d.code, d.param_id, registry)})
+    return list(groups.values())
 
 
 def build_report(project: Project, output: Path | None = None, against: str | None = None,
-                 fleet: Sequence[str] = (), jobs: int | None = None) -> MachineReport:
+                 fleet: Sequence[str] = (), jobs: int | None = None, values: str = "changed") -> MachineReport:
     """Everything ``zero report`` shows about the machine of ``project`` (``--machine``, else the
     configuration's); links relative to the folder ``output`` is written to (the current folder
     for standard output). ``fleet``: machines (start-up lists or folders) whose drift from this
-    machine, as ``zero diff --fleet`` reports it, is a section of the page."""
+    machine, as ``zero diff --fleet`` reports it, is a section of the page. ``values``: "changed"
+    (the printed page holds the values that differ from their defaults, are corrected or have a
+    finding; the page opens with that filter) or "all"."""
+    if values not in VALUES:
+        raise ZeroError(f"--values {values}: one of {', '.join(VALUES)}")
     machine = project.machine(required=True)
     assert machine is not None
     start = project.startup()
@@ -263,19 +476,36 @@ def build_report(project: Project, output: Path | None = None, against: str | No
     views = []
     for pic in axis_pictures(machine, pcs_limits(machine), old):
         ax = machine.axes().get(pic.log_nr)
-        views.append(AxisView(pic, axis_svg(pic), _axis_settings(ax.list, base) if ax is not None else []))
+        settings = _axis_settings(ax.list, base) if ax is not None else []
+        view = AxisView(pic, axis_svg(pic), settings)
+        if pic.monitoring_said:
+            key = pic.monitoring_why.partition(" = ")[0]
+            view.monitor_where = next((where for k, _, _, where in settings if k == key), None)
+            if view.monitor_where is None and pic.channel is not None:
+                ch = next((c for c in machine.channels if c.index == pic.channel), None)
+                if ch is not None and ch.lists is not None:
+                    e = ch.lists.entry("P-CHAN-00147")
+                    view.monitor_where = link(ch.lists.path, ch.lists.values.doc.file_line(e.line) if e else None, base)
+        views.append(view)
     named, channels, axis_lists = _structure(machine, base)
-    findings = _findings(machine, results, base)
+    findings = _findings(machine, results, base, registry)
     codes = sorted({d["code"] for g in findings for d in g.results})
     template = rule_docs_template()
     rules = [{"code": c, "name": RULES[c].name, "severity": RULES[c].severity.label, "summary": RULES[c].summary,
               "explanation": RULES[c].explanation.strip(),
               "url": template.format(code=c) if template else ""} for c in codes if c in RULES]
-    values = _values(machine, base)
+    rows = _values(machine, base, findings)
+    if compared is not None:
+        known = _rotary_by_scope(machine)
+        compared.deltas = [delta_in_engineering(c, _rotary(known, c.group.partition(": ")[0], c.key))
+                           for c in compared.changes]
     shown = machine.startup.path
     counts = {"lists": len(machine.lists), "named": len(machine.named), "channels": len(machine.channels),
               "axes": len(machine.axes()), "findings": sum(len(g.results) for g in findings),
-              "values": len(values), "changes": len(compared.changes) if compared else 0,
+              "values": len(rows), "changes": len(compared.changes) if compared else 0,
+              "differ": sum(1 for v in rows if v.differs), "printed": sum(1 for v in rows if v.printed),
+              "corrected": sum(1 for v in rows if v.used is not None),
+              "unmonitored": sum(1 for v in views if v.picture.monitoring_said),
               **{s: sum(1 for g in findings for d in g.results if d["severity"] == s)
                  for s in ("error", "warning", "info")}}
     drift = None
@@ -291,8 +521,8 @@ def build_report(project: Project, output: Path | None = None, against: str | No
         counts["drifting"] = drift["summary"]["drifting"]
     return MachineReport(f"Machine {shown}", link(shown, None, base) or Link(str(shown), None), str(machine.workdir),
                          _generated(), named, channels, axis_lists,
-                         views, [name for name, _ in machine.scopes()], values, findings, rules, template,
-                         compared, counts, drift)
+                         views, [name for name, _ in machine.scopes()], rows, findings, rules, template,
+                         compared, counts, drift, values)
 
 
 def _generated() -> str:
@@ -311,8 +541,15 @@ def render_report(report: MachineReport) -> str:
         raise ZeroError("zero report needs Jinja2: pip install 'zero-lint[report]'") from None
     env = jinja2.Environment(autoescape=True, undefined=jinja2.StrictUndefined, trim_blocks=True, lstrip_blocks=True)
     text = resources.files("zero.output").joinpath("templates/report.html.j2").read_text(encoding="utf-8")
-    return env.from_string(text).render(r=report, version=__version__, origins=ORIGINS, svg=Markup,
-                                                    svg_style=Markup(STYLE))
+    def ticks(text: str) -> Any:
+        """A rule's text with its `code` spans as <code> (escaped first)."""
+        parts = str(Markup.escape(text)).split("`")
+        return Markup("".join(f"<code>{p}</code>" if i % 2 else p for i, p in enumerate(parts)))
+
+    env.filters["ticks"] = ticks
+    env.filters["number"] = lambda n: f"{n:,}"
+    return env.from_string(text).render(r=report, version=__version__, origins=ORIGINS, svg=Markup, noise=NOISE,
+                                        svg_style=Markup(STYLE))
 
 
 __all__ = ["MachineReport", "build_report", "git_reader", "machine_against", "render_report"]

@@ -19,7 +19,7 @@ import math
 from collections.abc import Sequence
 from html import escape
 
-from zero.catalog.ids import SWE_TOL, Number, g_code, in_units
+from zero.catalog.ids import SWE_BEHAVIOUR, SWE_CHECK, SWE_TOL, Number, g_code, in_units
 from zero.machine.limits import LimitRow, pcs_limits
 from zero.machine.model import Axis, Machine
 from zero.records import field, record
@@ -28,6 +28,21 @@ MOD_CALC = "P-AXIS-00121"  # kenngr.mod_rechng: the axis counts modulo
 REF_POINT = "P-AXIS-00152"  # getriebe[g].pos_refpkt: the reference point (gear 0 drawn)
 MOD_LOW, MOD_HIGH = "P-AXIS-00127", "P-AXIS-00126"  # getriebe[g].modulou, getriebe[g].moduloo
 SPINDLE_TYPE = 4  # kenngr.achs_typ of a spindle
+WARNING_AXES = "P-CHAN-00147"  # soft_limit_warning_axes: bit j, channel axis j only warns (command side)
+
+# What the soft-limit monitoring of an axis does (``AxisPicture.monitoring``), from the vendor's axis
+# parameter pages: kenngr.swe_check 0 switches it off whatever the axis type and mode
+# (https://infosys.beckhoff.com/content/1033/tf5200_axis_parameter/117316107.html);
+# kenngr.swe_behaviour WARNING only warns, ERROR_LR warns in path planning and stops in the position
+# controller (https://infosys.beckhoff.com/content/1033/tf5200_axis_parameter/491520267.html); the
+# channel's soft_limit_warning_axes bit j makes crossing on the command side only a warning for
+# channel axis j (https://infosys.beckhoff.com/content/1031/tf5200_channel_parameter/149359243.html).
+MONITORED, OFF, WARNS, WARNS_IN_PLANNING = "on", "off", "warning", "error-lr"
+MONITORING_WORDS = {
+    OFF: "soft-limit monitoring OFF",
+    WARNS: "soft limits only WARN",
+    WARNS_IN_PLANNING: "soft limits warn in path planning, stop in the position controller",
+}
 
 WIDTH = 760  # every picture is this wide
 LEFT, RIGHT = 96, 40  # the label column and the right margin of a linear axis
@@ -85,6 +100,8 @@ class AxisPicture:
     modulo_range: tuple[float, float] | None = None
     old_neg: float | None = None  # the soft limits of the machine compared against, where they differ
     old_pos: float | None = None
+    monitoring: str = MONITORED  # on, off (swe_check 0), warning (swe_behaviour WARNING), error-lr
+    monitoring_why: str = ""  # the setting that decides it: "kenngr.swe_check = 0"
 
     @property
     def ident(self) -> str:
@@ -101,12 +118,35 @@ class AxisPicture:
     def changed(self) -> bool:
         return self.old_neg is not None or self.old_pos is not None
 
+    @property
+    def monitoring_said(self) -> str:
+        """The mark drawn on an axis whose soft limits do not stop it: "" where they do."""
+        words = MONITORING_WORDS.get(self.monitoring, "")
+        return f"{words} ({self.monitoring_why})" if words and self.monitoring_why else words
+
+
+def monitoring_of(ax: Axis) -> tuple[str, str]:
+    """What the axis list says the soft-limit monitoring does, and the setting that says it:
+    ``swe_check 0`` switches it off; ``swe_behaviour WARNING`` (or ``ERROR_LR``) makes it warn."""
+    lf = ax.list
+    check = lf.number(SWE_CHECK)
+    if check is not None and check == 0:
+        return OFF, "kenngr.swe_check = 0"
+    behaviour = (lf.text(SWE_BEHAVIOUR) or "").strip().upper()
+    if behaviour == "WARNING":
+        return WARNS, "kenngr.swe_behaviour = WARNING"
+    if behaviour == "ERROR_LR":
+        return WARNS_IN_PLANNING, "kenngr.swe_behaviour = ERROR_LR"
+    return MONITORED, ""
+
 
 def _axis_facts(ax: Axis) -> dict[str, object]:
     lf = ax.list
     modulo = ax.rotary and (bool(lf.number(MOD_CALC)) or lf.number("P-AXIS-00018") == SPINDLE_TYPE)
     low, high = _mm(lf.number(MOD_LOW, (0,))), _mm(lf.number(MOD_HIGH, (0,)))
+    monitoring, why = monitoring_of(ax)
     return {"name": ax.name, "log_nr": ax.nr, "unit": ax.unit, "rotary": ax.rotary, "modulo": modulo,
+            "monitoring": monitoring, "monitoring_why": why,
             "swe_neg": _mm(ax.swe_neg) or 0.0, "swe_pos": _mm(ax.swe_pos) or 0.0,
             "tolerance": _mm(lf.number(SWE_TOL)) or 0.0, "ref": _mm(lf.number(REF_POINT, (0,))),
             "modulo_range": (low if low is not None else 0.0, high if high is not None else 360.0) if modulo
@@ -134,6 +174,10 @@ def axis_pictures(machine: Machine, rows: Sequence[LimitRow] | None = None,
             seen.add(ax.nr)
             pic = AxisPicture(**_axis_facts(ax), channel=ch.index, index=ca.index)  # type: ignore[arg-type]
             pic.name = ca.name
+            mask = ch.lists.number(WARNING_AXES) if ch.lists is not None else None
+            if pic.monitoring == MONITORED and mask and 0 <= ca.index < 64 and int(mask) >> ca.index & 1:
+                pic.monitoring = WARNS_IN_PLANNING  # the command side only warns; the actual side still stops
+                pic.monitoring_why = f"soft_limit_warning_axes bit {ca.index} of channel {ch.index}"
             for r in by_axis.get((ch.index, ca.index), []):
                 pic.zeros.append(ZeroPoint(r.group, _mm(r.offset) or 0.0, _mm(r.pcs_neg), _mm(r.pcs_pos), r.note))
             out.append(pic)
@@ -222,8 +266,9 @@ def _linear(pic: AxisPicture, y: float) -> str:
     s = scale_for(pic)
     u = pic.unit
     top, bottom = BAR_TOP, BAR_TOP + BAR_HEIGHT
-    out = [f'<g class="axis linear{" changed" if pic.changed else ""}" id="{escape(pic.ident)}" '
+    out = [f'<g class="axis linear{" changed" if pic.changed else ""}{_monitor_class(pic)}" id="{escape(pic.ident)}" '
            + _attrs(transform=f"translate(0,{y})" if y else None, data_axis=pic.name, data_log_nr=pic.log_nr,
+                    data_monitoring=pic.monitoring,
                     data_unit=u, data_domain_lo=s.lo, data_domain_hi=s.hi, data_x0=s.x0, data_x1=s.x1,
                     data_swe_neg=pic.swe_neg, data_swe_pos=pic.swe_pos, data_tolerance=pic.tolerance) + ">",
            f'<title>{escape(pic.title)}</title>',
@@ -239,7 +284,9 @@ def _linear(pic: AxisPicture, y: float) -> str:
     xn, xp = s.x(pic.swe_neg), s.x(pic.swe_pos)
     out.append(f'<rect class="soft-range" {_attrs(x=xn, y=top, width=round(xp - xn, 3), height=BAR_HEIGHT)} '
                f'{_attrs(data_swe_neg=pic.swe_neg, data_swe_pos=pic.swe_pos, data_x_neg=xn, data_x_pos=xp)}>'
-               f'<title>soft limits {_num(pic.swe_neg)} .. {_num(pic.swe_pos)} {u}</title></rect>')
+               f'<title>soft limits {_num(pic.swe_neg)} .. {_num(pic.swe_pos)} {u}'
+               f'{escape("; " + pic.monitoring_said) if pic.monitoring_said else ""}</title></rect>')
+    out.append(_monitor_mark(pic, WIDTH - RIGHT, 16, "end"))
     for cls, value, x, anchor in (("swe-neg", pic.swe_neg, xn, "end"), ("swe-pos", pic.swe_pos, xp, "start")):
         out.append(f'<line class="limit {cls}" {_attrs(x1=x, x2=x, y1=top - 8, y2=bottom + 8)} '
                    f'{_attrs(data_value=value, data_x=x)}/>')
@@ -288,6 +335,18 @@ def _linear(pic: AxisPicture, y: float) -> str:
     return "\n".join(out)
 
 
+def _monitor_class(pic: AxisPicture) -> str:
+    return f" monitoring-{pic.monitoring}" if pic.monitoring != MONITORED else ""
+
+
+def _monitor_mark(pic: AxisPicture, x: float, y: float, anchor: str) -> str:
+    """The red mark on an axis whose soft limits do not stop it ("" where they do)."""
+    if not pic.monitoring_said:
+        return ""
+    return (f'<text class="monitor-mark" {_attrs(x=x, y=y, text_anchor=anchor)}>'
+            f'⚠ {escape(pic.monitoring_said)}</text>')
+
+
 def _pcs(value: float | None) -> str:
     return escape(_num(value)) if value is not None else "beyond a float"
 
@@ -301,14 +360,15 @@ def _polar(cx: float, cy: float, r: float, degrees: float) -> tuple[float, float
 def _rotary(pic: AxisPicture, y: float) -> str:
     cx, cy, r = 110.0, ROTARY_CENTRE, 64.0
     u = pic.unit
-    out = [f'<g class="axis rotary{" modulo" if pic.modulo else ""}{" changed" if pic.changed else ""}" '
-           f'id="{escape(pic.ident)}" '
+    out = [f'<g class="axis rotary{" modulo" if pic.modulo else ""}{" changed" if pic.changed else ""}'
+           f'{_monitor_class(pic)}" id="{escape(pic.ident)}" '
            + _attrs(transform=f"translate(0,{y})" if y else None, data_axis=pic.name, data_log_nr=pic.log_nr,
+                    data_monitoring=pic.monitoring,
                     data_unit=u, data_swe_neg=pic.swe_neg, data_swe_pos=pic.swe_pos, data_tolerance=pic.tolerance,
                     data_modulo="true" if pic.modulo else "false", data_cx=cx, data_cy=cy, data_r=r) + ">",
            f'<title>{escape(pic.title)}</title>',
            f'<text class="axis-title" x="4" y="16">{escape(pic.title)}</text>',
-           f'<circle class="dial" {_attrs(cx=cx, cy=cy, r=r)}/>']
+           f'<circle class="dial" {_attrs(cx=cx, cy=cy, r=r)}/>', _monitor_mark(pic, WIDTH - RIGHT, 16, "end")]
     if pic.modulo:
         low, high = pic.modulo_range or (0.0, 360.0)
         out.append(f'<circle class="modulo-ring" {_attrs(cx=cx, cy=cy, r=r)}/>')
@@ -380,13 +440,56 @@ STYLE = """
 .rotary .soft-range { fill: none; stroke: #2c5d8a; stroke-width: 10; stroke-opacity: 0.7; }
 .rotary .old-range { fill: none; }
 .modulo-ring { fill: none; stroke: #7e57c2; stroke-width: 6; stroke-dasharray: 10 5; }
+.monitor-mark { font: bold 12px sans-serif; fill: #b3261e; }
+.axis.monitoring-off .soft-range, .axis.monitoring-warning .soft-range, .axis.monitoring-error-lr .soft-range {
+  fill: #e8e8e8; stroke: #b3261e; stroke-width: 2; stroke-dasharray: 6 3; }
+.axis.monitoring-off.rotary .soft-range, .axis.monitoring-warning.rotary .soft-range,
+.axis.monitoring-error-lr.rotary .soft-range { fill: none; stroke: #bbb; }
+.legend-label { font: 11px sans-serif; fill: #333; }
 """
+
+# The legend of the stand-alone picture: what each mark means (the report's page has its own).
+LEGEND = (
+    ("soft-range", "soft limits (kenngr.swe_neg .. swe_pos)"),
+    ("tolerance", "tolerance (kenngr.swe_toleranz)"),
+    ("ref", "reference point (getriebe[0].pos_refpkt)"),
+    ("zero-marker", "work zero; row: programmable range at its ends"),
+    ("outside", "work zero outside the soft limits"),
+    ("monitoring-off", "soft limits that do not stop the axis (swe_check 0, swe_behaviour WARNING/ERROR_LR)"),
+)
+LEGEND_ROW = 16
+
+
+def legend_svg(y: float) -> tuple[str, int]:
+    """The legend as an SVG group placed ``y`` down, and the height it takes."""
+    out = [f'<g class="legend" transform="translate(0,{_num(y)})">']
+    for i, (cls, text) in enumerate(LEGEND):
+        row = i * LEGEND_ROW
+        if cls == "soft-range":
+            mark = f'<rect class="soft-range" x="8" y="{row}" width="22" height="10"/>'
+        elif cls == "tolerance":
+            mark = f'<rect class="tolerance" x="8" y="{row}" width="22" height="10"/>'
+        elif cls == "ref":
+            mark = f'<path class="ref" d="M19,{row} l-5,10 h10 z"/>'
+        elif cls == "zero-marker":
+            mark = f'<circle class="zero-marker" cx="19" cy="{row + 5}" r="4"/>'
+        elif cls == "outside":
+            mark = f'<g class="zero outside"><circle class="zero-marker" cx="19" cy="{row + 5}" r="4"/></g>'
+        else:
+            mark = (f'<g class="axis monitoring-off"><rect class="soft-range" x="8" y="{row}" width="22" '
+                    f'height="10"/></g>')
+        out.append(f'<g class="legend-item" data-mark="{cls}">{mark}'
+                   f'<text class="legend-label" x="40" y="{row + 9}">{escape(text)}</text></g>')
+    out.append("</g>")
+    return "\n".join(out), len(LEGEND) * LEGEND_ROW + 8
 
 
 def axes_svg(pictures: Sequence[AxisPicture], title: str = "") -> str:
     """All axes in one standalone SVG document (for a README or a ticket): one group per axis."""
     y = 28 if title else 4
-    groups = []
+    legend, height = legend_svg(y)
+    groups = [legend]
+    y += height
     for pic in pictures:
         groups.append(axis_group(pic, y))
         y += picture_height(pic) + 12
