@@ -22,7 +22,7 @@ from zero.engine.lint import LintResult, lint_tree
 from zero.engine.project import Project, configurations_only
 from zero.errors import ZeroError
 from zero.files import read_file, write_atomic
-from zero.forms import EXTENSION, TWINCAT_ROOT, format_of
+from zero.forms import EXTENSION, TWINCAT, format_of, split_part, xml_form
 from zero.lists.encoding import document_bytes
 from zero.lists.tokenizer import tokenize
 from zero.records import field, record
@@ -45,10 +45,11 @@ def xml_source(data: bytes, path: str, registry: Registry, item: str | None = No
     from zero.markup.documents import embedded_documents, list_text, pick, xml_document  # start-up: only for XML
     from zero.markup.safe import scan  # start-up: as above
 
-    sc = scan(data, path)
-    if sc.root == TWINCAT_ROOT:
-        hit = pick(embedded_documents(data, path, sc)[1], item, path)
+    file, part = split_part(path)
+    if xml_form(data) == TWINCAT:  # a TwinCAT export or project: the list `item` (or `FILE#ITEM`) names
+        hit = pick(embedded_documents(data, file)[1], item or part, file)
         return list_text(hit), hit.doc.encoding, hit.kind
+    sc = scan(data, path)
     if item is not None:
         raise ZeroError("--item names a list inside a TwinCAT export; this is an XML list", path)
     doc = xml_document(data, path, registry, sc)
@@ -124,7 +125,7 @@ def source_format(given: str | None, path: str) -> str:
         return given
     if path == "-":
         return "lis"
-    fmt = format_of(path)
+    fmt = format_of(split_part(path)[0])  # `X.tsproj#Kanal_1/SdaMds`: a list inside a TwinCAT project
     if fmt is None:
         raise ZeroError("cannot tell the format from the name; give --from (lis, xml, yaml, toml or json)", path)
     return fmt

@@ -11,8 +11,8 @@ from pathlib import Path
 
 from zero.engine.git import visible_files
 from zero.errors import ZeroError
-from zero.files import check_regular
-from zero.forms import LIST_SUFFIXES, PROGRAM_SUFFIXES, xml_form
+from zero.files import check_regular, read_file
+from zero.forms import LIST_SUFFIXES, PROGRAM_SUFFIXES, PROJECT_SUFFIXES, xml_form
 
 
 def git_visible(directory: Path, note: Callable[[str], None] | None = None) -> set[str] | None:
@@ -30,13 +30,19 @@ def _stderr(text: str) -> None:
     sys.stderr.write(text)
 
 
-_WALKED = (*LIST_SUFFIXES, *PROGRAM_SUFFIXES, ".xml")
+_WALKED = (*LIST_SUFFIXES, *PROGRAM_SUFFIXES, ".xml", *PROJECT_SUFFIXES)
 
 
 def holds_lists(path: Path) -> bool:
     """Does a walked file hold parameter lists? Always, but for XML, which is a list only by its
     content: a kernel XML list or a TwinCAT export (every other XML file of a project is skipped in
     silence). An XML file that cannot be read is kept, so that the lint reports it."""
+    if path.suffix.lower() in PROJECT_SUFFIXES:  # a TwinCAT project: one that holds a `<Data>` block
+        try:
+            check_regular(path)
+            return b"<Data " in read_file(path)
+        except (OSError, ZeroError):
+            return True
     if path.suffix.lower() != ".xml":
         return True
     try:

@@ -81,6 +81,8 @@ class Totals:
     worst: Severity | None = None
 
     def add(self, result: LintResult) -> None:
+        if result.note is not None and not result.diagnostics:  # skipped: neither checked nor clean
+            return
         self.files += 1
         if not result.diagnostics:
             self.clean += 1
@@ -321,20 +323,28 @@ def lint_xml(data: bytes, path: str, registry: Registry, options: LintOptions | 
     """An XML list, or every list a TwinCAT export holds, with findings placed in the XML file. XML
     zero will not read (not well-formed, a DTD, entities) is one located S014 finding."""
     from zero.markup.documents import (  # start-up: only for XML
-        TWINCAT_ROOT,
+        TWINCAT,
         embedded_documents,
         shown_document,
         xml_document,
+        xml_form,
     )
     from zero.markup.safe import scan  # start-up: only for XML
 
     opts = options or LintOptions()
     try:
-        sc = scan(data, path)
-        docs = [item.doc for item in embedded_documents(data, path, sc)[1]] if sc.root == TWINCAT_ROOT \
-            else [xml_document(data, path, registry, sc)]
+        if xml_form(data) == TWINCAT:  # a TwinCAT export or project: every list it holds
+            sc, items = embedded_documents(data, path)
+            docs = [item.doc for item in items]
+        else:
+            sc = scan(data, path)
+            docs = [xml_document(data, path, registry, sc)]
     except ZeroError as exc:
         return refused(path, data, exc, opts)
+    if not docs:  # never "checked (clean)": nothing in it was checked
+        return LintResult(path, _shown(path, data), None, [],
+                          note=f"a TwinCAT {'export' if sc.root == 'TreeItem' else 'file'} `<{sc.root}>` that holds no "
+                               "parameter list zero knows: skipped")
     results = [lint_document(doc, registry, opts) for doc in docs]  # each placed in the XML file by its origin
     found = sorted((d for r in results for d in r.diagnostics), key=lambda d: d.sort_key())
     shown = shown_document(path, docs[0].origin, sc.encoding) if docs and docs[0].origin else _shown(path, data)

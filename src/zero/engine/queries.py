@@ -7,6 +7,7 @@ path does not load what only these commands need.
 
 from __future__ import annotations
 
+import os
 from collections.abc import Callable, Sequence
 from pathlib import Path
 
@@ -16,6 +17,7 @@ from zero.engine.convert import source_format
 from zero.engine.project import Project, configurations_only
 from zero.errors import ZeroError
 from zero.files import read_file
+from zero.forms import split_part
 from zero.lists.model import parse_key
 from zero.machine.effective import Scope, effective, entries_of, summary
 from zero.machine.limits import Ip247Violation, LimitRow, ip247, pcs_limits
@@ -29,12 +31,18 @@ def load_side(name: str, fmt: str | None, kind: str | None, registry: Registry,
     is read in the code page its configuration declares (``project``'s; by default the one found
     from the file's folder)."""
     src = source_format(fmt, name)
-    data = read_stdin() if name == "-" else read_file(name)
+    data = read_stdin() if name == "-" else read_file(_file_of(name))
     encoding = None
     if name != "-" and src in ("lis", "xml"):
         encoding = (project or configurations_only()).encoding(Path(name))
     return read_side(data, src, name, registry, kind, encoding)
 
+
+def _file_of(name: str) -> str:
+    """The file a name reads: ``X.tsproj#Kanal_1/SdaMds`` and ``channel_1.xml#SdaMds`` name a list inside
+    a TwinCAT project or export (a file that is named so on disk is that file)."""
+    file, part = split_part(name)
+    return file if part is not None and not os.path.exists(name) else name
 
 
 @record

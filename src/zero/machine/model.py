@@ -42,7 +42,16 @@ from zero.catalog.registry import Registry
 from zero.catalog.values import ListValues
 from zero.errors import ZeroError
 from zero.files import nearest_holding, read_file, within
-from zero.forms import CONFIG_NAMES, KERNEL_ROOT, TWINCAT, controller_absolute, kernel_rooted, split_part, xml_form
+from zero.forms import (
+    CONFIG_NAMES,
+    KERNEL_ROOT,
+    TWINCAT,
+    controller_absolute,
+    is_project,
+    kernel_rooted,
+    split_part,
+    xml_form,
+)
 from zero.lists.model import Document, Entry, Invalid
 from zero.markup import read_document
 from zero.records import field, record, replace
@@ -476,7 +485,11 @@ def load_machine(startup_path: Path, registry: Registry, forced_kind: str | None
                     encoding=encoding)
     root, named = named_lists(startup_path, startup.values.doc, overrides, workdir, ceiling, roots)
     origin = startup.values.doc.origin
-    if origin is not None and origin.form == TWINCAT:  # the CNC task's export: the lists of its folder's exports
+    if is_project(startup_path):  # a TwinCAT project: `tc_virtual_N\` names its own Offset blocks
+        from zero.machine.tsproj import resolve_virtual  # start-up: only for a TwinCAT project
+
+        resolve_virtual(Path(split_part(startup_path)[0]), named, reader)
+    elif origin is not None and origin.form == TWINCAT:  # the CNC task's export: the lists of its folder's exports
         _from_exports(Path(split_part(startup_path)[0]), named, reader)
     machine = Machine(startup, root, named)
     counts = {pid: _count(startup.values, pid) for pid in COUNT_KEYS}

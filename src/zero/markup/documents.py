@@ -16,6 +16,7 @@ from zero.diagnostics import Diagnostic, Edit, Fix, Related, Span
 from zero.errors import ZeroError
 from zero.forms import (
     EMBEDDED,
+    PROJECT_ROOTS,
     TWINCAT,
     TWINCAT_ROOT,
     XML_LIST,
@@ -56,11 +57,17 @@ def _roots_said() -> str:
 
 def read_xml(data: bytes, path: str, registry: Registry) -> Document:
     """XML bytes as the document model (see :func:`zero.markup.read_document`): an XML list, or one list
-    of a TwinCAT export (`export.xml#NullpD`, or the one it holds); :class:`ZeroError` (located) for XML
-    zero will not read."""
+    of a TwinCAT export (`export.xml#NullpD`, or the one it holds) or of a TwinCAT project
+    (`X.tsproj#Kanal_1/SdaMds`; the project's start-up list where none is named); :class:`ZeroError`
+    (located) for XML zero will not read."""
     file, element = split_part(path)
     if xml_form(data) == TWINCAT:
-        return pick(embedded_documents(data, file)[1], element, file).doc
+        lists = embedded_documents(data, file)[1]
+        if element is None and root_of(data) in PROJECT_ROOTS:
+            starts = [x for x in lists if x.kind == "STUP" and x.name.lower() == "startup"]
+            if len(starts) == 1 and len(lists) > 1:  # a project read as one list: its start-up list
+                return starts[0].doc
+        return pick(lists, element, file).doc
     return xml_document(data, path, registry)
 
 
@@ -68,29 +75,67 @@ def read_xml(data: bytes, path: str, registry: Registry) -> Document:
 class Embedded:
     """A list inside a TwinCAT export: the element that holds it and its document."""
 
-    element: str
-    kind: str
+    element: str  # an export's element (`NullpD`); a project's block address (`Kanal_1/SdaMds`)
+    kind: str | None
     doc: Document
     start: int  # offset of the CDATA content in the decoded file text
     end: int
+    offset: int | None = None  # a project's block: its `Offset` (what `tc_virtual_N\` names)
+    item: str = ""  # a project's block: the TwinCAT tree item it belongs to
+    name: str = ""  # a project's block: the `Name` of its `<Data>` element
 
 
 def embedded_documents(data: bytes, path: str, parsed: Scan | None = None) -> tuple[Scan, list[Embedded]]:
-    """The lists a TwinCAT export holds in CDATA, each with its place in the file."""
+    """The lists a TwinCAT export holds in CDATA, each with its place in the file; for a TwinCAT
+    project or independent project file (:mod:`zero.markup.tsproj`), the lists of its ``<Data>`` blocks."""
+    if (parsed is not None and parsed.root in PROJECT_ROOTS) or (parsed is None and root_of(data) in PROJECT_ROOTS):
+        return project_documents(data, path)
     sc = parsed if parsed is not None else scan(data, path)
-    source = sc.text.split("\n")
-    shown = [s[:-1] if s.endswith("\r") else s for s in source]
+    shown = _shown_lines(sc.text)
+    axis_group = any(t.name == AXIS_GROUP for t in sc.tags)
     out: list[Embedded] = []
     for section in sc.cdata:
         kind = EMBEDDED.get(section.parent)
+        default = False
+        if kind is None and section.parent == "Default" and axis_group:  # the default axis list
+            kind, default = "AXIS", True
         if kind is None:
             continue
-        text = sc.text[section.start:section.end]
-        doc = tokenize_text(text, path, sc.encoding, False)
-        line, col = sc.position(section.start)
-        doc.origin = Origin(TWINCAT, shown, {n: (line + n - 1, col - 1 if n == 1 else 0, None)
-                                             for n in range(1, len(doc.lines) + 2)}, kind=kind)
+        doc = _placed(sc, shown, section.start, section.end, path, kind)
+        if doc.origin is not None:
+            doc.origin.default_list = default
         out.append(Embedded(section.parent, kind, doc, section.start, section.end))
+    return sc, out
+
+
+AXIS_GROUP = "IsgAxisGroupDef"  # a TwinCAT export of the axis group: `<Default>` holds the default axis list
+
+
+def _shown_lines(text: str) -> list[str]:
+    return [s[:-1] if s.endswith("\r") else s for s in text.split("\n")]
+
+
+def _placed(sc: Scan, shown: list[str], start: int, end: int, path: str, kind: str | None) -> Document:
+    doc = tokenize_text(sc.text[start:end], path, sc.encoding, False)
+    line, col = sc.position(start)
+    doc.origin = Origin(TWINCAT, shown, {n: (line + n - 1, col - 1 if n == 1 else 0, None)
+                                         for n in range(1, len(doc.lines) + 2)}, kind=kind)
+    return doc
+
+
+def project_documents(data: bytes, path: str) -> tuple[Scan, list[Embedded]]:
+    """The lists of a TwinCAT project's ``<Data>`` blocks, each placed in the project file."""
+    from zero.markup.tsproj import read_project  # start-up: only for a TwinCAT project
+
+    project = read_project(data, path)
+    sc = project.scan
+    shown: list[str] = []
+    out: list[Embedded] = []
+    for b in project.blocks:
+        if not shown:
+            shown = _shown_lines(sc.text)
+        doc = _placed(sc, shown, b.start, b.end, path, b.kind)
+        out.append(Embedded(b.address, b.kind, doc, b.start, b.end, b.offset, b.item, b.name))
     return sc, out
 
 
@@ -132,17 +177,40 @@ def shown_document(path: str, origin: Origin, encoding: str = "utf-8") -> Docume
     return Document(path, encoding, list(origin.source), ["\n"] * len(origin.source), [])
 
 
+def _matches(x: Embedded, wanted: str) -> list[bool]:
+    """How ``wanted`` may name a list, most exact first: its element or address, `tc_virtual_N` (its
+    Offset), its `<Data>` name, its tree item."""
+    w = wanted.lower().rstrip("\\/")
+    virtual = w[len("tc_virtual_"):] if w.startswith("tc_virtual_") else None
+    return [x.element.lower() == w,
+            x.offset is not None and virtual is not None and virtual.isdigit() and int(virtual) == x.offset,
+            bool(x.name) and x.name.lower() == w,
+            bool(x.item) and x.item.lower() == w]
+
+
 def pick(lists: list[Embedded], element: str | None, path: str) -> Embedded:
     """The one list of an export that ``element`` names (any case; the only one where ``None``), or a
-    located :class:`ZeroError` saying which lists the export holds."""
-    hits = [x for x in lists if element is None or x.element.lower() == element.lower()]
+    located :class:`ZeroError` saying which lists the export holds. In a project a list is named by its
+    address (`Kanal_1/SdaMds`), by `tc_virtual_N` (its Offset), or by its `<Data>` name or tree item
+    where only one list has it."""
+    what = "project" if any(x.name for x in lists) else "export"
+    hits = lists if element is None else []
+    if element is not None:
+        for level in range(4):
+            hits = [x for x in lists if _matches(x, element)[level]]
+            if hits:
+                break
     if len(hits) != 1:
         held = ", ".join(x.element for x in lists) or "none"
         if element is None:
-            raise ZeroError(f"the export holds the lists {held}: name one with --item ELEMENT (or give --out-dir "
-                            "for every one; a machine names `export.xml#Element`)", path, 1, 1)
-        raise ZeroError(f"the export holds {len(hits)} `<{element}>` lists (it holds: {held}): zero takes exactly "
-                        "one", path, 1, 1)
+            if not lists:
+                raise ZeroError(f"the {what} holds no list zero knows", path, 1, 1)
+            raise ZeroError(f"the {what} holds the lists {held}: name one with --item ELEMENT or FILE#ELEMENT (or "
+                            f"give --out-dir for every one; a machine names `{path}#{lists[0].element}`)", path, 1, 1)
+        if not hits:
+            raise ZeroError(f"the {what} holds no list `{element}` (it holds: {held})", path, 1, 1)
+        raise ZeroError(f"the {what} holds {len(hits)} lists named `{element}` (it holds: {held}): zero takes "
+                        "exactly one", path, 1, 1)
     return hits[0]
 
 
@@ -169,6 +237,6 @@ def list_text(item: Embedded) -> bytes:
     return doc_text(item.doc).encode(item.doc.encoding, "surrogateescape")
 
 
-__all__ = ["EMBEDDED", "TWINCAT", "TWINCAT_ROOT", "XML_LIST", "Embedded", "doc_text", "embedded_documents", "is_update",
-           "is_xml", "pick", "read_xml", "relocate", "root_of", "shown_document", "splice", "xml_document",
-           "xml_form"]
+__all__ = ["AXIS_GROUP", "EMBEDDED", "PROJECT_ROOTS", "TWINCAT", "TWINCAT_ROOT", "XML_LIST", "Embedded", "doc_text",
+           "embedded_documents", "is_update", "is_xml", "pick", "project_documents", "read_xml", "relocate", "root_of",
+           "shown_document", "splice", "xml_document", "xml_form"]
