@@ -338,3 +338,62 @@ def test_an_xml_list_with_cr_only_line_breaks_places_s014_on_its_one_line(regist
     ]:
         result = lint_data(data, "cr.xml", registry)
         assert [(d.code, d.span.line, d.span.column) for d in result.diagnostics] == [("S014", *where)], data
+
+
+def _machine_of_one_list(folder: Path, entries: int, references: int = 64) -> Path:
+    """A start-up list naming one axis list (of ``entries`` entries) as all ``references`` axes."""
+    body = "".join(f"getriebe[0].dynamik.a_max {i % 900 + 1}\n" if i % 2 else f"# {i}\n" for i in range(2 * entries))
+    (folder / "big.lis").write_text("kopf.achs_nr 1\n" + body + "Ende\n", encoding="utf-8")
+    startup = folder / "hochlauf.lis"
+    startup.write_text(f"zahl_mds {references}\n" + "".join(f"achs_mds[{i}] ./big.lis\n" for i in range(references))
+                       + "Ende\n", encoding="utf-8")
+    return startup
+
+
+def test_a_list_named_64_times_is_read_and_interpreted_once(registry: Registry, tmp_path: Path,
+                                                            monkeypatch: pytest.MonkeyPatch) -> None:
+    """`zahl_mds 64` with every reference to one list: its bytes read once and its values built
+    once per machine (built per reference: 0.7 s and a copy of every entry each; a million lines
+    needed 7 GB). Steps counted, not time."""
+    from zero.catalog.values import ListValues
+    from zero.machine.model import load_machine
+
+    startup = _machine_of_one_list(tmp_path, 200)
+    built, reads = [], []
+    original = ListValues.of.__func__  # type: ignore[attr-defined]
+
+    def counting(cls: type[ListValues], *args: object, **kwargs: object) -> ListValues:
+        built.append(args[0])
+        return original(cls, *args, **kwargs)  # type: ignore[no-any-return]
+
+    def reader(path: Path) -> bytes:
+        reads.append(path)
+        return path.read_bytes()
+
+    monkeypatch.setattr(ListValues, "of", classmethod(counting))
+    machine = load_machine(startup, registry, reader=reader)
+    assert len(machine.axis_lists) == 64
+    assert len(reads) == 2 and len(built) == 2  # the start-up list and the axis list, once each
+
+
+@pytest.mark.parametrize("command", [["lint", "--machine", "hochlauf.lis", "big.lis"],
+                                     ["show", "--machine", "hochlauf.lis"],
+                                     ["explain", "--machine", "hochlauf.lis", "P-AXIS-00008"],
+                                     ["diff", "--machine", "hochlauf.lis", "hochlauf.lis"],
+                                     ["limits", "--machine", "hochlauf.lis"],
+                                     ["report", "--machine", "hochlauf.lis", "-o", "r.html"]])
+def test_a_machine_beyond_the_entry_bound_is_refused_where_the_start_up_list_crosses_it(
+        tmp_path: Path, command: list[str]) -> None:
+    """64 references to a list of 8,000 entries (512,000 for the machine, over its bound of 500,000):
+    every machine command refuses at the reference that crosses the bound, before any rule or table
+    (200,000 lines took `explain`, `diff` and `report` past 120 s; a million lines: MemoryError)."""
+    from zero.machine.model import MAX_MACHINE_ENTRIES
+
+    _machine_of_one_list(tmp_path, 8000)
+    crossing = MAX_MACHINE_ENTRIES // 8000 + 1  # the reference whose entries pass the bound (+ the start-up list's)
+    proc = subprocess.run([sys.executable, "-m", "zero", *command], capture_output=True, text=True, timeout=120,
+                          cwd=tmp_path, check=False)
+    assert proc.returncode == 2, (proc.stdout[-500:], proc.stderr[-2000:])
+    assert "Traceback" not in proc.stderr and "internal error" not in proc.stderr
+    assert f"hochlauf.lis:{crossing + 1}:1: `achs_mds[{crossing - 1}]` brings the machine's lists to more than " \
+        f"{MAX_MACHINE_ENTRIES:,} entries" in proc.stderr, proc.stderr

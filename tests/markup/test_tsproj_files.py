@@ -157,3 +157,15 @@ def test_a_50_mb_project(tmp_path: Path, registry: Registry) -> None:
     assert took < 120, f"{took:.1f} s"
     _, lists = embedded_documents(data, str(path))
     assert len(lists) == 11 and not any(re.search("Term", x.element) for x in lists)
+
+
+def test_format_and_out_dir_of_a_project(tmp_path: Path, registry: Registry) -> None:
+    from zero.engine.convert import output_path
+    from zero.engine.formatting import format_bytes
+
+    data = PROJECT.read_bytes()
+    assert format_bytes(data, str(PROJECT), registry) == data  # nothing to do: every byte kept
+    crooked = data.replace(b"kenngr.swe_pos                                        12000000",
+                           b"kenngr.swe_pos  12000000", 1)
+    assert crooked != data and format_bytes(crooked, "M.tsproj", registry) == data  # only inside that CDATA
+    assert output_path(PROJECT, "lis", tmp_path, "Kanal_1/SdaMds").name == "Maschine.Kanal_1.SdaMds.lis"

@@ -34,7 +34,7 @@ from zero.engine.parallel import iter_lint_many, lint_many
 from zero.engine.project import Project, Registries
 from zero.errors import ZeroError
 from zero.files import read_file, write_atomic
-from zero.forms import TWINCAT_ROOT, is_list, is_program, is_update, is_xml
+from zero.forms import PROJECT_ROOTS, TWINCAT_ROOT, is_list, is_program, is_update, is_xml
 from zero.records import field, record, replace
 from zero.rules import RULES
 
@@ -316,7 +316,7 @@ def _add_noqa_xml(path: Path, data: bytes, result: LintResult, options: LintOpti
         sc = scan(data, str(path))
     except ZeroError:
         return result
-    if sc.root != TWINCAT_ROOT:
+    if sc.root != TWINCAT_ROOT and sc.root not in PROJECT_ROOTS:  # not an export or a project
         echo.err(f"zero: {path}: --add-noqa writes list comments, which an XML list has no place for: not changed "
                  "(per-file-ignores in the configuration suppress its findings)\n")
         return result

@@ -104,8 +104,10 @@ def list_bytes(tree: Tree) -> bytes:
 
 
 def output_path(src: Path, fmt: str, out_dir: Path, element: str | None = None) -> Path:
-    """``name.yaml`` in ``out_dir``; ``name.Element.lis`` for the list ``element`` of a TwinCAT export."""
-    return out_dir / (src.stem + (f".{element}" if element else "") + EXTENSION[fmt])
+    """``name.yaml`` in ``out_dir``; ``name.Element.lis`` for the list ``element`` of a TwinCAT export
+    (``Maschine.Kanal_1.SdaMds.lis`` for a project's ``Kanal_1/SdaMds``)."""
+    part = element.replace("/", ".").replace("\\", ".") if element else None
+    return out_dir / (src.stem + (f".{part}" if part else "") + EXTENSION[fmt])
 
 
 def target_format(to: str | None, output: str | None, src_fmt: str) -> str:

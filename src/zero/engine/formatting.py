@@ -9,7 +9,7 @@ from __future__ import annotations
 
 from zero.catalog.registry import Registry
 from zero.errors import ZeroError
-from zero.forms import TWINCAT_ROOT, XML_ROOTS, is_xml
+from zero.forms import PROJECT_ROOTS, TWINCAT_ROOT, XML_ROOTS, is_xml
 from zero.lists.encoding import encode_text, foreign_control
 from zero.lists.model import Document
 from zero.lists.tokenizer import tokenize
@@ -77,7 +77,7 @@ def _format_xml(data: bytes, path: str, registry: Registry, value_column: int | 
     from zero.markup.safe import scan  # start-up: as above
 
     sc = scan(data, path)
-    if sc.root != TWINCAT_ROOT:
+    if sc.root != TWINCAT_ROOT and sc.root not in PROJECT_ROOTS:  # not an export or a project
         if sc.root not in XML_ROOTS:
             raise ZeroError(f"the root element `<{sc.root}>` is not that of a parameter list", path, 1, 1)
         return data

@@ -59,6 +59,10 @@ from zero.records import field, record, replace
 # Soft limits the controller uses when no list sets them (±10 m, the catalogue default).
 DEFAULT_SOFT_LIMIT = 100_000_000
 MAX_ANCESTORS = 4  # how far above the start-up list the working directory is looked for
+# The entries of a machine's lists, each list counted as often as the start-up list names it (the
+# rules, tables and pages work per reference). A real machine holds tens of thousands (64 axes of
+# about 1,500); 64 references to one list of a million lines needed 7 GB.
+MAX_MACHINE_ENTRIES = 500_000
 
 
 @record(frozen=True)
@@ -312,7 +316,8 @@ def _detected(_path: Path) -> str | None:
 
 def _read(key: str, path: Path, line: int, registry: Registry, kind: str,
           base: ListValues | None = None, reader: Callable[[Path], bytes] = read_file,
-          docs: dict[str, Document] | None = None, encoding: Encodings = _detected) -> ListFile:
+          docs: dict[str, Document] | None = None, encoding: Encodings = _detected,
+          built: dict[tuple[str, str, str, int], ListValues] | None = None) -> ListFile:
     """One list of the machine; ``docs`` keeps each file read once (a start-up list may name one
     file many times: each reference costs its binding, never another read). ``encoding`` gives
     the codec the configuration declares for a list (``None``: detected)."""
@@ -324,8 +329,15 @@ def _read(key: str, path: Path, line: int, registry: Registry, kind: str,
             replace(doc, path=str(path))
         if docs is not None:
             docs.setdefault(real, doc)
-    values = ListValues.of(doc, registry, kind)
-    values.base = base
+    # ``built`` keeps each file's values once per kind and default list: 64 references to one list
+    # share them (built per reference, they took 0.7 s and a copy of every entry each).
+    cache_key = (real, str(doc.path), kind, id(base))
+    values = built.get(cache_key) if built is not None else None
+    if values is None:
+        values = ListValues.of(doc, registry, kind)
+        values.base = base
+        if built is not None:
+            built[cache_key] = values
     return ListFile(key, path, values, line)
 
 
@@ -496,7 +508,9 @@ def load_machine(startup_path: Path, registry: Registry, forced_kind: str | None
     sizes = {ref.param_id: spec.dims[0] for ref in REFERENCES
              if (spec := registry.get(ref.param_id)) is not None and spec.dims}  # achs_mds[0..63], ...
     docs: dict[str, Document] = {}
+    built: dict[tuple[str, str, str, int], ListValues] = {}
     loaded: dict[str, ListFile] = {}
+    entries = len(startup.values.doc.entries)  # of every list as often as it is named: the work to come
 
     def load(n: Named, base: ListValues | None = None) -> ListFile | None:
         if n.index is not None and n.index >= sizes.get(n.reference.param_id, n.index + 1):
@@ -509,7 +523,7 @@ def load_machine(startup_path: Path, registry: Registry, forced_kind: str | None
             return None  # empty, absolute or outside the machine's folder: said by named_lists
         try:
             lf = _read(n.key, n.path, n.line, registry, forced_kind or n.reference.kind, base, reader, docs,
-                       encoding)
+                       encoding, built)
         except ZeroError as exc:
             n.status = "missing" if exc.message == "no such file" else "unreadable"
             n.reason = "does not exist" if n.status == "missing" else f"cannot be read: {exc.message}"
@@ -518,6 +532,12 @@ def load_machine(startup_path: Path, registry: Registry, forced_kind: str | None
         if foreign is not None:  # never a line of it in a finding: it is not a list of this machine
             n.status, n.reason = "unreadable", foreign
             return None
+        nonlocal entries
+        entries += len(lf.values.doc.entries)
+        if entries > MAX_MACHINE_ENTRIES:  # refused before any rule, table or page is built from them
+            raise ZeroError(f"`{n.key}` brings the machine's lists to more than {MAX_MACHINE_ENTRIES:,} entries "
+                            f"(each list counted as often as the start-up list names it): zero does not "
+                            f"check a machine this large", str(startup_path), n.line, 1)
         loaded[n.key] = lf
         return lf
 

@@ -27,7 +27,8 @@ from lsprotocol import types
 from zero.catalog.ids import g_code_with_index
 from zero.catalog.registry import KINDS
 from zero.catalog.values import ListValues
-from zero.forms import LIST, PROGRAM, STRUCTURED, TWINCAT, format_of
+from zero.errors import ZeroError
+from zero.forms import LIST, PROGRAM, STRUCTURED, TWINCAT, format_of, is_project
 from zero.lists.model import Entry, ValueKind, parse_key
 from zero.records import field, record
 from zero.server.documents import Analysis, file_position
@@ -223,7 +224,49 @@ def definition(a: Analysis, line: int, character: int) -> list[types.Location]:
 # ------------------------------------------------------------------ links, folding
 
 
+def _virtual_links(a: Analysis) -> list[types.DocumentLink]:
+    """In a TwinCAT project: each ``tc_virtual_N\\`` reference of its start-up list linked to the
+    ``<Data … Offset="N">`` block it names (in the project or one of its independent project files),
+    never to a path on disk; a reference no block or two blocks answer gets no link (X005 says why)."""
+    if a.path is None or not is_project(a.path):
+        return []
+    from zero.files import read_file  # the server's project files: only for a TwinCAT project
+    from zero.machine.tsproj import project_blocks
+    from zero.markup.tsproj import VIRTUAL_RE
+
+    me = a.path
+    try:
+        blocks, _ = project_blocks(me, lambda p: a.data if p == me else read_file(p))
+    except ZeroError:
+        return []
+    by_offset: dict[int, list[tuple[Path, int]]] = {}
+    for f in blocks:
+        if f.block.offset is not None:
+            by_offset.setdefault(f.block.offset, []).append((f.path, f.line))
+    out = []
+    for _, values in a.lists():
+        doc = values.doc
+        if doc.origin is None or doc.origin.kind != "STUP":
+            continue
+        for e in doc.entries:
+            m = VIRTUAL_RE.match(e.value)
+            hits = by_offset.get(int(m.group(1)), []) if m is not None else []
+            if len(hits) != 1 or e.value_end <= e.value_start:
+                continue
+            path, target_line = hits[0]
+            uri = a.uri if path == me else uri_of(path)
+            line, start = file_position(doc, e.line - 1, e.value_start)
+            end = max(start, file_position(doc, e.line - 1, e.value_end, end=True)[1])
+            rng = types.Range(types.Position(line, a.text.character(line, start)),
+                              types.Position(line, a.text.character(line, end)))
+            out.append(types.DocumentLink(rng, target=f"{uri}#L{target_line}",
+                                          tooltip=f"{e.key_text}: {path.name} line {target_line}"))
+    return out
+
+
 def document_links(a: Analysis) -> list[types.DocumentLink]:
+    if a.form == LIST and a.path is not None and is_project(a.path):
+        return _virtual_links(a)
     if a.form != LIST or not a.references:
         return []
     out = []
