@@ -256,6 +256,13 @@ _VALUE_START = re.compile(r"\s*=?\s*(?:[-+]?(?:\d|\.\d)|[-+]?P\d|[-+]?V\.|[-+]?\
 _VAR = re.compile(r"V\.[A-Z_]+\.[A-Z0-9_.]*(?:\[[^\]]*\])*(?:\.[A-Z0-9_]+)*")
 _PRIMARY = re.compile(r"[-+]?(?:\d+\.?\d*(?!\.)|\.\d+|P\d+|V\.[A-Z_]+\.[A-Z0-9_.]*(?:\[[^\]]*\])*)")
 _ASSIGN = re.compile(r"\s*=(?!=)")
+# a block of address letters and plain numbers only, and its words (the fast path of CAM programs)
+_SIMPLE = re.compile(r"\s*(?:N\d+(?=[\sA-Z]|$))?(?:\s*[A-Z]\s*[-+]?(?:\d+\.?\d*|\.\d+))+\s*$")
+_SIMPLE_WORD = re.compile(r"([A-Z])\s*([-+]?(?:\d+\.?\d*|\.\d+))")
+_CENTRE = frozenset("IJKR")
+_MOTION = frozenset({0, 1, 2, 3})
+_NO_MACHINE = "no machine to check them against (zero lint --machine STARTUP, or `machine` in the configuration)"
+_NOT_PLAIN = frozenset("IJKR") | frozenset(lang.DEFAULT_AXES)  # centre words, axes the channel may not have
 _NAMED = re.compile(r"[A-Z]{1,4}\d*")
 _SKIP_MARK = re.compile(r"/\d*")
 _BLOCK_NUMBER = re.compile(r"N(\d+)(:?)")
@@ -446,6 +453,7 @@ class Follower:
         in_comment = 0
         in_var = False
         pending: list[tuple[int, str]] = []
+        fast = not self.multi  # axis names of one letter: a word is a letter and its number
         for number in range(start + 1, (len(lines) if end is None else end) + 1):
             raw = lines[number - 1]
             up = raw.upper() if raw.isascii() else _upper(raw)
@@ -470,6 +478,9 @@ class Follower:
                 continue
             stripped = up.rstrip()
             if not stripped:
+                continue
+            if fast and not pending and _SIMPLE.match(stripped):
+                self._fast(number, stripped)
                 continue
             if stripped.endswith("\\"):
                 pending.append((number, stripped[:-1]))
@@ -725,7 +736,6 @@ class Follower:
     # ------------------------------------------------------------------ semantics
 
     def _execute(self, toks: list[_Tok], line: int) -> None:
-        st = self.state
         codes: set[int] = set()
         group_code: int | None = None
         axes: list[_Tok] = []
@@ -748,6 +758,117 @@ class Follower:
                 centre[t.name] = t
             elif t.name in lang.DEFAULT_AXES or (len(t.name) > 1 and not t.name.startswith("S")):
                 axes.append(t)  # an axis this channel does not have (S1=…: a spindle)
+        self._apply(line, codes, group_code, axes, centre, other)
+
+    def _fast(self, line: int, text: str) -> None:
+        """A block of address letters with plain numbers only (most of a CAM program): the words
+        straight from one regular expression, then what every block does. The spans of its words
+        are found when a finding needs them."""
+        words = _SIMPLE_WORD.findall(text)
+        st = self.state
+        if self.setup is None and not self.targets:  # nothing to check them against: count the moves
+            if any(letter in self.names for letter, _ in words) and not any(
+                    letter == "G" and float(raw) in lang.G_NOT_TARGETS for letter, raw in words):
+                self.result.moves += 1
+                self.result.skip(_NO_MACHINE, line)
+            return
+        if self._plain(st):  # the common case, inline: linear moves in a known state
+            codes = 0
+            targets: list[tuple[int, str, float]] = []
+            names = self.names
+            other = False
+            for letter, raw in words:
+                if letter == "G":
+                    codes += 1
+                    g = float(raw)
+                    if g not in (0.0, 1.0):
+                        other = True
+                        break
+                elif letter in names:
+                    targets.append((names[letter], raw, float(raw)))
+                elif letter in _NOT_PLAIN:
+                    other = True
+                    break
+            if not other and (codes or st.motion < 2):
+                if codes:
+                    st.motion = int(float(next(raw for letter, raw in words if letter == "G")))
+                if targets:
+                    self._plain_move(line, targets)
+                return
+        codes_set: set[int] = set()
+        axes: list[_Tok] = []
+        centre: dict[str, _Tok] = {}
+        names = self.names
+        for letter, raw in words:
+            if letter == "N":
+                if self.targets and f"N{int(float(raw))}" in self.targets:
+                    self._label(f"N{int(float(raw))}", line)
+                continue
+            value = float(raw)
+            if letter == "G":
+                if value == int(value):
+                    codes_set.add(int(value))
+                else:
+                    self.unfollowed.append(("a computed G code", line))
+            elif letter in names:
+                axes.append(_Tok("axis", letter, line, -1, -1, value, raw))
+            elif letter in _CENTRE:
+                centre[letter] = _Tok("addr", letter, line, -1, -1, value, raw)
+            elif letter in lang.DEFAULT_AXES:
+                axes.append(_Tok("addr", letter, line, -1, -1, value, raw))
+        self._apply(line, codes_set, None, axes, centre, ())
+
+    def _plain(self, st: _State) -> bool:
+        """Whether a block of linear moves needs nothing but adding offsets and comparing."""
+        return (self.setup is not None and self._transform is None and st.absolute is not None
+                and st.group is not None and not st.inch and not st.diameter and not self.targets
+                and not (self.section and self.depth == 0) and not any(st.g92))
+
+    def _plain_move(self, line: int, targets: list[tuple[int, str, float]]) -> None:
+        st = self.state
+        res = self.result
+        res.moves += 1
+        pos = st.pos
+        assert self.setup is not None and st.group is not None
+        row = self.setup.offsets.get(st.group)
+        limits = st.limits
+        travel = res.travel
+        absolute = st.absolute
+        for i, raw, value in targets:
+            if not absolute:
+                base = pos[i]
+                if base is None:
+                    res.skip(st.pos_why[i], line)
+                    for j, _, _ in targets:  # the block's other targets still move
+                        if j != i and pos[j] is not None:
+                            pos[j] = None
+                            st.pos_why[j] = st.pos_why[i]
+                    return
+                value += base
+            pos[i] = value
+            machine = value + (row[i] if row is not None and i < len(row) else 0.0)
+            span = travel.get(i)
+            if span is None:
+                travel[i] = [machine, machine]
+            elif machine < span[0]:
+                span[0] = machine
+            elif machine > span[1]:
+                span[1] = machine
+            neg, posl = limits[i]
+            if (machine > posl or machine < neg) and (machine > posl + 1e-9 * max(1.0, abs(machine))
+                                                      or machine < neg - 1e-9 * max(1.0, abs(machine))):
+                self._crossing(i, value, machine, _Tok("axis", self.axes[i].name, line, -1, -1, value, raw), False)
+        res.evaluated += 1
+
+    def _apply(self, line: int, codes: set[int], group_code: int | None, axes: list[_Tok],
+               centre: dict[str, _Tok], other: Sequence[_Tok]) -> None:
+        st = self.state
+        if not other and codes <= _MOTION:  # the common block: a motion code at most
+            if codes:
+                st.motion = min(codes)
+            if axes:
+                self._move(axes, centre, line, ())
+            return
         unknown_g = sorted(codes - lang.G_FOLLOWED - lang.G_NOT_TARGETS - lang.G_STATE)
         for g in unknown_g:
             self.unfollowed.append((f"G{g}", line))
@@ -826,98 +947,117 @@ class Follower:
             if t.kind == "call":
                 self._called(t)
 
-    def _move(self, axes: list[_Tok], centre: dict[str, _Tok], line: int, unknown_g: list[int]) -> None:
+    def _move(self, axes: list[_Tok], centre: dict[str, _Tok], line: int, unknown_g: Sequence[int]) -> None:
         """One block with axis words: its targets (and an arc's extent) against the limits."""
         st = self.state
         res = self.result
-        if self.depth == 0 and self.section and self.section.upper() in self.called_locals:
+        if self.section and self.depth == 0 and self.section.upper() in self.called_locals:
             return  # followed where it is called
         res.moves += 1
-        block: list[str] = []  # reasons no target of the block can be checked
+        block = ""  # why no target of the block can be checked
         if self.setup is None:
-            block.append("no machine to check them against (zero lint --machine STARTUP, or `machine` in the "
-                         "configuration)")
-        if self._transform is not None:
-            block.append(f"#{self._transform[0]} active from line {self._transform[1]}"
-                         if not self._transform[0].startswith("mirroring")
-                         else f"{self._transform[0]} active from line {self._transform[1]}")
-        if unknown_g:
-            block.append(f"G{unknown_g[0]} (zero does not follow it)")
-        if st.absolute is None or st.group is None:
-            block.append(st.why or "dimensions or work offset not known")
-        reasons: list[str] = []  # reasons some targets cannot be checked
-        start = list(st.pos)
-        targets: dict[int, tuple[float, _Tok]] = {}
+            block = _NO_MACHINE
+        elif self._transform is not None:
+            name, at = self._transform
+            block = f"{'' if name.startswith('mirroring') else '#'}{name} active from line {at}"
+        elif unknown_g:
+            block = f"G{unknown_g[0]} (zero does not follow it)"
+        elif st.absolute is None or st.group is None:
+            block = st.why or "dimensions or work offset not known"
+        reason = ""  # why some targets cannot be checked
+        arc = st.motion == 2 or st.motion == 3
+        start = list(st.pos) if arc else None
+        pos = st.pos
+        names = self.names
+        checks: list[tuple[int, float, _Tok]] = []
         for t in axes:
-            i = self.names.get(t.name)
+            i = names.get(t.name)
             if i is None:
-                reasons.append(f"{t.name} is no axis of the channel")
+                reason = reason or f"{t.name} is no axis of the channel"
                 continue
-            ax = self.axes[i]
-            if t.value is None:
-                reasons.append("computed position")
-                st.pos[i] = None
+            value = t.value
+            if value is None:
+                reason = reason or "computed position"
+                pos[i] = None
                 st.pos_why[i] = f"computed position at line {t.line}"
                 continue
             if st.diameter and i == 0:
-                reasons.append("diameter programming (G51)")
-                st.pos[i] = None
+                reason = reason or "diameter programming (G51)"
+                pos[i] = None
                 st.pos_why[i] = f"diameter programming at line {t.line}"
                 continue
-            if st.absolute is None:
-                st.pos[i] = None
+            absolute = st.absolute
+            if absolute is None:
+                pos[i] = None
                 st.pos_why[i] = st.why
                 continue
-            value = t.value * (INCH if st.inch and not ax.rotary else 1.0)
-            if st.absolute:
+            if st.inch and not self.axes[i].rotary:
+                value *= INCH
+            if absolute:
                 target = value
             else:
-                base = st.pos[i]
+                base = pos[i]
                 if base is None:
-                    reasons.append(st.pos_why[i])
+                    reason = reason or st.pos_why[i]
                     continue
                 target = base + value
-            st.pos[i] = target
+            pos[i] = target
             if st.g92[i] != 0:
-                reasons.append(st.g92_from[i])
+                reason = reason or st.g92_from[i]
                 continue
-            targets[i] = (target, t)
-        arc_points: list[tuple[int, float, _Tok]] = []
-        if st.motion in (2, 3) and not block and not reasons:
+            checks.append((i, target, t))
+        targets = len(checks)
+        if arc and not block and not reason:
+            assert start is not None
             pts = self._arc(start, centre, axes)
             if pts is None:
-                reasons.append("arc whose extent zero cannot compute")
+                reason = "arc whose extent zero cannot compute"
             else:
-                arc_points = pts
+                checks.extend(pts)
         if not block:
-            for i, (target, t) in targets.items():
-                self._check(i, target, t, arc=False)
-            for i, value, t in arc_points:
-                self._check(i, value, t, arc=True)
-        why = [*block, *reasons]
+            group = st.group
+            assert self.setup is not None and group is not None
+            row = self.setup.offsets.get(group)
+            limits = st.limits
+            travel = res.travel
+            for k, (i, target, t) in enumerate(checks):
+                machine = target + (row[i] if row is not None and i < len(row) else 0.0)
+                span = travel.get(i)
+                if span is None:
+                    travel[i] = [machine, machine]
+                elif machine < span[0]:
+                    span[0] = machine
+                elif machine > span[1]:
+                    span[1] = machine
+                neg, posl = limits[i]
+                if machine > posl or machine < neg:
+                    tol = 1e-9 * max(1.0, abs(machine))
+                    if machine > posl + tol or machine < neg - tol:
+                        self._crossing(i, target, machine, t, arc=k >= targets)
+        why = block or reason
         if why:
-            res.skip(why[0], line)
+            res.skip(why, line)
         else:
             res.evaluated += 1
 
-    def _check(self, i: int, target: float, t: _Tok, arc: bool) -> None:
+    def _crossing(self, i: int, target: float, machine: float, t: _Tok, arc: bool) -> None:
         st = self.state
         assert self.setup is not None and st.group is not None
-        offset = self.setup.offset(st.group, i)
-        machine = target + offset
-        travel = self.result.travel.get(i)
-        if travel is None:
-            self.result.travel[i] = [machine, machine]
-        else:
-            travel[0] = min(travel[0], machine)
-            travel[1] = max(travel[1], machine)
         neg, pos = st.limits[i]
-        tol = 1e-9 * max(1.0, abs(machine))
-        if machine > pos + tol or machine < neg - tol:
-            positive = machine > pos
-            self.result.crossings.append(Crossing(
-                t.line, t.start, t.end, i, target, machine, pos if positive else neg, positive, st.group, offset,
-                st.limit_from[i][1 if positive else 0], st.unmonitored[i], arc))
+        positive = machine > pos
+        if t.start < 0:
+            self._locate(t)
+        self.result.crossings.append(Crossing(
+            t.line, t.start, t.end, i, target, machine, pos if positive else neg, positive, st.group,
+            self.setup.offset(st.group, i), st.limit_from[i][1 if positive else 0], st.unmonitored[i], arc))
+
+    def _locate(self, t: _Tok) -> None:
+        """The span of a word the fast path read without one: the first `<letter><number>` that matches."""
+        text = self.lines[t.line - 1].upper()
+        m = re.search(rf"(?<![A-Z0-9_.]){re.escape(t.name)}\s*{re.escape(t.text)}(?![0-9.])", text)
+        if m is None:
+            m = re.search(rf"{re.escape(t.name)}\s*{re.escape(t.text)}", text)
+        t.start, t.end = (m.start(), m.end()) if m is not None else (0, max(len(text.rstrip()), 1))
 
     def _arc(self, start: list[float | None], centre: dict[str, _Tok],
              axes: list[_Tok]) -> list[tuple[int, float, _Tok]] | None:

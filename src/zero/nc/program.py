@@ -25,6 +25,7 @@ from zero.records import field, record
 
 _MACHINE_DATA_RE = re.compile(r"#\s*MACHINE\s+DATA\b", re.IGNORECASE)
 _WORD_RE = re.compile(r"(?<![A-Za-z_#$.])([A-Z])\s*(=?)\s*([+-]?(?:[0-9]+\.?[0-9]*|\.[0-9]+))", re.IGNORECASE)
+_G9X = re.compile(r"(?<![A-Za-z_#$.])G\s*0*9[0189](?![0-9.])", re.IGNORECASE)
 _G_RE = re.compile(r"(?<![A-Za-z_#$.])G\s*0*([0-9]+)(?![0-9.])", re.IGNORECASE)
 _ITEM_RE = re.compile(
     r'\s*(?:(?P<ax>AX)\s*=\s*(?P<axname>[A-Za-z_][A-Za-z0-9_]*)'
@@ -69,6 +70,8 @@ def comment_spans(line: str) -> list[tuple[int, str]]:
 
 def strip_comments(line: str) -> str:
     """The line with ``( … )`` and ``; …`` comments blanked (columns kept), strings kept."""
+    if "(" not in line and ";" not in line:
+        return line
     for start, text in reversed(comment_spans(line)):
         line = line[:start] if text.startswith(";") else line[:start] + " " * len(text) + line[start + len(text):]
     return line
@@ -202,12 +205,13 @@ def read_program(data: bytes, path: str, registry: Registry) -> Program:
     relative = False
     for number, raw in enumerate(doc.lines, 1):
         s = strip_comments(raw)
-        md = _MACHINE_DATA_RE.search(_blank_strings(s))
+        s_blank = _blank_strings(s) if '"' in s else s
+        md = _MACHINE_DATA_RE.search(s_blank) if "#" in s_blank else None
         if md:
             machine_data.append(parse_machine_data(s, number, md.start(), registry))
             continue
-        s = _blank_strings(s)
-        if not s.strip():
+        s = s_blank
+        if "9" not in s or not _G9X.search(s):  # no G90, G91, G98 or G99 (of any spelling) on the line
             continue
         gs = [int(g.group(1)) for g in _G_RE.finditer(s)]
         if 91 in gs:
