@@ -8,6 +8,8 @@ import shutil
 from pathlib import Path
 
 import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
 from typer.testing import CliRunner
 
 from conftest import FIXTURES, builtin_registry
@@ -194,3 +196,19 @@ def test_follower_alone_branches_loops_and_arcs() -> None:
     assert found.skipped["arc whose extent zero cannot compute"] == [2, 8]
     found = follow(["G90 X0 Y0", "G2 X0 Y0 I5.5 J0"], setup)  # the full circle reaches X 11
     assert [(c.line, c.arc, c.machine) for c in found.crossings] == [(2, True, 11.0)]
+
+
+NC_ALPHABET = "GXYZABIJKRNLPVF0123456789.-+=[]()$#%;:/\\\"@ \tÜß…\n" + "IFELSEENDWHILECYCLETRAFOONOFF"
+
+
+@settings(max_examples=300, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(st.text(alphabet=NC_ALPHABET, max_size=200))
+def test_any_text_is_read_without_an_exception(text: str) -> None:
+    """Hostile or broken programs: a finding at most, never a traceback (a letter outside A-Z
+    once stopped the reader)."""
+    setup = Setup([AxisSetup("X", -10, 10), AxisSetup("Y", -10, 10), AxisSetup("Z", -10, 10)],
+                  {1: (1.0, 2.0, 3.0)}, 1)
+    lines = text.split("\n")
+    for s in (setup, None):
+        found = follow(lines, s)
+        assert found.evaluated <= found.moves

@@ -618,7 +618,7 @@ class Follower:
                     if a is not None:
                         toks.append(_Tok("assign", m.group(), line, i, m.end(), text=text[a.end():]))
                         return False
-            if c.isalpha() or c == "_":
+            if "A" <= c <= "Z" or c == "_":
                 m = _IDENT.match(text, i)
                 assert m is not None
                 ident = m.group()
