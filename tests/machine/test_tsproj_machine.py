@@ -98,3 +98,24 @@ def test_a_50_mb_project_as_a_machine(tmp_path: Path, registry: Registry) -> Non
     m = load_machine(path, registry)
     assert sorted(m.axes()) == [1, 2, 3, 4]
     assert found(lint_machine(m, registry)) == [("Big.tsproj", "R001", 112 + shift, 1)]
+
+
+def test_what_twincat_says_of_each_item_is_part_of_the_machine(registry: Registry) -> None:
+    """DriveType, Spindle and the item names, shown by `zero show --machine` (summary["twincat"])."""
+    import io
+
+    from zero.machine.effective import summary
+    from zero.output.tables import render_effective
+
+    m = load_machine(PROJECT, registry)
+    said = summary(m)
+    items = said["twincat"]
+    assert isinstance(items, dict)
+    assert items["achs_mds[3]"] == {"item": "C_Spindel", "element": "C_Spindel/AchsMds", "DriveType": "4",
+                                    "Spindle": "true"}
+    assert items["sda_mds[1]"] == {"item": "Kanal_2", "element": "Kanal_2/SdaMds"}
+    out = io.StringIO()
+    render_effective(said, [], out)
+    assert "#   achs_mds[3]: TwinCAT item C_Spindel (C_Spindel/AchsMds): DriveType 4, Spindle true\n" in out.getvalue()
+    plain = summary(load_machine(FIXTURES / "twincat" / "machine" / "startup" / "hochlauf.lis", registry))
+    assert "twincat" not in plain

@@ -169,3 +169,8 @@ def test_format_and_out_dir_of_a_project(tmp_path: Path, registry: Registry) -> 
                            b"kenngr.swe_pos  12000000", 1)
     assert crooked != data and format_bytes(crooked, "M.tsproj", registry) == data  # only inside that CDATA
     assert output_path(PROJECT, "lis", tmp_path, "Kanal_1/SdaMds").name == "Maschine.Kanal_1.SdaMds.lis"
+
+
+def test_an_axis_export_says_its_drive_type_spindle_and_feed_axis() -> None:
+    _, lists = embedded_documents((TWINCAT / "ai" / "axis_ai.xml").read_bytes(), "a")
+    assert (lists[0].item, lists[0].properties) == ("Achse_11", {"DriveType": "4", "Spindle": "0", "FeedAxis": "1"})

@@ -180,14 +180,22 @@ def effective(machine: Machine, keys: Sequence[str] = (), with_defaults: bool = 
 
 
 def summary(machine: Machine) -> dict[str, object]:
-    """The start-up list, the working directory and what became of every list it names."""
-    return {
+    """The start-up list, the working directory and what became of every list it names; for a machine
+    read from TwinCAT (a project or exports), what TwinCAT says of each list's item (``twincat``)."""
+    out: dict[str, object] = {
         "startup": str(machine.startup.path),
         "working_directory": str(machine.workdir),
         "lists": [{"key": n.key, "path": n.raw, "resolved": str(n.path) if n.path else None,
                    "status": n.status, "reason": n.reason or None,
                    "line": machine.startup.values.doc.file_line(n.line)} for n in machine.named],
     }
+    if any(n.path is not None and "#" in str(n.path) for n in machine.named):
+        from zero.machine.tsproj import twincat_items  # start-up: only for a machine read from TwinCAT
+
+        items = twincat_items(machine)
+        if items:
+            out["twincat"] = items
+    return out
 
 
 def entries_of(values: ListValues) -> dict[str, Entry]:

@@ -20,7 +20,7 @@ from zero.markup.tsproj import VIRTUAL_RE, Block, read_project
 from zero.records import record
 
 if TYPE_CHECKING:  # the model imports this module when it reads a project
-    from zero.machine.model import Named
+    from zero.machine.model import Machine, Named
 
 CONFIG_FOLDER = "_Config"
 MAX_FILES = 2000  # independent project files followed at most (a project has one per item)
@@ -121,4 +121,31 @@ def resolve_virtual(project: Path, named: list[Named], reader: Callable[[Path], 
     return problems
 
 
-__all__ = ["CONFIG_FOLDER", "Found", "project_blocks", "resolve_virtual"]
+def twincat_items(machine: Machine, reader: Callable[[Path], bytes] | None = None) -> dict[str, dict[str, str]]:
+    """What TwinCAT says of the item each list of the machine comes from, by the start-up key that
+    names the list: the item's name in the TwinCAT tree and, for an axis, its ``DriveType``,
+    ``Spindle`` and ``FeedAxis`` as the project or export writes them (``achs_mds[1]`` →
+    ``{"item": "Y_Achse", "element": "Y_Achse/AchsMds", "DriveType": "4", ...}``). Lists read from
+    plain files have none. Shown beside the lists, never compared with them: the vendor's
+    documentation does not say how these values relate to ``kenngr.antr_typ`` or ``kenngr.achs_typ``."""
+    from zero.files import read_file  # the default reader
+    from zero.forms import split_part
+    from zero.markup.documents import embedded_documents, pick
+
+    read = reader or read_file
+    out: dict[str, dict[str, str]] = {}
+    for n in machine.named:
+        if n.path is None or n.status not in ("loaded", "overridden"):
+            continue
+        file, element = split_part(n.path)
+        if element is None:
+            continue
+        try:
+            hit = pick(embedded_documents(read(Path(file)), file)[1], element, file)
+        except (ZeroError, OSError):
+            continue
+        out[n.key] = {"item": hit.item, "element": hit.element, **hit.properties}
+    return out
+
+
+__all__ = ["CONFIG_FOLDER", "Found", "project_blocks", "resolve_virtual", "twincat_items"]

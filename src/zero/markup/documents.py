@@ -32,7 +32,7 @@ from zero.lists.model import Document, Origin
 from zero.lists.tokenizer import tokenize_text
 from zero.markup.lists import escape, to_list
 from zero.markup.safe import Scan, scan
-from zero.records import record, replace
+from zero.records import field, record, replace
 
 _LINE_RE = re.compile(r"\bline (\d+)\b")
 
@@ -83,6 +83,7 @@ class Embedded:
     offset: int | None = None  # a project's block: its `Offset` (what `tc_virtual_N\` names)
     item: str = ""  # a project's block: the TwinCAT tree item it belongs to
     name: str = ""  # a project's block: the `Name` of its `<Data>` element
+    properties: dict[str, str] = field(default_factory=dict)  # its item's DriveType, Spindle, FeedAxis
 
 
 def embedded_documents(data: bytes, path: str, parsed: Scan | None = None) -> tuple[Scan, list[Embedded]]:
@@ -93,6 +94,7 @@ def embedded_documents(data: bytes, path: str, parsed: Scan | None = None) -> tu
     sc = parsed if parsed is not None else scan(data, path)
     shown = _shown_lines(sc.text)
     axis_group = any(t.name == AXIS_GROUP for t in sc.tags)
+    said = _said(sc)
     out: list[Embedded] = []
     for section in sc.cdata:
         kind = EMBEDDED.get(section.parent)
@@ -104,11 +106,25 @@ def embedded_documents(data: bytes, path: str, parsed: Scan | None = None) -> tu
         doc = _placed(sc, shown, section.start, section.end, path, kind)
         if doc.origin is not None:
             doc.origin.default_list = default
-        out.append(Embedded(section.parent, kind, doc, section.start, section.end))
+        out.append(Embedded(section.parent, kind, doc, section.start, section.end, item=said.get("ItemName", ""),
+                            properties={k: v for k, v in said.items() if k in ITEM_PROPERTIES}))
     return sc, out
 
 
+def _said(sc: Scan) -> dict[str, str]:
+    """What an export says of its item: its ``<ItemName>`` and the :data:`ITEM_PROPERTIES` of
+    ``<IsgAxisDef>`` (``<DriveType>``, ``<Spindle>``, ``<FeedAxis>``), each the first one written."""
+    out: dict[str, str] = {}
+    for t in sc.tags:
+        if (t.name == "ItemName" or t.name in ITEM_PROPERTIES) and not t.empty and t.name not in out:
+            close = sc.text.find("<", t.end)
+            if close >= 0 and sc.text.startswith(f"</{t.name}", close):
+                out[t.name] = sc.text[t.end:close].strip()
+    return out
+
+
 AXIS_GROUP = "IsgAxisGroupDef"  # a TwinCAT export of the axis group: `<Default>` holds the default axis list
+ITEM_PROPERTIES = ("DriveType", "Spindle", "FeedAxis")  # what an `<IsgAxisDef>` says beside its list (as tsproj)
 
 
 def _shown_lines(text: str) -> list[str]:
@@ -135,7 +151,7 @@ def project_documents(data: bytes, path: str) -> tuple[Scan, list[Embedded]]:
         if not shown:
             shown = _shown_lines(sc.text)
         doc = _placed(sc, shown, b.start, b.end, path, b.kind)
-        out.append(Embedded(b.address, b.kind, doc, b.start, b.end, b.offset, b.item, b.name))
+        out.append(Embedded(b.address, b.kind, doc, b.start, b.end, b.offset, b.item, b.name, dict(b.properties)))
     return sc, out
 
 

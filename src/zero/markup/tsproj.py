@@ -51,7 +51,9 @@ _TOKEN = re.compile(
     re.S)
 _ATTR = re.compile(r"""([^\s=/>]+)\s*=\s*(?:"([^"]*)"|'([^']*)')""")
 _CDATA_AFTER = re.compile(r"\s*<!\[CDATA\[(.*?)\]\]>\s*</Data\s*>", re.S)
-WINDOW = 1 << 20  # how far before the first block the tree item of a block is looked for (characters)
+WINDOW = 1 << 20  # how far before the first block (and after the last) its tree item is looked at (characters)
+# What a CNC axis item says of itself beside its list (as the Automation Interface's `<IsgAxisDef>` writes it).
+ITEM_PROPERTIES = ("DriveType", "Spindle", "FeedAxis")
 _ENTITIES = {"&quot;": '"', "&apos;": "'"}
 _CHAR_REF = re.compile(r"&#(x[0-9A-Fa-f]+|[0-9]+);")
 
@@ -69,6 +71,7 @@ class Block:
     end: int
     address: str = ""  # how the block is named: `Kanal_1/SdaMds`
     kind: str | None = None
+    properties: dict[str, str] = field(default_factory=dict)  # its item's DriveType, Spindle, FeedAxis
 
 
 @record(eq=False)
@@ -113,34 +116,61 @@ def _safe_start(text: str, spans: list[tuple[int, int]], at: int) -> int:
 
 def _items(text: str, spans: list[tuple[int, int]], blocks: list[Block]) -> None:
     """Each block's tree item: the ``<Name>`` (child element, else ``Name`` attribute) of its nearest
-    ancestor that has one, from a forward pass over the stretch that holds the blocks."""
+    ancestor that has one, and that item's :data:`ITEM_PROPERTIES`, from a forward pass over the
+    stretch that holds the blocks (and up to :data:`WINDOW` past the last, for what follows a block)."""
     if not blocks:
         return
     at = _safe_start(text, spans, max(0, blocks[0].tag - WINDOW))
     stop = blocks[-1].tag
     wanted = {b.tag: b for b in blocks}
-    stack: list[list[str | None]] = []  # [element, item name]
+    stack: list[_Entry] = []
+    owners: list[tuple[Block, _Entry | None]] = []
+    open_owners = 0
     for m in _TOKEN.finditer(text, at):
-        if m.start() > stop:
+        if m.start() > stop and (open_owners <= 0 or m.start() > stop + WINDOW):
             break
         name = m.group("name")
         if name is None:
             continue
         if m.group("close"):
             if stack:
-                stack.pop()
+                gone = stack.pop()
+                open_owners -= gone.owning
             continue
         block = wanted.get(m.start())
         if block is not None:
-            block.item = next((entry[1] for entry in reversed(stack) if entry[1]), "") or ""
+            owner = next((entry for entry in reversed(stack) if entry.item), None)
+            block.item = owner.item if owner is not None else ""
+            owners.append((block, owner))
+            if owner is not None and not owner.owning:
+                owner.owning, open_owners = 1, open_owners + 1
         if m.group("empty"):
             continue
-        named = _attrs(m.group("attrs") or "").get("Name") if name != "Data" else None
-        if name == "Name" and stack:
+        if stack and (name == "Name" or name in ITEM_PROPERTIES):
             close = text.find("<", m.end())
-            if close >= 0 and text.startswith("</Name", close):
-                stack[-1][1] = _text(text[m.end():close]).strip() or stack[-1][1]
-        stack.append([name, named])
+            if close >= 0 and text.startswith(f"</{name}", close):
+                value = _text(text[m.end():close]).strip()
+                if name == "Name":
+                    stack[-1].item = value or stack[-1].item
+                elif stack[-1].item or len(stack) < 2:
+                    stack[-1].properties.setdefault(name, value)
+                else:  # `<IsgAxisDef><DriveType>`: a property of the item one level up
+                    stack[-2].properties.setdefault(name, value)
+        named = _attrs(m.group("attrs") or "").get("Name") if name != "Data" else None
+        stack.append(_Entry(name, named or ""))
+    for block, owner in owners:
+        if owner is not None:
+            block.properties = dict(owner.properties)
+
+
+@record(eq=False)
+class _Entry:
+    """An element open in the pass of :func:`_items`."""
+
+    name: str
+    item: str  # the item name its `<Name>` child (or `Name` attribute) gives
+    properties: dict[str, str] = field(default_factory=dict)
+    owning: int = 0  # 1 while it is the item of a block
 
 
 def _references(text: str) -> dict[int, list[tuple[str, int | None]]]:

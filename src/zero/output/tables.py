@@ -238,6 +238,11 @@ def render_effective(summary: dict[str, object], scopes: Sequence[Scope], stream
     for n in named:
         if n["status"] not in ("loaded", "overridden"):
             stream.write(f"#   {n['key']} {n['path']}: {n['status']}{': ' + n['reason'] if n['reason'] else ''}\n")
+    items = summary.get("twincat")
+    for key, item in (items.items() if isinstance(items, dict) else ()):  # what TwinCAT says of each list's item
+        said = ", ".join(f"{k} {v}" for k, v in item.items() if k not in ("item", "element"))
+        stream.write(f"#   {key}: TwinCAT item {item.get('item') or '?'} ({item.get('element')})"
+                     f"{': ' + said if said else ''}\n")
     for scope in scopes:
         under = f" over {scope.default_list}" if scope.default_list else ""
         stream.write(f"\n[{scope.name}: {scope.file.path}{under}]\n")
