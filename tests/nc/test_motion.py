@@ -212,3 +212,22 @@ def test_any_text_is_read_without_an_exception(text: str) -> None:
     for s in (setup, None):
         found = follow(lines, s)
         assert found.evaluated <= found.moves
+
+
+def test_the_editor_shows_the_findings_live(tmp_path: Path) -> None:
+    """The language server lints a program as `zero lint` does, against the machine of its
+    configuration, on the unsaved text: a move beyond the limit appears and goes as it is typed."""
+    from zero.server.documents import Projects
+
+    root = tmp_path / "m"
+    shutil.copytree(P / "machine", root / "machine")
+    (root / "zero.toml").write_text('[machine]\nstartup = "machine/listen/hochlauf.lis"\n')
+    path = root / "part.nc"
+    path.write_text("%part\nN10 G90 G54 X0\n")
+    projects = Projects(lambda desc: builtin_registry())
+    uri = path.resolve().as_uri()
+    a = projects.analyse(uri, 1, "%part\nN10 G90 G54 X0\nN20 G1 X510\n")
+    assert [(d.span.line, d.code) for d in a.diagnostics] == [(3, "N005")]
+    assert "610.000 mm on the axis" in a.diagnostics[0].message
+    a = projects.analyse(uri, 2, "%part\nN10 G90 G54 X0\nN20 G1 X490\n")
+    assert a.diagnostics == []
