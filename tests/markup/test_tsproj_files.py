@@ -174,3 +174,16 @@ def test_format_and_out_dir_of_a_project(tmp_path: Path, registry: Registry) -> 
 def test_an_axis_export_says_its_drive_type_spindle_and_feed_axis() -> None:
     _, lists = embedded_documents((TWINCAT / "ai" / "axis_ai.xml").read_bytes(), "a")
     assert (lists[0].item, lists[0].properties) == ("Achse_11", {"DriveType": "4", "Spindle": "0", "FeedAxis": "1"})
+
+
+def test_fix_in_a_project_changes_only_inside_the_cdata(registry: Registry) -> None:
+    from zero.engine.fixes import fix_bytes
+
+    data = PROJECT.read_bytes()
+    broken = data.replace(b"kenngr.swe_pos                                        12000000",
+                          b"kenngr. swe_pos                                       12000000", 1)
+    fixed = fix_bytes(broken, "M.tsproj", registry).fixed
+    line = 95  # the one line changed: the space inside the key removed, nothing else
+    assert fixed.split(b"\n")[line - 1] == b"kenngr.swe_pos                                       12000000"
+    assert [a for a, b in zip(fixed.split(b"\n"), data.split(b"\n"), strict=True) if a != b] == [
+        fixed.split(b"\n")[line - 1]]
