@@ -281,3 +281,125 @@ def test_a_browser_finds_things_in_the_site(served: str, tmp_path: Path) -> None
                     shutil.copy(shot, Path(keep) / shot.name)
         finally:
             browser.close()
+
+
+# ------------------------------------------------------- issue 41: pages an engineer acts on
+
+
+def test_rule_and_parameter_pages_link_both_ways() -> None:
+    """The M, X, N and U rules' pages name the parameters their text names, linked; those parameters'
+    pages list them under "Checked by" (the `swe_pos` page listed neither M001 nor X001)."""
+    m005 = generated()["rules/M005.md"]()
+    assert "| Parameters | [P-AXIS-00705](../parameters/P-AXIS-00705.md) `kenngr.swe_check` |" in m005
+    assert "`kenngr.swe_check` ([P-AXIS-00705](../parameters/P-AXIS-00705.md))" in m005  # linked in the text too
+    assert "[M005](../rules/M005.md)" in generated()["parameters/P-AXIS-00705.md"]()
+    swe_pos = generated()["parameters/P-AXIS-00178.md"]()
+    assert "[M001](../rules/M001.md)" in swe_pos and "[X001](../rules/X001.md)" in swe_pos
+    assert "[S009]" not in swe_pos  # an example that merely shows the key is no check of it
+
+
+def test_the_rule_index_shows_code_not_backticks() -> None:
+    index = generated()["rules/index.md"]()
+    assert "\\`" not in index  # the literal backticks of `#`, `Ende`, `swe_check 0`
+    assert "| Entries after the `Ende` line |" in index
+
+
+def test_sources_are_links() -> None:
+    page = generated()["rules/K093.md"]()
+    assert "Source: <https://infosys.beckhoff.com/content/1031/tf5200_diagnosis/263914891.html>" in page
+    assert "## Evidence" in generated()["rules/R004.md"]() and "<https://infosys.beckhoff.com/" in \
+        generated()["rules/R004.md"]()
+
+
+def test_each_kernel_rule_says_specifically_why_it_matters(registry: Registry) -> None:
+    """From its documented correction: what the kernel does to which parameter at start-up."""
+    from zero.rules.startup import CHECKS
+
+    def why(code: str) -> str:
+        page = generated()[f"rules/{code}.md"]()
+        return page.split("## Why it matters on the machine", 1)[1].split("\n## ", 1)[0].strip()
+
+    k093 = why("K093")
+    assert "`getriebe[].gear_fact_denom`" in k093 and "to `1`" in k093 and "P-ERR-110580" in k093
+    texts = {err.code: why(err.code) for err in CHECKS}
+    assert len(set(texts.values())) == len(texts)  # one sentence each, no generic one
+    for err in CHECKS:
+        assert err.kernel_error in texts[err.code]
+        if err.correction == "default":
+            assert "its default" in texts[err.code]
+        if err.correction == "abort":
+            assert "aborts the start-up" in texts[err.code]
+
+
+def test_example_output_wraps_instead_of_running_past_the_column() -> None:
+    page = generated()["rules/K093.md"]()
+    assert "```{ .text .zero-output }\nfail.lis:3:47: K093 error" in page
+    css = (ROOT / "docs" / "assets" / "zero.css").read_text(encoding="utf-8")
+    assert ".zero-output pre > code { white-space: pre-wrap;" in css
+
+
+def test_parameter_pages_say_where_the_vendor_documents_them_and_german_terms(registry: Registry) -> None:
+    swe_pos = generated()["parameters/P-AXIS-00178.md"]()
+    assert "## Vendor documentation" in swe_pos
+    assert "<https://infosys.beckhoff.com/content/1033/tf5200_axis_parameter/117162635.html>" in swe_pos
+    assert "start-up error P-ERR-110110: <https://infosys.beckhoff.com/" in swe_pos
+    assert "Search terms (German): Softwareendschalter, Endschalter" in swe_pos
+    versch = generated()["parameters/P-ZERO-00003.md"]()
+    assert "Nullpunktverschiebung" in versch
+    assert docs.german_terms(registry.specs["P-AXIS-00152"])[:1] == ["Referenzpunkt"]  # getriebe[].pos_refpkt
+
+
+def test_search_is_configured_for_english_and_german() -> None:
+    text = (ROOT / "mkdocs.yml").read_text(encoding="utf-8")
+    assert "lang: [en, de]" in text and "assets/filter.js" in text
+
+
+@pytest.mark.slow
+def test_the_built_site_finds_german_words_and_filters_tables(site: Path, served: str, tmp_path: Path) -> None:
+    import json
+
+    index = json.loads((site / "search" / "search_index.json").read_text(encoding="utf-8"))
+    assert index["config"]["lang"] == ["en", "de"]
+    reason = _browser_missing()
+    if reason:
+        pytest.skip(reason)
+    from playwright.sync_api import sync_playwright
+
+    with sync_playwright() as p:
+        browser = p.chromium.launch(executable_path=str(CHROMIUM), args=[
+            "--headless", "--no-sandbox", "--disable-gpu", "--disable-background-networking",
+            "--disable-component-update", "--no-first-run"])
+        try:
+            page = browser.new_page(viewport={"width": 1366, "height": 900})
+            errors: list[str] = []
+            page.on("pageerror", lambda exc: errors.append(str(exc)))
+            links = _search(page, served, "Endschalter")
+            assert any("parameters/P-AXIS-00178/" in link or "parameters/P-AXIS-00177/" in link
+                       for link in links), links
+            links = _search(page, served, "Nullpunktverschiebung")
+            assert any("parameters/P-ZERO-" in link for link in links), links
+
+            page.goto(served + "parameters/AXIS/")
+            box = page.locator("input.zero-filter").first
+            total = page.locator("table tbody tr").count()
+            box.fill("swe_pos")
+            shown = page.locator("table tbody tr:visible")
+            assert 0 < shown.count() < total and "P-AXIS-00178" in " ".join(shown.all_inner_texts())
+            lines = page.eval_on_selector_all("table tbody tr:visible td:first-child a", """as => as.map(a => {
+                const r = document.createRange(); r.selectNodeContents(a); return r.getClientRects().length; })""")
+            assert lines and set(lines) == {1}  # an ID on one line
+            page.screenshot(path=str(tmp_path / "params-filtered.png"))
+
+            page.goto(served + "rules/K093/")
+            out = page.locator(".zero-output pre").first
+            assert out.evaluate("e => e.scrollWidth <= e.clientWidth + 1")  # not cut at the column edge
+            assert page.locator("a[href='../../parameters/P-AXIS-00512/']").count() >= 1
+            page.screenshot(path=str(tmp_path / "rule-K093.png"), full_page=True)
+            assert not errors, errors
+            keep = os.environ.get("ZERO_DOCS_SCREENSHOTS")
+            if keep:
+                Path(keep).mkdir(parents=True, exist_ok=True)
+                for shot in ("params-filtered.png", "rule-K093.png"):
+                    shutil.copy(tmp_path / shot, Path(keep) / shot)
+        finally:
+            browser.close()

@@ -18,6 +18,7 @@ if TYPE_CHECKING:
     from zero.engine.lint import LintResult
     from zero.lists.model import Document
     from zero.machine.model import Machine
+    from zero.rules.startup import StartupError
 
 
 def rule_text(code: str) -> str:
@@ -114,6 +115,27 @@ def md_text(text: str) -> str:
     return " ".join(out.split())
 
 
+def md_inline(text: str) -> str:
+    """Text whose `code` spans stay code (a rule's summary): the rest made safe as :func:`md_text`."""
+    parts = text.split("`")
+    if len(parts) % 2 == 0:  # an unpaired backtick: all plain text
+        return md_text(text)
+    def plain(p: str) -> str:  # the spaces around a code span kept
+        return (" " if p[:1].isspace() else "") + md_text(p) + (" " if p[-1:].isspace() else "") if p.strip() \
+            else (" " if p else "")
+
+    return "".join(md_code(p) if i % 2 else plain(p) for i, p in enumerate(parts)).strip()
+
+
+_URL = re.compile(r"(?<![<(\[`])\bhttps?://[^\s<>()`\]]+[^\s<>()`\].,;:]")
+
+
+def autolink(markdown: str) -> str:
+    """Each address outside a code span as a link (``<https://…>``)."""
+    parts = markdown.split("`")
+    return "`".join(_URL.sub(lambda m: f"<{m.group()}>", p) if i % 2 == 0 else p for i, p in enumerate(parts))
+
+
 def md_code(text: str) -> str:
     """Text as an inline code span (a table cell's ``|`` escaped)."""
     fence = "``" if "`" in text else "`"
@@ -121,17 +143,22 @@ def md_code(text: str) -> str:
     return f"{fence}{pad}{text}{pad}{fence}".replace("|", "\\|")
 
 
-def explanation_markdown(explanation: str) -> str:
-    """A rule's explanation with its fixed headings (what it checks, why, example, fix) as headings."""
+def explanation_markdown(explanation: str, why: str | None = None) -> str:
+    """A rule's explanation with its fixed headings (what it checks, why, example, fix) as headings,
+    addresses as links; ``why``: the text under "Why it matters on the machine" instead of its own."""
     out: list[str] = []
+    skipping = False
     for line in textwrap.dedent(explanation).strip().split("\n"):
         m = _SECTION.match(line)
         if m:
             out += ["", f"## {m.group(1)}", ""]
-            if m.group(2):
-                out.append(m.group(2)[:1].upper() + m.group(2)[1:])
-        else:
-            out.append(line)
+            skipping = why is not None and m.group(1) == "Why it matters on the machine"
+            if skipping:
+                out.append(why or "")
+            elif m.group(2):
+                out.append(autolink(m.group(2)[:1].upper() + m.group(2)[1:]))
+        elif not skipping:
+            out.append(autolink(line))
     return "\n".join(out).strip() + "\n"
 
 
@@ -337,7 +364,7 @@ def example_markdown(example: Example, code: str) -> str:
            f'{fence}{_language(example.name)} title="{Path(example.name).name}"{marks}', example.text, fence, ""]
     if example.report:
         fence = _fence(example.report)
-        out += ["What `zero lint` reports:", "", f"{fence}text", example.report, fence, ""]
+        out += ["What `zero lint` reports:", "", f"{fence}{{ .text .zero-output }}", example.report, fence, ""]
     else:
         out += [f"`zero lint` reports no {code} here.", ""]
     return "\n".join(out)
@@ -375,14 +402,24 @@ def rule_page(code: str, root: Path, registry: Registry) -> str:
         rows.append(("Opt-in", f"runs only when selected by its full code: `--extend-select {code}`"))
     kernel = {c.code: c for c in CHECKS}.get(code)
     params: list[str] = []
+    why: str | None = None
     if kernel is not None:
         rows.append(("Kernel error", f"`{kernel.kernel_error}` (list: {md_text(kernel.kind)})"))
         params = list(dict.fromkeys([*kernel.params, *compiled(kernel).read]))
-        links = [f"[{p}](../{param_page_path(p)})" if p in registry.specs else f"`{p}`" for p in params]
+        why = kernel_consequence(kernel, registry)
+    if code[0] in NAMING_FAMILIES:
+        params = list(dict.fromkeys([*params, *named_params(code, registry)]))
+    if params:
+        links = [f"[{p}](../{param_page_path(p)})" + (f" {md_code(registry.specs[p].key or '')}"
+                                                        if registry.specs[p].key else "")
+                 if p in registry.specs else f"`{p}`" for p in params]
         rows.append(("Parameters", ", ".join(links)))
-    out = [f"# {code} {r.name}", "", md_text(r.summary), ""]
+    out = [f"# {code} {r.name}", "", md_inline(r.summary), ""]
     out += [f"| {k} | {v} |" for k, v in rows[:1]] + ["| --- | --- |"] + [f"| {k} | {v} |" for k, v in rows[1:]]
-    out += ["", explanation_markdown(r.explanation)]
+    out += ["", _linked_outside_code(explanation_markdown(r.explanation, why), registry)]
+    evidence = evidence_markdown(code)
+    if evidence:
+        out += ["## Evidence", "", evidence]
     ex = rule_examples(code, root, registry)
     out += ["## Examples", ""]
     if ex.note:
@@ -396,6 +433,88 @@ def rule_page(code: str, root: Path, registry: Registry) -> str:
     out += ["## Turning it off", "",
             f"`zero lint --ignore {code}`, `ignore = [\"{code}\"]` in `[tool.zero]`, or `# zero: ignore[{code}]` "
             "on the line. `zero rule " + code + "` prints this explanation in the terminal.", ""]
+    return "\n".join(out)
+
+
+def kernel_consequence(err: StartupError, registry: Registry) -> str:
+    """Why a K rule matters on the machine, from its documented correction (``startup_errors.toml``):
+    what the kernel does to which parameter at start-up, and what the machine then runs with."""
+    def name(pid: str) -> str:
+        spec = registry.specs.get(pid)
+        return f"`{spec.key}` ({pid})" if spec is not None and spec.key else pid
+
+    reported = name(err.params[0]) if err.params else "the list"
+    head = f"When the controller starts with such a list it reports error {err.kernel_error} ({err.title})"
+    c = err.correction.strip()
+    if c == "abort":
+        return f"{head} and aborts the start-up: the controller does not come up until the list is corrected."
+    if c == "none":
+        return (f"{head} as a warning and changes no value: the machine runs with {reported} as written, "
+                "and the message comes back at every start.")
+    if c == "default":
+        spec = registry.specs.get(err.params[0]) if err.params else None
+        dflt = f" (`{spec.default_display}`)" if spec is not None else ""
+        return (f"{head} and replaces {reported} with its default{dflt}: the machine runs with the default, "
+                "not with the value the list writes, and nothing in the list shows it.")
+    target, eq, value = c.partition("=")
+    if eq and target.strip().startswith("P-"):
+        value = value.strip()
+        said = f"the value of {name(value)}" if value.startswith("P-") else f"`{value}`"
+        return (f"{head} and sets {name(target.strip())} to {said}: the machine runs with that value, not "
+                "with the one the list writes, and nothing in the list shows it.")
+    return (f"{head}. The documentation does not say what the kernel then uses for {reported}: "
+            "what the machine runs with is not known from the list.")
+
+
+NAMING_FAMILIES = "MXNU"  # rules about particular parameters, which their text names (R, S, F: examples only)
+
+
+def named_params(code: str, registry: Registry) -> list[str]:
+    """The parameters a rule's summary and explanation name: by ID (``P-AXIS-00705``) or by a key in
+    backticks that the catalogue knows (``kenngr.swe_check``)."""
+    from zero.lists.model import parse_key  # start-up: only the documentation site
+
+    r = RULES[code]
+    text = f"{r.summary}\n{r.explanation}"
+    found = [m.group() for m in _ID.finditer(text) if m.group() in registry.specs]
+    for span in re.findall(r"`([^`\n]+)`", text):
+        word = span.split()[0] if span.split() else ""
+        if "." not in word and "[" not in word:
+            continue  # a bare word (`0`, `ERROR`) names no parameter
+        key = parse_key(word)
+        spec = registry.by_pattern(key.pattern, None) if key is not None else None
+        if spec is not None:
+            found.append(spec.id)
+    return list(dict.fromkeys(found))
+
+
+def evidence_markdown(code: str) -> str:
+    """What the controller does on a rule's finding and the document that says so (``evidence.toml``),
+    each address a link."""
+    from zero.catalog.evidence import claims, rule_claims  # start-up: only the documentation site
+
+    name = rule_claims().get(code)
+    rows = [c for c in claims() if c.name == name] if name else []
+    lines = []
+    for c in rows:
+        kinds = f" ({', '.join(c.kinds)} lists)" if c.kinds else ""
+        source = autolink(md_text(c.source)).replace("\\_", "_") if "http" in c.source else md_text(c.source)
+        lines.append(f"- **{md_text(c.consequence)}**{kinds}: {md_text(c.says)}. Source: {source}")
+    return "\n".join(lines) + "\n" if lines else ""
+
+
+def _linked_outside_code(markdown: str, registry: Registry) -> str:
+    """Each parameter ID outside code spans and fences linked to its page."""
+    out = []
+    fenced = False
+    for line in markdown.split("\n"):
+        if line.startswith("```"):
+            fenced = not fenced
+        if fenced or line.startswith("```"):
+            out.append(line)
+            continue
+        parts = line.split("`")
+        out.append("`".join(_linked(p, registry) if i % 2 == 0 else p for i, p in enumerate(parts)))
     return "\n".join(out)
 
 
@@ -413,7 +532,7 @@ def rules_index_page() -> str:
                 "| --- | --- | --- | --- |"]
         for c in codes:
             r = RULES[c]
-            out.append(f"| [{c}]({c}.md) | `{r.name}` | {r.severity.label} | {md_text(r.summary)} |")
+            out.append(f"| [{c}]({c}.md) | `{r.name}` | {r.severity.label} | {md_inline(r.summary)} |")
         out.append("")
     return "\n".join(out)
 
@@ -474,6 +593,12 @@ def param_checks(registry: Registry) -> dict[str, list[Checked]]:
     for err in CHECKS:
         for pid in dict.fromkeys([*err.params, *compiled(err).read]):
             add(pid, err.code, f"the kernel's start-up check {err.kernel_error}: {err.title}")
+    for code in RULES:  # the M, X, N and U rules: the parameters their text names
+        if code[0] not in NAMING_FAMILIES:
+            continue  # R and K: said above, from the tables; S, F, …: their examples name keys they do not read
+        for pid in named_params(code, registry):
+            if not any(c.code == code for c in out.get(pid, [])):
+                add(pid, code, md_inline(RULES[code].summary))
     order = {code: n for n, code in enumerate(RULES)}
     for checks in out.values():
         checks.sort(key=lambda c: (order[c.code], c.how))
@@ -489,8 +614,82 @@ def _linked(text: str, registry: Registry) -> str:
                    else m.group(), text)
 
 
+# The vendor's overview of each list kind's parameters (TF5200, Beckhoff Information System), where
+# zero knows its address; every parameter has a page there titled with its ID.
+VENDOR_OVERVIEW = {
+    "AXIS": "https://infosys.beckhoff.com/content/1033/tf5200_axis_parameter/117162635.html",
+    "CHAN": "https://infosys.beckhoff.com/content/1033/tf5200_channel_parameter/147959819.html",
+}
+
+# German words for the German abbreviations in the vendor's keys (``swe`` is the Software-Endschalter,
+# ``nullp`` the Nullpunkt), so that a search in German finds the parameter: zero's own glossary of
+# the keys, no text of the catalogue.
+GERMAN: tuple[tuple[str, str], ...] = (
+    (r"(^|[._])swe(_|$)|sw_limit|soft_limit", "Softwareendschalter Endschalter SWE"),
+    (r"nullp|np_grp|versch\b", "Nullpunktverschiebung Nullpunkt Verschiebung"),
+    (r"refpkt|homing|referenz", "Referenzpunkt Referenzpunktfahrt Referenzieren"),
+    (r"getriebe", "Getriebe Getriebestufe"),
+    (r"handbetrieb", "Handbetrieb"),
+    (r"(^|[._])(werkz|wz)([._\[]|$)", "Werkzeug Werkzeugdaten"),
+    (r"(^|[._])achs|achse", "Achse"),
+    (r"kenngr", "Kenngrößen Achskenngrößen"),
+    (r"(^|[._])antr([._]|$)", "Antrieb"),
+    (r"geschw|(^|[._])vb_|v_max|_vel", "Geschwindigkeit Vorschub"),
+    (r"beschl|(^|[._])a_(max|grenz|stufe|emergency)", "Beschleunigung"),
+    (r"brems", "Bremsen Verzögerung"),
+    (r"toleranz", "Toleranz"),
+    (r"tipp", "Tippbetrieb"),
+    (r"spindel", "Spindel"),
+    (r"kanal|sda_mds", "Kanal Kanalparameter"),
+    (r"vorsteuer", "Vorsteuerung"),
+    (r"schlepp", "Schleppfehler"),
+    (r"mod_rechng|modulo", "Modulo Rundachse"),
+    (r"(^|[._])lr_", "Lageregler"),
+    (r"hochlauf", "Hochlauf"),
+    (r"bezeichnung", "Bezeichnung Name"),
+    (r"offsetgrenze", "Offsetgrenze Handbetrieb"),
+    (r"(^|[._])kw([._\[]|$)|kompens", "Kompensation Achskompensation"),
+    (r"zyklus|cycle", "Zyklus Zykluszeit"),
+)
+_GERMAN = tuple((re.compile(pattern), words) for pattern, words in GERMAN)
+
+
+def german_terms(spec: ParamSpec) -> list[str]:
+    """German search terms for a parameter, from the German words in its key."""
+    key = (spec.key or "").lower()
+    words: list[str] = []
+    for pattern, said in _GERMAN:
+        if pattern.search(key):
+            words += said.split()
+    return list(dict.fromkeys(words))
+
+
+def _vendor_docs(spec: ParamSpec) -> list[str]:
+    """Where the vendor documents a parameter: its page in the TF5200 documentation (titled with its
+    ID), the kind's overview where zero knows its address, and every vendor page zero's tables cite
+    for it."""
+    from zero.catalog.data.drive_types import DRIVE_TYPES  # start-up: only the documentation site
+    from zero.catalog.data.startup_errors import ERRORS  # start-up: as above
+
+    name = KINDS.get(spec.kind, (spec.kind, spec.kind))[1]
+    overview = VENDOR_OVERVIEW.get(spec.kind)
+    first = (f"The vendor documents the parameters of the {md_text(name)} in its TF5200 documentation (Beckhoff "
+             f"Information System), a page per parameter whose title ends with its ID (`{spec.id}`)")
+    out = [first + (f"; the overview of all of them: <{overview}>." if overview else "."), ""]
+    cited = [(str(row["source"]), f"start-up error P-ERR-{row['number']}") for row in ERRORS
+             if spec.id in (row.get("params") or ()) and str(row.get("source", "")).startswith("http")]
+    cited += [(str(row["source"]), "the drive types it applies to") for row in DRIVE_TYPES
+              if row.get("param") == spec.id and str(row.get("source", "")).startswith("http")]
+    for url, what in dict.fromkeys(cited):
+        out.append(f"- {md_text(what)}: <{url}>")
+    if spec.source and spec.source != "CncParaDesc.xml":
+        out.append(f"- zero's description: {md_text(spec.source)}")
+    return out
+
+
 def param_page(spec: ParamSpec, registry: Registry, checks: Sequence[Checked]) -> str:
-    """A parameter's page: its facts (as ``zero param`` shows them) and the rules that check it."""
+    """A parameter's page: its facts (as ``zero param`` shows them), the rules that check it, where
+    the vendor documents it, and German search terms."""
     title = f"{spec.id} {spec.key}" if spec.key else spec.id
     out = [f"# {md_text(title)}", ""]
     if spec.description:
@@ -512,6 +711,10 @@ def param_page(spec: ParamSpec, registry: Registry, checks: Sequence[Checked]) -
         out += [f"- [{c.code}](../{rule_page_path(c.code)}) `{RULES[c.code].name}`: {c.how}" for c in checks]
     else:
         out.append("No rule zero knows of checks this parameter by its ID.")
+    out += ["", "## Vendor documentation", "", *_vendor_docs(spec)]
+    german = german_terms(spec)
+    if german:
+        out += ["", f"Search terms (German): {md_text(', '.join(german))}"]
     out += ["", f"`zero param {spec.key or spec.id}` prints these facts in the terminal.", ""]
     return "\n".join(out)
 
