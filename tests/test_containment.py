@@ -442,3 +442,125 @@ def test_a_repository_git_refuses_is_said_not_silently_unignored(tmp_path: Path)
     run = zero_cli("lint", str(repo), "--output-format", "concise", env=_git_env(tmp_path))
     assert ".gitignore not applied: git refuses this repository" in run.stderr, run
     assert "safe.directory" in run.stderr
+
+
+# ------------------------------------------------- containment (issue 43): every path resolved once
+
+SECRET = "SECRET_X"
+
+
+def _secret_axis(folder: Path) -> tuple[Path, Path]:
+    """An axis list and a TwinCAT axis export outside the project, whose axis name is the secret."""
+    folder.mkdir(parents=True, exist_ok=True)
+    xml = folder / "axis_x.xml"
+    xml.write_text((FIXTURES / "twincat" / "axis_x.xml").read_text().replace("X_Achse", SECRET))
+    lis = folder / "achse.lis"
+    lis.write_text(f"kopf.achs_nr 1\nkopf.log_achs_name {SECRET}\nkenngr.achs_typ 1\nEnde\n")
+    return lis, xml
+
+
+def _machine_with_a_link_out(tmp_path: Path, form: str) -> tuple[Path, Path]:
+    """(the folder to run in, the start-up list) of a machine whose folder holds a symbolic link to a
+    file outside the project, named in ``form``."""
+    lis, xml = _secret_axis(tmp_path / "outside")
+    project = tmp_path / "project"
+    (project / ".git").mkdir(parents=True)
+    m = project / "m"
+    m.mkdir()
+    (m / "kanal.lis").write_text("gruppe[0].achs_anzahl 0\nEnde\n")
+    lines = ["kanal_anzahl 1", "zahl_mds 1", "sda_mds[0] ./kanal.lis"]
+    if form == "twincat-export-beside":
+        shutil.copy(FIXTURES / "twincat" / "cnc_task.xml", m / "startup.xml")
+        (m / "axis.xml").symlink_to(xml)
+        return project, m / "startup.xml"
+    if form in ("element", "override-element"):
+        (m / "ax.xml").symlink_to(xml)
+        ref = "./ax.xml#AchsMds"
+    elif form == "element-through-folder":
+        (m / "d").symlink_to(xml.parent, target_is_directory=True)
+        ref = "./d/axis_x.xml#AchsMds"
+    else:
+        (m / "ax.lis").symlink_to(lis)
+        ref = "./ax.lis"
+    if form.startswith("override"):
+        (project / "pyproject.toml").write_text(f'[tool.zero.machine]\nstartup = "m/hochlauf.lis"\n'
+                                                f'"achs_mds[0]" = "m/{ref[2:]}"\n')
+        lines.append("achs_mds[0] ./kanal.lis")
+    else:
+        lines.append(f"achs_mds[0] {ref}")
+    startup = m / "hochlauf.lis"
+    startup.write_text("\n".join(lines) + "\nEnde\n")
+    return project, startup
+
+
+MACHINE_COMMANDS = [("lint", "--machine", "{s}", "--output-format", "json"),
+                    ("show", "--machine", "{s}", "--effective"),
+                    ("show", "--machine", "{s}", "--output-format", "json"),
+                    ("explain", "kopf.log_achs_name", "--machine", "{s}"), ("limits", "--machine", "{s}"),
+                    ("report", "--machine", "{s}")]
+
+
+@pytest.mark.parametrize("form", ["plain", "element", "element-through-folder", "override-plain", "override-element",
+                                  "twincat-export-beside"])
+def test_a_link_in_the_machine_folder_never_leads_out_in_any_form(tmp_path: Path, form: str) -> None:
+    """README: "every path is resolved once, links followed, in every form". Issue 43: a symbolic link in
+    the machine's folder to a file outside the project was followed when the reference carried an
+    `#Element` suffix (also as a `[tool.zero.machine]` override), and a linked `*.xml` beside a TwinCAT
+    start-up export was read: zero printed the outside file. Every command, every form: never."""
+    project, startup = _machine_with_a_link_out(tmp_path, form)
+    for command in MACHINE_COMMANDS:
+        run = zero_cli(*(a.format(s=str(startup)) for a in command), cwd=project)
+        assert SECRET not in run.stdout + run.stderr, (form, command, (run.stdout + run.stderr)[:800])
+
+
+@pytest.mark.parametrize("reference", ["./.bashrc", "./d/.bashrc", "../../../.bashrc", "../.bashrc"])
+def test_without_a_project_marker_zero_never_climbs_above_the_start_up_lists_folder(tmp_path: Path,
+                                                                                   reference: str) -> None:
+    """Issue 43: with no project marker above, the working-directory search climbed up to 4 folders
+    and `zero show --machine h/d/x/l/h.lis` printed `h/.bashrc`. Now an ancestor is the working directory
+    only along the vendor's layout (`./listen/…` named from inside `listen/`)."""
+    home = tmp_path / "h"
+    (home / "d" / "x" / "l").mkdir(parents=True)
+    for where in (home, home / "d", home / "d" / "x"):
+        (where / ".bashrc").write_text(f"kopf.achs_nr 1\nkopf.log_achs_name {SECRET}\nEnde\n")
+    startup = home / "d" / "x" / "l" / "h.lis"
+    startup.write_text(f"kanal_anzahl 1\nzahl_mds 1\nachs_mds[0] {reference}\nEnde\n")
+    for command in MACHINE_COMMANDS:
+        run = zero_cli(*(a.format(s="h/d/x/l/h.lis") for a in command), cwd=tmp_path)
+        assert SECRET not in run.stdout + run.stderr, (command, (run.stdout + run.stderr)[:800])
+
+
+def test_the_vendors_layout_still_climbs_into_listen(tmp_path: Path) -> None:
+    """The vendor's start-up lists name `./listen/…` from inside `listen/` (and `listen/SoE/`): that
+    climb stays, without a project marker."""
+    import json
+
+    listen = tmp_path / "machine" / "listen"
+    (listen / "SoE").mkdir(parents=True)
+    (listen / "kanal.lis").write_text("gruppe[0].achs_anzahl 0\nEnde\n")
+    (listen / "SoE" / "achse.lis").write_text("kopf.achs_nr 1\nkopf.log_achs_name X\nEnde\n")
+    (listen / "SoE" / "hochlauf.lis").write_text("kanal_anzahl 1\nzahl_mds 1\nsda_mds[0] ./listen/kanal.lis\n"
+                                                 "achs_mds[0] ./listen/SoE/achse.lis\nEnde\n")
+    shown = json.loads(zero_cli("show", "--machine", "listen/SoE/hochlauf.lis", "--output-format", "json",
+                                cwd=tmp_path / "machine").stdout)
+    assert {e["key"]: e["status"] for e in shown["lists"]} == {"sda_mds[0]": "loaded", "achs_mds[0]": "loaded"}
+
+
+def test_a_fleet_folder_walk_never_follows_a_link_out(tmp_path: Path) -> None:
+    """Issue 43: `zero diff --fleet GOLDEN FOLDER` walked `/` through a symbolic link in the folder.
+    The walk stays in the folder: links to folders are not followed, a start-up list linking out is
+    not taken."""
+    golden = tmp_path / "golden"
+    shutil.copytree(FIXTURES / "machine-clean" / "listen", golden)
+    for f in golden.iterdir():
+        f.write_text(f.read_text().replace("./listen/", "./"))
+    fleet = tmp_path / "fleet"
+    shutil.copytree(golden, fleet / "m1")
+    (fleet / "root").symlink_to("/", target_is_directory=True)
+    (fleet / "out").symlink_to(tmp_path / "elsewhere", target_is_directory=True)
+    shutil.copytree(golden, tmp_path / "elsewhere" / "m9")
+    (fleet / "m2").mkdir()
+    (fleet / "m2" / "hochlauf.lis").symlink_to(golden / "hochlauf.lis")
+    run = zero_cli("diff", "--fleet", str(golden / "hochlauf.lis"), str(fleet), timeout=60)
+    assert run.seconds < 30, run
+    assert "1 machine compared" in run.stdout + run.stderr, run

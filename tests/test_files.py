@@ -452,7 +452,8 @@ def _dead_pid() -> str:
 
 # Every command that reads a list (each may complete a journal), and every one that writes it.
 _READERS = [["lint", "{d}"], ["lint", "{f}"], ["show", "{f}"], ["format", "--check", "{f}"], ["diff", "{f}", "{f}"],
-            ["convert", "{f}", "--to", "yaml"], ["lint", "--machine", "{f}"], ["format", "{f}"], ["lint", "--fix", "{f}"]]
+            ["convert", "{f}", "--to", "yaml"], ["lint", "--machine", "{f}"], ["format", "{f}"],
+            ["lint", "--fix", "{f}"]]
 
 
 @pytest.mark.skipif(not hasattr(os, "chown") or os.geteuid() != 0, reason="needs root to give a file another owner")
@@ -653,12 +654,66 @@ def test_a_report_never_replaces_a_list_or_a_configuration(tmp_path: Path, how: 
     assert {p.name: p.read_bytes() for p in tmp_path.iterdir() if p.name in before} == before
 
 
+_REPORTERS = {"lint": ["lint", "good.lis", "--output-format", "json", "-o", "{t}"],
+              "report": ["report", "--machine", "m/hochlauf.lis", "-o", "{t}", "--force"],
+              "schema": ["schema", "-o", "{t}", "--force"]}
+
+
+@pytest.mark.parametrize("command", sorted(_REPORTERS))
+@pytest.mark.parametrize("target", ["m/hochlauf.lis", "header", "form.json", "form.yaml", "pyproject.toml",
+                                    "link.json", "comments"])
+def test_no_output_ever_replaces_a_list_a_form_or_a_configuration(tmp_path: Path, command: str, target: str) -> None:
+    """README: "A report (`lint -o`, `report -o`, `schema -o`) never replaces a list". Issue 43: `-o` replaced
+    a suffix-less list that starts with a 9 KB comment header (the sniff read 8 KB), and `zero report -o
+    m/hochlauf.lis --force` replaced the machine's own start-up list with HTML. Every command that writes a
+    report, every kind of target, with --force: refused, the file unchanged."""
+    shutil.copytree(FIXTURES / "machine-clean" / "listen", tmp_path / "m")
+    for f in (tmp_path / "m").iterdir():
+        f.write_text(f.read_text().replace("./listen/", "./"))
+    (tmp_path / "good.lis").write_text("np_grp[1].achse[0].versch 5\nEnde\n")
+    (tmp_path / "header").write_text("".join(f"# {i:4d} a comment header of a list, as long as it likes\n"
+                                             for i in range(200)) + "np_grp[1].achse[0].versch 5\nEnde\n")
+    assert (tmp_path / "header").stat().st_size > 9000
+    (tmp_path / "comments").write_text("# nothing but comments\n" * 600)
+    zero_cli("convert", "good.lis", "--to", "json", "-o", "form.json", cwd=tmp_path)
+    zero_cli("convert", "good.lis", "--to", "yaml", "-o", "form.yaml", cwd=tmp_path)
+    (tmp_path / "pyproject.toml").write_text('[project]\nname = "x"\n')
+    (tmp_path / "link.json").symlink_to(tmp_path / "m" / "hochlauf.lis")
+    before = {p: p.read_bytes() for p in tmp_path.rglob("*") if p.is_file()}
+    run = zero_cli(*(a.format(t=target) for a in _REPORTERS[command]), cwd=tmp_path)
+    assert run.code == 2 and "not replaced" in run.stderr, run
+    assert {p: p.read_bytes() for p in before} == before
+
+
+@pytest.mark.parametrize("target", ["pyproject.toml", "zero.toml", "link.toml"])
+def test_a_conversion_never_replaces_a_configuration(tmp_path: Path, target: str) -> None:
+    (tmp_path / "good.lis").write_text("np_grp[1].achse[0].versch 5\nEnde\n")
+    (tmp_path / "pyproject.toml").write_text('[project]\nname = "x"\n')
+    (tmp_path / "zero.toml").write_text("select = []\n")
+    (tmp_path / "link.toml").symlink_to(tmp_path / "pyproject.toml")
+    before = {p.name: p.read_bytes() for p in tmp_path.iterdir()}
+    run = zero_cli("convert", "good.lis", "--to", "toml", "-o", target, "--force", cwd=tmp_path)
+    assert run.code == 2 and "configuration file" in run.stderr, run
+    assert {p.name: p.read_bytes() for p in tmp_path.iterdir()} == before
+
+
+def test_reports_replace_previous_reports_of_every_command(tmp_path: Path) -> None:
+    shutil.copytree(FIXTURES / "machine-clean" / "listen", tmp_path / "m")
+    for f in (tmp_path / "m").iterdir():
+        f.write_text(f.read_text().replace("./listen/", "./"))
+    for args in (["report", "--machine", "m/hochlauf.lis", "-o", "r.html"], ["schema", "-o", "s.json"]):
+        assert zero_cli(*args, cwd=tmp_path).code == 0
+        again = zero_cli(*args, cwd=tmp_path)
+        assert again.code == 2 and "already exists" in again.stderr, again
+        assert zero_cli(*args, "--force", cwd=tmp_path).code == 0
+
+
 def test_a_report_replaces_the_previous_report(tmp_path: Path) -> None:
-    (tmp_path / "a.lis").write_text("np_grp[1].achse[0].versch x\nEnde\n")
+    (tmp_path / "a.lis").write_text("np_grp[1].achse[0]. versch 5\nEnde\n")  # S004 (with --strict: exit 1)
     for fmt, name in (("json", "r.json"), ("sarif", "r.sarif"), ("junit", "r.xml"), ("text", "r.txt"),
                       ("concise", "r.txt"), ("github", "r.txt"), ("gitlab", "r.json")):
         for _ in range(2):  # the second run replaces the first report
-            run = zero_cli("lint", "a.lis", "--output-format", fmt, "-o", name, cwd=tmp_path)
+            run = zero_cli("lint", "a.lis", "--strict", "--output-format", fmt, "-o", name, cwd=tmp_path)
             assert run.code == 1, (fmt, run)
         assert (tmp_path / name).stat().st_size > 0
 

@@ -42,7 +42,7 @@ from pathlib import Path
 from typing import BinaryIO
 
 from zero.errors import ZeroError
-from zero.forms import CONFIG_NAMES, NOT_A_REPORT, xml_form
+from zero.forms import CONFIG_NAMES, NOT_A_REPORT, split_part, xml_form
 
 MAX_FILE_BYTES = 256 * 1024 * 1024
 # What no parameter list (nor its YAML/TOML/JSON form) comes near: the largest zero is measured on,
@@ -200,11 +200,20 @@ def check_shape(data: bytes, where: str) -> None:
             pos = cut + 1
 
 
+def resolve(path: str | Path) -> str:
+    """The one resolution of a path zero reads: the file it names, every symbolic link followed
+    (of the file and of each folder on the way), ``..`` taken after the links as the operating
+    system does, and a list element's suffix (``export.xml#AchsMds``) taken off first, so that the
+    file the suffix sits on is resolved too."""
+    return os.path.realpath(split_part(path)[0])
+
+
 def within(path: str | Path, root: str | Path) -> bool:
-    """Is ``path`` (links followed) ``root`` or below it? The one containment test: a start-up list
-    or a configuration cannot make zero read, and print, any other file (``/proc/self/environ``,
-    ``../../etc/passwd``)."""
-    real, top = os.path.realpath(path), os.path.realpath(root)
+    """Is ``path`` (:func:`resolve`d: links followed, in every form, ``#Element`` suffix included)
+    ``root`` or below it? The one containment test: a start-up list or a configuration cannot make
+    zero read, and print, any other file (``/proc/self/environ``, ``../../etc/passwd``, a link in the
+    machine's folder to a file elsewhere)."""
+    real, top = resolve(path), os.path.realpath(root)
     return real == top or real.startswith(top.rstrip(os.sep) + os.sep)
 
 
@@ -628,33 +637,80 @@ def write_atomic(path: Path, data: bytes, force: bool = False, inputs: tuple[Pat
 _LIST_LINE = re.compile(rb"[A-Za-z_][A-Za-z0-9_]*(?:\[[0-9]+\])*(?:\.[A-Za-z0-9_]+(?:\[[0-9]+\])*)*[ \t]+[^ \t\r\n]")
 
 
+_COMMENT_STARTS = (b"#", b"(", b"/*", b";")
+
+
 def _looks_like_a_list(path: Path) -> bool:
-    """Does a file read like a parameter list (an entry `key value` among its first lines)? A report
-    never does: its lines start with a path and a colon, `::`, `[`, `{` or `<`."""
+    """Does a file read like a parameter list, or a list's JSON form? A list: an entry `key value`
+    (or `Ende`) among its first 20 lines that are not comments, however long a comment header comes
+    first (a 9 KB header hid the entries from a sniff of 8 KB), or nothing but comments; an XML list
+    or TwinCAT export. A JSON form: a JSON object that is neither a SARIF report (``runs``) nor a
+    JSON Schema (``zero schema``). A report never reads so: its lines start with a path and a colon,
+    `::`, `[`, `{` or `<`."""
     try:
-        with open(path, "rb") as f:
-            head = f.read(8192)
+        fd = os.open(path, os.O_RDONLY | getattr(os, "O_NONBLOCK", 0) | _O_BINARY)
     except OSError:
         return False
-    if xml_form(head):  # a kernel XML list or a TwinCAT export
-        return True
-    seen = 0
-    for line in head.splitlines():
-        text = line.strip()
-        if not text or text.startswith((b"#", b"(", b"/*", b";")):
-            continue
-        if _LIST_LINE.match(text) or text == b"Ende":
+    try:
+        st = os.fstat(fd)
+        if not stat.S_ISREG(st.st_mode):
+            return False
+        f = io.FileIO(fd, closefd=False)
+        head = f.read(65536) or b""
+        if xml_form(head):  # a kernel XML list or a TwinCAT export
             return True
-        seen += 1
-        if seen >= 20:
-            break
-    return False
+        if head.lstrip(b"\xef\xbb\xbf \t\r\n").startswith(b"<"):  # other markup: an HTML, SVG or JUnit report
+            return False
+        if head.lstrip().startswith(b"{"):
+            return _json_form(head + (f.read(max_file_bytes()) or b""))
+        seen = 0
+        rest = b""
+        chunk = head
+        total = len(head)
+        while chunk or rest:
+            lines = (rest + chunk).split(b"\n")
+            rest = lines.pop() if chunk else b""
+            for line in lines:
+                text = line.strip()
+                if not text or text.startswith(_COMMENT_STARTS):
+                    continue
+                if _LIST_LINE.match(text) or text == b"Ende":
+                    return True
+                seen += 1
+                if seen >= 20:
+                    return False
+            if not chunk or total > max_file_bytes():
+                break
+            chunk = f.read(1 << 20) or b""
+            total += len(chunk)
+        return seen == 0  # nothing but comments (and blank lines): a list's header, never a report
+    except OSError:
+        return False
+    finally:
+        os.close(fd)
 
 
-def write_report(path: Path, data: bytes, inputs: tuple[Path, ...] = ()) -> None:
-    """Write a report over a previous report: refused, whatever the name, when ``path`` is (or links
-    to) a list, a program, a structured form, a configuration file, an input, a file with another
-    hard link, or a file whose content reads like a list."""
+def _json_form(data: bytes) -> bool:
+    import json  # start-up: only a report over a JSON file needs it
+
+    try:
+        tree = json.loads(data)
+    except (ValueError, RecursionError):
+        return False
+    if not isinstance(tree, dict):
+        return False
+    schema = tree.get("$schema")
+    sarif = "runs" in tree and "version" in tree
+    json_schema = isinstance(schema, str) and "json-schema.org" in schema and "_zero" not in tree
+    return not (sarif or json_schema)
+
+
+def write_report(path: Path, data: bytes, inputs: tuple[Path, ...] = (), force: bool = True) -> None:
+    """Write a report (``lint -o``, ``report -o``, ``schema -o``): over a previous report (only with
+    ``force`` where the command asks for it), never over a list, a program, a structured form, a
+    configuration file, an input, a file with another hard link, or a file whose content reads like
+    a list or a list's JSON form, whatever the name, and whether named directly or through a link.
+    The one decision of what a report may replace."""
     given = Path(path)
     real = Path(os.path.realpath(given))
     where = str(given)
@@ -668,12 +724,14 @@ def write_report(path: Path, data: bytes, inputs: tuple[Path, ...] = ()) -> None
     except OSError:
         st = None
     if st is not None and stat.S_ISREG(st.st_mode):
+        if not force:
+            raise ZeroError("already exists (use --force to replace it)", where)
         if st.st_nlink > 1:
             raise ZeroError(f"has {st.st_nlink} hard links: replacing it would change another file, not only a "
                             "report; not replaced", where)
         if st.st_size and _looks_like_a_list(given):
-            raise ZeroError("reads like a parameter list, not a report: not replaced (give the report a new "
-                            "name, or remove the file first)", where)
+            raise ZeroError("reads like a parameter list (or a list's form), not a report: not replaced (give the "
+                            "report a new name, or remove the file first)", where)
     write_atomic(given, data, force=True, inputs=inputs)
 
 

@@ -32,7 +32,7 @@ from zero.engine.convert import check_convert_options, convert_inputs, write_int
 from zero.engine.project import Project
 from zero.engine.queries import find_param, load_side, machine_of, run_diff, run_effective, run_limits
 from zero.errors import ZeroError
-from zero.files import write_atomic
+from zero.files import write_report
 from zero.output.docs import param_text, rule_text, rules_overview
 from zero.output.tables import render_diff, render_effective, render_limits
 from zero.output.text import render_text
@@ -624,7 +624,7 @@ def schema(
         if output is None or output == "-":
             sys.stdout.write(text)
         else:
-            write_atomic(Path(output), text.encode("utf-8"), force)
+            write_report(Path(output), text.encode("utf-8"), force=force)
         return exits.OK
 
     _run(body)
@@ -707,7 +707,7 @@ def report(
         if target is None:
             sys.stdout.write(page)
         else:
-            write_atomic(target, page.encode("utf-8"), force)
+            write_report(target, page.encode("utf-8"), force=force)
         return exits.OK
 
     _run(body)

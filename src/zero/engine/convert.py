@@ -12,6 +12,7 @@ original bytes.
 
 from __future__ import annotations
 
+import os
 from collections.abc import Callable, Sequence
 from pathlib import Path
 
@@ -22,7 +23,7 @@ from zero.engine.lint import LintResult, lint_tree
 from zero.engine.project import Project, configurations_only
 from zero.errors import ZeroError
 from zero.files import read_file, write_atomic
-from zero.forms import EXTENSION, TWINCAT, format_of, split_part, xml_form
+from zero.forms import CONFIG_NAMES, EXTENSION, TWINCAT, format_of, split_part, xml_form
 from zero.lists.encoding import document_bytes
 from zero.lists.tokenizer import tokenize
 from zero.records import field, record
@@ -246,6 +247,15 @@ def _elements(data: bytes, name: str) -> list[str]:
         return []
 
 
+def _not_a_configuration(target: Path) -> Path:
+    """A converted list is written anywhere but over a configuration file (``pyproject.toml``,
+    ``zero.toml``), by its name or through a link."""
+    for name in (target.name, os.path.basename(os.path.realpath(target))):
+        if name in CONFIG_NAMES:
+            raise ZeroError("is a configuration file, not a list: not replaced", str(target))
+    return target
+
+
 def write_outputs(items: Sequence[ConvertItem], output: str | None, out_dir: Path | None,
                   force: bool) -> bytes | None:
     """Write converted items to ``out_dir`` or ``output``; the bytes for standard output otherwise."""
@@ -257,9 +267,9 @@ def write_outputs(items: Sequence[ConvertItem], output: str | None, out_dir: Pat
             raise ZeroError("two inputs would write the same output name; convert them separately")
         out_dir.mkdir(parents=True, exist_ok=True)
         for target, (_, data) in zip(targets, done, strict=True):
-            write_atomic(target, data, force, sources)
+            write_atomic(_not_a_configuration(target), data, force, sources)
         return None
     if output is not None and output != "-":
-        write_atomic(Path(output), done[0][1], force, sources)
+        write_atomic(_not_a_configuration(Path(output)), done[0][1], force, sources)
         return None
     return done[0][1]

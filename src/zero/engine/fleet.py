@@ -22,7 +22,8 @@ What differs from ``zero diff --machine`` (where that one shows every parameter 
 folder itself first, then its subfolders in name order, hidden ones skipped) that holds a file named
 ``hochlauf.lis`` or ``startup.xml`` (either case; ``hochlauf.lis`` first) is one machine with that
 start-up list, and its subfolders are not searched further (they hold that machine's lists, and the
-vendor's ``SoE/hochlauf.lis`` variants). A machine given twice, or the golden machine itself, is
+vendor's ``SoE/hochlauf.lis`` variants). The walk stays in the folder: symbolic links to folders
+are not followed, nor start-up lists that link out of it. A machine given twice, or the golden machine itself, is
 compared once, respectively not at all. Each machine is read through the resolver
 (:meth:`Project.machine`) with the list overrides of its own configuration.
 
@@ -58,7 +59,7 @@ from zero.diff import (
 from zero.diff import effective as value_of
 from zero.engine.project import Project, Registries
 from zero.errors import ZeroError
-from zero.files import read_file
+from zero.files import read_file, within
 from zero.lists.model import Entry
 from zero.machine.effective import entries_of
 from zero.machine.model import Machine
@@ -162,31 +163,38 @@ class FleetDrift:
 # ----------------------------------------------------------------------------- machines
 
 
-def _startup_in(folder: Path) -> Path | None:
+MAX_DEPTH = 32  # folders of machines are a few levels deep; a deeper walk stops there
+
+
+def _startup_in(folder: Path, top: Path) -> Path | None:
     try:
-        names = {p.name.lower(): p for p in sorted(folder.iterdir()) if p.is_file()}
+        names = {p.name.lower(): p for p in sorted(folder.iterdir()) if p.is_file() and within(p, top)}
     except OSError:
         return None
     return next((names[n] for n in STARTUP_NAMES if n in names), None)
 
 
 def find_startups(folder: Path) -> list[Path]:
-    """The start-up lists of the machines below ``folder`` (see the module's rule)."""
+    """The start-up lists of the machines below ``folder`` (see the module's rule). The walk stays in
+    ``folder``: a symbolic link to a folder is not followed (one to `/` walked the whole disk), a
+    start-up list that links out of it is not taken, and it goes at most :data:`MAX_DEPTH` deep."""
     found: list[Path] = []
 
-    def walk(d: Path) -> None:
-        hit = _startup_in(d)
+    def walk(d: Path, depth: int) -> None:
+        hit = _startup_in(d, folder)
         if hit is not None:
             found.append(hit)
             return
+        if depth >= MAX_DEPTH:
+            return
         try:
-            subs = sorted(p for p in d.iterdir() if p.is_dir() and not p.name.startswith("."))
+            subs = sorted(p for p in d.iterdir() if not p.name.startswith(".") and not p.is_symlink() and p.is_dir())
         except OSError:
             return
         for s in subs:
-            walk(s)
+            walk(s, depth + 1)
 
-    walk(folder)
+    walk(folder, 0)
     return found
 
 

@@ -59,6 +59,7 @@ from zero.records import field, record, replace
 # Soft limits the controller uses when no list sets them (±10 m, the catalogue default).
 DEFAULT_SOFT_LIMIT = 100_000_000
 MAX_ANCESTORS = 4  # how far above the start-up list the working directory is looked for
+LIST_FOLDER = "listen"  # the vendor's folder of lists, which its start-up lists name as ./listen/…
 # The entries of a machine's lists, each list counted as often as the start-up list names it (the
 # rules, tables and pages work per reference). A real machine holds tens of thousands (64 axes of
 # about 1,500); 64 references to one list of a million lines needed 7 GB.
@@ -284,17 +285,37 @@ def working_directory(startup: Path, raws: list[str], ceiling: Path | None = Non
     The ancestors are those of the start-up list's absolute path, however it was typed
     (``hochlauf.lis`` from inside ``listen/`` has the same ancestors as ``listen/hochlauf.lis``);
     the answer is said the way the start-up list was given: relative to the current directory
-    when it was given relative and the answer lies below the current directory, else absolute."""
+    when it was given relative and the answer lies below the current directory, else absolute.
+
+    Without a ceiling (no project marker above), an ancestor counts only the references that lead
+    back down the start-up list's way (:func:`layout_bound`; the vendor's layout: ``./listen/…`` named
+    from inside ``listen/`` or ``listen/SoE/``): a file beside an ancestor (``../.bashrc`` as
+    ``./.bashrc``) never makes it the working directory."""
     absolute = Path(os.path.abspath(startup))
     base = absolute.parent
     candidates = _candidates(base, ceiling)
     relative = [Path(_clean(r)) for r in raws if _clean(r) and not controller_absolute(_clean(r))]
     best, hits = base, 0
     for d in candidates:
-        n = sum(1 for r in relative if (d / r).is_file())
+        n = sum(1 for r in relative
+                if (d / r).is_file() and (ceiling is not None or within(d / r, layout_bound(d, base))))
         if n > hits:
             best, hits = d, n
     return shown(best, relative_to_cwd=not startup.is_absolute())
+
+
+def layout_bound(workdir: Path, folder: Path) -> Path:
+    """Without a project marker, the highest folder a machine's lists may lie in: the start-up list's
+    ``folder`` itself, or, where the start-up list lies in the vendor's list folder ``listen/`` (or
+    below it) and the working directory holds that folder, ``listen/`` (``./listen/default_sda.lis``
+    and ``./listen/SoE/achsmds1.lis`` named from ``listen/SoE/hochlauf.lis``); never a file beside the
+    working directory or in another of its folders."""
+    work, here = Path(os.path.abspath(workdir)), Path(os.path.abspath(folder))
+    try:
+        rest = here.relative_to(work).parts
+    except ValueError:
+        return here
+    return work / rest[0] if rest and rest[0].lower() == LIST_FOLDER else here
 
 
 def shown(path: Path, relative_to_cwd: bool) -> Path:
@@ -402,9 +423,12 @@ def named_lists(startup_path: Path, doc: Document, overrides: dict[str, Path] | 
         named.append(Named(e.key_text, ref, e.key.indices[0] if e.key.indices else None, e.value, e.line))
     root = workdir if workdir is not None else working_directory(startup_path, [n.raw for n in named], ceiling)
     # A relative path may climb out of the working directory (TwinCAT's `..\listen\nullp_d1.lis`), never
-    # out of the project (its git work tree or configuration folder), nor, without one, the machine's folder.
+    # out of the project (its git work tree or configuration folder), nor, without one, the start-up list's
+    # folder (the vendor's `./listen/…` named from inside `listen/` stays in it).
     inside = ceiling is not None and within(root, ceiling)
-    bound, what = (ceiling, "project") if inside and ceiling is not None else (root, "machine's folder")
+    folder = Path(os.path.abspath(split_part(startup_path)[0])).parent
+    bound, what = (ceiling, "project") if inside and ceiling is not None else (
+        (root, "machine's folder") if workdir is not None else (layout_bound(root, folder), "machine's folder"))
     for n in named:
         override = (overrides or {}).get(n.key)
         text = _clean(n.raw)
@@ -435,7 +459,8 @@ _EXPORTED = {"sda_mds[]": "SdaMds", "nullp_data[]": "NullpD", "werkz_data[]": "W
 _CHANNEL_NO = re.compile(r"<ChannelNo>\s*([0-9]+)\s*</ChannelNo>")
 
 
-def _from_exports(startup: Path, named: list[Named], reader: Callable[[Path], bytes]) -> None:
+def _from_exports(startup: Path, named: list[Named], reader: Callable[[Path], bytes],
+                  bound: Path | None = None) -> None:
     """A machine whose start-up list is a TwinCAT CNC task's export: the lists it names by files
     TwinCAT writes when it activates the configuration (`.\\sda_mds1.lis`) are taken from the
     exports of the channels and axes in the same folder, where no such file lies there: channel
@@ -447,8 +472,8 @@ def _from_exports(startup: Path, named: list[Named], reader: Callable[[Path], by
     channels: list[tuple[int, Path, set[str]]] = []
     axes: list[tuple[int, Path]] = []
     for f in sorted(startup.parent.glob("*.xml")):
-        if f == startup:
-            continue
+        if f == startup or not within(f, bound if bound is not None else startup.parent):
+            continue  # a link to an export elsewhere is never read
         try:
             data = reader(f)
             if xml_form(data) != TWINCAT:
@@ -502,7 +527,8 @@ def load_machine(startup_path: Path, registry: Registry, forced_kind: str | None
 
         resolve_virtual(Path(split_part(startup_path)[0]), named, reader)
     elif origin is not None and origin.form == TWINCAT:  # the CNC task's export: the lists of its folder's exports
-        _from_exports(Path(split_part(startup_path)[0]), named, reader)
+        _from_exports(Path(split_part(startup_path)[0]), named, reader,
+                      ceiling if ceiling is not None and within(startup_path, ceiling) else None)
     machine = Machine(startup, root, named)
     counts = {pid: _count(startup.values, pid) for pid in COUNT_KEYS}
     sizes = {ref.param_id: spec.dims[0] for ref in REFERENCES
