@@ -86,3 +86,22 @@ def test_every_drive_type_row_is_sourced_and_known(registry: object) -> None:
         assert str(row["source"]).startswith("https://infosys.beckhoff.com/"), row
         assert set(row["types"]) <= {1, 2, 3, 4, 5, 6, 7, 8, 16, 32}, row  # P-AXIS-00020's documented values
         assert registry.get(row["param"]) is not None, row  # type: ignore[attr-defined]
+
+
+def test_facts_of_the_whole_list_are_asked_of_the_lookup() -> None:
+    """unique() and elsewhere() compare one element with the list's others: the evaluator asks the
+    lookup for the fact by name (``unique:P,Q``, ``elsewhere:P,Q``), unknown where it has none."""
+    seen: list[str] = []
+
+    def lookup(pid: str, index: int | None) -> int | None:
+        seen.append(pid)
+        return {"unique:P-CHAN-00036,P-CHAN-00035": 0, "elsewhere:P-CHAN-00037,P-CHAN-00038": 1}.get(pid)
+
+    assert compile_condition(parse("unique(P-CHAN-00036, P-CHAN-00035)"))(lookup) is False
+    assert compile_condition(parse("not elsewhere(P-CHAN-00037, P-CHAN-00038)"))(lookup) is False
+    assert compile_condition(parse("unique(P-CHAN-00007)"))(lookup) is None
+    assert seen == ["unique:P-CHAN-00036,P-CHAN-00035", "elsewhere:P-CHAN-00037,P-CHAN-00038", "unique:P-CHAN-00007"]
+    assert refs(parse("not elsewhere(P-CHAN-00037, P-CHAN-00038)")) == ["P-CHAN-00037", "P-CHAN-00038"]
+    for bad in ("elsewhere(P-CHAN-00037)", "unique(3)", "unique(P-CHAN-00036.1)", "supports(DEFAULT_LIST)"):
+        with pytest.raises(ValueError):
+            parse(bad)

@@ -13,7 +13,9 @@ What the documentation says of text and of the drive type can be said too: strin
 ``x in ("X", "Y", 4)`` and ``x not in (...)``, ``unique(P-CHAN-00007)`` (a fact of the whole list,
 answered by the lookup under the name ``unique:P-CHAN-00007``: 1 where the checked element's value
 is no other element's value of the parameters named, 0 where it is one, unknown where it is not
-set), and ``supports(P-AXIS-00294)``: 1 where the axis's
+set), ``elsewhere(P, Q)`` (answered as ``elsewhere:P,Q``: 1 where the checked element's value of
+``P`` is the value of ``Q`` in another element of the same group, the last index differing: the
+master of one coupling pair that is the slave of another), and ``supports(P-AXIS-00294)``: 1 where the axis's
 drive type (P-AXIS-00020) is one the drive-type table (``data/drive_types.toml``, each row from the
 parameter page's "Drive types" row) lists for that parameter, 0 where it is not, unknown where the
 table has no row or the drive type is not known. A comparison of a string with a number is
@@ -35,9 +37,10 @@ DEFAULT_LIST = "DEFAULT_LIST"  # a fact of the list, not a parameter: read by th
 _TOKEN = re.compile(r"\s*(?:(P-[A-Z]{4}-[0-9]{5}(?:\.[0-9]+)?|DEFAULT_LIST\b)"
                     r"|(0x[0-9A-Fa-f]+|[0-9]+(?:\.[0-9]+)?(?:e[+-]?[0-9]+)?)"
                     r"|(\"[^\"\\\n]*\"|'[^'\\\n]*')"
-                    r"|(<=|>=|==|!=|<|>|\+|-|\*|/|&|\(|\)|,)|(and|or|not|in|abs|len|startswith|supports|unique)\b)")
-_FUNCTIONS = {"abs": 1, "len": 1, "startswith": 2, "supports": 1, "unique": 0}  # 0: one or more IDs
+                    r"|(<=|>=|==|!=|<|>|\+|-|\*|/|&|\(|\)|,)|(and|or|not|in|abs|len|startswith|supports|unique|elsewhere)\b)")
+_FUNCTIONS = {"abs": 1, "len": 1, "startswith": 2, "supports": 1, "unique": 0, "elsewhere": 2}  # 0: one or more IDs
 UNIQUE = "unique:"  # the lookup's name of the fact unique(...) asks for
+ELSEWHERE = "elsewhere:"  # and of elsewhere(...)
 
 Node = Union["Num", "Str", "Ref", "Unary", "Binary", "Call", "Member"]
 
@@ -226,7 +229,7 @@ class _Parser:
             self.take(")")
             if _FUNCTIONS[tok] and len(args) != _FUNCTIONS[tok]:
                 raise ValueError(f"{tok}() takes {_FUNCTIONS[tok]} argument(s)")
-            if tok in ("supports", "unique") and not all(isinstance(a, Ref) and a.pid != DEFAULT_LIST
+            if tok in ("supports", "unique", "elsewhere") and not all(isinstance(a, Ref) and a.pid != DEFAULT_LIST
                                                          and a.index is None for a in args):
                 raise ValueError(f"{tok}() takes parameter IDs")
             return Call(tok, *args)
@@ -265,7 +268,7 @@ def ref_elements(node: Node) -> list[tuple[str, int | None]]:
             out.append((n.pid, n.index))
         elif isinstance(n, Call) and n.name == "supports":
             out.append((DRIVE_TYPE, None))  # the drive type is read; the parameter named is not
-        elif isinstance(n, Call) and n.name == "unique":
+        elif isinstance(n, Call) and n.name in ("unique", "elsewhere"):
             out.extend((a.pid, None) for a in n.args if isinstance(a, Ref))
         elif isinstance(n, Call):
             stack.extend(reversed(n.args))
@@ -383,8 +386,9 @@ def _compile_call(node: Call) -> Compiled:
                 return None
             return int(drive) in types
         return supports
-    if node.name == "unique":
-        key = UNIQUE + ",".join(a.pid for a in node.args if isinstance(a, Ref))
+    if node.name in ("unique", "elsewhere"):
+        fact = UNIQUE if node.name == "unique" else ELSEWHERE
+        key = fact + ",".join(a.pid for a in node.args if isinstance(a, Ref))
         return lambda lookup: None if (v := lookup(key, None)) is None else bool(v)
     args = [compile_condition(a) for a in node.args]
     if node.name == "abs":

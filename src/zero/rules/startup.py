@@ -18,6 +18,7 @@ from collections.abc import Iterator
 
 from zero.catalog.conditions import (
     DEFAULT_LIST,
+    ELSEWHERE,
     UNIQUE,
     Compiled,
     compile_condition,
@@ -178,6 +179,9 @@ def _check(ctx: Context, err: StartupError) -> Iterator[tuple[Diagnostic, bool]]
                 return int(ctx.default_list)
             if pid.startswith(UNIQUE):
                 return _unique(ctx, pid[len(UNIQUE):].split(","), idx)
+            if pid.startswith(ELSEWHERE):
+                first, _, second = pid[len(ELSEWHERE):].partition(",")
+                return _elsewhere(ctx, first, second, idx)
             return _value(ctx, pid, (index,) if index is not None else idx)
 
         if c.when is not None and c.when(lookup) is not True:
@@ -193,7 +197,8 @@ def _check(ctx: Context, err: StartupError) -> Iterator[tuple[Diagnostic, bool]]
         if hit is None:
             continue  # the list sets none of the values the condition reads: not this list's doing
         entry, pid_on_line = hit
-        shown = c.shown[:1] if err.condition_text.startswith("unique(") else c.shown  # the value others share
+        shared = err.condition_text.startswith(("unique(", "not elsewhere("))
+        shown = c.shown[:1] if shared else c.shown  # the value another element shares
         values = ", ".join(f"{_named(ctx, pid, idx if index is None else (index,))} = "
                            f"{_shown(lookup(pid, index))}" for pid, index in shown)
         yield ctx.report(
@@ -223,6 +228,21 @@ def _unique(ctx: Context, pids: list[str], idx: tuple[int, ...]) -> int | None:
             if _counted(ctx, pid, other) and _value(ctx, pid, other) == mine:
                 return 0
     return 1
+
+
+def _elsewhere(ctx: Context, first: str, second: str, idx: tuple[int, ...]) -> int | None:
+    """``elsewhere(P, Q)`` for element ``idx`` of ``P``: 1 where its value is ``Q``'s in another element
+    of the same group (all indices but the last equal), 0 where it is not; unknown where this list does
+    not set it, or sets it empty or 0."""
+    element = _element(ctx, first, idx)
+    mine = _value(ctx, first, idx)
+    if _own(ctx, first, idx) is None or mine in (None, "", 0) or not _counted(ctx, first, element):
+        return None
+    for other in ctx.ids_of(second):
+        if other != element and other[:-1] == element[:-1] and _counted(ctx, second, other) \
+                and _value(ctx, second, other) == mine:
+            return 1
+    return 0
 
 
 def _counted(ctx: Context, pid: str, idx: tuple[int, ...]) -> bool:
