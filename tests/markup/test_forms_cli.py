@@ -132,7 +132,7 @@ def test_convert_extracts_each_list_and_puts_one_back(tmp_path: Path) -> None:
         "channel_1.NullpD.lis", "channel_1.PzvD.lis", "channel_1.SdaMds.lis", "channel_1.VeD.lis",
         "channel_1.WerkzD.lis"]
     r = run("convert", str(TWINCAT / "channel_1.xml"), "-o", str(tmp_path / "x.lis"))
-    assert r.returncode == 1 and "name one with --item" in r.stderr
+    assert r.returncode == 1 and "--item ELEMENT" in r.stderr and "channel_1.xml#SdaMds" in r.stderr
     zero_offsets = tmp_path / "n.lis"
     assert run("convert", str(TWINCAT / "channel_1.xml"), "--item", "NullpD", "-o", str(zero_offsets)).returncode == 0
     zero_offsets.write_text(zero_offsets.read_text().replace(" 1.5", " 15 "))

@@ -187,3 +187,16 @@ def test_fix_in_a_project_changes_only_inside_the_cdata(registry: Registry) -> N
     assert fixed.split(b"\n")[line - 1] == b"kenngr.swe_pos                                       12000000"
     assert [a for a, b in zip(fixed.split(b"\n"), data.split(b"\n"), strict=True) if a != b] == [
         fixed.split(b"\n")[line - 1]]
+
+
+def test_show_of_an_export_element(registry: Registry) -> None:
+    """Before: `zero show kanal1.xml#SdaMds` was refused, and `zero show kanal1.xml` said to use --item,
+    which show does not have."""
+    from zero.engine.queries import load_side
+
+    side = load_side(f"{TWINCAT / 'channel_1.xml'}#SdaMds", None, None, registry, lambda: b"")
+    assert side.kind == "CHAN" and side.entries
+    with pytest.raises(ZeroError, match=r"name one as `.*channel_1\.xml#SdaMds`"):
+        load_side(str(TWINCAT / "channel_1.xml"), None, None, registry, lambda: b"")
+    y = load_side(f"{PROJECT}#Y_Achse/AchsMds", None, None, registry, lambda: b"")
+    assert y.kind == "AXIS" and "kenngr.max_vb_overide" in " ".join(y.entries)

@@ -10,17 +10,31 @@ beside the file that names it, never outside the project's folder.
 from __future__ import annotations
 
 import os
-from collections.abc import Callable
+from collections.abc import Callable, Sequence
 from pathlib import Path
-from typing import TYPE_CHECKING
+from typing import Protocol
 
 from zero.errors import ZeroError
-from zero.files import within
+from zero.files import read_file, within
+from zero.forms import split_part
+from zero.markup.documents import embedded_documents, pick
 from zero.markup.tsproj import VIRTUAL_RE, Block, read_project
 from zero.records import record
 
-if TYPE_CHECKING:  # the model imports this module when it reads a project
-    from zero.machine.model import Machine, Named
+
+class Named(Protocol):
+    """A start-up reference as :class:`zero.machine.model.Named` has it (the model imports this module)."""
+
+    key: str
+    raw: str
+    path: Path | None
+    status: str
+    reason: str
+
+
+class Machine(Protocol):
+    @property
+    def named(self) -> Sequence[Named]: ...
 
 CONFIG_FOLDER = "_Config"
 MAX_FILES = 2000  # independent project files followed at most (a project has one per item)
@@ -89,7 +103,7 @@ def project_blocks(project: Path, reader: Callable[[Path], bytes]) -> tuple[list
     return found, problems
 
 
-def resolve_virtual(project: Path, named: list[Named], reader: Callable[[Path], bytes]) -> list[str]:
+def resolve_virtual(project: Path, named: Sequence[Named], reader: Callable[[Path], bytes]) -> list[str]:
     """Point every ``tc_virtual_N\\`` reference of the start-up list at the block with Offset N (as
     ``file#address``); one that no block or more than one block answers is not read, and says why."""
     blocks, problems = project_blocks(project, reader)
@@ -128,10 +142,6 @@ def twincat_items(machine: Machine, reader: Callable[[Path], bytes] | None = Non
     ``{"item": "Y_Achse", "element": "Y_Achse/AchsMds", "DriveType": "4", ...}``). Lists read from
     plain files have none. Shown beside the lists, never compared with them: the vendor's
     documentation does not say how these values relate to ``kenngr.antr_typ`` or ``kenngr.achs_typ``."""
-    from zero.files import read_file  # the default reader
-    from zero.forms import split_part
-    from zero.markup.documents import embedded_documents, pick
-
     read = reader or read_file
     out: dict[str, dict[str, str]] = {}
     for n in machine.named:

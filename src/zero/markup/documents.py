@@ -221,8 +221,8 @@ def pick(lists: list[Embedded], element: str | None, path: str) -> Embedded:
         if element is None:
             if not lists:
                 raise ZeroError(f"the {what} holds no list zero knows", path, 1, 1)
-            raise ZeroError(f"the {what} holds the lists {held}: name one with --item ELEMENT or FILE#ELEMENT (or "
-                            f"give --out-dir for every one; a machine names `{path}#{lists[0].element}`)", path, 1, 1)
+            raise ZeroError(f"the {what} holds the lists {held}: name one as `{path}#{lists[0].element}` (zero "
+                            "convert also takes --item ELEMENT, and --out-dir for every one)", path, 1, 1)
         if not hits:
             raise ZeroError(f"the {what} holds no list `{element}` (it holds: {held})", path, 1, 1)
         raise ZeroError(f"the {what} holds {len(hits)} lists named `{element}` (it holds: {held}): zero takes "

@@ -23,6 +23,7 @@ Each block becomes a :class:`Block` with an address a user can read in the TwinC
 
 from __future__ import annotations
 
+import bisect
 import re
 from xml.sax.saxutils import unescape
 
@@ -33,7 +34,7 @@ from zero.markup.safe import Scan, _line_starts, check, encoding_of
 from zero.records import field, record
 
 STARTUP = "Startup"
-VIRTUAL_RE = re.compile(r"^\s*\"?tc_virtual_([0-9]+)[\\/]", re.I)  # `tc_virtual_3\achsmds1.lis`
+VIRTUAL_RE = re.compile(r"^\s*\"?tc_virtual_([0-9]+)(?![0-9A-Za-z_])", re.I)  # `tc_virtual_3\achsmds1.lis`
 # The start-up keys that name a list, and the kind of list each names (as zero.machine.model.REFERENCES).
 REFERENCE_KINDS: dict[str, str] = {
     "default_sda_mds": "CHAN", "sda_mds": "CHAN", "werkz_data": "TOOL", "nullp_data": "ZERO", "pzv_data": "CLMP",
@@ -50,7 +51,7 @@ _TOKEN = re.compile(
     r"|<(?P<close>/)?(?P<name>[^\s/>!?]+)(?P<attrs>(?:\s+[^\s=/>]+\s*=\s*(?:\"[^\"]*\"|'[^']*'))*)\s*(?P<empty>/)?>",
     re.S)
 _ATTR = re.compile(r"""([^\s=/>]+)\s*=\s*(?:"([^"]*)"|'([^']*)')""")
-_CDATA_AFTER = re.compile(r"\s*<!\[CDATA\[(.*?)\]\]>\s*</Data\s*>", re.S)
+_CDATA_AFTER = re.compile(r"\s*<!\[CDATA\[(.*?)\]\]>", re.S)  # the list: the CDATA section the element opens with
 WINDOW = 1 << 20  # how far before the first block (and after the last) its tree item is looked at (characters)
 # What a CNC axis item says of itself beside its list (as the Automation Interface's `<IsgAxisDef>` writes it).
 ITEM_PROPERTIES = ("DriveType", "Spindle", "FeedAxis")
@@ -101,8 +102,6 @@ def _text(raw: str) -> str:
 def _safe_start(text: str, spans: list[tuple[int, int]], at: int) -> int:
     """The first tag start at or after ``at`` that is not inside a comment, CDATA section or processing
     instruction (``spans``): in well-formed XML every other `<` opens a tag."""
-    import bisect
-
     while True:
         at = text.find("<", at)
         if at < 0:

@@ -28,8 +28,11 @@ from zero.catalog.ids import g_code_with_index
 from zero.catalog.registry import KINDS
 from zero.catalog.values import ListValues
 from zero.errors import ZeroError
+from zero.files import read_file
 from zero.forms import LIST, PROGRAM, STRUCTURED, TWINCAT, format_of, is_project
 from zero.lists.model import Entry, ValueKind, parse_key
+from zero.machine.tsproj import project_blocks
+from zero.markup.tsproj import VIRTUAL_RE
 from zero.records import field, record
 from zero.server.documents import Analysis, file_position
 from zero.server.findings import line_range
@@ -230,10 +233,6 @@ def _virtual_links(a: Analysis) -> list[types.DocumentLink]:
     never to a path on disk; a reference no block or two blocks answer gets no link (X005 says why)."""
     if a.path is None or not is_project(a.path):
         return []
-    from zero.files import read_file  # the server's project files: only for a TwinCAT project
-    from zero.machine.tsproj import project_blocks
-    from zero.markup.tsproj import VIRTUAL_RE
-
     me = a.path
     try:
         blocks, _ = project_blocks(me, lambda p: a.data if p == me else read_file(p))
