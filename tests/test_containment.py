@@ -564,3 +564,23 @@ def test_a_fleet_folder_walk_never_follows_a_link_out(tmp_path: Path) -> None:
     run = zero_cli("diff", "--fleet", str(golden / "hochlauf.lis"), str(fleet), timeout=60)
     assert run.seconds < 30, run
     assert "1 machine compared" in run.stdout + run.stderr, run
+
+
+def test_every_test_the_readmes_safety_table_names_exists() -> None:
+    """The README's Safety section names, for each guarantee, the tests that prove it: each exists."""
+    import re
+
+    from conftest import ROOT
+
+    section = (ROOT / "README.md").read_text(encoding="utf-8").split("## Safety", 1)[1].split("\n## ", 1)[0]
+    named = 0
+    for row in section.splitlines():
+        if not row.startswith("| ") or "::" not in row:
+            continue
+        current = None
+        for m in re.finditer(r"`(tests/[\w/]+\.py)?::(\w+)`", row):
+            current = m.group(1) or current
+            assert current is not None, row
+            assert re.search(rf"^def {m.group(2)}\(", (ROOT / current).read_text(encoding="utf-8"), re.M), m.group(0)
+            named += 1
+    assert named >= 15
