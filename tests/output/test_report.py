@@ -121,6 +121,14 @@ def test_the_differences_are_those_of_diff_machine(tmp_path: Path) -> None:
     changes = reported_changes(html)
     assert changes and changes == diff_changes(LAYERED, FIXTURE)
     assert elements(html, "old-range")  # the golden machine's soft limits drawn under the changed ones
+    deltas = {(c["data-group"].split(":")[0], c["data-key"]): c for c in elements(html, "change")}
+    table = html[html.index('id="diff-table"'):html.index("</table>", html.index('id="diff-table"'))]
+    assert "um/s" not in table and "mdeg/s" not in table  # µm/s, m/min: units as an engineer reads them
+    for (group, key), _ in deltas.items():  # a length of a known axis is in mm or °, never "mm or °"
+        row = html[html.index(f'data-key="{key}"', html.index('id="diff-table"')):]
+        delta = row[row.index('class="num delta">') + 19:row.index("</td>", row.index('class="num delta">'))]
+        if group.startswith("axis ") or key.endswith((".laenge", ".radius")):
+            assert "mm or °" not in delta, (group, key, delta)
 
 
 @pytest.mark.slow
@@ -144,6 +152,10 @@ def test_the_fleet_drift_is_that_of_diff_fleet(tmp_path: Path) -> None:
     drift = [(d["data-key"], d["data-id"], d["data-count"], d["data-of"]) for d in elements(html, "drift")]
     assert drift == expected == [("kenngr.swe_pos", "P-AXIS-00178", "2", "4")]
     assert "m2, m4" in html
+    nav = html[html.index("<nav>"):html.index("</nav>")]
+    assert "<section" not in nav and 'href="#fleet"' in nav  # its own section, linked (it was drawn inside <nav>)
+    assert html.index('<section id="fleet">') > html.index("</nav>")
+    assert 'href="#fleet" data-card="fleet"' in html  # the summary card leads to it
 
 
 def _git(repo: Path, *args: str) -> None:
@@ -329,3 +341,61 @@ def test_the_report_in_a_real_browser(name: str, tmp_path: Path, request: pytest
             _check_in_browser(page, html, startup, tmp_path, name)
         finally:
             browser.close()
+
+
+# ------------------------------------------------------------------- units, corrections, marks
+
+
+def test_values_in_engineering_units() -> None:
+    from zero.output.report import in_engineering
+
+    assert in_engineering(("0.1um", "0.1mdeg"), 10_400_000, rotary=False) == "1,040 mm"
+    assert in_engineering(("0.1um", "0.1mdeg"), 3_600_000, rotary=True) == "360 °"
+    assert in_engineering(("0.1um", "0.1mdeg"), 5_000, rotary=None) == "0.5 mm or 0.5 °"  # the axis not known
+    assert in_engineering(("um/s", "mdeg/s"), 2_000_000, rotary=False) == "120 m/min"
+    assert in_engineering(("um/s", "mdeg/s"), 1_000, rotary=True) == "60 °/min"
+    assert in_engineering(("us",), 250, rotary=None) == "250 µs"
+    assert in_engineering(("0.1%",), 1000, rotary=None) == "100 %"
+    assert in_engineering(("increments",), 5, rotary=None) is None  # no unit an engineer converts
+
+
+def test_deltas_in_engineering_units() -> None:
+    from zero.diff import Change
+    from zero.output.report import delta_in_engineering
+
+    assert delta_in_engineering(Change("kenngr.swe_pos", "P-AXIS-00178", "changed", "1", "2", "mm or °", 500.0),
+                                rotary=False) == "+500 mm"
+    assert delta_in_engineering(Change("k", None, "changed", "1", "2", "mm or °", -5.0), rotary=True) == "-5 °"
+    assert delta_in_engineering(Change("k", None, "changed", "1", "2", "um/s, mdeg/s", 100_000), rotary=False) \
+        == "+6 m/min"
+    assert delta_in_engineering(Change("k", None, "changed", "1", "2", None, None), rotary=False) == ""
+
+
+def test_the_documented_correction_is_the_value_the_controller_uses() -> None:
+    from zero.catalog.registry import load_registry
+    from zero.output.report import corrects
+
+    registry = load_registry()
+    assert corrects("K093", "P-AXIS-00512", registry) == {"P-AXIS-00512": "1"}  # P-ERR-110580: corrected to 1
+    default = next(c for c in __import__("zero.rules.startup", fromlist=["CHECKS"]).CHECKS
+                   if c.correction == "default")
+    used = corrects(default.code, default.params[0], registry)
+    assert list(used) == [default.params[0]] and used[default.params[0]].endswith("(the default)")
+    aborts = next(c for c in __import__("zero.rules.startup", fromlist=["CHECKS"]).CHECKS if c.correction == "abort")
+    assert corrects(aborts.code, aborts.params[0], registry) == {}  # nothing is used: the start-up stops
+    assert corrects("M005", "P-AXIS-00705", registry) == {}  # no documented correction: no value claimed
+
+
+@pytest.mark.slow
+def test_monitoring_marks_on_the_fixture_machine(tmp_path: Path) -> None:
+    machine = tmp_path / "m"
+    shutil.copytree(FIXTURE.parent, machine / "listen")
+    axis = machine / "listen" / "achse_x.lis"
+    axis.write_text(axis.read_text().replace("Ende", "kenngr.swe_check 0\nEnde"))
+    html = report(machine / "listen" / "hochlauf.lis", tmp_path / "m.html")
+    groups = [g for g in elements(html, "axis") if g.get("data-axis") == "X"]
+    assert groups and groups[0]["data-monitoring"] == "off" and "monitoring-off" in groups[0]["class"]
+    assert "soft-limit monitoring OFF (kenngr.swe_check = 0)" in html
+    marks = elements(html, "monitor-off")
+    assert marks and any(m.get("data-monitoring") == "off" for m in marks)
+    assert 'data-count="unmonitored">1<' in html

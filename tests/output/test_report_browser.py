@@ -4,8 +4,9 @@ install``).
 
 The machine is a real-sized one built from the vendor's SDK lists (about 5,400 values, as the
 machine of the issue had 4,736): two channels, six axes (the SDK's four and copies of two of them
-as axes 5 and 6, axis 6 rotary), soft-limit monitoring off on two axes and only warning on one, a gear denominator 0 that the kernel corrects to 1 at start-up
-(K rule with a documented correction), and a fleet of two machines, one drifting. What is pinned:
+as axes 5 and 6, axis 6 rotary), soft-limit monitoring off on two axes and only warning on one,
+a gear denominator 0 that the kernel corrects to 1 at start-up (K rule with a documented
+correction), and a fleet of two machines, one drifting. What is pinned:
 the order of work (summary cards that link to sections, errors first, noise folded with its
 count, differences and fleet drift in sections of their own, the value table last and
 collapsible), honest pictures and values (a mark on each axis whose soft limits do not stop it,
@@ -159,7 +160,8 @@ def test_errors_first_and_noise_folded_with_its_count(machine: dict[str, Any], b
     page.goto(machine["html"].as_uri())
     severities = page.eval_on_selector_all("li.finding", "ls => ls.map(l => l.dataset.severity)")
     rank = {"error": 0, "warning": 1, "info": 2}
-    assert severities and severities[0] == "error" and [rank[s] for s in severities] == sorted(rank[s] for s in severities)
+    ranks = [rank[s] for s in severities]
+    assert severities and severities[0] == "error" and ranks == sorted(ranks)
     noise = page.eval_on_selector_all("details.noise", "ds => ds.map(d => [d.dataset.code, +d.dataset.count, d.open,"
                                       " d.querySelectorAll('li.finding').length])")
     assert noise and all(count >= 5 and not opened and items == count for _, count, opened, items in noise)

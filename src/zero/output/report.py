@@ -29,7 +29,17 @@ from pathlib import Path
 from typing import Any
 
 from zero import __version__
-from zero.catalog.ids import AXIS_TYPE, SPINDLE_AXIS, SWE_BEHAVIOUR, SWE_CHECK, SWE_NEG, SWE_POS, SWE_TOL, is_rotary
+from zero.catalog.ids import (
+    AXIS_TYPE,
+    COMP_LIST_AXIS,
+    SPINDLE_AXIS,
+    SWE_BEHAVIOUR,
+    SWE_CHECK,
+    SWE_NEG,
+    SWE_POS,
+    SWE_TOL,
+    is_rotary,
+)
 from zero.catalog.registry import ParamSpec, Registry
 from zero.diff import Change, default_effective
 from zero.diff import effective as value_of
@@ -269,6 +279,7 @@ def delta_in_engineering(c: Change, rotary: bool | None) -> str:
 
 
 _AXIS_INDEX = re.compile(r"\bachse\[(\d+)\]")
+_TOOL_LENGTH = re.compile(r"\.(laenge|radius)$")  # wz[i].laenge, wz[i].radius: lengths, in mm
 
 
 def _rotary_by_scope(machine: Machine) -> dict[str, bool | dict[int, bool]]:
@@ -279,7 +290,13 @@ def _rotary_by_scope(machine: Machine) -> dict[str, bool | dict[int, bool]]:
     for name, lf in machine.scopes():
         if lf.values.kind == "AXIS":
             out[name] = is_rotary(lf.number(AXIS_TYPE))
+    for i, lf in machine.compensation:  # a compensation list: the axis it names (kopf.achs_nr)
+        nr = lf.number(COMP_LIST_AXIS)
+        if nr is not None and int(nr) in axes:
+            out[f"compensation {i} ({lf.key})"] = axes[int(nr)].rotary
     for ch in machine.channels:
+        if ch.tools is not None:  # a tool's length and radius are lengths
+            out[f"channel {ch.index} ({ch.tools.key})"] = {-1: False}
         per_axis = {ca.index: axes[ca.log_nr].rotary for ca in ch.axes if ca.log_nr in axes}
         for per_channel in (ch.zero, ch.lists):
             if per_channel is not None:
@@ -290,6 +307,8 @@ def _rotary_by_scope(machine: Machine) -> dict[str, bool | dict[int, bool]]:
 def _rotary(known: dict[str, bool | dict[int, bool]], scope: str, key: str) -> bool | None:
     hit = known.get(scope)
     if isinstance(hit, dict):
+        if -1 in hit:
+            return False if _TOOL_LENGTH.search(key) else None
         m = _AXIS_INDEX.search(key)
         return hit.get(int(m.group(1))) if m else None
     return hit
