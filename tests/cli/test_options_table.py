@@ -23,6 +23,9 @@ from zero.cli.options import LINT_OPTIONS, parse_lint_args
 LINT = typer.main.get_command(app).commands["lint"]  # type: ignore[attr-defined]
 
 
+MULTI = {o.dest for o in LINT_OPTIONS if o.kind == "multi"} | {"paths"}
+
+
 def typer_params(args: list[str]) -> dict[str, Any] | None:
     """What the typer command reads from ``args``; ``None`` when it rejects them."""
     try:
@@ -33,7 +36,7 @@ def typer_params(args: list[str]) -> dict[str, Any] | None:
     for name, value in params.items():
         if isinstance(value, Enum):
             value = value.value
-        if name in ("select", "ignore", "extend_select", "config", "paths"):
+        if name in MULTI:
             value = list(value or [])
         out[name] = value
     return out

@@ -18,6 +18,7 @@ from zero.diagnostics import Severity
 from zero.engine.lint import LintResult, lint_file
 from zero.output import formats
 from zero.output.formats import render_concise, render_github, render_gitlab, render_junit, render_sarif
+from zero.records import replace
 
 SEED = FIXTURES / "seed" / "nullp_3achsen.lis"
 CLEAN = FIXTURES / "rules" / "M006" / "pass.lis"
@@ -323,3 +324,146 @@ def test_sarif_help_uri_points_at_the_documentation_site(monkeypatch: pytest.Mon
     template = rule_docs_template()
     assert template is not None
     assert template.format(code="R006") == "https://zero.example.org/docs/" + rule_page_path("R006")[:-3] + "/"
+
+
+# ------------------------------------------------------------------ the formats of issue 35
+
+
+def _render(name: str, results: list[LintResult]) -> str:
+    out = io.StringIO()
+    formats.RENDERERS[name](results, out)
+    return out.getvalue()
+
+
+def test_every_output_format_has_a_renderer() -> None:
+    from zero.output import OUTPUT_FORMATS, STREAMED_FORMATS
+
+    assert set(OUTPUT_FORMATS) - {"text", "full"} == set(formats.RENDERERS)
+    assert set(STREAMED_FORMATS) - {"text", "full"} == set(formats.STREAMED)
+    assert {"json-lines", "rdjson", "pylint", "azure", "full", "grouped"} <= set(OUTPUT_FORMATS)
+
+
+def test_json_lines_is_the_json_report_one_finding_a_line() -> None:
+    results = [from_file(SEED)]
+    lines = _render("json-lines", results).splitlines()
+    assert [json.loads(line) for line in lines] == json.loads(_render("json", results))
+    assert len(lines) == 7
+
+
+# reviewdog's Diagnostic Format (rdjson): no package ships its JSON schema, so the constraints of
+# its DiagnosticResult (reviewdog's proto/rdf/jsonschema) are written here, in this test's words:
+# an object with `diagnostics`, each with a string `message`, a `location` with a string `path`
+# and a `range` of `start` and optional `end` positions (integer `line` and `column`), a
+# `severity` of ERROR, WARNING, INFO (or UNKNOWN_SEVERITY), an optional `source` with a `name`,
+# an optional `code` with a `value` (and `url`), and optional `suggestions` (a `range` and a `text`).
+_POSITION = {"type": "object", "properties": {"line": {"type": "integer", "minimum": 1},
+                                              "column": {"type": "integer", "minimum": 1}}, "required": ["line"]}
+_RANGE = {"type": "object", "properties": {"start": _POSITION, "end": _POSITION}, "required": ["start"]}
+_SOURCE = {"type": "object", "properties": {"name": {"type": "string"}, "url": {"type": "string"}},
+           "required": ["name"]}
+RDJSON_SCHEMA = {
+    "$schema": "http://json-schema.org/draft-07/schema#",
+    "type": "object",
+    "properties": {
+        "source": _SOURCE,
+        "severity": {"enum": ["UNKNOWN_SEVERITY", "ERROR", "WARNING", "INFO"]},
+        "diagnostics": {"type": "array", "items": {
+            "type": "object", "required": ["message", "location"],
+            "properties": {
+                "message": {"type": "string"},
+                "location": {"type": "object", "required": ["path"],
+                             "properties": {"path": {"type": "string"}, "range": _RANGE}},
+                "severity": {"enum": ["UNKNOWN_SEVERITY", "ERROR", "WARNING", "INFO"]},
+                "source": _SOURCE,
+                "code": {"type": "object", "required": ["value"],
+                         "properties": {"value": {"type": "string"}, "url": {"type": "string"}}},
+                "suggestions": {"type": "array", "items": {
+                    "type": "object", "required": ["range", "text"],
+                    "properties": {"range": _RANGE, "text": {"type": "string"}}}},
+                "original_output": {"type": "string"}}}}},
+    "required": ["diagnostics"],
+}
+
+
+def test_rdjson_validates_against_reviewdogs_format(monkeypatch: pytest.MonkeyPatch) -> None:
+    import jsonschema
+
+    monkeypatch.setenv(formats.DOCS_URL_VARIABLE, "https://docs.test/zero")
+    doc = json.loads(_render("rdjson", [from_file(SEED)]))
+    jsonschema.validate(doc, RDJSON_SCHEMA)
+    first = doc["diagnostics"][0]
+    assert first["location"] == {"path": "fixtures/seed/nullp_3achsen.lis",
+                                 "range": {"start": {"line": 19, "column": 20}, "end": {"line": 19, "column": 21}}}
+    assert first["code"] == {"value": "S004", "url": "https://docs.test/zero/rules/S004/"}
+    # the safe fix as reviewdog's suggestion: delete the blank inside the key
+    assert first["suggestions"] == [{"range": first["location"]["range"], "text": ""}]
+    assert {d["severity"] for d in doc["diagnostics"]} <= {"ERROR", "WARNING", "INFO"}
+
+
+def test_rdjson_columns_are_utf8_bytes() -> None:
+    """reviewdog counts a column in UTF-8 bytes: an `ä` before the finding moves it by one more."""
+    assert formats._utf8_column("äb x", 4) == 5 and formats._utf8_column("ab x", 4) == 4
+    result = lint_text("# Achse ä\nnp_grp[1].achse[0].versch abc # äö\nEnde\n", "np.lis")
+    doc = json.loads(_render("rdjson", [result]))
+    d = next(d for d in doc["diagnostics"] if d["code"]["value"] == "R004")
+    assert d["location"]["range"] == {"start": {"line": 2, "column": 27}, "end": {"line": 2, "column": 30}}
+
+
+def test_pylint_azure_and_grouped_lines() -> None:
+    results = [lint_text(TWO_INDICES, "machine/np.lis")]
+    d = results[0].diagnostics[0]
+    pylint = _render("pylint", results).splitlines()
+    assert pylint[0] == f"machine/np.lis:{d.span.line}: [{d.code}] {d.message}"
+    azure = _render("azure", results).splitlines()
+    kind = "error" if d.severity == Severity.ERROR else "warning"
+    assert azure[0].startswith(f"##vso[task.logissue type={kind};sourcepath=machine/np.lis;linenumber={d.span.line};"
+                               f"columnnumber={d.span.column};code={d.code};]{d.code} ")
+    grouped = _render("grouped", results)
+    assert grouped.startswith(f"machine/np.lis:\n  {d.span.line}:{d.span.column} {d.code} {d.severity.label} ")
+    assert grouped.endswith("\n\n") and grouped.count("\n  ") == len(results[0].diagnostics)
+
+
+def test_azure_escapes_what_ends_a_property_or_a_line() -> None:
+    d = lint_text(TWO_INDICES, "a;b]%.lis").diagnostics[0]
+    out = io.StringIO()
+    formats.render_azure([LintResult("a;b]%.lis", lint_text(TWO_INDICES).document, None,
+                                     [replace(d, path="a;b]%.lis", message="x\nq; 5%")])], out)
+    line = out.getvalue()
+    assert line.count("\n") == 1
+    assert "sourcepath=a%3Bb%5D%AZP25.lis;" in line and line.endswith("x%0Aq; 5%AZP25\n")
+
+
+def test_full_is_the_text_report(tmp_path: Path) -> None:
+    from conftest import zero_cli
+
+    text = zero_cli("lint", str(SEED), "--output-format", "text", env={"NO_COLOR": "1"})
+    full = zero_cli("lint", str(SEED), "--output-format", "full", env={"NO_COLOR": "1"})
+    assert full.stdout == text.stdout and "   |" in full.stdout
+
+
+def test_gitlab_paths_are_relative_to_ci_project_dir(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """A job that runs from a subfolder keeps the folder in each path (GitLab sets CI_PROJECT_DIR)."""
+    (tmp_path / "machines" / "m1").mkdir(parents=True)
+    monkeypatch.chdir(tmp_path / "machines")
+    monkeypatch.setenv("CI_PROJECT_DIR", str(tmp_path))
+    issues = gitlab([lint_text(TWO_INDICES, "m1/np.lis")])
+    assert {i["location"]["path"] for i in issues} == {"machines/m1/np.lis"}
+    monkeypatch.delenv("CI_PROJECT_DIR")
+    assert {i["location"]["path"] for i in gitlab([lint_text(TWO_INDICES, "m1/np.lis")])} == {"m1/np.lis"}
+
+
+def test_sarif_names_the_tools_home_and_gives_help_in_markdown(monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.setenv(formats.DOCS_URL_VARIABLE, "https://docs.test/zero")
+    log = sarif([from_file(SEED)])
+    driver = log["runs"][0]["tool"]["driver"]
+    assert driver["informationUri"] == "https://docs.test/zero/"
+    assert all(r["help"]["markdown"].startswith("## What it checks") for r in driver["rules"])
+    sarif_model(log)  # still a valid SARIF 2.1.0 log
+
+
+def test_the_json_schemas_id_is_no_placeholder() -> None:
+    from zero.structured.schema import build_schema
+
+    for kind in (None, "ZERO"):
+        ident = build_schema(builtin_registry(), kind)["$id"]
+        assert ".invalid" not in ident and ident.startswith("urn:zero-lint:schema:")

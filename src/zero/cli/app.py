@@ -861,12 +861,33 @@ def main() -> None:
     raise SystemExit(code)
 
 
+# click's own error class (typer 0.29 carries its own copy of click, older typers use click's)
+_CLICK_ERROR: type[Exception] = next(c for c in typer.BadParameter.__mro__ if c.__name__ == "ClickException")
+
+
+def usage_error_line(exc: Exception) -> str:
+    """A usage error in one line: the command, what is wrong, and where the help is
+    (click prints four: Usage, Try, a blank line, Error)."""
+    ctx = getattr(exc, "ctx", None)
+    path = getattr(ctx, "command_path", None) or "zero"
+    message = " ".join(str(exc.format_message()).split()).rstrip(".")  # type: ignore[attr-defined]
+    return f"{path}: {message}; see '{path} --help'"
+
+
 def _standalone(application: typer.Typer) -> int:
     try:
-        application(prog_name="zero", standalone_mode=True)
+        code = application(prog_name="zero", standalone_mode=False)
     except SystemExit as exc:
         return exc.code if isinstance(exc.code, int) else (0 if exc.code is None else 1)
-    return exits.OK
+    except typer.Abort:  # click's form of an interrupt
+        raise KeyboardInterrupt from None
+    except _CLICK_ERROR as exc:
+        if type(exc).__name__ == "NoArgsIsHelpError":  # `zero` alone: the help, as click shows it
+            exc.show()  # type: ignore[attr-defined]
+        else:
+            sys.stderr.write(usage_error_line(exc) + "\n")
+        return int(getattr(exc, "exit_code", exits.USAGE))
+    return code if isinstance(code, int) else exits.OK
 
 
 __all__ = ["app", "main", "render_lint"]

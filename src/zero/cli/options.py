@@ -42,16 +42,19 @@ class Option:
 # but not `--bogus` → `--jobs` (0.62) nor `respect-gitignore` → `per-file-ignores` (0.61).
 SUGGEST_CUTOFF = 0.7
 
-PATHS_HELP = "List files or directories (*.lis, *.lst); - reads standard input."
+PATHS_HELP = ("Files or directories: lists (*.lis, *.lst), the kernel's XML lists and TwinCAT exports (*.xml), "
+              "YAML/TOML/JSON forms named on the command line, NC programs (*.nc, *.mpf, *.spf); "
+              "- reads standard input.")
 
 LINT_OPTIONS: tuple[Option, ...] = (
     Option("output_format", ("--output-format",),
-           "text (for people), concise (one line each), json (a stable contract), github, gitlab, junit "
-           "or sarif.", choices=OUTPUT_FORMATS, default="text", metavar="FORMAT", envvar="ZERO_OUTPUT_FORMAT"),
+           "text or full (for people, with the source lines), concise (one line each), grouped (by file), "
+           "json (a stable contract), json-lines, github, gitlab, azure, junit, sarif, rdjson (reviewdog) or "
+           "pylint.", choices=OUTPUT_FORMATS, default="text", metavar="FORMAT", envvar="ZERO_OUTPUT_FORMAT"),
     Option("output_file", ("--output-file", "-o"),
            "Write the report to this file (atomically) instead of stdout.", type=Path, metavar="FILE"),
-    Option("show_statistics", ("--statistics",), "Print the number of findings per code to stderr.", "flag",
-           default=False),
+    Option("show_statistics", ("--statistics",),
+           "Print the number of findings per code instead of the findings (as ruff).", "flag", default=False),
     Option("exit_zero", ("--exit-zero",), "Exit 0 even when there are findings (usage errors still exit 2).",
            "flag", default=False),
     Option("exit_non_zero_on_fix", ("--exit-non-zero-on-fix",),
@@ -59,6 +62,8 @@ LINT_OPTIONS: tuple[Option, ...] = (
     Option("quiet", ("--quiet", "-q"), "Print the findings only: no summary line, no progress, no notes.",
            "flag", default=False),
     Option("silent", ("--silent", "-s"), "Print nothing but errors; the exit code still tells.", "flag",
+           default=False),
+    Option("watch", ("--watch", "-w"), "Lint again whenever a file below PATH changes, until interrupted.", "flag",
            default=False),
     Option("show_files", ("--show-files",), "List the files that would be checked, and exit.", "flag",
            default=False),
@@ -73,12 +78,30 @@ LINT_OPTIONS: tuple[Option, ...] = (
            "Add these codes or prefixes to the selection (opt-in rules by their full code).", "multi", metavar="CODES"),
     Option("ignore", ("--ignore",), "Skip these codes or prefixes (repeatable, or comma-separated).", "multi",
            metavar="CODES"),
+    Option("exclude", ("--exclude",),
+           "Skip files and directories matching these patterns, in place of the configuration's `exclude` "
+           "(repeatable, or comma-separated).", "multi", metavar="PATTERNS"),
+    Option("extend_exclude", ("--extend-exclude",),
+           "Skip these patterns as well as those the configuration excludes.", "multi", metavar="PATTERNS"),
+    Option("respect_gitignore", ("--respect-gitignore",),
+           "Skip what .gitignore ignores when walking a directory (default: the configuration's "
+           "respect-gitignore, which is true).", "flag", negative="--no-respect-gitignore"),
+    Option("force_exclude", ("--force-exclude",),
+           "Exclude files named on the command line too, as a pre-commit hook needs (the default); "
+           "--no-force-exclude checks every named file.", "flag", negative="--no-force-exclude"),
+    Option("kernel", ("--kernel", "--target-version"),
+           "The kernel release the machines run (as `kernel` in the configuration), e.g. V3.1.3079.",
+           metavar="RELEASE"),
     Option("kind", ("--kind",), "List kind instead of detecting it: zero, axis, channel, tool, startup, ...",
            metavar="KIND"),
     Option("jobs", ("--jobs", "-j"),
            "Processes for many files (default: all cores; 0 = all cores, 1 = no parallelism).", type=int,
            minimum=0, metavar="N"),
     Option("fix", ("--fix",), "Apply safe fixes to the files.", "flag", default=False),
+    Option("fix_only", ("--fix-only",), "Apply safe fixes and report no finding (implies --fix).", "flag",
+           default=False),
+    Option("show_fixes", ("--show-fixes",),
+           "After the findings, list the fixes: applied (with --fix) or available, per file.", "flag", default=False),
     Option("show_diff", ("--diff",), "Show the fixes as a unified diff; write nothing.", "flag", default=False),
     Option("add_noqa", ("--add-noqa",),
            "Record today's findings: add a `noqa` with their codes to each entry line (a baseline).",

@@ -10,7 +10,7 @@ from __future__ import annotations
 
 import io
 import sys
-from collections.abc import Iterable, Iterator, Sequence
+from collections.abc import Callable, Iterable, Iterator, Sequence
 from pathlib import Path
 from typing import TextIO
 
@@ -117,7 +117,7 @@ def check_paths(paths: Sequence[str | Path]) -> None:
 
 
 def files_to_check(paths: Sequence[str | Path], config: str | Path | Sequence[str] | None, isolated: bool,
-                   param_desc: str | Path | None) -> list[str]:
+                   param_desc: str | Path | None, force_exclude: bool = True) -> list[str]:
     """``--show-files``: the files ``zero lint`` would check, without checking them."""
     from zero.engine.commands import lint_files  # start-up: only for --show-files
     from zero.engine.project import Project  # start-up: only for --show-files
@@ -125,7 +125,7 @@ def files_to_check(paths: Sequence[str | Path], config: str | Path | Sequence[st
     if [str(p) for p in paths] in ([], ["-"]):
         return ["-"]
     project = Project(REGISTRIES, config=config, isolated=isolated, param_desc=param_desc)
-    return [str(f) for f in lint_files([Path(p) for p in paths], project)]
+    return [str(f) for f in lint_files([Path(p) for p in paths], project, force_exclude)]
 
 
 def _noted(results: Iterable[LintResult], err: TextIO) -> Iterator[LintResult]:
@@ -142,7 +142,7 @@ def render_lint(results: Iterable[LintResult], output_format: str, stream: TextI
     """The findings in one of the output formats, each result counted into ``totals``; the text
     summary goes to ``summary_stream`` (stderr by default); ``fail_on``: the severity from which a
     finding fails the run (a JUnit failure)."""
-    if output_format == "text":
+    if output_format in ("text", "full"):  # `full`: ruff's name for the report with the source lines
         render_text(results, stream, color=color, summary_stream=summary_stream or sys.stderr, totals=totals)
         return
     from zero.output.formats import RENDERERS, STREAMED  # start-up: only for machine-readable reports
@@ -159,6 +159,122 @@ def render_lint(results: Iterable[LintResult], output_format: str, stream: TextI
             RENDERERS[output_format](list(counted), stream)
 
 
+def command_line_config(exclude: Sequence[str], extend_exclude: Sequence[str], respect_gitignore: bool | None,
+                        kernel: str | None) -> list[str]:
+    """``--exclude``, ``--extend-exclude``, ``--[no-]respect-gitignore`` and ``--kernel`` as the
+    ``KEY = VALUE`` overrides of ``--config`` (patterns repeatable or comma-separated, as ruff's)."""
+    import json  # start-up: only when one of these options is given
+
+    def patterns(values: Sequence[str]) -> list[str]:
+        return [p.strip() for v in values for p in v.split(",") if p.strip()]
+
+    out = []
+    if exclude:
+        out.append(f"exclude = {json.dumps(patterns(exclude))}")
+    if extend_exclude:
+        out.append(f"extend-exclude = {json.dumps(patterns(extend_exclude))}")
+    if respect_gitignore is not None:
+        out.append(f"respect-gitignore = {'true' if respect_gitignore else 'false'}")
+    if kernel is not None:
+        out.append(f"kernel = {json.dumps(kernel)}")
+    return out
+
+
+def statistics_report(totals: Totals, output_format: str) -> str:
+    """``--statistics``: the count per code, most frequent first; a JSON array with a JSON format."""
+    if output_format in ("json", "json-lines"):
+        import json  # start-up: only for --statistics with JSON
+
+        from zero.rules import RULES  # start-up: as above
+
+        rows = [{"code": c, "name": RULES[c].name if c in RULES else None, "count": n}
+                for c, n in sorted(totals.by_code.items(), key=lambda kv: (-kv[1], kv[0]))]
+        return json.dumps(rows, indent=2) + "\n"
+    return statistics(totals)
+
+
+def fixes_report(fixed: Sequence[tuple[str, dict[str, int]]], applied: bool,
+                 results: Sequence[LintResult] | None = None) -> str:
+    """``--show-fixes``: per file, the fixes applied by code (with ``--fix``), or the findings that
+    have a fix (without it); one line when there is none."""
+    from zero.rules import RULES  # start-up: only for --show-fixes
+
+    if applied:
+        rows = [(path, counts) for path, counts in fixed if counts]
+        head = "Fixed {n} finding{s}:"
+    else:
+        rows = []
+        for r in results or ():
+            counts: dict[str, int] = {}
+            for d in r.diagnostics:
+                if d.fix is not None:
+                    counts[d.code] = counts.get(d.code, 0) + 1
+            if counts:
+                rows.append((r.path, counts))
+        head = "{n} finding{s} can be fixed (--fix applies the safe ones):"
+    n = sum(sum(c.values()) for _, c in rows)
+    if not n:
+        return "No fixes applied.\n" if applied else "No finding has a fix.\n"
+    out = [head.format(n=n, s="" if n == 1 else "s")]
+    for path, counts in rows:
+        out.append(f"- {printable(path, escape=True)}:")
+        out += [f"    {k} × {code} ({RULES[code].name if code in RULES else code})"
+                for code, k in sorted(counts.items())]
+    return "\n".join(out) + "\n"
+
+
+WATCH_INTERVAL = 0.5  # seconds between two looks at the files (--watch)
+
+
+def _snapshot(paths: Sequence[str | Path]) -> dict[str, tuple[int, int]]:
+    """Every file below ``paths`` (hidden folders left out) with its modification time and size."""
+    import os  # start-up: only for --watch
+
+    out: dict[str, tuple[int, int]] = {}
+
+    def look(name: str) -> None:
+        try:
+            st = os.stat(name)
+        except OSError:
+            return
+        out[name] = (st.st_mtime_ns, st.st_size)
+
+    for p in paths:
+        if os.path.isdir(p):
+            for root, dirs, files in os.walk(p):
+                dirs[:] = [d for d in dirs if not d.startswith(".")]
+                for f in files:
+                    look(os.path.join(root, f))
+        else:
+            look(str(p))
+    return out
+
+
+def watch_loop(run_once: Callable[[], int], paths: Sequence[str | Path], interval: float = WATCH_INTERVAL) -> int:
+    """``--watch``: run the lint, then again whenever a file below ``paths`` is added, removed or
+    changed (its modification time or size, polled every ``interval`` seconds: pure Python, on
+    every system), until interrupted (exit 130)."""
+    import time  # start-up: only for --watch
+
+    if not paths or any(str(p) == "-" for p in paths):
+        raise ZeroError("--watch needs files or directories to watch (not standard input)")
+    while True:
+        before = _snapshot(paths)
+        code = exits.guard(run_once)
+        if code == exits.INTERRUPTED:
+            return code
+        sys.stderr.write(f"zero: watching {len(before)} file{'s' if len(before) != 1 else ''} for changes "
+                         "(Ctrl-C ends)\n")
+        sys.stderr.flush()
+        sys.stdout.flush()
+        try:
+            while _snapshot(paths) == before:
+                time.sleep(interval)
+        except KeyboardInterrupt:
+            return exits.INTERRUPTED
+        sys.stderr.write("zero: a file changed: linting again\n")
+
+
 def lint(paths: Sequence[str | Path] = (), output_format: str = "text", output_file: str | Path | None = None,
          show_statistics: bool = False, exit_zero: bool = False,
          config: str | Path | Sequence[str] | None = None,
@@ -167,11 +283,24 @@ def lint(paths: Sequence[str | Path] = (), output_format: str = "text", output_f
          kind: str | None = None, jobs: int | None = None, fix: bool = False, show_diff: bool = False,
          unsafe_fixes: bool = False, stdin_filename: str | None = None, machine: str | Path | None = None,
          add_noqa: bool = False, exit_non_zero_on_fix: bool = False, quiet: bool = False, silent: bool = False,
-         show_files: bool = False, param_desc: str | Path | None = None) -> int:
+         show_files: bool = False, param_desc: str | Path | None = None,
+         exclude: Sequence[str] = (), extend_exclude: Sequence[str] = (), respect_gitignore: bool | None = None,
+         force_exclude: bool | None = None, kernel: str | None = None, fix_only: bool = False,
+         show_fixes: bool = False, watch: bool = False) -> int:
     """``zero lint``: report what the controller will do with the files; the exit code.
 
     ``quiet``: the findings only (no summary line, progress bar or notes); ``silent``: not even
-    those (the exit code tells; a report file is still written)."""
+    those (the exit code tells; a report file is still written). ``exclude``, ``extend_exclude``,
+    ``respect_gitignore`` and ``kernel`` are the configuration's keys of those names, laid over it
+    as ``--config KEY=VALUE`` is; ``fix_only``: ``fix`` without a report (as ruff's ``--fix-only``);
+    ``show_statistics``: the counts per code instead of the findings; ``watch``: lint again on
+    every change below ``paths`` (:func:`watch_loop`)."""
+    if watch:
+        again = {k: v for k, v in locals().items() if k != "watch"}
+        return watch_loop(lambda: lint(**again), paths)
+    config = [*([config] if isinstance(config, (str, Path)) else (config or ())),
+              *command_line_config(exclude, extend_exclude, respect_gitignore, kernel)]
+    fix = fix or fix_only
     if add_noqa and (fix or show_diff):
         raise ZeroError("--add-noqa writes the suppressions into the files: it does not go with --fix or --diff")
     max_file_bytes()  # a bad ZERO_MAX_FILE_SIZE is one usage error, not one finding per file
@@ -182,7 +311,7 @@ def lint(paths: Sequence[str | Path] = (), output_format: str = "text", output_f
     if show_files:
         if machine is not None:
             raise ZeroError("--show-files lists the files named or found in directories: not with --machine")
-        listed = files_to_check(paths, config, isolated, param_desc)
+        listed = files_to_check(paths, config, isolated, param_desc, force_exclude is not False)
         sys.stdout.write("".join(f"{f}\n" for f in listed))
         return exits.OK
     if not paths and stdin_filename is None and machine is None:
@@ -190,8 +319,8 @@ def lint(paths: Sequence[str | Path] = (), output_format: str = "text", output_f
     quiet = quiet or silent
     request = LintRequest([str(p) for p in paths], tuple(select), tuple(ignore), kind, param_desc, jobs,
                           config, isolated, fix, show_diff, unsafe_fixes, stdin_filename, machine,
-                          tuple(extend_select), add_noqa,
-                          stream=output_file is None and output_format in STREAMED_FORMATS)
+                          tuple(extend_select), add_noqa, force_exclude is not False,
+                          stream=output_file is None and output_format in STREAMED_FORMATS and not show_fixes)
     streams = echo()
     if quiet:
         streams = Echo(out=streams.out, err=_discard, out_bytes=streams.out_bytes)
@@ -206,6 +335,20 @@ def lint(paths: Sequence[str | Path] = (), output_format: str = "text", output_f
     summary = io.StringIO() if quiet else sys.stderr
     fail_on = Severity.WARNING if strict else Severity.ERROR
     shown = run.results if quiet else _noted(run.results, sys.stderr)
+    if fix_only or show_statistics:  # the counts alone, or nothing: the findings are counted, not shown
+        counted = list(tallied(shown, totals))
+        if show_statistics and output_file is not None:  # the counts are the report
+            inputs = tuple(Path(r.path) for r in counted if r.path != "-")
+            write_report(Path(output_file), statistics_report(totals, output_format).encode("utf-8"), inputs)
+        elif show_statistics and not silent:
+            sys.stdout.write(statistics_report(totals, output_format))
+        if show_fixes and not silent:
+            sys.stderr.write(fixes_report(run.fixed, fix))
+        if totals.unreadable:
+            return exits.USAGE
+        if fix_only:
+            return exits.FINDINGS if exit_non_zero_on_fix and run.changed and not exit_zero else exits.OK
+        return exits.lint_exit(totals, strict, exit_zero)
     if output_file is not None:
         results = list(shown)
         buffer = io.StringIO()
@@ -216,8 +359,8 @@ def lint(paths: Sequence[str | Path] = (), output_format: str = "text", output_f
         report = io.StringIO() if silent else sys.stderr if run.findings_to_stderr else sys.stdout
         render_lint(shown, output_format, report, totals, color=None if not silent else False,
                     summary_stream=summary, fail_on=fail_on)
-    if show_statistics and not silent:
-        sys.stderr.write(statistics(totals))
+    if show_fixes and not silent:
+        sys.stderr.write(fixes_report(run.fixed, fix, run.results if isinstance(run.results, list) else None))
     if totals.unreadable:
         return exits.USAGE  # a file could not be read: something went wrong, whatever else
     if show_diff:

@@ -9,12 +9,13 @@ works (a patch, "3 fixes applied") goes through an :class:`Echo`.
 
 from __future__ import annotations
 
+from collections import Counter
 from collections.abc import Callable, Iterable, Sequence
 from pathlib import Path
 
 from zero.catalog.registry import KINDS, Registry, kind_from_name
 from zero.diagnostics import Diagnostic, Severity
-from zero.engine.discovery import collect_files
+from zero.engine.discovery import collect_files, skipped_note
 from zero.engine.lint import (
     LintOptions,
     LintResult,
@@ -54,7 +55,7 @@ def parse_codes(values: Sequence[str] | None) -> tuple[str, ...]:
     """Rule codes or prefixes, repeatable or comma-separated; each must match a rule."""
     out = tuple(c.strip().upper() for v in values or () for c in v.split(",") if c.strip())
     for c in out:
-        if not any(code.startswith(c) for code in RULES):
+        if c != "ALL" and not any(code.startswith(c) for code in RULES):  # ALL: every rule, as in ruff
             raise ZeroError(f"{c!r} matches no rule code (see `zero rule --all`)")
     return out
 
@@ -92,6 +93,7 @@ class LintRequest:
     machine: str | Path | None = None
     extend_select: Sequence[str] = ()
     add_noqa: bool = False
+    force_exclude: bool = True  # `exclude` drops files named on the command line too (--no-force-exclude: not)
     # The results may come as a stream, each made as it is read: for a report written as it goes,
     # which then keeps no result (used only where the order and the results are the same).
     stream: bool = False
@@ -109,13 +111,17 @@ class LintRun:
     report: bool = True  # False: nothing to report (standard input excluded by the configuration)
     findings_to_stderr: bool = False  # standard output holds the fixed list or the patch
     changed: int = 0  # files a fix changes (or, with --diff, would change)
+    fixed: list[tuple[str, dict[str, int]]] = field(default_factory=list)  # per file written: fixes by code
 
 
-def lint_files(named: Sequence[Path], project: Project) -> list[Path]:
+def lint_files(named: Sequence[Path], project: Project, force_exclude: bool = True,
+               skipped: dict[str, int] | None = None) -> list[Path]:
     """The files ``zero lint`` checks (``--show-files`` lists them): those named, and the list files
-    below the directories, as each file's or directory's configuration includes and excludes them."""
+    below the directories, as each file's or directory's configuration includes and excludes them
+    (a file named is excluded too unless ``force_exclude`` is false); ``skipped`` counts what a
+    directory walk left out, by what (:func:`zero.engine.discovery.collect_files`)."""
     return collect_files(named, include=project.included, exclude=project.excluded,
-                         respect_gitignore=project.respects_gitignore)
+                         respect_gitignore=project.respects_gitignore, force_exclude=force_exclude, skipped=skipped)
 
 
 def run_lint(request: LintRequest, registries: Registries, echo: Echo,
@@ -130,10 +136,11 @@ def run_lint(request: LintRequest, registries: Registries, echo: Echo,
     if request.reads_stdin:
         return _lint_stdin(request, project, echo, read_stdin())
     named = [Path(p) for p in request.paths]
-    files = lint_files(named, project)
+    skipped: dict[str, int] = {}
+    files = lint_files(named, project, request.force_exclude, skipped)
     if not files and any(p.is_dir() for p in named):
         raise ZeroError("no list files or NC programs found (looked for *.lis, *.lst, *.nc, *.mpf, *.spf, and *.xml "
-                        "holding lists)")
+                        "holding lists)" + skipped_note(skipped))
     groups: dict[Path | None, list[Path]] = {}
     for f in files:  # files sharing a parameter description share a registry
         groups.setdefault(project.param_desc(f), []).append(f)
@@ -279,6 +286,8 @@ def _fix_one(path: Path, result: LintResult, options: LintOptions, registry: Reg
         echo.out_bytes(unified_diff(str(path), data, fixed.fixed))
         return result
     write_atomic(path, fixed.fixed, force=True)
+    left = Counter(d.code for d in fixed.result.diagnostics)
+    run.fixed.append((str(path), dict(Counter(d.code for d in result.diagnostics) - left)))
     echo.err(f"zero: {path}: {fixed.applied} fix{'es' if fixed.applied != 1 else ''} applied\n")
     return fixed.result
 

@@ -357,7 +357,7 @@ def parse_config(path: Path, text: str | None = None, _chain: tuple[Path, ...] =
             raise fail(key, "expected a list of rule codes, e.g. [\"R005\", \"M\"]", sub)
         out = tuple(v.strip().upper() for v in value)
         for c in out:
-            if not any(code.startswith(c) for code in RULES):
+            if c != "ALL" and not any(code.startswith(c) for code in RULES):
                 raise fail(key, f"{c!r} matches no rule code (see `zero rule`)", sub)
         return out
 

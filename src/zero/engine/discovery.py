@@ -54,10 +54,23 @@ def holds_lists(path: Path) -> bool:
     return xml_form(head) is not None
 
 
+GITIGNORE, EXCLUDE = ".gitignore", "exclude"  # what a walk skips a file for (the keys of `skipped`)
+
+
+def skipped_note(skipped: dict[str, int]) -> str:
+    """What a walk left out and how to include it: ``; 3 files skipped by .gitignore
+    (--no-respect-gitignore includes them)``; empty when nothing was."""
+    how = {GITIGNORE: "--no-respect-gitignore or respect-gitignore = false includes them",
+           EXCLUDE: "exclude/extend-exclude in the configuration decides; --no-force-exclude checks files named"}
+    parts = [f"{n} file{'s' if n != 1 else ''} skipped by {why} ({how[why]})" for why, n in skipped.items() if n]
+    return "; " + "; ".join(parts) if parts else ""
+
+
 def collect_files(paths: Iterable[str | Path], include: Callable[[Path], bool] | None = None,
                   exclude: Callable[[Path], bool] | None = None,
                   respect_gitignore: bool | Callable[[Path], bool] = True,
-                  note: Callable[[str], None] | None = None) -> list[Path]:
+                  note: Callable[[str], None] | None = None, force_exclude: bool = True,
+                  skipped: dict[str, int] | None = None) -> list[Path]:
     """Files named explicitly, plus list files below named directories (sorted).
 
     ``include`` decides which files a directory walk picks up (default: lists ``*.lis``,
@@ -66,8 +79,12 @@ def collect_files(paths: Iterable[str | Path], include: Callable[[Path], bool] |
     directories, named ones included. A
     directory walk skips what ``.gitignore`` ignores when the directory is in a git
     work tree and ``respect_gitignore`` (a flag, or the directory's configuration's
-    ``respect-gitignore``) says so (named files are always linted).
+    ``respect-gitignore``) says so (named files are always linted). ``force_exclude`` false: a file
+    named is linted whatever ``exclude`` says (as ruff without ``--force-exclude``). ``skipped``, where
+    given, counts the files a walk would have picked up but ``.gitignore`` or ``exclude`` left out
+    (:data:`GITIGNORE`, :data:`EXCLUDE`), for a message that says why nothing was found.
     """
+    tally = skipped if skipped is not None else {}
     out: list[Path] = []
     for raw in paths:
         p = Path(raw)
@@ -76,21 +93,38 @@ def collect_files(paths: Iterable[str | Path], include: Callable[[Path], bool] |
             visible = git_visible(p, note) if respect else None
             found: list[Path] = []
             for root, dirs, files in os.walk(p):
-                dirs[:] = sorted(d for d in dirs if not d.startswith(".")
-                                 and not (exclude and exclude(Path(root) / d)))
+                kept_dirs = [d for d in dirs if not d.startswith(".")]
+                dirs[:] = sorted(d for d in kept_dirs if not (exclude and exclude(Path(root) / d)))
+                if skipped is not None:
+                    for d in set(kept_dirs) - set(dirs):  # an excluded folder: what it holds counts as skipped
+                        tally[EXCLUDE] = tally.get(EXCLUDE, 0) + _walkable(Path(root) / d, include)
                 rel_root = os.path.relpath(root, p)
                 for f in files:
-                    if visible is not None and os.path.normpath(os.path.join(rel_root, f)) not in visible:
-                        continue
                     path = Path(root) / f
-                    if (include(path) if include else f.lower().endswith(_WALKED)) and \
-                            not (exclude and exclude(path)) and holds_lists(path):
+                    wanted = include(path) if include else f.lower().endswith(_WALKED)
+                    if visible is not None and os.path.normpath(os.path.join(rel_root, f)) not in visible:
+                        if wanted:
+                            tally[GITIGNORE] = tally.get(GITIGNORE, 0) + 1
+                        continue
+                    if wanted and exclude and exclude(path):
+                        tally[EXCLUDE] = tally.get(EXCLUDE, 0) + 1
+                    elif wanted and holds_lists(path):
                         found.append(path)
             out.extend(sorted(found, key=str))
         elif os.path.lexists(p):
-            if not (exclude and exclude(p)):
+            if not (force_exclude and exclude and exclude(p)):
                 check_regular(p)  # a FIFO, device, dangling link or loop named here: refused at once
                 out.append(p)
         else:
             raise ZeroError("no such file or directory", str(raw))
     return out
+
+
+def _walkable(directory: Path, include: Callable[[Path], bool] | None) -> int:
+    """How many files below ``directory`` a walk would pick up by their names (for the count of
+    what ``exclude`` skipped; hidden folders are never walked)."""
+    n = 0
+    for root, dirs, files in os.walk(directory):
+        dirs[:] = [d for d in dirs if not d.startswith(".")]
+        n += sum(1 for f in files if (include(Path(root) / f) if include else f.lower().endswith(_WALKED)))
+    return n

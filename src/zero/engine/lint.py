@@ -115,16 +115,29 @@ def selected_rules(options: LintOptions) -> dict[str, Severity]:
     return hit
 
 
+ALL = "ALL"  # as in ruff: every rule, opt-in ones included, the least specific selector
+
+
+def _match(prefixes: Sequence[str], code: str) -> int:
+    """How specific the longest of ``prefixes`` that matches ``code`` is (``ALL``: 0); -1: none."""
+    return max((0 if p == ALL else len(p) for p in prefixes if p == ALL or code.startswith(p)), default=-1)
+
+
+def _named(code: str, *selectors: Sequence[str]) -> bool:
+    """Is an opt-in rule enabled by ``selectors``: by its full code, or by ``ALL``?"""
+    return any(code in s or ALL in s for s in selectors)
+
+
 def _selected_rules(options: LintOptions) -> dict[str, Severity]:
     """All rules (or those ``select`` names), plus ``extend_select``, less ``ignore``; the longest
     matching prefix decides, and at equal length ``ignore`` wins. An opt-in rule runs only when
-    named by its full code."""
+    named by its full code (or by ``ALL``)."""
     out: dict[str, Severity] = {}
     for code, r in RULES.items():
-        sel = max((len(p) for p in options.select if code.startswith(p)), default=-1)
-        ext = max((len(p) for p in options.extend_select if code.startswith(p)), default=-1)
-        ign = max((len(p) for p in options.ignore if code.startswith(p)), default=-1)
-        if r.opt_in and code not in options.select and code not in options.extend_select:
+        sel = _match(options.select, code)
+        ext = _match(options.extend_select, code)
+        ign = _match(options.ignore, code)
+        if r.opt_in and not _named(code, options.select, options.extend_select):
             continue
         if options.select and sel < 0 and ext < 0:
             continue
@@ -162,9 +175,9 @@ def _layered_selection(layers: Sequence[Layer], dropped: Sequence[str] = ()) -> 
         if not (select or extend or ignore):
             continue
         for code, r in RULES.items():
-            on = max((len(p) for p in (*select, *extend) if code.startswith(p)), default=-1)
-            off = max((len(p) for p in ignore if code.startswith(p)), default=-1)
-            if r.opt_in and code not in select and code not in extend:
+            on = _match((*select, *extend), code)
+            off = _match(ignore, code)
+            if r.opt_in and not _named(code, select, extend):
                 on = -1
             if not select and on < 0 and off < 0:
                 continue

@@ -35,8 +35,17 @@ def rule_docs_template() -> str | None:
         return RULE_DOCS_URL
     site = os.environ.get(DOCS_URL_VARIABLE, "").strip()
     return f"{site.rstrip('/')}/rules/{{code}}/" if site.startswith(("https://", "http://")) else None
-# The tool's home page (SARIF ``informationUri``); none by default, for the same reason.
+# The tool's home page (SARIF ``informationUri``); none by default, for the same reason: the
+# documentation site's address ($ZERO_DOCS_URL) where it is set.
 PROJECT_URL: str | None = None
+
+
+def information_uri() -> str | None:
+    """SARIF ``tool.driver.informationUri``: :data:`PROJECT_URL`, else the documentation site."""
+    if PROJECT_URL:
+        return PROJECT_URL
+    site = os.environ.get(DOCS_URL_VARIABLE, "").strip()
+    return site.rstrip("/") + "/" if site.startswith(("https://", "http://")) else None
 # The name of zero's own fingerprint among a SARIF result's ``partialFingerprints``.
 SARIF_FINGERPRINT = "zeroKeyHash/v1"
 
@@ -89,13 +98,14 @@ def render_concise(results: Iterable[LintResult], stream: TextIO) -> None:
                      f"{d.severity.label} {printable(d.message, escape=True)}\n")
 
 
-def repo_path(path: str) -> str:
-    """``path`` relative to the working directory (the repository's root in CI), with ``/``
-    between its parts, as GitLab and GitHub expect; as given where it lies outside (or is ``-``)."""
+def repo_path(path: str, root: str | None = None) -> str:
+    """``path`` relative to ``root`` (by default the working directory, the repository's root in
+    CI), with ``/`` between its parts, as GitLab and GitHub expect; as given where it lies outside
+    (or is ``-``)."""
     if path == "-":
         return path
     try:
-        rel = os.path.relpath(os.path.abspath(path))
+        rel = os.path.relpath(os.path.abspath(path), os.path.abspath(root) if root else None)
     except ValueError:  # another drive (Windows)
         return path
     if rel == os.pardir or rel.startswith(os.pardir + os.sep):
@@ -125,7 +135,7 @@ def _subject(d: Diagnostic, r: LintResult) -> str:
     return text.split(None, 1)[0] if text.strip() else ""
 
 
-def fingerprints(r: LintResult) -> list[str]:
+def fingerprints(r: LintResult, root: str | None = None) -> list[str]:
     """A fingerprint per finding of ``r``, in order, that stays the same when lines move or other
     findings come and go: made of the repository-relative path, the code, the key as written
     (with its indices: every index of a parameter shares its ID) and which occurrence of that
@@ -133,7 +143,7 @@ def fingerprints(r: LintResult) -> list[str]:
     seen: dict[tuple[str, str, str], int] = {}
     out = []
     for d in r.diagnostics:
-        ident = (repo_path(d.path), d.code, _subject(d, r))
+        ident = (repo_path(d.path, root), d.code, _subject(d, r))
         seen[ident] = seen.get(ident, 0) + 1
         text = "\0".join((*ident, str(seen[ident])))
         out.append(hashlib.sha256(text.encode("utf-8", "surrogateescape")).hexdigest())
@@ -141,15 +151,17 @@ def fingerprints(r: LintResult) -> list[str]:
 
 
 def render_gitlab(results: Sequence[LintResult], stream: TextIO) -> None:
-    """GitLab code quality report (a JSON array of issues), paths relative to the repository;
-    the fingerprint is :func:`fingerprints`'."""
+    """GitLab code quality report (a JSON array of issues), paths relative to the repository:
+    to ``$CI_PROJECT_DIR`` where GitLab sets it (a job run from a subfolder keeps the prefix),
+    else to the working directory; the fingerprint is :func:`fingerprints`'."""
     severity = {Severity.ERROR: "major", Severity.WARNING: "minor", Severity.INFO: "info"}
+    root = os.environ.get("CI_PROJECT_DIR") or None
     out = []
     for r in results:
-        for d, fp in zip(r.diagnostics, fingerprints(r), strict=True):
+        for d, fp in zip(r.diagnostics, fingerprints(r, root), strict=True):
             out.append({"description": f"{d.code} {d.message}", "check_name": d.code, "fingerprint": fp,
                         "severity": severity[d.severity],
-                        "location": {"path": repo_path(d.path),
+                        "location": {"path": repo_path(d.path, root),
                                      "lines": {"begin": d.span.line, "end": d.span.end_line}}})
     stream.write(json.dumps(out, indent=2) + "\n")
 
@@ -213,6 +225,8 @@ def render_sarif(results: Sequence[LintResult], stream: TextIO, rule_docs: str |
     fingerprint (``partialFingerprints``: that of :func:`fingerprints`, so a result uploaded again
     is known again) and the invocation: not successful when a file could not be read (F001, the
     run exits 2), each such file a notification."""
+    from zero.output.docs import explanation_markdown  # start-up: only for SARIF
+
     docs = rule_docs if rule_docs is not None else rule_docs_template()
     level = {Severity.ERROR: "error", Severity.WARNING: "warning", Severity.INFO: "note"}
     used = sorted({d.code for d in _each(results)})
@@ -224,7 +238,7 @@ def render_sarif(results: Sequence[LintResult], stream: TextIO, rule_docs: str |
             "id": c, "name": RULES[c].name, "shortDescription": {"text": RULES[c].summary},
             "fullDescription": {"text": RULES[c].explanation.strip()},
             "defaultConfiguration": {"level": level[RULES[c].severity]},
-            "help": {"text": RULES[c].explanation.strip()}}
+            "help": {"text": RULES[c].explanation.strip(), "markdown": explanation_markdown(RULES[c].explanation)}}
         if docs:
             rule["helpUri"] = docs.replace("{code}", urllib.parse.quote(c))
         rules.append(rule)
@@ -245,7 +259,8 @@ def render_sarif(results: Sequence[LintResult], stream: TextIO, rule_docs: str |
                     {"id": n, "message": {"text": printable(rel.message)}, "physicalLocation": {
                         "artifactLocation": artifact_uri(rel.path or d.path), "region": _region(rel.span)}}
                     for n, rel in enumerate(d.related)]
-            properties = {k: v for k, v in (("parameterId", d.param_id), ("kernelError", d.kernel_error)) if v}
+            properties = {k: v for k, v in (("parameterId", d.param_id), ("kernelError", d.kernel_error),
+                                            ("consequence", d.consequence), ("source", d.source)) if v}
             if properties:
                 item["properties"] = properties
             res.append(item)
@@ -256,8 +271,9 @@ def render_sarif(results: Sequence[LintResult], stream: TextIO, rule_docs: str |
     if notifications:
         invocation["toolExecutionNotifications"] = notifications
     driver: dict[str, object] = {"name": "zero", "version": __version__}
-    if PROJECT_URL:
-        driver["informationUri"] = PROJECT_URL
+    home = information_uri()
+    if home:
+        driver["informationUri"] = home
     driver["rules"] = rules
     log = {"$schema": "https://json.schemastore.org/sarif-2.1.0.json", "version": "2.1.0",
            "runs": [{"originalUriBaseIds": {"%SRCROOT%": {"uri": Path.cwd().as_uri() + "/"}},
@@ -266,9 +282,101 @@ def render_sarif(results: Sequence[LintResult], stream: TextIO, rule_docs: str |
     stream.write(json.dumps(log, indent=2) + "\n")
 
 
+def render_json_lines(results: Iterable[LintResult], stream: TextIO) -> None:
+    """JSON Lines (``json-lines``, as ruff's): each finding's JSON object of ``--output-format json``
+    on a line of its own."""
+    for d in _each(results):
+        stream.write(json.dumps(d.to_json(), ensure_ascii=False) + "\n")
+
+
+def render_pylint(results: Iterable[LintResult], stream: TextIO) -> None:
+    """The pylint (flake8 ``pylint`` formatter) lines ruff's ``pylint`` format writes:
+    ``path:line: [CODE] message``, read by tools made for pylint's parseable output."""
+    for d in _each(results):
+        stream.write(f"{printable(d.path, escape=True)}:{d.span.line}: [{d.code}] "
+                     f"{printable(d.message, escape=True)}\n")
+
+
+def _azure_data(text: str) -> str:
+    """A logging command's message: the agent reads ``%AZP25`` as ``%``, ``%0D``/``%0A`` as line ends."""
+    return text.replace("%", "%AZP25").replace("\r", "%0D").replace("\n", "%0A")
+
+
+def _azure_property(text: str) -> str:
+    """A logging command's property value: as its message, and ``;`` and ``]`` end a property."""
+    return _azure_data(text).replace(";", "%3B").replace("]", "%5D")
+
+
+def render_azure(results: Iterable[LintResult], stream: TextIO) -> None:
+    """Azure Pipelines logging commands: ``##vso[task.logissue type=error;sourcepath=…;linenumber=…;
+    columnnumber=…;code=…;]message``, one per finding (an information finding is a warning: the
+    command knows only errors and warnings)."""
+    for d in _each(results):
+        kind = "error" if d.severity == Severity.ERROR else "warning"
+        props = (f"type={kind};sourcepath={_azure_property(repo_path(d.path))};linenumber={d.span.line};"
+                 f"columnnumber={d.span.column};code={_azure_property(d.code)};")
+        stream.write(f"##vso[task.logissue {props}]{_azure_data(f'{d.code} {d.message}')}\n")
+
+
+def render_grouped(results: Iterable[LintResult], stream: TextIO) -> None:
+    """ruff's ``grouped`` format: each file's name, then its findings indented below it
+    (``  line:col CODE message``, the positions aligned), a blank line between files."""
+    for r in results:
+        if not r.diagnostics:
+            continue
+        stream.write(f"{printable(r.path, escape=True)}:\n")
+        where = [f"{d.span.line}:{d.span.column}" for d in r.diagnostics]
+        width = max(len(w) for w in where)
+        for d, w in zip(r.diagnostics, where, strict=True):
+            stream.write(f"  {w:<{width}} {d.code} {d.severity.label} {printable(d.message, escape=True)}\n")
+        stream.write("\n")
+
+
+def _utf8_column(text: str | None, column: int) -> int:
+    """A 1-based column in characters as reviewdog counts it: in UTF-8 bytes."""
+    if text is None:
+        return column
+    return len(text[:column - 1].encode("utf-8", "surrogateescape")) + 1
+
+
+def _rd_range(r: LintResult, span: Span) -> dict[str, dict[str, int]]:
+    def position(line: int, column: int) -> dict[str, int]:
+        text = r.document.line_text(line) if r.document.has_line(line) else None
+        return {"line": line, "column": _utf8_column(text, column)}
+
+    return {"start": position(span.line, span.column), "end": position(span.end_line, span.end_column)}
+
+
+RDJSON_SEVERITY = {Severity.ERROR: "ERROR", Severity.WARNING: "WARNING", Severity.INFO: "INFO"}
+
+
+def render_rdjson(results: Sequence[LintResult], stream: TextIO) -> None:
+    """reviewdog's Diagnostic Format as one JSON document (``rdjson``, its ``DiagnosticResult``):
+    each finding with its range (columns in UTF-8 bytes, the end exclusive, as the format has
+    them), severity, code (and the rule page's address where zero knows it) and, for a safe fix,
+    its edits as suggestions reviewdog can offer on a pull request."""
+    docs = rule_docs_template()
+    source = {"name": "zero"}
+    diagnostics: list[dict[str, object]] = []
+    for r in results:
+        for d in r.diagnostics:
+            code: dict[str, str] = {"value": d.code}
+            if docs:
+                code["url"] = docs.replace("{code}", urllib.parse.quote(d.code))
+            item: dict[str, object] = {
+                "message": printable(d.message),
+                "location": {"path": repo_path(d.path), "range": _rd_range(r, d.span)},
+                "severity": RDJSON_SEVERITY[d.severity], "source": source, "code": code}
+            if d.fix is not None and d.fix.safe and d.fix.edits:
+                item["suggestions"] = [{"range": _rd_range(r, e.span), "text": e.replacement} for e in d.fix.edits]
+            diagnostics.append(item)
+    stream.write(json.dumps({"source": source, "diagnostics": diagnostics}, indent=2, ensure_ascii=False) + "\n")
+
+
 # The formats written finding by finding as the results come: a report of many files in one of
 # them (or in text) does not hold the files' results, so its memory does not grow with them.
 STREAMED: dict[str, Callable[[Iterable[LintResult], TextIO], None]] = {
-    "json": render_json, "concise": render_concise, "github": render_github}
+    "json": render_json, "concise": render_concise, "github": render_github, "json-lines": render_json_lines,
+    "pylint": render_pylint, "azure": render_azure, "grouped": render_grouped}
 RENDERERS: dict[str, Callable[[Sequence[LintResult], TextIO], None]] = {
-    **STREAMED, "gitlab": render_gitlab, "junit": render_junit, "sarif": render_sarif}
+    **STREAMED, "gitlab": render_gitlab, "junit": render_junit, "sarif": render_sarif, "rdjson": render_rdjson}
