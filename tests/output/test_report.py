@@ -399,3 +399,19 @@ def test_monitoring_marks_on_the_fixture_machine(tmp_path: Path) -> None:
     marks = elements(html, "monitor-off")
     assert marks and any(m.get("data-monitoring") == "off" for m in marks)
     assert 'data-count="unmonitored">1<' in html
+
+
+@pytest.mark.slow
+def test_a_value_outside_its_range_on_an_axis_list_is_shown_as_the_kernel_limits_it(tmp_path: Path) -> None:
+    """R005 on an axis list: the kernel limits the value to the permissible maximum (P-ERR-1001138,
+    evidence.toml); the row says 100 for 150, linked to the finding that says so."""
+    machine = tmp_path / "m"
+    shutil.copytree(FIXTURE.parent, machine / "listen")
+    axis = machine / "listen" / "achse_x.lis"
+    axis.write_text(axis.read_text().replace("Ende", "handbetrieb.ipo.hb_proz_v_max 150\nEnde"))
+    html = report(machine / "listen" / "hochlauf.lis", tmp_path / "m.html")
+    rows = [r for r in elements(html, "corrected")]
+    assert [r.get("data-used") for r in rows] == ["100 (the permissible maximum)"]
+    anchor = html[html.index('class="uses"'):].split('href="#', 1)[1].split('"', 1)[0]
+    finding = [f for f in elements(html, "finding") if f.get("id") == anchor]
+    assert finding and finding[0]["data-code"] == "R005"

@@ -40,6 +40,7 @@ from zero.catalog.ids import (
     SWE_TOL,
     is_rotary,
 )
+from zero.catalog.ranges import format_number
 from zero.catalog.registry import ParamSpec, Registry
 from zero.diff import Change, default_effective
 from zero.diff import effective as value_of
@@ -351,6 +352,10 @@ def _values(machine: Machine, base: Path, findings: Sequence[FindingGroup] = ())
                 if d.get("param_id") == v.param_id or "value" not in d:
                     d["value"] = row.anchor  # the finding links its parameter's row (else the line's first)
                 used = d.get("corrects", {}).get(v.param_id) if v.param_id else None
+                if used == ZEROED:
+                    used = "0 (an invalid number format is set to 0)"
+                elif used == LIMITED:
+                    used = _limited(spec, now, registry)
                 if used is not None and row.used is None:
                     row.used, row.used_by = used, d["anchor"]
             rows.append(row)
@@ -378,10 +383,18 @@ def _resolve_references(rows: list[ValueRow]) -> None:
 _CORRECTIONS = {err.code: err.correction.strip() for err in CHECKS}
 
 
-def corrects(code: str, param_id: str | None, registry: Registry) -> dict[str, str]:
-    """What the documented correction of a K rule's start-up error sets: parameter → the value the
-    controller then uses (the default, a number, or "the value of P-…"); empty where the
-    documentation says nothing, the kernel aborts or only warns (``catalog/data/startup_errors.toml``)."""
+ZEROED, LIMITED = "@zeroed", "@limited"  # R004, R005 on an axis list: resolved with the row's value
+
+
+def corrects(code: str, param_id: str | None, registry: Registry, kind: str | None = None) -> dict[str, str]:
+    """What the documented correction of a finding sets: parameter → the value the controller then
+    uses (the default, a number, or "the value of P-…"). A K rule's start-up error as its row of
+    ``catalog/data/startup_errors.toml`` says; on an axis list, a value of an invalid number format
+    (R004) is set to 0 and one outside its range (R005) limited to the permissible minimum or
+    maximum (P-ERR-1001138, ``catalog/data/evidence.toml``). Empty where the documentation says
+    nothing, the kernel aborts or only warns."""
+    if kind == "AXIS" and param_id and code in ("R004", "R005"):
+        return {param_id: ZEROED if code == "R004" else LIMITED}
     c = _CORRECTIONS.get(code, "")
     if c == "default" and param_id:
         spec = registry.get(param_id)
@@ -391,6 +404,25 @@ def corrects(code: str, param_id: str | None, registry: Registry) -> dict[str, s
         return {}
     value = value.strip()
     return {target.strip(): f"the value of {value}" if value.startswith("P-") else value}
+
+
+def _limited(spec: ParamSpec | None, now: tuple[str, Any] | None, registry: Registry) -> str | None:
+    """The permissible minimum or maximum a value outside its range is limited to, where the range
+    is plain numbers with inclusive bounds (else None: the page claims no value)."""
+    rng = registry.range_of(spec) if spec is not None else None
+    if rng is None or rng.refs or now is None or now[0] != "num":
+        return None
+    try:
+        bounds = rng.evaluate(lambda *_: None)
+    except (ArithmeticError, ValueError):  # a bound that cannot be evaluated: no claim
+        return None
+    if bounds.high is not None and now[1] > bounds.high and not bounds.high_strict:
+        return f"{format_number(bounds.high)} (the permissible maximum)"
+    if bounds.low is not None and now[1] < bounds.low and not bounds.low_strict:
+        return f"{format_number(bounds.low)} (the permissible minimum)"
+    return None
+
+
 def _structure(machine: Machine, base: Path) -> tuple[list[dict[str, Any]], list[dict[str, Any]], list[dict[str, Any]]]:
     doc = machine.startup.values.doc
     named = [{"key": n.key, "raw": n.raw, "status": n.status, "reason": n.reason,
@@ -451,6 +483,7 @@ def _findings(machine: Machine, results: list[LintResult], base: Path, registry:
     scope_of = {str(lf.path): name for name, lf in machine.scopes()}
     for lf in machine.defaults.values():
         scope_of.setdefault(str(lf.path), f"default list ({lf.key})")
+    kind_of = {str(lf.path): lf.values.kind for lf in [*machine.lists, *machine.defaults.values()]}
     groups: dict[tuple[str, str], FindingGroup] = {}
     n = 0
     for r in results:
@@ -466,7 +499,7 @@ def _findings(machine: Machine, results: list[LintResult], base: Path, registry:
                                   "path": d.path, "scope": scope_of.get(r.path, r.path),
                                   "where": link(d.path, d.span.line, base), "hint": d.hint,
                                   "param_id": d.param_id, "kernel_error": d.kernel_error,
-                                  "corrects": corrects(d.code, d.param_id, registry)})
+                                  "corrects": corrects(d.code, d.param_id, registry, kind_of.get(r.path))})
     return list(groups.values())
 
 
