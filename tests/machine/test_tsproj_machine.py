@@ -119,3 +119,12 @@ def test_what_twincat_says_of_each_item_is_part_of_the_machine(registry: Registr
     assert "#   achs_mds[3]: TwinCAT item C_Spindel (C_Spindel/AchsMds): DriveType 4, Spindle true\n" in out.getvalue()
     plain = summary(load_machine(FIXTURES / "twincat" / "machine" / "startup" / "hochlauf.lis", registry))
     assert "twincat" not in plain
+
+
+def test_two_projects_compared_as_machines(tmp_path: Path, registry: Registry) -> None:
+    from zero.engine.queries import machine_changes
+
+    other = _variant(tmp_path, "kenngr.swe_pos                                        12000000",
+                     "kenngr.swe_pos                                        13000000")
+    changes = machine_changes(load_machine(PROJECT, registry), load_machine(other, registry), registry)
+    assert [(c.group, c.key) for c in changes] == [("axis 1 (achs_mds[0]): kenngr", "kenngr.swe_pos")]
