@@ -34,6 +34,7 @@ from zero.records import field, record
 
 INCH = 25.4
 MAX_DEPTH = 8  # subprogram calls followed into each other
+FOLLOW_BUDGET = 200_000  # lines of subprograms followed per program (at least four times its own)
 
 
 @record
@@ -260,6 +261,11 @@ _ASSIGN = re.compile(r"\s*=(?!=)")
 _SIMPLE = re.compile(r"\s*(?:N\d+(?=[\sA-Z]|$))?(?:\s*[A-Z]\s*[-+]?(?:\d+\.?\d*|\.\d+))+\s*$")
 _SIMPLE_WORD = re.compile(r"([A-Z])\s*([-+]?(?:\d+\.?\d*|\.\d+))")
 _CENTRE = frozenset("IJKR")
+_ASSIGNED = re.compile(r"(P\d+|V\.[A-Z_]+\.[A-Z0-9_.]*)\s*=(?!=)")
+_G_DIMS = re.compile(r"\bG0*(?:90|91)\b")
+_G_OFFSET = re.compile(r"\bG0*(?:5[3-9]|159)\b")
+_CALL_WORD = re.compile(r"\bLL?\s|\bG0*92\b")
+_DOLLAR = re.compile(r"\$([A-Z]+)")
 _MOTION = frozenset({0, 1, 2, 3})
 _NO_MACHINE = "no machine to check them against (zero lint --machine STARTUP, or `machine` in the configuration)"
 _NOT_PLAIN = frozenset("IJKR") | frozenset(lang.DEFAULT_AXES)  # centre words, axes the channel may not have
@@ -346,9 +352,13 @@ class _State:
 
     def copy(self) -> _State:
         new = _State.__new__(_State)
-        for s in _State.__slots__:
-            v = getattr(self, s)
-            setattr(new, s, v.copy() if isinstance(v, (list, dict)) else v)
+        new.pos, new.pos_why = self.pos.copy(), self.pos_why.copy()
+        new.absolute, new.group, new.why = self.absolute, self.group, self.why
+        new.inch, new.plane, new.centre_abs, new.diameter = self.inch, self.plane, self.centre_abs, self.diameter
+        new.g92, new.g92_from = self.g92.copy(), self.g92_from.copy()
+        new.limits, new.limit_from = self.limits.copy(), self.limit_from.copy()
+        new.unmonitored = self.unmonitored.copy()
+        new.variables, new.motion = self.variables.copy(), self.motion
         return new
 
     def join(self, others: Sequence[_State], why: str) -> None:
@@ -384,6 +394,16 @@ class _State:
         self.variables = {k: v for k, v in self.variables.items() if k.startswith("V.L.")} if local_only else {}
 
 
+class _Facts:
+    __slots__ = ("axes", "dims", "offset", "variables")
+
+    def __init__(self) -> None:
+        self.variables: set[str] = set()
+        self.axes: set[int] = set()
+        self.dims = False
+        self.offset = False
+
+
 class _Frame:
     __slots__ = ("branches", "end", "entry", "has_default", "key", "line", "start", "started")
 
@@ -409,6 +429,7 @@ class Follower:
         self.resolve = resolve
         self.depth = depth
         self.inherit = state is not None  # a subprogram: it starts where its caller is
+        self.budget = [max(FOLLOW_BUDGET, 4 * len(lines))]  # lines the calls of one program may follow, shared
         self.setup = setup
         self.machine_data = machine_data or {}  # line → [(AX name, AXPARAM text)]
         axes = setup.axes if setup is not None else [AxisSetup(a, -math.inf, math.inf) for a in lang.DEFAULT_AXES]
@@ -419,6 +440,7 @@ class Follower:
         self.state = state if state is not None else _State(setup or Setup(axes), len(axes))
         self.sections: dict[str, tuple[int, int]] = {}  # local subprogram → its lines (0-based, end excluded)
         self.called_locals: set[str] = set()
+        self.loop_facts: dict[int, _Facts] = {}  # a loop's line → what its body changes
         self.stack: list[_Frame] = []
         self.targets: set[str] = set()  # $GOTO targets: "N20", "[LABEL]"
         self.section = ""  # "" main, else the local subprogram's name
@@ -445,6 +467,57 @@ class Follower:
                 self.called_locals.update(x.upper() for x in _LOCAL_CALL.findall(text.upper()))
         if opened is not None:
             self.sections[opened[0]] = (opened[1], len(self.lines))
+        self._loops()
+
+    def _loops(self) -> None:
+        """What each loop's body changes (its variables, the axes it moves, whether it sets
+        G90/G91 or the offset), gathered in one pass: a body's facts go to the innermost open
+        structure and, when it closes, to the one around it (nested or unclosed loops stay linear)."""
+        stack: list[tuple[int, str, _Facts]] = []
+        names = self.names
+        for number, text in enumerate(self.lines, 1):
+            if "$" not in text and not stack:
+                continue
+            up = text.upper() if text.isascii() else _upper(text)
+            if "(" in up or ";" in up:
+                up = strip_comments(up)
+            if stack:
+                facts = stack[-1][2]
+                if "=" in up:
+                    facts.variables.update(_ASSIGNED.findall(up))
+                if "G" in up:
+                    if _G_DIMS.search(up):
+                        facts.dims = True
+                    if _G_OFFSET.search(up):
+                        facts.offset = True
+                if "#" in up or _CALL_WORD.search(up):
+                    facts.dims = facts.offset = True
+                for name, i in names.items():
+                    if name in up and re.search(rf"(?<![A-Z0-9_.]){re.escape(name)}\s*=?\s*[-+.\d\[PV]", up):
+                        facts.axes.add(i)
+            if "$" not in up:
+                continue
+            for kw in _DOLLAR.findall(up):
+                if kw in lang.OPENERS and not (kw == "IF" and "$GOTO" in up):
+                    facts = _Facts()
+                    if kw == "FOR":  # the loop variable changes per iteration
+                        facts.variables.update(_ASSIGNED.findall(up))
+                    stack.append((number, kw, facts))
+                elif kw in lang.CLOSERS and stack:
+                    self._close_loop(stack)
+        while stack:
+            self._close_loop(stack)
+
+    def _close_loop(self, stack: list[tuple[int, str, _Facts]]) -> None:
+        line, kw, facts = stack.pop()
+        if kw in lang.LOOPS:
+            self.loop_facts[line] = facts
+        if stack:
+            outer = stack[-1][2]
+            outer.variables |= facts.variables
+            outer.axes |= facts.axes
+            outer.dims = outer.dims or facts.dims
+            outer.offset = outer.offset or facts.offset
 
     def run(self, start: int = 0, end: int | None = None) -> Analysis:
         lines = self.lines
@@ -1225,6 +1298,7 @@ class Follower:
                 return False
             sub = Follower(self.lines, self.setup, self.machine_data, self.resolve, self.depth + 1, self.state.copy())
             sub.sections, sub.targets, sub.called_locals = self.sections, self.targets, self.called_locals
+            sub.loop_facts = self.loop_facts
             sub.section = call.name
             start, end = span
         else:
@@ -1233,6 +1307,11 @@ class Follower:
                 return False
             sub = Follower(lines, self.setup, None, self.resolve, self.depth + 1, self.state.copy())
             start, end = 0, len(lines)
+        cost = max(end - start, 50)  # a call costs its lines, and at least what reading a block costs fifty times
+        if self.budget[0] < cost:
+            return False  # the program's calls have followed enough lines: the rest are counted
+        self.budget[0] -= cost
+        sub.budget = self.budget
         sub._transform = self._transform
         found = sub.run(start, end)
         res = self.result
@@ -1315,36 +1394,20 @@ class Follower:
         """At a loop's head, what the loop body changes is unknown (it differs per iteration):
         the variables it assigns, the positions of the axes it moves, its dimensions and offset."""
         st = self.state
-        depth = 0
         why = f"inside the ${frame.key} loop from line {frame.line}"
-        dims = offset = False
-        for text in self.lines[frame.line - 1:]:
-            up = strip_comments(text.upper()) if ("(" in text or ";" in text) else text.upper()
-            if not up.strip():
-                continue
-            for kw in re.findall(r"\$([A-Z]+)", up):
-                if kw in lang.OPENERS and not (kw == "IF" and "$GOTO" in up):
-                    depth += 1
-                elif kw in lang.CLOSERS:
-                    depth -= 1
-            for name in re.findall(r"(P\d+|V\.[A-Z_]+\.[A-Z0-9_.]*)\s*=(?!=)", up):
-                st.variables.pop(name, None)
-            if re.search(r"\bG0*(90|91)\b", up):
-                dims = True
-            if re.search(r"\bG0*(5[3-9]|159)\b", up):
-                offset = True
-            if "#" in up or re.search(r"\bLL?\s", up) or re.search(r"\bG0*92\b", up):
-                dims = offset = True
-            for name, i in self.names.items():
-                if name in up and re.search(rf"(?<![A-Z0-9_.]){re.escape(name)}\s*=?\s*[-+.\d\[PV]", up):
-                    st.pos[i] = None
-                    st.pos_why[i] = why
-            if depth <= 0:
-                break
-        if dims:
+        facts = self.loop_facts.get(frame.line)
+        if facts is None:  # not indexed (cannot happen for a file's own loops): nothing is known
+            st.forget(why)
+            return
+        for name in facts.variables:
+            st.variables.pop(name, None)
+        for i in facts.axes:
+            st.pos[i] = None
+            st.pos_why[i] = why
+        if facts.dims:
             st.absolute = None
             st.why = why
-        if offset:
+        if facts.offset:
             st.group = None
             st.why = why
 
