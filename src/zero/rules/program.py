@@ -221,9 +221,10 @@ SOFT_LIMIT_UNMONITORED = FAMILY.rule(
     "N006", "soft-limit-unmonitored", W, "A move beyond a soft limit nobody monitors",
     """
 What it checks: the moves N005 checks, on an axis whose soft limits the controller does not
-enforce: `swe_check 0` (P-AXIS-00705), a modulo axis with `swe_check -1`, `swe_behaviour
-WARNING` (P-AXIS-00554), the axis's bit in `soft_limit_warning_axes` (P-CHAN-00147), or
-`POS_LIMIT OFF` in the program.
+enforce: `swe_check 0` (P-AXIS-00705), `swe_behaviour WARNING` (P-AXIS-00554), the axis's bit
+in `soft_limit_warning_axes` (P-CHAN-00147), or `POS_LIMIT OFF` in the program. A modulo axis
+(`kenngr.mod_rechng`, or a spindle) with `swe_check -1` turns without end: the controller does
+not monitor its soft limits and zero reports no position of it.
 
 Why it matters on the machine: the axis moves past its soft limit unchecked (or with a warning
 only): towards the hardware limit switch or into the machine's structure.
@@ -337,9 +338,6 @@ def _setup(machine: Machine) -> tuple[Setup, list[_AxisFacts], Channel] | None:
         if check == 0:
             code, what = "N006", f"the axis moves past its limit unchecked: `swe_check 0` switches its soft-limit " \
                                  f"monitoring off ({where})"
-        elif modulo and check != 1:
-            code, what = "N006", "the axis moves past its limit unchecked: it is a modulo axis, whose soft limits " \
-                                 "the controller does not monitor"
         elif behaviour == "WARNING":
             code, what = "N006", f"the axis moves past its limit: with `swe_behaviour WARNING` ({where}) the " \
                                  "controller only warns"
@@ -357,7 +355,10 @@ def _setup(machine: Machine) -> tuple[Setup, list[_AxisFacts], Channel] | None:
         facts.append(_AxisFacts(ca.name, ax.unit, code, what, str(lf.path),
                                 ("kenngr.swe_neg", neg_entry.line if neg_entry else None),
                                 ("kenngr.swe_pos", pos_entry.line if pos_entry else None), kernel))
-        out.append(AxisSetup(ca.name.upper(), ax.swe_neg / LENGTH_UNIT, ax.swe_pos / LENGTH_UNIT, ax.rotary))
+        if modulo and check != 1:  # it turns without end: its soft limits bound no travel
+            out.append(AxisSetup(ca.name.upper(), -math.inf, math.inf, ax.rotary))
+        else:
+            out.append(AxisSetup(ca.name.upper(), ax.swe_neg / LENGTH_UNIT, ax.swe_pos / LENGTH_UNIT, ax.rotary))
     offsets: dict[int, tuple[float, ...]] = {}
     if zl is not None:
         groups = {ix[0] for ix in zl.values.by_id.get(OFFSET, {}) if ix}
