@@ -220,6 +220,9 @@ def _decode(data: bytes, path: str) -> tuple[str, str, bool]:
     return body.decode(encoding, "surrogateescape"), encoding, bom
 
 
+# The last projects read (a machine reads many lists of one project; a project of 50 MB holds about
+# 200 MB here, so only two are kept).
+CACHED = 2
 _CACHE: dict[tuple[str, int, int], tuple[bytes, ProjectFile]] = {}
 
 
@@ -261,7 +264,7 @@ def read_project(data: bytes, path: str = "-", root: str = "") -> ProjectFile:
     _addresses(blocks)
     scan = Scan(text, encoding, bom, root or _root(text, spans), [], [], _line_starts(text))
     out = ProjectFile(scan, blocks, files)
-    if len(_CACHE) >= 4:
+    if len(_CACHE) >= CACHED:
         _CACHE.pop(next(iter(_CACHE)))
     _CACHE[key] = (data, out)
     return out
