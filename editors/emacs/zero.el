@@ -23,6 +23,17 @@
 ;; that many seconds.  M-x eglot-reconnect does so by hand.  tests/server/test_emacs.py loads this
 ;; file as it is.
 
+;; Code pages: a list opens in the code page zero reads it in (`zero-coding-system'): UTF-8 where its
+;; bytes are UTF-8 (with the BOM where it has one), else Windows-1252 where every byte is one of its
+;; characters, else Latin-1, as zero's list reader decides.  Emacs's own guess for a list in CP850
+;; or another DOS code page is `raw-text' or `japanese-shift-jis', whose text eglot cannot send:
+;; the server would never hear of the file and flymake would show nothing.  Where zero's
+;; configuration declares a code page (`encoding = "cp850"' in [tool.zero]), say the same here:
+;;
+;;   (setq zero-coding-systems '(("/old-machines/" . cp850)))   ; file-name regexp . coding system
+;;
+;; Saving writes the buffer back in the code page it was read in, byte for byte.
+
 ;;; Code:
 
 (require 'eglot)
@@ -39,6 +50,48 @@
 (defcustom zero-initialization-options nil
   "Server settings sent as initializationOptions, a plist: e.g. (:debounce 250 :machine t)."
   :type 'plist)
+
+(defcustom zero-coding-systems nil
+  "Code pages declared for lists, as zero's configuration declares them (`encoding' in [tool.zero]).
+An alist of (REGEXP . CODING-SYSTEM): a list or NC program whose file name matches REGEXP opens in
+CODING-SYSTEM (e.g. (\"/old-machines/\" . cp850)); any other in the code page zero detects."
+  :type '(alist :key-type regexp :value-type coding-system))
+
+(defconst zero-file-regexp "\\.\\(?:lis\\|lst\\|nc\\|mpf\\|spf\\|LIS\\|LST\\|NC\\|MPF\\|SPF\\)\\'"
+  "The files zero's modes are for: lists and NC programs.")
+
+(defconst zero--not-in-windows-1252 "[\x81\x8d\x8f\x90\x9d]"
+  "The five bytes Windows-1252 gives no character (zero then reads the file as Latin-1).")
+
+(defun zero-detect-coding (file)
+  "The coding system zero reads FILE in, by its bytes: UTF-8 (with its signature where the file
+starts with a BOM) where they are UTF-8, else Windows-1252 where every byte is one of its
+characters, else Latin-1 (src/zero/lists/encoding.py decides the same way)."
+  (with-temp-buffer
+    (set-buffer-multibyte nil)
+    (insert-file-contents-literally file)
+    (goto-char (point-min))
+    (cond ((looking-at "\xef\xbb\xbf") 'utf-8-with-signature)
+          ((not (re-search-forward "[\x80-\xff]" nil t)) 'utf-8)  ; ASCII
+          ((let ((text (decode-coding-string (buffer-string) 'utf-8 t)))
+             (not (seq-some (lambda (c) (>= c #x3fff80)) text)))  ; no byte left undecoded
+           'utf-8)
+          ((progn (goto-char (point-min)) (not (re-search-forward zero--not-in-windows-1252 nil t)))
+           'windows-1252)
+          (t 'latin-1))))
+
+(defun zero-coding-system (arguments)
+  "The code page a list or NC program opens in: `zero-coding-systems', else `zero-detect-coding'.
+For `file-coding-system-alist': ARGUMENTS are the operation and its arguments; only reading a
+file is decided here."
+  (when (eq (car arguments) 'insert-file-contents)
+    (let ((file (if (consp (nth 1 arguments)) (car (nth 1 arguments)) (nth 1 arguments))))
+      (when (and (stringp file) (file-regular-p file))
+        (or (assoc-default file zero-coding-systems #'string-match-p)
+            (zero-detect-coding file))))))
+
+;;;###autoload
+(add-to-list 'file-coding-system-alist (cons zero-file-regexp #'zero-coding-system))
 
 (defvar zero-list-mode-syntax-table
   (let ((table (make-syntax-table)))

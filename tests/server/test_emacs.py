@@ -142,16 +142,32 @@ def eglot_missing(tmp_path: Path) -> str | None:
     return None
 
 
-def drive_emacs(tmp_path: Path, typed: list[str]) -> list[str]:
+# Open a list, say the code page Emacs read it in and the findings flymake shows, and end.
+CODEPAGE_DRIVER = DRIVER[:DRIVER.index("(setq zero-command")] + r"""
+(setq zero-command (list (getenv "ZERO_EMACS_PYTHON") "-m" "zero" "server")
+      zero-initialization-options '(:debounce 20))
+(run-with-timer 180 nil (lambda () (zero-test-say "killed: took too long") (kill-emacs 1)))
+(add-hook 'emacs-startup-hook
+          (lambda ()
+            (find-file (getenv "ZERO_EMACS_FILE"))
+            (setq zero-test-buffer (current-buffer))
+            (zero-test-say "mode %s coding %s" major-mode buffer-file-coding-system)
+            (run-hooks 'post-command-hook)
+            (zero-test-findings (lambda (codes) (zero-test-say "findings %s" codes) (kill-emacs 0)))))
+"""
+
+
+def drive_emacs(tmp_path: Path, typed: list[str], source: Path = FIXTURES / "seed" / "nullp_3achsen.lis",
+                driver_text: str = DRIVER) -> list[str]:
     reason = eglot_missing(tmp_path)
     if reason is not None:
         pytest.skip(reason)
     if shutil.which("script") is None:
         pytest.skip("script (util-linux) is not on PATH: it gives Emacs its terminal")
     path = tmp_path / "nullp.lis"
-    shutil.copy(FIXTURES / "seed" / "nullp_3achsen.lis", path)
+    shutil.copy(source, path)
     driver = tmp_path / "driver.el"
-    driver.write_text(DRIVER, encoding="utf-8")
+    driver.write_text(driver_text, encoding="utf-8")
     out = tmp_path / "driver.txt"
     env = {**emacs_env(tmp_path), "ZERO_EMACS_OUT": str(out), "ZERO_EMACS_PYTHON": sys.executable,
            "ZERO_EMACS_FILE": str(path), "ZERO_EMACS_TYPED": "\n".join(typed), "TERM": "xterm"}
@@ -189,3 +205,20 @@ def test_emacs_eglot_findings_completion_and_reconnect(tmp_path: Path) -> None:
     assert all(c.startswith("achse[") for c in candidates.split()) and len(candidates.split()) == 2
     assert restarted == "restarted t"
     assert after == before
+
+
+@pytest.mark.parametrize(("text", "coding"), [
+    ((FIXTURES / "codepage" / "cp850_comments.lis").read_bytes(), "iso-latin-1-unix"),  # bytes cp1252 lacks
+    ("# Grüße, Maß\nkenngr.swe_pos 1500.5\nEnde\n".encode("cp1252"), "windows-1252-unix"),
+    ("# Grüße\nkenngr.swe_pos 1500.5\nEnde\n".encode("utf-8"), "utf-8-unix"),
+])
+def test_emacs_opens_a_list_in_the_code_page_zero_reads_it_in(tmp_path: Path, text: bytes, coding: str) -> None:
+    """A list in CP850 (or another code page that is not UTF-8) once opened as `raw-text` or
+    `japanese-shift-jis`: eglot could not send its text and flymake showed nothing (issue 35)."""
+    source = tmp_path / "source.lis"
+    source.write_bytes(text)
+    mode, findings = drive_emacs(tmp_path, [], source, CODEPAGE_DRIVER)
+    assert mode == f"mode zero-list-mode coding {coding}"
+    expected = zero_cli("lint", "--output-format", "json", "nullp.lis", cwd=tmp_path).stdout
+    codes = sorted(re.findall(r'"code": "([A-Z][0-9]+)"', expected))
+    assert codes and findings == "findings " + ",".join(codes)
