@@ -200,3 +200,13 @@ def test_show_of_an_export_element(registry: Registry) -> None:
         load_side(str(TWINCAT / "channel_1.xml"), None, None, registry, lambda: b"")
     y = load_side(f"{PROJECT}#Y_Achse/AchsMds", None, None, registry, lambda: b"")
     assert y.kind == "AXIS" and "kenngr.max_vb_overide" in " ".join(y.entries)
+
+
+def test_convert_into_names_the_list_with_the_file(tmp_path: Path, registry: Registry) -> None:
+    project = tmp_path / "M.tsproj"
+    project.write_bytes(PROJECT.read_bytes())
+    lis = tmp_path / "z.lis"
+    lis.write_bytes(xml_source(PROJECT.read_bytes(), str(PROJECT), registry, "Z_Achse/AchsMds")[0].replace(
+        b"12000000", b"11000000"))
+    new = write_into(str(lis), Path(f"{project}#tc_virtual_13"), None, registry, lambda: b"")
+    assert new.count(b"11000000") == 1 and project.read_bytes() == new

@@ -225,6 +225,9 @@ def write_into(name: str, export: Path, element: str | None, registry: Registry 
         data = convert(data, src_fmt, "lis", catalogue, name, kind, False).output
     declared = configurations_only().encoding(Path(name)) if name != "-" else None
     text = doc_text(tokenize(data, name, declared))  # the list's own code page, read as text
+    file, part = split_part(export)  # `--into X.tsproj#Y_Achse/AchsMds`: the list named with the file
+    if part is not None and not export.exists():
+        export, element = Path(file), element or part
     target = read_file(export)
     sc, lists = embedded_documents(target, str(export))
     new = splice(sc, str(export), [(pick(lists, element, str(export)), text)])
