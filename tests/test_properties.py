@@ -82,3 +82,59 @@ def test_list_to_structured_to_list_is_the_identity(data: bytes, fmt: str) -> No
     expected = plain(root)
     expected.update({leaf.key: leaf.value for leaf in flat})
     assert str_keys(loaded) == str_keys(expected)
+
+
+_DIFF_LINES = st.lists(st.sampled_from([b"a\n", b"b\n", b"c\n", b"\n", b"k 1\n", b"k 1  \n", b"x\r\n", b"end"]),
+                       max_size=60)
+
+
+def _patched(before: bytes, patch: bytes) -> bytes:
+    """``patch`` (a unified diff zero wrote) applied to ``before``: each hunk's - and context lines
+    must be where it says, in order."""
+    old = before.split(b"\n")
+    old_lines = [x + b"\n" for x in old[:-1]] + ([old[-1]] if old[-1] else [])
+    out: list[bytes] = []
+    at = 0
+    rows = patch.split(b"\n")[2:]
+    k = 0
+    while k < len(rows) and rows[k].startswith(b"@@"):
+        start = int(rows[k].split(b" ")[1][1:].split(b",")[0])
+        length = rows[k].split(b" ")[1][1:].split(b",")
+        first = start - 1 if len(length) == 1 or int(length[1]) else start
+        out += old_lines[at:first]
+        at = first
+        k += 1
+        while k < len(rows) and rows[k][:1] in (b" ", b"-", b"+"):
+            text = rows[k][1:]
+            ends = not (k + 1 < len(rows) and rows[k + 1] == b"\\ No newline at end of file")
+            line = text + b"\n" if ends else text
+            k += 1 if ends else 2
+            if rows[k - (1 if ends else 2)][:1] in (b" ", b"-"):
+                assert old_lines[at] == line, (old_lines[at], line)
+                at += 1
+            if rows[k - (1 if ends else 2)][:1] in (b" ", b"+"):
+                out.append(line)
+    return b"".join(out + old_lines[at:])
+
+
+@settings(max_examples=400, deadline=None)
+@given(_DIFF_LINES, _DIFF_LINES, st.sampled_from([0, 2_500]))
+def test_unified_diff_turns_before_into_after(a: list[bytes], b: list[bytes], small: int) -> None:
+    """zero's line diff (issue 43: linear-ish, difflib only for small gaps) is a correct patch:
+    with difflib for small gaps and with anchors only (``small`` 0)."""
+    import zero.engine.fixes as fixes
+
+    if a and a[-1] != b"end":
+        a = [x if x != b"end" else b"e\n" for x in a]
+    b = [x if x != b"end" else b"e\n" for x in b[:-1]] + b[-1:]
+    a = [x if x != b"end" else b"e\n" for x in a[:-1]] + a[-1:]
+    before, after = b"".join(a), b"".join(b)
+    kept = fixes._SMALL
+    fixes._SMALL = small
+    try:
+        patch = fixes.unified_diff("f.lis", before, after)
+    finally:
+        fixes._SMALL = kept
+    assert (patch == b"") == (before == after)
+    if patch:
+        assert _patched(before, patch) == after
