@@ -64,7 +64,7 @@ def test_a_reference_to_an_offset_no_block_has(tmp_path: Path, registry: Registr
     m = load_machine(path, registry)
     bad = [n for n in m.named if n.status != "loaded"]
     assert [(n.key, n.status) for n in bad] == [("achs_mds[2]", "missing")]
-    assert "Offset 99" in bad[0].reason
+    assert "none has Offset 99" in bad[0].reason
     assert ("V.tsproj", "X005", 30, 1) in found(lint_machine(m, registry), "X005")
 
 

@@ -122,16 +122,15 @@ def resolve_virtual(project: Path, named: Sequence[Named], reader: Callable[[Pat
             n.path, n.status, n.reason = Path(f"{hit.path}#{hit.block.address}"), "loaded", ""
         elif not hits:
             n.path, n.status = None, "missing"
-            n.reason = (f"names the project's block with Offset {offset}, and no `<Data>` block of the project "
-                        f"has that Offset (`tc_virtual_{offset}\\` is never a folder on disk)")
+            n.reason = (f"no `<Data>` block of the project answers: none has Offset {offset} (`tc_virtual_N\\` names "
+                        "the block with Offset N, never a folder on disk)")
             if problems:
                 n.reason += "; not followed: " + "; ".join(problems)
         else:
             where = ", ".join(f"{h.path.name}:{h.line} ({h.block.address})" for h in hits)
             n.path, n.status = None, "unreadable"
-            n.reason = (f"names the block with Offset {offset}, which {len(hits)} blocks of the project carry "
-                        f"({where}): which one TwinCAT writes as `tc_virtual_{offset}\\` is not documented, so "
-                        "zero reads none")
+            n.reason = (f"{len(hits)} blocks of the project answer, each with Offset {offset} ({where}): which one "
+                        f"TwinCAT writes for tc_virtual_{offset} is not documented, so zero reads none")
     return problems
 
 
