@@ -470,11 +470,15 @@ NAMING_FAMILIES = "MXNU"  # rules about particular parameters, which their text 
 
 
 def named_params(code: str, registry: Registry) -> list[str]:
-    """The parameters a rule's summary and explanation name: by ID (``P-AXIS-00705``) or by a key in
-    backticks that the catalogue knows (``kenngr.swe_check``)."""
+    """The parameters a rule reads: those it declares (a ``reads`` tuple of IDs on the rule, where the
+    rule modules give one), else those its summary and explanation name: by ID (``P-AXIS-00705``) or
+    by a key in backticks that the catalogue knows (``kenngr.swe_check``)."""
     from zero.lists.model import parse_key  # start-up: only the documentation site
 
     r = RULES[code]
+    declared = getattr(r, "reads", None)  # a rule that declares what it reads is taken at its word
+    if declared:
+        return [pid for pid in declared if pid in registry.specs]
     text = f"{r.summary}\n{r.explanation}"
     found = [m.group() for m in _ID.finditer(text) if m.group() in registry.specs]
     for span in re.findall(r"`([^`\n]+)`", text):
