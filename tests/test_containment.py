@@ -584,3 +584,26 @@ def test_every_test_the_readmes_safety_table_names_exists() -> None:
             assert re.search(rf"^def {m.group(2)}\(", (ROOT / current).read_text(encoding="utf-8"), re.M), m.group(0)
             named += 1
     assert named >= 15
+
+
+def test_a_machine_read_from_an_export_element_is_read_again_when_the_export_changes(tmp_path: Path) -> None:
+    """The resolver's cache signs a machine by the files it was read from; `export.xml#AchsMds` is
+    resolved to the export itself (the signature was that of a file that does not exist, so an
+    edited export was never read again)."""
+    from conftest import builtin_registry
+    from zero.engine.project import Project
+
+    m = tmp_path / "m"
+    m.mkdir()
+    (m / ".git").mkdir()
+    export = m / "axis_x.xml"
+    export.write_text((FIXTURES / "twincat" / "axis_x.xml").read_text())
+    startup = m / "hochlauf.lis"
+    startup.write_text("kanal_anzahl 1\nzahl_mds 1\nachs_mds[0] ./axis_x.xml#AchsMds\nEnde\n")
+    registry = builtin_registry()
+    project = Project(lambda _d: registry, machine=startup)
+    first = project.machine(required=True)
+    assert first is not None and first.axis_lists[0].text("P-AXIS-00297") == "X_Achse"
+    export.write_text(export.read_text().replace("X_Achse", "Y_Achse_longer"))
+    again = project.machine(required=True)
+    assert again is not None and again.axis_lists[0].text("P-AXIS-00297") == "Y_Achse_longer"

@@ -34,7 +34,7 @@ from zero.catalog.registry import KINDS, Registry
 from zero.engine.config import Config, ConfigFinder, is_inline
 from zero.engine.lint import LintOptions
 from zero.errors import ZeroError
-from zero.files import read_file
+from zero.files import read_file, resolve
 
 if TYPE_CHECKING:  # start-up: `zero lint` of lists loads no machine model
     from zero.lists.model import Document
@@ -58,7 +58,7 @@ def _signature(machine: Machine, encoding: Callable[[Path], str | None]) -> Sign
     out = []
     for p in paths:
         try:
-            st = os.stat(p)
+            st = os.stat(resolve(p))  # `export.xml#AchsMds`: the export's own size and time
             out.append((str(p), st.st_mtime_ns, st.st_size, encoding(p)))
         except OSError:
             out.append((str(p), -1, -1, encoding(p)))
