@@ -228,3 +228,26 @@ def test_watch_refuses_standard_input() -> None:
 def test_the_new_options_are_in_the_readme_table_of_formats() -> None:
     readme = (ROOT / "README.md").read_text(encoding="utf-8")
     assert "reviewdog" in readme and "Azure" in readme and "--watch" in readme
+
+
+def test_a_fix_that_renames_a_key_keeps_the_value_in_its_column(tmp_path: Path) -> None:
+    """`kenngr.swe_po` → `kenngr.swe_pos` (R001's did-you-mean, an unsafe fix): the value stays in
+    the column of the values around it, not one to the right."""
+    aligned = "kenngr.swe_po                      1500\nkenngr.swe_neg                     -1500\nEnde\n"
+    (tmp_path / "a.lis").write_text(aligned)
+    run = zero_cli("lint", "a.lis", "--fix", "--unsafe-fixes", "-q", cwd=tmp_path, env=PLAIN)
+    assert run.code in (0, 1)
+    first, second = (tmp_path / "a.lis").read_text().splitlines()[:2]
+    assert first == "kenngr.swe_pos                     1500"
+    assert first.index("1500") == second.index("-1500") == 35
+
+
+def test_keep_column_only_in_an_aligned_layout() -> None:
+    from zero.diagnostics import Edit, Span
+    from zero.engine.fixes import _keep_column
+
+    rename = Edit(Span(1, 1, 1, 4), "abcde")  # three characters become five
+    assert _keep_column("      7", rename, 5) == "    7"
+    assert _keep_column("  7", rename, 5) == " 7"  # one blank at least
+    assert _keep_column(" 7", rename, 5) == " 7"  # one blank: no column to keep
+    assert _keep_column("   ", rename, 5) == "   "  # nothing after the blanks
