@@ -210,3 +210,9 @@ def test_convert_into_names_the_list_with_the_file(tmp_path: Path, registry: Reg
         b"12000000", b"11000000"))
     new = write_into(str(lis), Path(f"{project}#tc_virtual_13"), None, registry, lambda: b"")
     assert new.count(b"11000000") == 1 and project.read_bytes() == new
+
+
+def test_an_offset_written_in_hexadecimal() -> None:
+    data = PROJECT.read_bytes().replace(b'Offset="12"', b'Offset="#x0C"')
+    _, lists = embedded_documents(data, "h.tsproj")
+    assert pick(lists, "tc_virtual_12", "h").element == "Y_Achse/AchsMds"

@@ -257,7 +257,7 @@ def read_project(data: bytes, path: str = "-", root: str = "") -> ProjectFile:
         raw = attrs.get("Offset")
         if label.lower() != STARTUP.lower() and raw is None and label.lower() not in {k.lower() for k in EMBEDDED}:
             continue  # neither the start-up list, nor a list the start-up list can name, nor a known list
-        number = int(raw) if raw is not None and raw.strip().isdigit() else None
+        number = _number(raw)
         blocks.append(Block(label, number, raw, "", m.start(), body.start(1), body.end(1)))
     _items(text, spans, blocks)
     _kinds(blocks, text)
@@ -268,6 +268,16 @@ def read_project(data: bytes, path: str = "-", root: str = "") -> ProjectFile:
         _CACHE.pop(next(iter(_CACHE)))
     _CACHE[key] = (data, out)
     return out
+
+
+def _number(raw: str | None) -> int | None:
+    """An Offset as written: decimal, or hexadecimal as TwinCAT writes some numbers (``#x0C``)."""
+    text = (raw or "").strip()
+    if text.isdigit():
+        return int(text)
+    if text.lower().startswith("#x") and text[2:] and all(c in "0123456789abcdefABCDEF" for c in text[2:]):
+        return int(text[2:], 16)
+    return None
 
 
 def _root(text: str, spans: list[tuple[int, int]]) -> str:
