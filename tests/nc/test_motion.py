@@ -230,3 +230,17 @@ def test_the_editor_shows_the_findings_live(tmp_path: Path) -> None:
     assert "610.000 mm on the axis" in a.diagnostics[0].message
     a = projects.analyse(uri, 2, "%part\nN10 G90 G54 X0\nN20 G1 X490\n")
     assert a.diagnostics == []
+
+
+def test_the_report_draws_a_programs_travel_in_the_axis_pictures(tmp_path: Path) -> None:
+    """`zero report --program`: the lowest and highest position the program reaches on each axis,
+    marked where it passes a soft limit."""
+    pytest.importorskip("jinja2")
+    out = tmp_path / "m.html"
+    r = runner.invoke(app, ["report", "--machine", str(MACHINE), "--program", str(P / "crossing.nc"),
+                            "--program", str(P / "moves_inside.nc"), "-o", str(out)])
+    assert r.exit_code == 0, r.stdout
+    page = out.read_text()
+    assert page.count('class="travel beyond"') >= 2  # X and Y of crossing.nc
+    assert 'data-program="crossing.nc" data-low="100" data-high="650"' in page  # X: G54 X0 .. the arc
+    assert 'class="travel" x=' in page and 'data-program="moves_inside.nc"' in page

@@ -691,6 +691,8 @@ def report(
     values: Annotated[str, typer.Option(
         "--values", help="The value table printed (and shown first): changed (the values that differ from their "
         "defaults, are changed by the controller or have a finding) or all.", metavar="all|changed")] = "changed",
+    program: Annotated[list[str] | None, typer.Option(
+        "--program", help="Also draw where this NC program takes each axis (repeatable).", metavar="PROG")] = None,
     force: Annotated[bool, typer.Option(help="Replace an existing output file.")] = False,
     param_desc: ParamDesc = None,
 ) -> None:
@@ -703,7 +705,8 @@ def report(
         from zero.output.report import build_report, render_report  # start-up: Jinja2 only for a report
 
         target = Path(output) if output not in (None, "-") else None
-        page = render_report(build_report(_project(machine), target, against, fleet or (), jobs, values))
+        page = render_report(build_report(_project(machine), target, against, fleet or (), jobs, values,
+                                          program or ()))
         if target is None:
             sys.stdout.write(page)
         else:

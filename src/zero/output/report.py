@@ -49,6 +49,7 @@ from zero.engine.lint import LintResult, lint_machine
 from zero.engine.project import Project
 from zero.engine.queries import machine_changes
 from zero.errors import ZeroError
+from zero.files import read_file
 from zero.forms import split_part
 from zero.machine.effective import CATALOGUE, DEFAULT_LIST, LIST, Scope, effective, entries_of, scope_values
 from zero.machine.limits import pcs_limits
@@ -504,13 +505,15 @@ def _findings(machine: Machine, results: list[LintResult], base: Path, registry:
 
 
 def build_report(project: Project, output: Path | None = None, against: str | None = None,
-                 fleet: Sequence[str] = (), jobs: int | None = None, values: str = "changed") -> MachineReport:
+                 fleet: Sequence[str] = (), jobs: int | None = None, values: str = "changed",
+                 programs: Sequence[str] = ()) -> MachineReport:
     """Everything ``zero report`` shows about the machine of ``project`` (``--machine``, else the
     configuration's); links relative to the folder ``output`` is written to (the current folder
     for standard output). ``fleet``: machines (start-up lists or folders) whose drift from this
     machine, as ``zero diff --fleet`` reports it, is a section of the page. ``values``: "changed"
     (the printed page holds the values that differ from their defaults, are corrected or have a
-    finding; the page opens with that filter) or "all"."""
+    finding; the page opens with that filter) or "all". ``programs``: NC programs whose travel
+    (the lowest and highest position each reaches on each axis) is drawn in the axis pictures."""
     if values not in VALUES:
         raise ZeroError(f"--values {values}: one of {', '.join(VALUES)}")
     machine = project.machine(required=True)
@@ -526,7 +529,12 @@ def build_report(project: Project, output: Path | None = None, against: str | No
         old, label, diff_registry = machine_against(project, against)
         compared = Against(against, label, machine_changes(old, machine, diff_registry))
     views = []
+    travels = [program_travel_of(Path(p), machine, registry) for p in programs]
     for pic in axis_pictures(machine, pcs_limits(machine), old):
+        for name, channel, travel in travels:
+            span = travel.get(pic.index) if pic.channel == channel and pic.index is not None else None
+            if span is not None:
+                pic.travel.append((name, span[0], span[1]))
         ax = machine.axes().get(pic.log_nr)
         settings = _axis_settings(ax.list, base) if ax is not None else []
         view = AxisView(pic, axis_svg(pic), settings)
@@ -575,6 +583,16 @@ def build_report(project: Project, output: Path | None = None, against: str | No
                          _generated(), named, channels, axis_lists,
                          views, [name for name, _ in machine.scopes()], rows, findings, rules, template,
                          compared, counts, drift, values)
+
+
+def program_travel_of(path: Path, machine: Machine,
+                      registry: Registry) -> tuple[str, int, dict[int, tuple[float, float]]]:
+    """Where an NC program takes each axis of the machine's first channel (``zero report --program``)."""
+    from zero.nc.program import read_program  # start-up: only a report with --program
+    from zero.rules.program import program_travel  # start-up: as above
+
+    found = program_travel(read_program(read_file(path), str(path), registry), registry, machine, str(path))
+    return (path.name, *found) if found is not None else (path.name, -1, {})
 
 
 def _generated() -> str:

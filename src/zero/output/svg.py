@@ -102,6 +102,7 @@ class AxisPicture:
     old_pos: float | None = None
     monitoring: str = MONITORED  # on, off (swe_check 0), warning (swe_behaviour WARNING), error-lr
     monitoring_why: str = ""  # the setting that decides it: "kenngr.swe_check = 0"
+    travel: list[tuple[str, float, float]] = field(default_factory=list)  # (program, lowest, highest) on the axis
 
     @property
     def ident(self) -> str:
@@ -221,6 +222,8 @@ def scale_for(pic: AxisPicture) -> Scale:
     span = max(hi - lo, 1e-9)
     values = [v for v in (pic.ref, pic.old_neg, pic.old_pos) if v is not None]
     values += [z.offset for z in pic.zeros if pic.swe_neg - REACH * span <= z.offset <= pic.swe_pos + REACH * span]
+    values += [v for _, low, high in pic.travel for v in (low, high)
+               if pic.swe_neg - REACH * span <= v <= pic.swe_pos + REACH * span]
     lo, hi = min([lo, *values]), max([hi, *values])
     pad = (hi - lo) * 0.05 or 1.0
     return Scale(lo - pad, hi + pad)
@@ -286,6 +289,13 @@ def _linear(pic: AxisPicture, y: float) -> str:
                f'{_attrs(data_swe_neg=pic.swe_neg, data_swe_pos=pic.swe_pos, data_x_neg=xn, data_x_pos=xp)}>'
                f'<title>soft limits {_num(pic.swe_neg)} .. {_num(pic.swe_pos)} {u}'
                f'{escape("; " + pic.monitoring_said) if pic.monitoring_said else ""}</title></rect>')
+    for k, (program, low, high) in enumerate(pic.travel):  # a program's travel (zero report --program)
+        beyond = low < pic.swe_neg or high > pic.swe_pos
+        xl, xh = s.x(low), s.x(high)
+        said = f"{program}: {_num(low)} .. {_num(high)} {u} on the axis{'; beyond its soft limits' if beyond else ''}"
+        out.append(f'<rect class="travel{" beyond" if beyond else ""}" '
+                   f'{_attrs(x=xl, y=bottom - 5 - 5 * k, width=round(max(xh - xl, 1.0), 3), height=4)} '
+                   f'{_attrs(data_program=program, data_low=low, data_high=high)}><title>{escape(said)}</title></rect>')
     out.append(_monitor_mark(pic, WIDTH - RIGHT, 16, "end"))
     for cls, value, x, anchor in (("swe-neg", pic.swe_neg, xn, "end"), ("swe-pos", pic.swe_pos, xp, "start")):
         out.append(f'<line class="limit {cls}" {_attrs(x1=x, x2=x, y1=top - 8, y2=bottom + 8)} '
@@ -425,6 +435,8 @@ STYLE = """
 .soft-range { fill: #8fb8de; fill-opacity: 0.85; stroke: #2c5d8a; }
 .old-range { fill: none; stroke: #c0392b; stroke-dasharray: 4 3; stroke-width: 2; }
 .axis.changed .soft-range { fill: #f4b183; }
+.travel { fill: #1f4e79; }
+.travel.beyond { fill: #c00000; }
 .limit { stroke: #1b3d5c; stroke-width: 2; }
 .limit-label, .tick-label, .pcs-label, .row-label, .note, .clip-label, .modulo-label {
   font: 11px sans-serif; fill: #333; }

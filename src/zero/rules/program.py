@@ -38,7 +38,9 @@ from zero.rules import registry, syntax
 from zero.rules.base import INFO, E, Family, ProgramContext, W
 
 if TYPE_CHECKING:  # start-up: a list's lint does not load the machine model
+    from zero.catalog.registry import Registry
     from zero.machine.model import Axis, Channel, Machine
+    from zero.nc.program import Program
 from zero.rules.lists import check_document
 
 MOD_CALC = "P-AXIS-00121"  # kenngr.mod_rechng: the axis counts modulo
@@ -395,6 +397,17 @@ def analysis(ctx: ProgramContext) -> tuple[Analysis, tuple[Setup, list[_AxisFact
     result = (follow(ctx.program.doc.lines, built[0] if built else None, machine_data, _resolver(ctx)), built)
     _last[:] = [ctx.program, ctx.machine, ctx.path, result]
     return result
+
+
+def program_travel(program: Program, registry: Registry, machine: Machine,
+                   path: str) -> tuple[int, dict[int, tuple[float, float]]] | None:
+    """Where the program takes each axis of the machine's first channel: the channel's index and, by
+    channel axis index, the lowest and highest position on the axis (zero report --program)."""
+    found, built = analysis(ProgramContext(program, registry, machine, {}, path))
+    if built is None:
+        return None
+    ch = built[2]
+    return ch.index, {ch.axes[i].index: (low, high) for i, (low, high) in found.travel.items() if i < len(ch.axes)}
 
 
 def _offset_where(ch: Channel, group: int, index: int, g53: bool) -> str:
