@@ -288,7 +288,7 @@ def _num(v: Number | bool) -> Number:
 
 
 def _drive_types() -> dict[str, frozenset[int]]:
-    from zero.catalog.data.drive_types import DRIVE_TYPES  # compiled from drive_types.toml
+    from zero.catalog.data.drive_types import DRIVE_TYPES  # start-up: read at the first supports()
 
     return {str(row["param"]): frozenset(int(str(t)) for t in row["types"]) for row in DRIVE_TYPES}
 
