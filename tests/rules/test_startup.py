@@ -13,6 +13,7 @@ from conftest import FIXTURES, ROOT
 from zero.catalog.conditions import parse, refs
 from zero.catalog.data.startup_errors import ERRORS
 from zero.catalog.registry import Registry
+from zero.diagnostics import Diagnostic
 from zero.engine.lint import LintOptions, lint_file
 from zero.rules import RULES
 from zero.rules.startup import CHECKS
@@ -221,3 +222,25 @@ def test_unique_reads_only_the_elements_the_count_configures(registry: Registry)
     names = "spindel[0].bezeichnung S1\nspindel[1].bezeichnung S2\nspindel[2].bezeichnung S1\n"
     assert k002(f"spdl_anzahl 2\n{names}Ende\n") == []
     assert k002(f"spdl_anzahl 3\n{names}Ende\n") == [4]
+
+
+def test_what_a_finding_says_follows_the_page(registry: Registry) -> None:
+    """Issue 38: a documented warning without a reaction is a warning and says so (110658); an error
+    reported other than at list transfer says when (70385, the position controller); a reaction the
+    page gives in words is said in words (110574); a drive-type condition names the drive types the
+    parameter's page lists (110614)."""
+    options = LintOptions(select=("K",))
+
+    def finding(number: int) -> Diagnostic:
+        [d] = lint_file(FIXTURES / "startup" / str(number) / "fail.lis", registry, options).diagnostics
+        return d
+
+    warning = finding(110658)
+    assert warning.severity.label == "warning" and "reports warning 110658 at start-up" in warning.message
+    assert "changes no value" in warning.message
+    swapped = finding(70385)
+    assert "reports error 70385 when the position controller takes over the list" in swapped.message
+    assert swapped.message.endswith("the kernel swaps P-AXIS-00408 and P-AXIS-00409")
+    assert finding(110574).message.endswith("the kernel switches the I position controller off")
+    drive = finding(110614)
+    assert drive.hint is not None and "the P-AXIS-00539 page lists drive types (P-AXIS-00020) 2, 3" in drive.hint
