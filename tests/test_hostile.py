@@ -412,3 +412,34 @@ def test_a_patch_grows_linearly_with_the_lines_of_a_list() -> None:
 
     assert growth(lambda pair: unified_diff("f.lis", *pair), make, 100, 400) < 10
     assert growth(lambda pair: unified_diff("f.lis", *pair), make, 10_000, 40_000) < 10
+
+
+def test_the_patterns_the_timing_fuzzer_flagged_grow_linearly() -> None:
+    """Patterns fuzz/regex_timing.py found superlinear on inputs zero reads (a document of blank
+    lines in the editor, a long NC line, a long number in a form), each on the input it reported."""
+    from zero.nc import motion
+    from zero.server import completion, documents, hover
+    from zero.structured import formats
+
+    cases = [
+        (documents._ZERO_RECORD.search, lambda n: "\n" * n + "x"),
+        (formats._EXPONENT_RE.fullmatch, lambda n: "0" * n + "x"),
+        (motion._VALUE_START.match, lambda n: " " * n + "x"),
+        (motion._LABEL_AT.match, lambda n: " " * n + "x"),
+        (completion._AXPARAM_OPEN.search, lambda n: "AXPARAM" + " " * n + "x"),
+        (hover._AXPARAM.search, lambda n: "AXPARAM" + " " * n + "x"),
+    ]
+    for apply, make in cases:
+        assert growth(apply, make, 20_000, 80_000) < 10, apply
+
+
+def test_the_timing_fuzzer_finds_a_backtracking_pattern() -> None:
+    """The fuzzer is no no-op: the TOML guard's pattern before issue 43 is found superlinear."""
+    import random
+    import re
+
+    from regex_timing import check
+
+    old = re.compile(r"""(?:(?:[A-Za-z0-9_-]+|"[^"\n]*"|'[^'\n]*')[ \t]*\.[ \t]*){64}""")
+    assert check(old, 500, 4, 10, 0.002, random.Random(0)) is not None
+    assert check(re.compile(r"[A-Za-z_][A-Za-z0-9_]*"), 500, 4, 10, 0.002, random.Random(0), "match") is None

@@ -33,7 +33,7 @@ _HASH_TYPED = re.compile(r"(?:^|\s)#[A-Za-z ]*$")  # `#MA` typed, at the start o
 _XML_NAME_TYPED = re.compile(r"<(P-[A-Z0-9.-]*)$")  # `<P-AX` typed in an XML list
 _XML_VALUE_TYPED = re.compile(r'<(P-[A-Z]{4}-[0-9]{5})(?:\.[0-9]+)*\s+Value\s*=\s*"([^"]*)$')
 _XML_NAME = re.compile(r"<(P-[A-Z]{4}-[0-9]{5}(?:\.[0-9]+)*)[\s/>]")
-_AXPARAM_OPEN = re.compile(r'AXPARAM\s*=?\s*"([^"\s]*)$', re.IGNORECASE)
+_AXPARAM_OPEN = re.compile(r'AXPARAM\s*+=?\s*+"([^"\s]*+)$', re.IGNORECASE)
 MACHINE_DATA_LABEL = ('#MACHINE DATA [SYN] [AX=<name> | AXNR=<n>  P-AXIS-<id>[.<i>]=<value> | '
                       'AXPARAM="<key> <value>" [WAIT]]')
 _PARTS = ("SYN", "AX=<name> | AXNR=<n>", 'P-AXIS-<id>[.<i>]=<value> | AXPARAM="<key> <value>"', "WAIT")
@@ -291,7 +291,7 @@ def _program_items(a: Analysis, line: int, col: int, snippets: bool) -> list[typ
                   "#MACHINE DATA [AX=${1:X} ${2:P-AXIS-00209}=${3:0}]" if snippets else "#MACHINE DATA [",
                   snippet=True)
         return items.items
-    word = re.search(r"[A-Za-z0-9_#=.-]*$", before)
+    word = re.search(r"(?<![A-Za-z0-9_#=.-])[A-Za-z0-9_#=.-]*$", before)  # a run's start only: linear
     items = _Items(a, line, word.start() if word else col, col, snippets)
     if "[" not in before[md.end():]:
         items.add("SYN", types.CompletionItemKind.Keyword, "synchronise with the program (allows WAIT)")

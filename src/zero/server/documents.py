@@ -45,7 +45,9 @@ from zero.server.positions import Text, path_of, source_bytes
 from zero.server.settings import Settings
 
 # A YAML/TOML/JSON file is a list's structured form when it carries zero's record.
-_ZERO_RECORD = re.compile(r'^(?:_zero\s*:|\[\s*_zero\s*\]|\s*"_zero"\s*:)', re.MULTILINE)
+# Leading `[ \t]`, not `\s`: `\s*` at every line start ran over every blank line after it (quadratic in
+# them); a record after blank lines is found at its own line's start all the same.
+_ZERO_RECORD = re.compile(r'^(?:_zero\s*+:|\[\s*+_zero\s*+\]|[ \t]*+"_zero"\s*+:)', re.MULTILINE)
 
 
 @record

@@ -30,7 +30,7 @@ from zero.records import record, replace
 from zero.server.documents import Analysis, file_position
 
 _ID = re.compile(r"P-[A-Z]{4}-[0-9]{5}(?:\.([0-9]+))?")
-_AXPARAM = re.compile(r'AXPARAM\s*=?\s*"([^"\s]*)', re.IGNORECASE)
+_AXPARAM = re.compile(r'AXPARAM\s*+=?\s*+"([^"\s]*+)', re.IGNORECASE)
 _MACHINE_DATA = re.compile(r"#\s*MACHINE\s+DATA\b", re.IGNORECASE)
 MACHINE_DATA_TEXT = (
     "**#MACHINE DATA** — write axis parameters from the NC program\n\n"

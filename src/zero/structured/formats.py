@@ -40,7 +40,7 @@ def decode_structured(data: bytes, path: str) -> str:
                         "are read as UTF-8", path, line, col) from None
 
 
-_EXPONENT_RE = re.compile(r"[+-]?(?:[0-9]+\.?[0-9]*|\.[0-9]+)[eE][+-]?[0-9]+")
+_EXPONENT_RE = re.compile(r"[+-]?(?:[0-9]++(?:\.[0-9]*+)?|\.[0-9]++)[eE][+-]?[0-9]++")  # possessive: linear
 
 
 def check_types(tree: Tree, registry: Registry) -> None:
