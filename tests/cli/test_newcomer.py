@@ -251,3 +251,11 @@ def test_keep_column_only_in_an_aligned_layout() -> None:
     assert _keep_column("  7", rename, 5) == " 7"  # one blank at least
     assert _keep_column(" 7", rename, 5) == " 7"  # one blank: no column to keep
     assert _keep_column("   ", rename, 5) == "   "  # nothing after the blanks
+
+
+def test_ignore_noqa_reports_what_the_suppressions_hide(tmp_path: Path) -> None:
+    (tmp_path / "a.lis").write_text("kenngr.swe_pso 1500 # noqa: R001\nEnde\n")
+    hidden = zero_cli("lint", "a.lis", "--output-format", "concise", cwd=tmp_path, env=PLAIN)
+    shown = zero_cli("lint", "a.lis", "--ignore-noqa", "--output-format", "concise", cwd=tmp_path, env=PLAIN)
+    assert "R001" not in hidden.stdout
+    assert "a.lis:1:1: R001" in shown.stdout and "Z001" not in shown.stdout

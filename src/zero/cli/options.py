@@ -106,6 +106,8 @@ LINT_OPTIONS: tuple[Option, ...] = (
     Option("add_noqa", ("--add-noqa",),
            "Record today's findings: add a `noqa` with their codes to each entry line (a baseline).",
            "flag", default=False),
+    Option("ignore_noqa", ("--ignore-noqa",), "Report the findings `noqa` and the other suppressions hide.",
+           "flag", default=False),
     Option("unsafe_fixes", ("--unsafe-fixes",), "Also apply fixes that change what the controller reads.",
            "flag", default=False),
     Option("stdin_filename", ("--stdin-filename",), "Lint standard input as this file (for editors).", metavar="NAME"),

@@ -286,7 +286,7 @@ def lint(paths: Sequence[str | Path] = (), output_format: str = "text", output_f
          show_files: bool = False, param_desc: str | Path | None = None,
          exclude: Sequence[str] = (), extend_exclude: Sequence[str] = (), respect_gitignore: bool | None = None,
          force_exclude: bool | None = None, kernel: str | None = None, fix_only: bool = False,
-         show_fixes: bool = False, watch: bool = False) -> int:
+         show_fixes: bool = False, watch: bool = False, ignore_noqa: bool = False) -> int:
     """``zero lint``: report what the controller will do with the files; the exit code.
 
     ``quiet``: the findings only (no summary line, progress bar or notes); ``silent``: not even
@@ -319,7 +319,7 @@ def lint(paths: Sequence[str | Path] = (), output_format: str = "text", output_f
     quiet = quiet or silent
     request = LintRequest([str(p) for p in paths], tuple(select), tuple(ignore), kind, param_desc, jobs,
                           config, isolated, fix, show_diff, unsafe_fixes, stdin_filename, machine,
-                          tuple(extend_select), add_noqa, force_exclude is not False,
+                          tuple(extend_select), add_noqa, force_exclude is not False, ignore_noqa,
                           stream=output_file is None and output_format in STREAMED_FORMATS and not show_fixes)
     streams = echo()
     if quiet:

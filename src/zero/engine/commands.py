@@ -94,6 +94,7 @@ class LintRequest:
     extend_select: Sequence[str] = ()
     add_noqa: bool = False
     force_exclude: bool = True  # `exclude` drops files named on the command line too (--no-force-exclude: not)
+    ignore_noqa: bool = False  # report what suppression directives hide (--ignore-noqa)
     # The results may come as a stream, each made as it is read: for a report written as it goes,
     # which then keeps no result (used only where the order and the results are the same).
     stream: bool = False
@@ -128,7 +129,8 @@ def run_lint(request: LintRequest, registries: Registries, echo: Echo,
              read_stdin: Callable[[], bytes], progress: Callable[[int], Progress | None] | None = None) -> LintRun:
     """``zero lint``: lint files, a machine or standard input; apply or show fixes."""
     cli = LintOptions(select=parse_codes(request.select), ignore=parse_codes(request.ignore),
-                      kind=parse_kind(request.kind), extend_select=parse_codes(request.extend_select))
+                      kind=parse_kind(request.kind), extend_select=parse_codes(request.extend_select),
+                      ignore_noqa=request.ignore_noqa)
     project = Project(registries, config=request.config, isolated=request.isolated, param_desc=request.param_desc,
                       cli=cli, machine=request.machine)
     if request.machine is not None:

@@ -225,7 +225,7 @@ class Config:
         return LintOptions(select=chosen.select, ignore=chosen.ignore, kind=cli.kind or self.kind_for(file),
                            severity={**severity, **cli.severity},
                            encoding=cli.encoding or self.encoding_for(file),
-                           kernel=cli.kernel or self.kernel)
+                           kernel=cli.kernel or self.kernel, ignore_noqa=cli.ignore_noqa)
 
     def show(self) -> str:
         """The effective configuration as TOML (``zero config --show``)."""

@@ -53,6 +53,7 @@ class LintOptions:
     extend_select: tuple[str, ...] = ()  # codes or prefixes added to the selection
     encoding: str | None = None  # the codec the configuration declares for the list; None: detected
     kernel: str | None = None  # the kernel release the machine runs (`kernel` in [tool.zero]); None: not said
+    ignore_noqa: bool = False  # report what `noqa` and the other suppression directives hide (--ignore-noqa)
 
 
 @record
@@ -195,7 +196,8 @@ def lint_document(doc: Document, registry: Registry, options: LintOptions | None
     ``default_list``: its machine reads it as a default list."""
     options = options or LintOptions()
     kind = options.kind or (doc.origin.kind if doc.origin is not None else None)
-    ctx, found = check_document(doc, registry, kind, selected_rules(options), extra, options.kernel, default_list)
+    ctx, found = check_document(doc, registry, kind, selected_rules(options), extra, options.kernel, default_list,
+                                noqa=not options.ignore_noqa)
     if doc.origin is not None:  # read from XML: the findings where the user has the file open
         from zero.markup.documents import relocate, shown_document  # start-up: only for XML
 
@@ -312,7 +314,7 @@ def lint_program(data: bytes, registry: Registry, path: str = "-", options: Lint
     comments = [(n, col, text) for n, line in enumerate(lines, 1) if "(" in line or ";" in line
                  for col, text in comment_spans(line)]
     directives = None
-    if comments:
+    if comments and not (options and options.ignore_noqa):
         code = [n for n, line in enumerate(lines, 1) if strip_comments(line).strip()]
         directives = parse_comment_directives(comments, code, declared_codes())
     return LintResult(path, program.doc, "PROGRAM", funnel(path, found, severities, directives))

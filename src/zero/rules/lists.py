@@ -22,7 +22,7 @@ CHECKS: list[Check[Context]] = [c for family in FAMILIES for c in family.checks]
 def check_document(doc: Document, registry: Registry, kind: str | None,
                    severities: dict[str, Severity],
                    extra: Sequence[Diagnostic] = (), kernel: str | None = None,
-                   default_list: bool = False) -> tuple[Context, list[Diagnostic]]:
+                   default_list: bool = False, noqa: bool = True) -> tuple[Context, list[Diagnostic]]:
     """The list's context (kind detected when ``None``) and its findings, sorted, suppressions applied.
     ``extra``: findings about this list from elsewhere (the X rules of its machine), which pass the
     same funnel (:mod:`zero.rules.funnel`): this list's selection, severities and suppressions.
@@ -36,7 +36,8 @@ def check_document(doc: Document, registry: Registry, kind: str | None,
         return ctx, funnel(doc.path, [d for d in syntax.check_problems(ctx) if d.code == "S013"], severities)
     found = run_checks(CHECKS, ctx)
     found.extend(extra)
-    kept = funnel(doc.path, found, severities, suppress.parse_directives(doc, declared_codes()))
+    # noqa=False (--ignore-noqa): the suppression directives written in the list are not applied
+    kept = funnel(doc.path, found, severities, suppress.parse_directives(doc, declared_codes()) if noqa else None)
     said = {(d.span.line, d.param_id) for d in kept if d.kernel_error is not None}
     if said:  # one root cause, one finding: the kernel's own start-up error (not suppressed) says it
         kept = [d for d in kept if d.code not in ("R005", "R006") or (d.span.line, d.param_id) not in said]
