@@ -645,6 +645,8 @@ class Follower:
                     if close > 0 and not _ASSIGN.match(text, close + 1):
                         self._label(f"[{text[i + 1:close].strip()}]", line)
                         i = close + 1
+                        if text.startswith(":", i):  # [NAME]: as the extension's grammar writes a label too
+                            i += 1
                         at_start = False
                         continue
             at_start = False
