@@ -1,6 +1,6 @@
 """The fuzz targets, importable without atheris (tests replay crashes through them).
 
-The first byte of an input picks the target (``% 9`` for 0-8; 0xF9 to 0xFC for 9-12, so
+The first byte of an input picks the target (``% 9`` for 0-8; 0xF9 to 0xFD for 9-13, so
 that every input saved before the last targets existed replays as it did); the rest is the data:
 0 tokenizer + lint of list bytes, 1 list → YAML/TOML/JSON → list (must be the
 identity), 2 YAML reader, 3 TOML reader, 4 JSON reader, 5 diff of two halves,
@@ -11,8 +11,10 @@ start-up list and the lists it names, split from the data, read from memory: ref
 counts, paths, default lists, the X rules), 11 the language server's transport (the bytes a
 client sends, framed as pygls will read them), 12 XML: an XML list (lint with every finding inside
 the file, XML → list → XML the identity where it converts), and the same bytes as a TwinCAT export
-(its lists in place, a fixed export unchanged outside its CDATA sections).
-Only zero's own refusals (ZeroError) may escape; anything else is a crash.
+(its lists in place, a fixed export unchanged outside its CDATA sections), 13 a git repository
+(``.gitignore``, ``.git/info/exclude``, ``zero.toml`` and file names: what a directory walk finds).
+A target turns zero's own refusals (ZeroError: located, said) into a return; anything else that
+escapes is a crash (``fuzz_zero.py`` and the replayed regressions treat every exception so).
 """
 
 from __future__ import annotations
@@ -137,7 +139,10 @@ def check_machine(data: bytes) -> None:
             raise ZeroError("no such file", str(path))
         return got
 
-    machine = load_machine(root / "hochlauf.lis", REGISTRY, reader=reader, workdir=root)
+    try:
+        machine = load_machine(root / "hochlauf.lis", REGISTRY, reader=reader, workdir=root)
+    except ZeroError:  # a start-up list zero refuses (XML not well-formed, too many entries): said, located
+        return
     for r in lint_machine(machine, REGISTRY):
         for d in r.diagnostics:
             assert d.span.line >= 1, d
@@ -146,7 +151,6 @@ def check_machine(data: bytes) -> None:
 def check_transport(data: bytes) -> None:
     import io
     import json
-
     import logging
 
     from zero.server.lsp import FramedInput
@@ -166,6 +170,60 @@ def check_transport(data: bytes) -> None:
         json.loads(body.decode("utf-8", "surrogatepass"))
     for reply in replies:
         assert reply.startswith(b"Content-Length: ")
+
+
+_REPOSITORY: list[Path] = []
+_SAFE_NAME = bytes(range(ord("a"), ord("z") + 1)) + b"0123456789_-.[]*!?# "
+
+
+def check_repository(data: bytes) -> None:
+    """A git repository from the data, split at NUL bytes: ``.gitignore``, ``.git/info/exclude``,
+    ``zero.toml``, then one file name a line (letters, digits and a few pattern characters, in
+    folders; each file a small list). The walk ``zero lint DIR`` does (its ignore rules and the
+    configuration's exclude) finds only regular files inside the repository, each a file it
+    created, in bounded time; a refusal is a ZeroError."""
+    import shutil
+    import subprocess
+    import tempfile
+
+    from zero.engine.config import parse_config
+    from zero.engine.discovery import collect_files
+
+    if not _REPOSITORY:
+        root = Path(tempfile.mkdtemp(prefix="zero-fuzz-repo-"))
+        subprocess.run(["git", "init", "-q", str(root)], check=True, capture_output=True, timeout=30)
+        _REPOSITORY.append(root)
+    root = _REPOSITORY[0]
+    for child in root.iterdir():
+        if child.name != ".git":
+            shutil.rmtree(child) if child.is_dir() and not child.is_symlink() else child.unlink()
+    parts = data.split(b"\0")[:4] + [b""] * 4
+    (root / ".gitignore").write_bytes(parts[0])
+    (root / ".git" / "info").mkdir(parents=True, exist_ok=True)
+    (root / ".git" / "info" / "exclude").write_bytes(parts[1])
+    (root / "zero.toml").write_bytes(parts[2])
+    made: set[Path] = set()
+    for raw in parts[3].split(b"\n")[:40]:
+        name = bytes(c for c in raw if c in _SAFE_NAME or c == ord("/")).decode("ascii").strip("/ ")
+        if not name or any(seg in ("", ".", "..", ".git") for seg in name.split("/")):
+            continue
+        path = root / f"{name}.lis"
+        try:
+            path.parent.mkdir(parents=True, exist_ok=True)
+            path.write_bytes(b"kanal_anzahl 1\n")
+        except OSError:  # a name that is a folder already, or too long
+            continue
+        made.add(path)
+    exclude = None
+    try:
+        cfg = parse_config(root / "zero.toml", parts[2].decode("utf-8", "replace"))
+        exclude = cfg.excluded if cfg is not None else None
+    except ZeroError:
+        pass
+    found = collect_files([root], exclude=exclude, note=lambda _text: None)
+    for f in found:
+        assert f in made or f.suffix != ".lis", (f, made)
+        assert f.is_file() and not f.is_symlink() and f.resolve().is_relative_to(root.resolve()), f
 
 
 _XML_HEAD = b'<?xml version="1.0" encoding="utf-8"?>\n'
@@ -205,30 +263,15 @@ def check_xml(data: bytes) -> None:
 def one_input(raw: bytes) -> None:
     if not raw:
         return
-    target, data = (raw[0] - 0xF0 if raw[0] in (0xF9, 0xFA, 0xFB, 0xFC) else raw[0] % 9), raw[1:]
-    if target == 12:
-        check_xml(data)
-        return
-    if target == 9:
-        check_config(data)
-        return
-    if target == 10:
-        check_machine(data)
-        return
-    if target == 11:
-        check_transport(data)
-        return
-    if target == 0:
-        check_lint(data)
-    elif target == 1:
-        check_round_trip(data)
-    elif target in (2, 3, 4):
-        check_reader(("yaml", "toml", "json")[target - 2], data)
-    elif target == 5:
-        check_diff(data)
-    elif target == 6:
-        check_program(data)
-    elif target == 7:
-        check_format(data)
-    else:
-        check_fix(data)
+    target, data = (raw[0] - 0xF0 if raw[0] in (0xF9, 0xFA, 0xFB, 0xFC, 0xFD) else raw[0] % 9), raw[1:]
+    try:
+        TARGETS[target](data)
+    except ZeroError as exc:  # a refusal: located, never a crash (the command line says it, exit 2)
+        assert exc.message, exc
+
+
+TARGETS = {
+    0: check_lint, 1: check_round_trip, 2: lambda d: check_reader("yaml", d), 3: lambda d: check_reader("toml", d),
+    4: lambda d: check_reader("json", d), 5: check_diff, 6: check_program, 7: check_format, 8: check_fix,
+    9: check_config, 10: check_machine, 11: check_transport, 12: check_xml, 13: check_repository,
+}
