@@ -244,3 +244,34 @@ def test_what_a_finding_says_follows_the_page(registry: Registry) -> None:
     assert finding(110574).message.endswith("the kernel switches the I position controller off")
     drive = finding(110614)
     assert drive.hint is not None and "the P-AXIS-00539 page lists drive types (P-AXIS-00020) 2, 3" in drive.hint
+
+
+def test_one_channel_id_on_two_channels_is_1001850(tmp_path: Path) -> None:
+    """Issue 38: two channel lists writing one non-zero channel_id (P-CHAN-00400) are X019 with
+    P-ERR-1001850, on the later channel's line; distinct IDs, or IDs left at 0, are not."""
+    import json
+    import shutil
+
+    from conftest import zero_cli
+
+    def found(startup: Path) -> list[tuple[str, str, int, str]]:
+        run = zero_cli("lint", "--machine", str(startup), "--select", "X019", "--output-format", "json")
+        return [(d["code"], Path(str(d["path"])).name, d["line"], str(d["kernel_error"]))
+                for d in json.loads(run.stdout)]
+
+    shutil.copytree(FIXTURES / "machine-clean", tmp_path / "m")
+    listen = tmp_path / "m" / "listen"
+    startup = listen / "hochlauf.lis"
+    startup.write_text(startup.read_text().replace("kanal_anzahl                                          1",
+                                                   "kanal_anzahl 2").replace(
+        "Ende", "sda_mds[1] ./listen/kanal2.lis\nEnde", 1))
+    kanal = listen / "kanal.lis"
+    text = kanal.read_text()
+    (listen / "kanal2.lis").write_text(text)
+    assert found(startup) == []  # both IDs at the default 0
+    kanal.write_text(text.replace("Ende", "channel_id 7\nEnde", 1))
+    (listen / "kanal2.lis").write_text(text.replace("Ende", "channel_id 8\nEnde", 1))
+    assert found(startup) == []
+    (listen / "kanal2.lis").write_text(text.replace("Ende", "channel_id 7\nEnde", 1))
+    line = text.splitlines().index("Ende") + 1
+    assert found(startup) == [("X019", "kanal2.lis", line, "P-ERR-1001850")]

@@ -671,3 +671,43 @@ def check_gantry(ctx: MachineContext) -> Iterator[Diagnostic]:
             f"master's, logical axis {int(master_nr)} ({theirs[0]:g} / {theirs[1]:g}, {master.list.path.name}): the "
             "controller warns with 70202 at start-up and adopts the master axis's values",
             param_id="P-AXIS-00126", path=str(lf.path), kernel_error="P-ERR-70202")
+
+
+CHANNEL_ID_TWICE = FAMILY.rule(
+    "X019", "channel-id-twice", E, "P-ERR-1001850: one channel ID on two channels",
+    """
+What it checks: no two channel lists of the machine write the same non-zero channel ID
+(`channel_id`, P-CHAN-00400). Values from two lists of the machine: checked with
+`zero lint --machine`. An ID left at the catalogue's default 0 is not checked (the page does not say
+whether two unset IDs collide).
+
+Why it matters on the machine: the kernel reports P-ERR-1001850 at start-up (class 3) and numbers
+all channels by default instead (channel ID = channel index + 1), so whatever addresses a channel by
+its configured ID finds another one. Source:
+https://infosys.beckhoff.com/content/1033/tf5200_diagnosis/1000916363.html
+
+Fix: give each channel its own `channel_id`.
+""")
+_CHANNEL_ID = "P-CHAN-00400"
+
+
+@FAMILY.check(CHANNEL_ID_TWICE)
+def check_channel_ids(ctx: MachineContext) -> Iterator[Diagnostic]:
+    """X019 (P-ERR-1001850): a channel ID that an earlier channel list already writes."""
+    seen: dict[int, tuple[int, str]] = {}
+    for ch in ctx.machine.channels:
+        lf = ch.lists
+        entry = lf.entry(_CHANNEL_ID) if lf is not None else None
+        value = lf.number(_CHANNEL_ID) if lf is not None else None
+        if lf is None or entry is None or not value:
+            continue  # unset, or set in a default list only (one list, not two)
+        nr = int(value)
+        if nr in seen:
+            index, name = seen[nr]
+            yield ctx.report(
+                "X019", Span.on_line(entry.line, entry.value_start, entry.value_end),
+                f"P-ERR-1001850: channel ID {nr} is also channel {index}'s ({name}): the controller reports error "
+                "1001850 at start-up and numbers every channel by default (channel index + 1) instead",
+                param_id=_CHANNEL_ID, path=str(lf.path), kernel_error="P-ERR-1001850")
+            continue
+        seen[nr] = (ch.index, lf.path.name)
