@@ -103,6 +103,10 @@ class Diagnostic:
     hint: str | None = field(default=None, compare=False)
     related: tuple[Related, ...] = field(default=(), compare=False)
     kernel_error: str | None = None  # the number the kernel reports for it at start-up: P-ERR-110421
+    # what the controller does (zero.catalog.evidence: ignored, limited, zeroed, undocumented, ...) and
+    # the document that says so (a page's address, or why there is none)
+    consequence: str | None = field(default=None, compare=False)
+    source: str | None = field(default=None, compare=False)
 
     def sort_key(self) -> tuple[str, int, int, str]:
         return (self.path, self.span.line, self.span.column, self.code)
@@ -120,5 +124,7 @@ class Diagnostic:
             "message": self.message,
             "param_id": self.param_id,
             "kernel_error": self.kernel_error,
+            "consequence": self.consequence,
+            "source": self.source,
             "fix": self.fix.to_json() if self.fix is not None else None,
         }

@@ -54,13 +54,22 @@ def test_the_message_names_the_listed_values_and_their_meaning(tmp_path: Path, c
     assert spec is not None and len(spec.enum_labels) == len(spec.enum)  # the labels come from the user's file
     assert (f"9 is not one of the values the catalogue lists for `kenngr.antr_typ` (1 {spec.enum_labels[0]}, "
             f"2 {spec.enum_labels[1]}") in finding.message
-    assert "the controller replaces it with the default 0x0004 at start-up" in finding.message
+    # a listed value set, not a range: P-ERR-1001138 speaks of a minimum and maximum, so nothing is documented
+    assert finding.message.endswith("the documentation lists the allowed values but does not say what the "
+                                    "controller does with another one")
+    assert finding.severity.label == "warning" and finding.consequence == "undocumented"
+    assert "replaces it with the default" not in finding.message
 
 
-def test_a_default_the_catalogue_contradicts_is_not_predicted(registry: Registry) -> None:
+def test_a_default_is_never_predicted(registry: Registry) -> None:
+    """No message says the controller puts the default in (issue 36: nothing documents it); a SERCOS-only
+    parameter of an axis of another drive type (the catalogue's default 4, simulation) is not used."""
     [finding] = lint_bytes(b"antr.sercos.ident[0].type 3\n", registry, "a.lis").diagnostics
-    assert finding.message.endswith("the catalogue gives the default 0, which its own range for it excludes: "
-                                    "what the controller uses instead is not certain")
+    assert "default 0" not in finding.message and finding.severity.label == "info"
+    assert finding.message.endswith("this axis has drive type 4 (the catalogue's default, P-AXIS-00020): the kernel "
+                                    "does not use the value")
+    [sercos] = lint_bytes(b"kenngr.antr_typ 2\nantr.sercos.ident[0].type 3\n", registry, "a.lis").diagnostics
+    assert sercos.severity.label == "warning" and sercos.consequence == "undocumented"
 
 
 @pytest.mark.parametrize(("text", "expected"), [

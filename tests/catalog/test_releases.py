@@ -37,7 +37,7 @@ KEY_ROWS: list[Rename | Removal] = [*TABLE.renames, *TABLE.removals]
 
 
 def test_the_table_has_its_rows() -> None:
-    assert len(TABLE.renames) == 11
+    assert len(TABLE.renames) == 12
     assert len(TABLE.removals) == 2
     assert [(p.old, p.new) for p in TABLE.prefixes] == [("antr_simu.", "antr.simu.")]
 

@@ -21,7 +21,7 @@ CLEAN = str(FIXTURES / "rules" / "M006" / "pass.lis")
 WARN_ONLY = str(FIXTURES / "rules" / "M006" / "fail.lis")
 
 JSON_KEYS = {"path", "line", "column", "end_line", "end_column", "code", "severity", "message",
-             "param_id", "kernel_error", "fix"}
+             "param_id", "kernel_error", "consequence", "source", "fix"}
 
 
 def test_lint_text_report_and_exit_code() -> None:

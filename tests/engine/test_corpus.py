@@ -12,6 +12,7 @@ from zero.catalog.registry import Registry
 from zero.engine.lint import LintOptions, lint_file
 
 LISTS = sorted((corpus_dir() / "isg-sdk" / "listen").rglob("*.lis"))
+TEMPLATES = sorted((corpus_dir() / "isg-sdk" / "xml").rglob("*.xml"))
 
 
 def _name(p: Path) -> str:
@@ -102,3 +103,21 @@ def test_every_finding_on_the_corpus_is_pinned(registry: Registry, corpus: Path,
     actual = {_name(p): _compact(p, registry) for p in LISTS}
     expected = golden(FIXTURES / "corpus-findings.json", actual, request.config.getoption("--update-golden"))
     assert actual == expected
+
+
+def test_every_error_on_the_vendors_lists_is_documented(registry: Registry, corpus: Path) -> None:
+    """Issue 36: on the vendor's own lists, ASCII and XML, every error is one the vendor's documentation
+    backs. The one left: the SDK's spindle template sets the fast homing speed (the catalogue's default
+    83333) above the speed limit of a non-homed axis (30000): P-ERR-110421, "the value of P-AXIS-00219 is
+    automatically set to the maximum permissible velocity P-AXIS-00268"
+    (https://infosys.beckhoff.com/content/1033/tf5200_diagnosis/263292555.html)."""
+    errors = []
+    for path in [*LISTS, *TEMPLATES]:
+        for d in lint_file(path, registry).diagnostics:
+            if d.severity.label == "error":
+                errors.append((path.name, d.span.line, d.code, d.kernel_error))
+                assert d.source is not None and d.source.startswith("https://"), d
+    assert errors == [("ax_mds_6_spdl.xml", 189, "K074", "P-ERR-110421")]
+    templates = Counter((d.code, d.severity.label) for p in TEMPLATES for d in lint_file(p, registry).diagnostics)
+    # the SERCOS-only measuring mask of a simulated axis, the application-specific inching keys: information
+    assert templates[("R005", "info")] == 2 and templates[("R005", "error")] == 0

@@ -36,10 +36,11 @@ def test_what_the_fixtures_pin(registry: Registry) -> None:
         "axis_symbols": [],  # VEL | ACC
         "channel_no_spindle": [],
         "tool_tilt": [("R012", 2)],
-        # issue 26's planted start-up faults: modulo limits inverted (P-ERR-110052, and the catalogue's prose
-        # range on the other limit), the reference point outside the soft limits (the prose range of
-        # P-AXIS-00152), homing speeds above the limit of an axis not homed (P-ERR-110422, 110421) ...
-        "planted_spindle": [("K032", 8), ("R006", 9), ("R006", 11), ("K075", 13), ("K074", 14)],
+        # issue 26's planted start-up faults: modulo limits inverted (P-ERR-110052 only: one root cause, one
+        # finding, the catalogue's prose range on the other limit is superseded, issue 36), the reference point
+        # outside the soft limits (the prose range of P-AXIS-00152, a warning: no start-up check documented),
+        # homing speeds above the limit of an axis not homed (P-ERR-110422, 110421) ...
+        "planted_spindle": [("K032", 8), ("R006", 11), ("K075", 13), ("K074", 14)],
         # ... and a homing distance limit on a linear axis (P-ERR-110545): the documentation checks it on
         # linear axes only, and modulo and the non-homed limit on rotary axes and spindles only; both position
         # resolution settings at once (no documented error: M009)

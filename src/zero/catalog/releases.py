@@ -39,6 +39,7 @@ if TYPE_CHECKING:
 CATALOGUE_RELEASE: tuple[int, ...] = (4, 13)
 
 _Row = TypeVar("_Row")
+VENDOR_SOURCE = "isg-sdk "  # a row's source that names a file of the vendor's SDK (lists, XML templates)
 UNKNOWN_RELEASE = "unknown"  # a row whose source does not say which release wrote the spelling
 DATA = Path(__file__).parent / "data" / "releases.toml"
 
@@ -93,6 +94,12 @@ class Rename:
     def new_key(self, indices: tuple[int, ...] | list[int] = ()) -> str:
         """Today's key with a list line's indices filled in (``lr_hw[1]...``)."""
         return format_key(self.new, indices)
+
+    @property
+    def vendor(self) -> bool:
+        """The row's source is the vendor's own SDK lists or templates (``isg-sdk …``): the vendor writes
+        the spelling, evidence that the kernel of that release accepts it (R013 at info)."""
+        return self.source.startswith(VENDOR_SOURCE)
 
 
 @record(frozen=True)

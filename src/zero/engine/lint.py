@@ -38,6 +38,7 @@ from zero.rules.funnel import funnel
 from zero.rules.suppress import parse_comment_directives
 
 if TYPE_CHECKING:  # start-up: linting a list loads neither the machine model nor the structured forms
+    from zero.catalog.values import ListValues
     from zero.machine.model import ListFile, Machine
     from zero.structured.common import Found
     from zero.structured.tree import Tree
@@ -191,13 +192,15 @@ def _layered_selection(layers: Sequence[Layer], dropped: Sequence[str] = ()) -> 
 
 
 def lint_document(doc: Document, registry: Registry, options: LintOptions | None = None,
-                  extra: Sequence[Diagnostic] = (), default_list: bool = False) -> LintResult:
+                  extra: Sequence[Diagnostic] = (), default_list: bool = False,
+                  base: ListValues | None = None) -> LintResult:
     """One list's findings; ``extra`` are findings about it from its machine (suppressible in it);
-    ``default_list``: its machine reads it as a default list."""
+    ``default_list``: its machine reads it as a default list; ``base``: the default list its machine
+    reads under it (every rule then judges the machine's layered values)."""
     options = options or LintOptions()
     kind = options.kind or (doc.origin.kind if doc.origin is not None else None)
     ctx, found = check_document(doc, registry, kind, selected_rules(options), extra, options.kernel, default_list,
-                                noqa=not options.ignore_noqa)
+                                base, noqa=not options.ignore_noqa)
     if doc.origin is not None:  # read from XML: the findings where the user has the file open
         from zero.markup.documents import relocate, shown_document  # start-up: only for XML
 
@@ -529,7 +532,8 @@ def _in_machine(lf: ListFile, doc: Document, registry: Registry, options: LintOp
     kind = lf.values.kind
     extra = [d if d.path == doc.path else replace(d, path=doc.path) for d in found]
     default = machine is not None and any(d is lf for d in machine.defaults.values())
-    return lint_document(doc, registry, replace(options, kind=kind) if kind else options, extra, default)
+    return lint_document(doc, registry, replace(options, kind=kind) if kind else options, extra, default,
+                         None if default else lf.values.base)
 
 
 def lint_in_machine(path: str, machine: Machine, registry: Registry, options: LintOptions,

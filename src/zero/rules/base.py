@@ -20,6 +20,8 @@ import re
 from collections.abc import Callable, Iterator
 from typing import TYPE_CHECKING, Generic, Literal, TypeVar
 
+from zero.catalog.evidence import Claim, rule_claim
+from zero.catalog.evidence import claim as evidence_claim
 from zero.catalog.registry import Registry
 from zero.catalog.values import ListValues
 from zero.diagnostics import Diagnostic, Fix, Related, Severity, Span
@@ -73,15 +75,37 @@ class Reporter:
 
     def report(self, code: str, span: Span, message: str, *, param_id: str | None = None,
                fix: Fix | None = None, hint: str | None = None, path: str | None = None,
-               related: tuple[Related, ...] = (), kernel_error: str | None = None) -> Diagnostic:
+               related: tuple[Related, ...] = (), kernel_error: str | None = None,
+               claim: str | Claim | None = None) -> Diagnostic:
+        """A finding of ``code``. Its severity, consequence and source follow its claim (``claim``, else
+        the rule's own claim in the evidence table: :mod:`zero.catalog.evidence`), unless the run
+        gives the code a severity other than the rule's default (the user's word wins)."""
         if len(message) > 300:
             message = _LONG_WORD.sub(_shorten_word, _LONG_QUOTED.sub(_shorten, message))
-        severity = self.severities.get(code) or _defaults.get(code, Severity.ERROR)
+        default = _defaults.get(code, Severity.ERROR)
+        configured = self.severities.get(code)
+        c = claim if isinstance(claim, Claim) else \
+            evidence_claim(claim, self.list_kind) if claim is not None else rule_claim(code, self.list_kind)
+        if c is None:
+            return Diagnostic(code, configured or default, message, span, self.path if path is None else path,
+                              param_id, fix, hint, related, kernel_error)
+        # the rule's declared severity is the most its findings can be; the evidence may lower it
+        severity = min(c.severity, default) if configured is None or configured is default else configured
         return Diagnostic(code, severity, message, span, self.path if path is None else path,
-                          param_id, fix, hint, related, kernel_error)
+                          param_id, fix, hint, related, kernel_error or c.kernel_error, c.consequence, c.source)
+
+    @property
+    def list_kind(self) -> str | None:
+        """The kind of the list a finding is about (``None``: a machine or a program)."""
+        return None
 
 
 _defaults: dict[str, Severity] = {}  # code → default severity, filled as families declare rules
+
+
+def default_severity(code: str) -> Severity | None:
+    """The severity a rule is declared with (the run's severity equal to it: the evidence decides)."""
+    return _defaults.get(code)
 
 
 def declared_codes() -> set[str]:
@@ -100,6 +124,10 @@ class Context(ListValues, Reporter):
     @property
     def path(self) -> str:  # type: ignore[override]
         return self.doc.path
+
+    @property
+    def list_kind(self) -> str | None:
+        return self.kind
 
 
 @record

@@ -7,8 +7,10 @@ this order:
 1. **selection**: only codes the run selected (``--select``, ``--ignore``, the configuration's
    ``select``/``ignore``/``per-file-ignores`` for *this* file: ``severities`` holds exactly the
    selected codes);
-2. **severity**: each finding takes the severity the run gives its code (``[tool.zero.severity]``),
-   whatever the check that made it assumed;
+2. **severity**: each finding keeps the severity its evidence gives it (:mod:`zero.catalog.evidence`:
+   an error only where the vendor documents that the controller rejects, changes or ignores the
+   value or stops) unless the run gives its code another severity than the rule's default
+   (``[tool.zero.severity]``): then that one, whatever the check assumed;
 3. **suppression**: the directives written in the file (``noqa``, ``zero: ignore[…]``), with Z001
    and Z002 for directives that hide nothing or cannot be read.
 
@@ -23,17 +25,22 @@ from collections.abc import Sequence
 
 from zero.diagnostics import Diagnostic, Severity
 from zero.records import replace
+from zero.rules.base import default_severity
 from zero.rules.suppress import Bad, Directive, apply_directives
 
 
 def select(found: Sequence[Diagnostic], severities: dict[str, Severity]) -> list[Diagnostic]:
-    """Steps 1 and 2: the selected findings, each with the run's severity for its code."""
+    """Steps 1 and 2: the selected findings, each with its evidence's severity, or the run's where the
+    run gives its code another severity than the rule's default."""
     out = []
     for d in found:
         severity = severities.get(d.code)
         if severity is None:
             continue
-        out.append(d if severity is d.severity else replace(d, severity=severity))
+        if severity is d.severity or severity is default_severity(d.code):
+            out.append(d)  # the evidence's severity (the run left the rule's default)
+        else:
+            out.append(replace(d, severity=severity))
     return out
 
 

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
+from zero.catalog.evidence import claim
 from zero.catalog.ids import (
     DEFAULT_INDEX,
     FEED_DEN,
@@ -26,7 +27,7 @@ from zero.catalog.ids import (
 from zero.catalog.ranges import TYPE_LIMITS
 from zero.catalog.values import Resolved, rotary
 from zero.diagnostics import Diagnostic, Span
-from zero.rules.base import INFO, Context, E, Family, W
+from zero.rules.base import INFO, Context, Family, W
 
 FAMILY: Family[Context] = Family("M", "meaning", "list")
 
@@ -43,14 +44,15 @@ def _span(res: Resolved) -> Span:
 # ------------------------------------------------------- soft limits: M001, M005..M008
 
 SOFT_LIMITS_INVERTED = FAMILY.rule(
-    "M001", "soft-limits-inverted", E, "The negative soft limit is not below the positive one",
+    "M001", "soft-limits-inverted", W, "The negative soft limit is not below the positive one",
     """
 What it checks: `kenngr.swe_neg` < `kenngr.swe_pos` (P-AXIS-00177 < P-AXIS-00178), with
 the default for whichever of the two the list does not set.
 
-Why it matters on the machine: each limit's range is defined against the other, so the
-start-up check rejects them and puts in the defaults (±10 m): the axis runs with soft
-limits that no longer protect it.
+Why it matters on the machine: the limits span no travel range. The kernel documents an error
+for an empty range (equal limits: P-ERR-110110, which K042 reports with its number, and then
+this finding is not made); what it does with inverted limits is not documented, so this is a
+warning that says so.
 
 Example: `kenngr.swe_neg 5000000` with `kenngr.swe_pos -5000000`
 Fix: swap or correct the values.
@@ -114,8 +116,8 @@ def check_soft_limits(ctx: Context) -> Iterator[Diagnostic]:
                 "M001",
                 _span(at),
                 f"negative soft limit {length_text(n, rotary)} is not below the positive "
-                f"{length_text(p, rotary)}: the controller rejects the limits and falls back "
-                "to the defaults (±10 m), so they no longer protect the axis",
+                f"{length_text(p, rotary)}: the limits span no travel range; "
+                f"{claim('empty-soft-limits', ctx.kind).says}",
                 param_id=at.spec.id,
             )
         tol = ctx.number_of(SWE_TOL)
@@ -239,22 +241,25 @@ def check_zero_offsets(ctx: Context) -> Iterator[Diagnostic]:
 # ------------------------------------------------------- position resolution: M009
 
 TWO_RESOLUTIONS = FAMILY.rule(
-    "M009", "two-resolution-settings", E, "The position resolution set both per gear stage and by the feed constant",
+    "M009", "two-resolution-settings", INFO, "Gear-stage resolution and feed constant both set: which formula applies",
     """
 What it checks: an axis list that sets `getriebe[g].wegaufz`/`wegaufn` (P-AXIS-00234/00233)
 to anything but 1 while `antr.feed_const_num` or `antr.feed_const_denom` (P-AXIS-00362/00363)
 is not 1 either, in the one list.
 
-Why it matters on the machine: the catalogue says a feed constant other than 1 switches the
-controller to the other method: it computes the resolution from the feed constant, the
-encoder increments per motor revolution (P-AXIS-00092) and the gear ratio
-(P-AXIS-00511/00512), so the gear stage's `wegaufz`/`wegaufn` do not decide how far the axis
-moves. The vendor asks for P-AXIS-00362/00363 at 1 wherever P-AXIS-00234/00233 are used, and
-documents no start-up message for the mix: the controller starts without a word.
+Why it matters on the machine: a feed constant other than 1 has the controller compute the
+resolution from the feed constant and the encoder increments per motor revolution (P-AXIS-00092)
+with a gear ratio. The TwinCAT CNC axis documentation (the feed-constant section,
+https://infosys.beckhoff.com/content/1033/tccncaxisparameter/15267153035.html) puts
+`wegaufz`/`wegaufn` (P-AXIS-00234/00233) into that formula as the gear ratio, so on such a
+kernel they are a real gear ratio, not a second resolution; the TF5200 documentation
+(https://infosys.beckhoff.com/content/1033/tf5200_axis_parameter/131271307.html) names
+`gear_fact_num`/`gear_fact_denom` (P-AXIS-00511/00512) for it. No start-up message is documented
+for either. Information: check which of the two the machine's kernel uses.
 
 Example: `getriebe[0].wegaufz 4` with `antr.feed_const_num 100000`
-Fix: keep one method: the feed constant (the vendor's recommendation) with wegaufz/wegaufn at
-1, or wegaufz/wegaufn with the feed constant at 1.
+Fix: nothing where wegaufz/wegaufn are the gear ratio the kernel's documentation puts into the
+feed-constant formula; on a kernel that uses P-AXIS-00511/00512 there, write the gear ratio there.
 """)
 
 
@@ -277,9 +282,10 @@ def check_resolution(ctx: Context) -> Iterator[Diagnostic]:
     f = min(feed, key=lambda t: t[2].entry.line)[2]
     yield ctx.report(
         "M009", _span(at),
-        f"`{g.entry.key_text} {g.entry.value}` sets the resolution per gear stage, but "
-        f"`{f.entry.key_text} {f.entry.value}` is not 1: the controller then computes it from the "
-        "feed constant (catalogue), and wegaufz/wegaufn do not set how far the axis moves; "
-        "the vendor documents no start-up message for this",
+        f"`{f.entry.key_text} {f.entry.value}` is not 1, so the resolution is computed from the feed constant; "
+        f"`{g.entry.key_text} {g.entry.value}` enters it as the gear ratio where the kernel follows the TwinCAT "
+        "CNC axis documentation (P-AXIS-00234/00233 in the feed-constant formula), while the TF5200 "
+        "documentation names P-AXIS-00511/00512 for the gear ratio: which one this kernel uses decides how far "
+        "the axis moves",
         param_id=pid,
     )

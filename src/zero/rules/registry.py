@@ -8,13 +8,15 @@ from collections.abc import Callable, Iterator
 from typing import Any
 
 from zero.catalog.conditions import Compiled
+from zero.catalog.evidence import Claim, claim, drive_types
 from zero.catalog.ids import SOFT_LIMITS
-from zero.catalog.ranges import Bounds, Number, Range, Ref, format_number
-from zero.catalog.registry import BUILTIN_SOURCE, KINDS, NO_DEFAULT, ParamSpec, Registry
+from zero.catalog.ranges import TYPE_LIMITS, Bounds, Number, Range, Ref, format_number
+from zero.catalog.registry import BUILTIN_SOURCE, KINDS, ParamSpec, Registry
 from zero.catalog.values import Resolved, Value, default_number
 from zero.diagnostics import Diagnostic, Edit, Fix, Related, Span
 from zero.errors import ZeroError
 from zero.lists.model import Comment, Entry, ValueKind, format_key
+from zero.records import replace
 from zero.rules.base import INFO, Context, E, Family, W
 
 FAMILY: Family[Context] = Family("R", "registry", "list")
@@ -29,25 +31,28 @@ kind in the registry. zero says which list a key belongs to when it is valid els
 and proposes the closest known key (for the first 100 distinct unknown keys of a list:
 a list with more is not a list of its kind, and spellings would not help).
 
-Why it matters on the machine: unknown entries are not taken over; the parameter the
-engineer meant keeps its default, and the start-up shows only a warning.
+Why it matters on the machine: in an axis parameter list the kernel ignores an element it
+cannot interpret (P-ERR-1001119), so the parameter the engineer meant keeps the value it had; an
+error. For the other list kinds the vendor documents no reaction: a warning that says so. A key
+the vendor's own lists or templates write is R002, R010 or R013 instead (information).
 
 Example: `kenngr.swe_pso 15000000`
 Fix: correct the key (`kenngr.swe_pos`), or load the description of your kernel with
 `--param-desc` if the key is newer than zero's table.
 """)
 ALIAS_KEY = FAMILY.rule(
-    "R002", "alias-key", W, "An undocumented spelling of a documented key",
+    "R002", "alias-key", INFO, "An undocumented spelling of a documented key that the vendor's lists write",
     """
 What it checks: keys that the vendor's own lists use but the parameter description
 does not, and that stand for a documented parameter (German or older spellings such as
 `syn_chk.fehler_pro_zeile` for `syn_chk.errors_per_block`). The value is checked
 against the documented parameter.
 
-Why it matters on the machine: a kernel that no longer accepts the old spelling does not
-take the entry over and uses the default instead.
+Why it matters on the machine: the vendor's own lists write the spelling, which is evidence that
+the kernel of their release accepts it; no documentation says a kernel ignores it. Information:
+the documented key is the safer spelling.
 
-Fix: use the documented key.
+Fix: use the documented key (an unsafe fix), or nothing.
 """)
 INDEX_OUT_OF_RANGE = FAMILY.rule(
     "R003", "index-out-of-range", E, "An array index beyond the array's size",
@@ -55,7 +60,9 @@ INDEX_OUT_OF_RANGE = FAMILY.rule(
 What it checks: each index of a key against the array size in the registry
 (`np_grp` 0..96, `achse` 0..31, `getriebe` 0..5, ...; the tool list `wz` counts from 1).
 
-Why it matters on the machine: the element does not exist; the entry is not taken over.
+Why it matters on the machine: the element does not exist. In an axis parameter list the
+kernel ignores an element it cannot interpret (P-ERR-1001119): an error; for the other list kinds
+no reaction is documented: a warning that says so.
 
 Example: `np_grp[97].achse[0].versch 100`
 Fix: use an index inside the range.
@@ -66,6 +73,11 @@ _KIND_NAMES = {k: v[1] for k, v in KINDS.items()}
 
 def _key_span(e: Entry) -> Span:
     return Span.on_line(e.line, e.key_start, e.key_end)
+
+
+def says(ctx: Context, name: str) -> str:
+    """What the evidence table says the controller does (claim ``name``, for this list's kind)."""
+    return claim(name, ctx.kind).says
 
 
 VENDOR_KEY = FAMILY.rule(
@@ -124,8 +136,8 @@ def check_keys(ctx: Context) -> Iterator[Diagnostic]:
                     "R002",
                     _key_span(e),
                     f"`{e.key_text}` is not in the parameter description; it stands for "
-                    f"`{alias.key}` ({alias.id}). A kernel that does not accept this spelling "
-                    f"ignores the entry and uses the default {alias.default_display}",
+                    f"`{alias.key}` ({alias.id}), and the vendor's own lists write it: evidence that the kernel "
+                    "of their release accepts it (its value is checked as the documented parameter's)",
                     param_id=alias.id,
                     hint=f"use `{format_key(alias.key or '', key.indices)}`",
                     fix=Fix(
@@ -157,8 +169,8 @@ def check_keys(ctx: Context) -> Iterator[Diagnostic]:
             yield ctx.report(
                 "R003",
                 _key_span(e),
-                f"index {shown} of `{name}` is outside {spec.valid_indices(pos)}: the element does not exist "
-                "and the controller does not take the entry over",
+                f"index {shown} of `{name}` is outside {spec.valid_indices(pos)}: the element does not exist; "
+                f"{says(ctx, 'unknown-element')}",
                 param_id=spec.id,
             )
 
@@ -223,11 +235,18 @@ def _other_release(ctx: Context, e: Entry, known: dict[str, Any], propose: bool 
     if row is not None:
         new = row.new_key(e.key.indices)
         when = f" (seen in lists of kernel {row.release})" if row.release != UNKNOWN_RELEASE else ""
+        checked = f" (its value is checked as {row.id}'s)" if not source.startswith("its own") else ""
+        if row.vendor:  # the vendor's own lists or templates write it: evidence, not a fault
+            where = row.source.split(" (")[0].removeprefix("isg-sdk ")
+            return ctx.report("R013", _key_span(e), f"`{e.key_text}` is another spelling{when} of `{new}` ({row.id}), "
+                              f"which the vendor's own SDK writes ({where}): evidence that the kernel of its release "
+                              "accepts it" + checked,
+                              param_id=row.id, claim="vendor-writes", hint=f"today: `{new}`",
+                              fix=Fix(f"Use today's key `{new}`", (Edit(_key_span(e), new),), safe=False))
         return ctx.report("R013", _key_span(e), f"`{e.key_text}` is another spelling{when} of `{new}` ({row.id}), as "
                           f"{source if source.startswith('its own') else 'zero’s table of renames says'}: "
-                          f"{ours} does not document it, so a kernel that does not accept it does not take the entry "
-                          "over; the kernel it was written for may read it as intended"
-                          + (f" (its value is checked as {row.id}'s)" if not source.startswith("its own") else ""),
+                          f"{ours} does not document it; whether the machine's kernel accepts it is not documented, "
+                          "and the kernel it was written for may read it as intended" + checked,
                           param_id=row.id,
                           hint=f"today: `{new}`", fix=Fix(f"Use today's key `{new}`", (Edit(_key_span(e), new),),
                                                           safe=False))
@@ -278,11 +297,11 @@ def _unknown_key(ctx: Context, e: Entry, propose: bool = True, known: dict[str, 
         spec = reg.by_pattern(e.key.pattern, other[0])
         pid = f" ({spec.id})" if spec else ""
         msg = (f"`{e.key_text}` belongs to the {where}{pid}, not to this "
-               f"{_KIND_NAMES.get(ctx.kind or '', 'list')}: not taken over by the controller")
+               f"{_KIND_NAMES.get(ctx.kind or '', 'list')}: {says(ctx, 'unknown-element')}")
         hint = "check that this is the right file, or override the detection with --kind"
     else:
         ours = known["ours"] if known and "ours" in known else _catalogue(reg)
-        msg = f"unknown key `{e.key_text}` (not in {ours}): not taken over by the controller"
+        msg = f"unknown key `{e.key_text}` (not in {ours}): {says(ctx, 'unknown-element')}"
         near = reg.suggest(e.key.pattern, ctx.kind) if propose else []
         if near:
             proposal = format_key(near[0], e.key.indices)
@@ -300,8 +319,11 @@ What it checks: integers must be integers that fit the type (`12.5` or `abc` for
 SGN32 are wrong, `70000` does not fit UNS16), numbers must be numbers, strings must not
 exceed their maximum length.
 
-Why it matters on the machine: the plausibility check at start-up rejects the entry and
-replaces it with the parameter's default value.
+Why it matters on the machine: in an axis parameter list the kernel goes on with the list and
+sets a value of an invalid number format to 0, or limits one beyond the type to the permissible
+minimum or maximum (P-ERR-1001138): an error. For the other list kinds the vendor documents no
+reaction: a warning that says so. Where zero cannot read a value (`666666.667` for an integer),
+no other rule reasons on it: not on the default, not on a guessed number.
 
 Example: `kenngr.swe_pos 1500.5`
 Fix: write the value in the parameter's unit as an integer (`kenngr.swe_pos 15005000`).
@@ -316,32 +338,42 @@ lists in its text, one per line (`1 : <meaning>` … `32 : <meaning>` for
 0/1 (or FALSE/TRUE), and symbolic values against the allowed symbols. Where the catalogue's
 default lies outside its own range, the message says so instead of predicting the default.
 
-Why it matters on the machine: the controller replaces a faulty value with the default
-at start-up — silently changing, for example, a soft limit or an offset.
+Why it matters on the machine: in an axis parameter list the kernel goes on with the list and
+limits a value beyond the permissible range to its minimum or maximum (P-ERR-1001138): an error
+that names the bound. For the other list kinds, for values outside the values the catalogue
+lists, and for ranges the documentation calls application-specific, no reaction is documented:
+a warning (information for an application-specific range) that says so. A parameter the
+documentation gives for other drive types than the axis has (P-AXIS-00020) is not used by the
+kernel: information.
 
 Example: `kenngr.swe_behaviour WARN`
 Fix: use a value inside the range; `zero param KEY` shows it.
 """)
 RANGE_REFERENCE = FAMILY.rule(
-    "R006", "range-reference", E, "A range over other parameters that the list violates",
+    "R006", "range-reference", W, "A range over other parameters that the list violates",
     """
 What it checks: ranges that name other parameters (`1 ≤ a_emergency ≤ 2*P-AXIS-00008`,
 `P-AXIS-00201 ≤ tr_grenz`), evaluated with the values of the same list, or the other
-parameter's default when the list does not set it.
+parameter's default when the list does not set it. With a machine, the default list under the
+list counts too, and the message says where each value comes from. A value zero cannot read
+(R004) is never replaced by a default here: nothing is said about it.
 
-Why it matters on the machine: the controller checks the same relation at start-up and
-replaces the faulty value with its default.
+Why it matters on the machine: the vendor documents no start-up check of such a relation (where
+the kernel documents one, its K rule reports it with the kernel's number instead, and this
+finding is not made): a warning that says so. A relation the catalogue writes in prose
+(`swe_neg < pos_refpkt < swe_pos`) is checked with its bounds allowed, as the soft-limit
+documentation lets an axis move to its soft-limit positions.
 
 Fix: adjust either value; the message names both.
 """)
 UNKNOWN_REFERENCE = FAMILY.rule(
-    "R009", "unknown-reference", E, "A parameter reference to an unknown ID",
+    "R009", "unknown-reference", W, "A parameter reference to an unknown ID",
     """
 What it checks: values of the form `P-AXIS-00212.0` ("the value of that parameter,
 element 0") must name a parameter the registry knows.
 
-Why it matters on the machine: the controller cannot resolve the reference; the entry is
-faulty and the default is used.
+Why it matters on the machine: the catalogue has no such parameter; what the controller does
+with the reference is not documented (a warning that says so).
 
 Fix: correct the ID.
 """)
@@ -390,16 +422,52 @@ def _value_span(e: Entry) -> Span:
     return Span.on_line(e.line, e.key_start, e.key_end)
 
 
-def _default_phrase(spec: ParamSpec, registry: Registry | None = None) -> str:
-    """What the controller does instead, as far as the catalogue says: its default, unless it
-    documents none, or its default contradicts its own range (then say so, do not predict)."""
-    if (spec.default or "").strip() in NO_DEFAULT:
-        return "the catalogue documents no default for it, so what the controller uses instead is not known"
-    phrase = f"the controller replaces it with the default {spec.default_display} at start-up"
-    if registry is not None and _default_contradicts(spec, registry):
-        return (f"the catalogue gives the default {spec.default_display}, which its own range for it "
-                "excludes: what the controller uses instead is not certain")
-    return phrase
+DRIVE_TYPE = "P-AXIS-00020"  # kenngr.antr_typ: 1 conventional, 2 SERCOS, 4 simulation, ...
+_APPLICATION_SPECIFIC = re.compile(r"(?i)application[-. ]specific|applikationsspezifisch")
+
+
+def _range_claim(ctx: Context, e: Entry, spec: ParamSpec, name: str = "out-of-range") -> Claim:
+    """The claim a value outside ``spec``'s range carries: the drive type it does not apply to, a range
+    the documentation calls application-specific, else ``name`` for this list's kind."""
+    kind = ctx.kind
+    if kind == "AXIS" and e.key is not None:
+        hit = drive_types(e.key.pattern)
+        drive = ctx.number_of(DRIVE_TYPE) if hit is not None else None
+        if hit is not None and drive is not None and drive not in hit[0]:
+            where = ctx.value_of(DRIVE_TYPE)
+            origin = _origin(ctx, DRIVE_TYPE, ()) if where is not None else "the catalogue's default"
+            c = claim("drive-type", kind)
+            types = ", ".join(str(t) for t in hit[0])
+            return replace(c, source=hit[1], says=(
+                f"the documentation gives `{e.key.pattern}` for drive type {types} only, and this axis has drive "
+                f"type {format_number(drive)} ({origin}, P-AXIS-00020): the kernel does not use the value"))
+    if spec.range_text and _APPLICATION_SPECIFIC.search(spec.range_text):
+        return claim("application-specific", kind)
+    return claim(name, kind)
+
+
+def _limited(c: Claim, b: Bounds | None, number: Number) -> str:
+    """The claim's words, with the bound a `limited` value goes to where the catalogue's range gives it."""
+    if c.consequence != "limited" or b is None:
+        return c.says
+    bound = b.high if b.high is not None and number > b.high else b.low if b.low is not None and number < b.low \
+        else None
+    if bound is None:
+        return c.says
+    side = "maximum" if bound == b.high else "minimum"
+    return f"{c.says}: here the {side} {format_number(bound)}, where the catalogue's range is the kernel's"
+
+
+def _origin(ctx: Context, pid: str, idx: tuple[int, ...]) -> str:
+    """Where the value the controller uses for ``pid[idx]`` is written: `line 12`, or the default list's
+    `default_mds.lis line 40` under this list."""
+    res = ctx.value_of(pid, idx)
+    if res is None:
+        return "not set: the catalogue's default"
+    layer = ctx.layer_of(pid, idx)
+    if layer is None or layer is ctx:
+        return f"line {res.entry.line}"
+    return f"{layer.doc.path} line {res.entry.line}, the default list under this one"
 
 
 def _default_contradicts(spec: ParamSpec, registry: Registry) -> bool:
@@ -466,9 +534,9 @@ def _check_value(ctx: Context, res: Resolved) -> Iterator[Diagnostic]:
             yield ctx.report(
                 "R009",
                 span,
-                f"`{e.value}` refers to the unknown parameter {rid}: the controller cannot "
-                f"resolve it; {_default_phrase(spec, ctx.registry)}",
-                param_id=spec.id,
+                f"`{e.value}` refers to the unknown parameter {rid}, which the catalogue does not have: "
+                f"{says(ctx, 'unknown-reference')}",
+                param_id=spec.id, claim="unknown-reference",
             )
         return
     simple = _SIMPLE_PROBLEMS.get(v.problem or "")
@@ -479,11 +547,27 @@ def _check_value(ctx: Context, res: Resolved) -> Iterator[Diagnostic]:
                                detail=v.detail, max_len=spec.max_len)
         if v.problem == "type" and e.value_kind is ValueKind.REAL:  # `666666.667` for an integer
             whole = e.value.split(".")[0].split("e")[0].split("E")[0] or "0"
+            c = claim("number-format", ctx.kind)
+            said = f"if the kernel takes it for an invalid number format, {c.says}" if c.consequence == "zeroed" \
+                else c.says
             yield ctx.report(code, span, f"{text}: neither the catalogue nor the manuals say how the controller "
-                             f"reads a decimal here (the digits before the point, {whole}, or its default "
-                             f"{spec.default_display}, or something else)", param_id=spec.id)
+                             f"reads a decimal here (the digits before the point, {whole}, or something else); "
+                             f"{said}. zero checks nothing against this value", param_id=spec.id, claim=c)
             return
-        yield ctx.report(code, span, f"{text}: {_default_phrase(spec, ctx.registry)}", param_id=spec.id)
+        if v.problem == "overflow":
+            c = _range_claim(ctx, e, spec)
+            lo, hi = TYPE_LIMITS.get(spec.type, (None, None))
+            limit = Bounds(lo, False, hi, False) if lo is not None or hi is not None else None
+            said = _limited(c, limit, v.number) if v.number is not None else c.says
+            yield ctx.report(code, span, f"{text}: {said}", param_id=spec.id, claim=c)
+            return
+        if v.problem == "bool" and v.number is not None:  # `2` for a BOOLEAN: a number outside 0..1
+            c = _range_claim(ctx, e, spec)
+            said = _limited(c, Bounds(0, False, 1, False), v.number)
+            yield ctx.report(code, span, f"{text}: {said}", param_id=spec.id, claim=c)
+            return
+        name = "unreadable-entry" if v.problem == "length" else "number-format"
+        yield ctx.report(code, span, f"{text}: {says(ctx, name)}", param_id=spec.id, claim=name)
         return
     if v.problem == "symbol":
         names = [s for s, _ in spec.symbols]
@@ -495,8 +579,8 @@ def _check_value(ctx: Context, res: Resolved) -> Iterator[Diagnostic]:
             "R005",
             span,
             f"`{v.detail}` is not an allowed value of `{e.key_text}` ({shown}): "
-            f"{_default_phrase(spec, ctx.registry)}",
-            param_id=spec.id,
+            f"{says(ctx, 'number-format')}",
+            param_id=spec.id, claim="number-format",
             hint=f"did you mean `{near[0]}`?" if near else None,
         )
         return
@@ -540,11 +624,12 @@ def _check_range(ctx: Context, e: Entry, spec: ParamSpec, v: Value) -> Iterator[
     if rng.allowed is not None:
         if v.number not in rng.allowed:
             allowed = ", ".join(format_number(a) for a in rng.allowed)
+            c = _range_claim(ctx, e, spec, "not-listed")
             yield ctx.report(
                 "R005",
                 span,
-                f"{e.value} is not one of {allowed} for `{e.key_text}`: {_default_phrase(spec, ctx.registry)}",
-                param_id=spec.id,
+                f"{e.value} is not one of {allowed} for `{e.key_text}`: {c.says}",
+                param_id=spec.id, claim=c,
             )
         return
     # The soft-limit pair (swe_neg < swe_pos) is explained by M001 when it is on;
@@ -581,15 +666,16 @@ def _check_range(ctx: Context, e: Entry, spec: ParamSpec, v: Value) -> Iterator[
     refs = [] if skip_refs else rng.refs
     text = _bounds_text(bounds, rng.low, rng.high)
     if refs and every:
+        c = _range_claim(ctx, e, spec, "relation")
         yield ctx.report("R006", span, f"{e.value} violates {text} for `{e.key_text}`{every}: "
-                         f"{_default_phrase(spec, ctx.registry)}", param_id=spec.id)
+                         f"{c.says}", param_id=spec.id, claim=c)
     elif refs:
         yield ctx.report(
             "R006",
             span,
             f"{e.value} violates {text} for `{e.key_text}` ({_ref_values(ctx, refs, indices)}): "
-            f"{_default_phrase(spec, ctx.registry)}",
-            param_id=spec.id,
+            f"{_range_claim(ctx, e, spec, 'relation').says}",
+            param_id=spec.id, claim=_range_claim(ctx, e, spec, "relation"),
         )
     elif spec.range_text and not spec.units and (unit := _PHYSICAL_UNIT.search(spec.range_text)):
         yield ctx.report("R012", span, f"{e.value} is outside {text} for `{e.key_text}` if it is in "
@@ -598,13 +684,15 @@ def _check_range(ctx: Context, e: Entry, spec: ParamSpec, v: Value) -> Iterator[
     elif _default_contradicts(spec, ctx.registry):
         yield ctx.report("R011", span, f"{e.value} is outside {text} for `{e.key_text}`, but so is the "
                          f"catalogue's own default {spec.default_display}: the catalogue contradicts itself, and "
-                         "what the controller does with the value is not documented", param_id=spec.id)
+                         "what the controller does with the value is not documented", param_id=spec.id,
+                         claim="catalogue-contradiction")
     else:
+        c = _range_claim(ctx, e, spec)
         yield ctx.report(
             "R005",
             span,
-            f"{e.value} is outside {text} for `{e.key_text}`: {_default_phrase(spec, ctx.registry)}",
-            param_id=spec.id,
+            f"{e.value} is outside {text} for `{e.key_text}`: {_limited(c, bounds, v.number)}",
+            param_id=spec.id, claim=c,
         )
 
 
@@ -644,11 +732,18 @@ def _check_prose(ctx: Context, e: Entry, spec: ParamSpec, number: Number) -> Ite
         return
     if condition(lookup) is not False:
         return
+    def origin(p: str, i: int | None) -> str:
+        spec_p = ctx.registry.specs[p]
+        idx = (i,) if i is not None else indices
+        idx = (idx + (0,) * len(spec_p.dims))[: len(spec_p.dims)]
+        return _origin(ctx, p, idx)
+
     values = ", ".join(f"{format_key(ctx.registry.specs[p].key or p, (i,) if i is not None else indices)} = "
-                       f"{format_number(lookup(p, i))}" for p, i in shown if p != spec.id)
+                       f"{format_number(lookup(p, i))} ({origin(p, i)})" for p, i in shown if p != spec.id)
+    c = _range_claim(ctx, e, spec, "relation")
     yield ctx.report("R006", _value_span(e), f"{e.value} violates the catalogue's range for `{e.key_text}`, which "
-                     f"it writes in prose, {prose} ({values}): {_default_phrase(spec, ctx.registry)}",
-                     hint=f"the range as zero evaluates it: {text}", param_id=spec.id)
+                     f"it writes in prose, {prose} ({values}): {c.says}",
+                     hint=f"the range as zero evaluates it: {text}", param_id=spec.id, claim=c)
 
 
 def _same_indices(registry: Registry, spec: ParamSpec, ref_id: str) -> bool:
@@ -671,11 +766,11 @@ def _check_enum(ctx: Context, e: Entry, spec: ParamSpec, number: Number) -> Iter
     if isinstance(number, int) and spec.enum_allows(number):
         return
     what = "any combination of the bits" if spec.enum_flags else "one of the values"
+    c = _range_claim(ctx, e, spec, "not-listed")
     yield ctx.report(
         "R005", _value_span(e),
-        f"{e.value} is not {what} the catalogue lists for `{e.key_text}` ({spec.enum_listed()}): "
-        f"{_default_phrase(spec, ctx.registry)}",
-        param_id=spec.id,
+        f"{e.value} is not {what} the catalogue lists for `{e.key_text}` ({spec.enum_listed()}): {c.says}",
+        param_id=spec.id, claim=c,
     )
 
 
@@ -700,9 +795,10 @@ def _ref_values(ctx: Context, refs: list[Ref], indices: tuple[int, ...]) -> str:
             continue
         dims = len(spec.dims)
         key = format_key(spec.key or r.id, (idx + (0,) * dims)[:dims])
-        where = ctx.value_of(r.id, (idx + (0,) * dims)[:dims])
+        element = (idx + (0,) * dims)[:dims]
+        where = ctx.value_of(r.id, element)
         if where is not None:
-            out.append(f"{key} is {format_number(ctx.number_of(r.id, idx))} on line {where.entry.line}")
+            out.append(f"{key} is {format_number(ctx.number_of(r.id, idx))} on {_origin(ctx, r.id, element)}")
         else:
             out.append(f"{key} is not set, default {format_number(ctx.number_of(r.id, idx))}")
     return "; ".join(out)

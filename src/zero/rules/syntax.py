@@ -9,6 +9,7 @@ from __future__ import annotations
 import re
 from collections.abc import Callable, Iterator
 
+from zero.catalog.evidence import claim
 from zero.diagnostics import Diagnostic, Edit, Fix, Span
 from zero.lists.model import Comment, CommentStyle, Problem, ValueKind
 from zero.rules.base import INFO, Context, E, Family, W
@@ -21,30 +22,32 @@ MALFORMED_LINE = FAMILY.rule(
 What it checks: the first word of a line must be a key made of members and indices
 (`name[n].name`); a line like `*****` or `np_grp[1.achse` is not.
 
-Why it matters on the machine: the controller cannot assign such a line to any
-parameter and does not take it over; whatever it was meant to set keeps its default.
+Why it matters on the machine: such a line sets no parameter. In an axis parameter list the
+kernel ignores an element it cannot interpret (P-ERR-1001119): an error there; for the other
+list kinds the vendor documents no reaction, and the warning says so.
 
 Example: `*****  decorative line`
 Fix: turn it into a comment (`# *****`) or correct the key.
 """)
 MISSING_VALUE = FAMILY.rule(
-    "S002", "missing-value", E, "A key without a value",
+    "S002", "missing-value", W, "A key without a value",
     """
 What it checks: every entry needs a value after its key.
 
-Why it matters on the machine: the entry sets nothing; the parameter keeps its
-default value at start-up, which is rarely what the engineer who wrote the key meant.
+Why it matters on the machine: the entry sets nothing zero can read; what the controller does
+with it is not documented (a warning that says so), and it is rarely what the engineer who
+wrote the key meant.
 
 Example: `kenngr.swe_pos`
 Fix: write the value (`kenngr.swe_pos 15000000`) or delete the line.
 """)
 UNTERMINATED_QUOTE = FAMILY.rule(
-    "S003", "unterminated-quote", E, "A quoted string value without its closing quote",
+    "S003", "unterminated-quote", W, "A quoted string value without its closing quote",
     """
 What it checks: a value that starts with `"` must end with `"` on the same line.
 
-Why it matters on the machine: the controller cannot tell where the string ends; the
-entry is faulty and the parameter falls back to its default.
+Why it matters on the machine: where the string ends is not said; what the controller does
+with such an entry is not documented (a warning that says so).
 
 Example: `example[0].name "STRING_WITH_COMMENT( # /*`
 Fix: close the quote: `example[0].name "STRING_WITH_COMMENT( # /*)"`.
@@ -56,10 +59,12 @@ What it checks: a key is one word; `np_grp[0].achse[1]. inaktiv 0` (from the ZER
 manual's own example) has a blank after the dot.
 
 Why it matters on the machine: the controller reads the key up to the first blank,
-so it sees the unknown key `np_grp[0].achse[1].` with the value `inaktiv`. The entry
-is not taken over and the parameter keeps its default — for `inaktiv 1` the offset
-stays active although the list says it is masked. zero reads the joined key for its
-other checks, so that one slip gives one finding.
+so it sees the unknown key `np_grp[0].achse[1].` with the value `inaktiv`. In an axis
+parameter list the kernel ignores an element it cannot interpret (P-ERR-1001119): an
+error; for the other list kinds (this example's zero-offset list) no reaction is
+documented, and the warning says so — for `inaktiv 1` the offset may stay active although
+the list says it is masked. zero reads the joined key for its other checks, so that one
+slip gives one finding.
 
 Example: `np_grp[0].achse[1]. inaktiv 0`
 Fix: remove the blank (safe fix): `np_grp[0].achse[1].inaktiv 0`.
@@ -79,7 +84,7 @@ Example: `#Achse X neu vermessen`
 Fix: insert a space after `#` (safe fix): `# Achse X neu vermessen`.
 """)
 UNDECODABLE = FAMILY.rule(
-    "S007", "undecodable", E, "Bytes that are not valid in the file's encoding",
+    "S007", "undecodable", W, "Bytes that are not valid in the file's encoding",
     """
 What it checks: a list is UTF-8 (with or without BOM) or Windows-1252/Latin-1 as a
 whole, or in the code page the configuration declares for it (`encoding`). A byte that is
@@ -94,13 +99,13 @@ Example: a UTF-8 file with `ä` in one comment and byte 0xB5 in another.
 Fix: re-save the file in one encoding.
 """)
 NUL_BYTE = FAMILY.rule(
-    "S008", "nul-byte", E, "A NUL byte in the file",
+    "S008", "nul-byte", W, "A NUL byte in the file",
     """
 What it checks: byte 0x00 anywhere in a list.
 
-Why it matters on the machine: the controller reads lines as C strings; a NUL ends
-the line early, so the rest of it (often the value) is lost. Files with NUL bytes are
-usually corrupt copies or UTF-16 files.
+Why it matters on the machine: files with NUL bytes are usually corrupt copies or UTF-16
+files; what the controller does with a NUL in a line is not documented (a warning that says
+so).
 
 Fix: remove the NUL bytes, or convert a UTF-16 file to UTF-8.
 """)
@@ -173,23 +178,21 @@ Fix: insert a space after `#` (safe fix): `# m_default_outp_ax_name[0]   X`.
 _MESSAGES: dict[str, tuple[str, Callable[[Problem], str]]] = {
     "malformed-line": (
         "S001",
-        lambda p: f"`{_short(p.detail)}` is not a key: the controller cannot read this line "
-        "and ignores it",
+        lambda p: f"`{_short(p.detail)}` is not a key: nothing is set by this line",
     ),
     "missing-value": (
         "S002",
-        lambda p: f"`{_short(p.detail)}` has no value: the entry sets nothing and the parameter "
-        "keeps its default",
+        lambda p: f"`{_short(p.detail)}` has no value: zero reads nothing for it",
     ),
     "unterminated-quote": (
         "S003",
-        lambda p: f"the string value of `{_short(p.detail)}` has no closing quote: the entry is "
-        "faulty and the default is used",
+        lambda p: f"the string value of `{_short(p.detail)}` has no closing quote: where it ends is not "
+        "said",
     ),
     "key-whitespace": (
         "S004",
-        lambda p: f"whitespace inside the key `{_short(p.detail)}`: the controller reads a "
-        "different, unknown key and does not take the entry over",
+        lambda p: f"whitespace inside the key `{_short(p.detail)}`: read up to the blank, it is another, "
+        "unknown key",
     ),
     "undecodable": (
         "S007",
@@ -197,7 +200,7 @@ _MESSAGES: dict[str, tuple[str, Callable[[Problem], str]]] = {
         "(mixed encodings)" if " " not in p.detail else
         "byte {} is not defined in {}, the encoding the configuration declares".format(*p.detail.split(" ", 1)),
     ),
-    "nul-byte": ("S008", lambda p: "NUL byte: the controller ends the line here"),
+    "nul-byte": ("S008", lambda p: "NUL byte in the line: zero reads the line without it"),
     "after-end": (
         "S009",
         lambda p: f"content after `Ende` (line {p.detail}): the controller stops reading at "
@@ -242,7 +245,15 @@ def check_problems(ctx: Context) -> Iterator[Diagnostic]:
         elif p.kind == "unterminated-quote":
             end = Span.on_line(p.line, p.end, p.end)
             fix = Fix("Close the quote at the end of the line", (Edit(end, '"'),), safe=False)
-        yield ctx.report(code, span, make(p), fix=fix, hint=fix.title if fix else None)
+        message = make(p)
+        if code in _SAID:  # what the controller does, as the evidence table says for this list kind
+            message = f"{message}; {claim(_SAID[code], ctx.kind).says}"
+        yield ctx.report(code, span, message, fix=fix, hint=fix.title if fix else None)
+
+
+# the claim each of these findings ends with (zero.catalog.evidence)
+_SAID = {"S001": "malformed-line", "S002": "unreadable-entry", "S003": "unreadable-entry",
+         "S004": "malformed-line", "S007": "text", "S008": "text"}
 
 
 def _commented_parameter(ctx: Context, line: int) -> str | None:

@@ -1,0 +1,104 @@
+"""What zero says the controller does, and the document that says so (``data/evidence.toml``).
+
+Every claim a rule makes about the controller — it ignores the entry, limits the value, sets it to
+0, aborts the start-up, or nothing is documented — is a :class:`Claim`: a row of zero's evidence
+table with its consequence, its severity, the words a finding ends with, the kernel's error number
+where there is one, its source and the releases and list kinds it holds for. A finding's severity
+follows its claim: an **error** only where the source documents that the controller rejects,
+changes or ignores the value or stops; a **warning** where nothing is documented; **info** for what
+the vendor itself writes or what does not apply.
+
+The table is compiled to ``data/evidence_table.py`` by ``tools/gen_startup.py`` and built at the
+first finding, once per process.
+"""
+
+from __future__ import annotations
+
+from zero.diagnostics import Severity
+from zero.records import record
+
+# consequences that a document must back for an error (and `unchecked`: zero could not read the file)
+DOCUMENTED = frozenset({"ignored", "limited", "zeroed", "replaced", "corrected", "rejected", "aborted"})
+# `reported`: a K rule whose row documents the kernel's error but not what it then does
+CONSEQUENCES = DOCUMENTED | {"undocumented", "behaviour", "not-applicable", "vendor-writes", "unchecked", "reported"}
+
+
+@record(frozen=True)
+class Claim:
+    """One claim about the controller, as the evidence table states it."""
+
+    name: str
+    consequence: str
+    severity: Severity
+    says: str
+    source: str
+    releases: str = "all"
+    kinds: tuple[str, ...] = ()
+    kernel_error: str | None = None
+
+    def holds_for(self, kind: str | None) -> bool:
+        return not self.kinds or (kind is not None and kind in self.kinds)
+
+
+_table: tuple[dict[str, list[Claim]], dict[str, str]] | None = None
+_drives: list[tuple[str, tuple[int, ...], str]] | None = None
+
+
+def _load() -> tuple[dict[str, list[Claim]], dict[str, str]]:
+    global _table
+    if _table is None:
+        from zero.catalog.data.evidence_table import CLAIMS, RULES  # start-up: at the first finding
+
+        by_name: dict[str, list[Claim]] = {}
+        for row in CLAIMS:
+            c = Claim(str(row["name"]), str(row["consequence"]), Severity.parse(str(row["severity"])),
+                      str(row["says"]), str(row["source"]), str(row.get("releases", "all")),
+                      tuple(str(k) for k in row.get("kinds", ()) or ()), row.get("kernel_error") or None)
+            by_name.setdefault(c.name, []).append(c)
+        _table = (by_name, {str(k): str(v) for k, v in RULES.items()})
+    return _table
+
+
+def claim(name: str, kind: str | None = None) -> Claim:
+    """The claim ``name`` for a list of ``kind``: its first row that holds for the kind."""
+    rows = _load()[0].get(name)
+    if not rows:
+        raise KeyError(f"no claim {name!r} in the evidence table")
+    for c in rows:
+        if c.holds_for(kind):
+            return c
+    return rows[-1]
+
+
+def rule_claim(code: str, kind: str | None = None) -> Claim | None:
+    """The claim a rule's finding carries where its check names none (``None``: the rule has none,
+    as the K rules, whose claim is their own row of the start-up errors)."""
+    name = _load()[1].get(code)
+    return claim(name, kind) if name is not None else None
+
+
+def drive_types(pattern: str) -> tuple[tuple[int, ...], str] | None:
+    """The drive types (P-AXIS-00020) the documentation gives a parameter for, and the page, where it
+    gives it for some only (a key pattern, or a subtree such as ``antr.sercos.``)."""
+    global _drives
+    if _drives is None:
+        from zero.catalog.data.evidence_table import DRIVES  # start-up: at the first range finding
+
+        _drives = [(str(r["key"]), tuple(int(t) for t in r["types"]), str(r["source"])) for r in DRIVES]
+    for key, types, source in _drives:
+        if pattern == key or (key.endswith(".") and pattern.startswith(key)):
+            return types, source
+    return None
+
+
+def claims() -> list[Claim]:
+    """Every row of the table."""
+    return [c for rows in _load()[0].values() for c in rows]
+
+
+def rule_claims() -> dict[str, str]:
+    """Rule code → the name of its claim."""
+    return dict(_load()[1])
+
+
+__all__ = ["CONSEQUENCES", "DOCUMENTED", "Claim", "claim", "claims", "drive_types", "rule_claim", "rule_claims"]
