@@ -11,6 +11,7 @@ from __future__ import annotations
 import importlib.util
 import json
 import os
+import re
 import shutil
 import subprocess
 import sys
@@ -415,3 +416,16 @@ def test_a_value_outside_its_range_on_an_axis_list_is_shown_as_the_kernel_limits
     anchor = html[html.index('class="uses"'):].split('href="#', 1)[1].split('"', 1)[0]
     finding = [f for f in elements(html, "finding") if f.get("id") == anchor]
     assert finding and finding[0]["data-code"] == "R005"
+
+
+def test_a_twincat_project_names_each_lists_item_and_an_axis_drive_type(tmp_path: Path) -> None:
+    """Issue 37: the item each list of a TwinCAT project comes from, and an axis's DriveType and
+    Spindle as the project writes them, stand in the structure; a machine of plain files has no such
+    column."""
+    html = report(FIXTURES / "twincat" / "project" / "Maschine.tsproj", tmp_path / "p.html")
+    cells = re.findall(r'<td class="twincat">([^<]*)</td>', html)
+    assert "X_Achse · DriveType 4 · Spindle false" in cells
+    assert "C_Spindel · DriveType 4 · Spindle true" in cells
+    assert "<th>TwinCAT item</th>" in html
+    plain = report(FIXTURE, tmp_path / "f.html")
+    assert "TwinCAT item" not in plain and 'class="twincat"' not in plain

@@ -426,9 +426,15 @@ def _limited(spec: ParamSpec | None, now: tuple[str, Any] | None, registry: Regi
 
 def _structure(machine: Machine, base: Path) -> tuple[list[dict[str, Any]], list[dict[str, Any]], list[dict[str, Any]]]:
     doc = machine.startup.values.doc
+    items: dict[str, dict[str, str]] = {}
+    if any(n.path is not None and "#" in str(n.path) for n in machine.named):
+        from zero.machine.tsproj import twincat_items  # start-up: only for a machine read from TwinCAT
+
+        items = twincat_items(machine)
     named = [{"key": n.key, "raw": n.raw, "status": n.status, "reason": n.reason,
               "where": link(machine.startup.path, doc.file_line(n.line), base),
-              "file": link(n.path, None, base) if n.path is not None else None} for n in machine.named]
+              "file": link(n.path, None, base) if n.path is not None else None,
+              "twincat": _twincat_label(items.get(n.key))} for n in machine.named]
     axes = machine.axes()
     channels = []
     for ch in machine.channels:
@@ -461,6 +467,16 @@ def _structure(machine: Machine, base: Path) -> tuple[list[dict[str, Any]], list
                            "default": link(ax.list.values.base.doc.path, None, base)
                            if ax.list.values.base is not None else None})
     return named, channels, axis_lists
+
+
+def _twincat_label(item: dict[str, str] | None) -> str:
+    """What TwinCAT says of a list's item, as the structure table shows it: the item's name and, for
+    an axis, ``DriveType``, ``Spindle`` and ``FeedAxis`` as written (shown, never compared with the
+    lists: the vendor does not document how they relate to ``kenngr.antr_typ``)."""
+    if not item:
+        return ""
+    props = [f"{k} {v}" for k, v in item.items() if k not in ("item", "element")]
+    return " · ".join([item.get("item", ""), *props]).strip(" ·")
 
 
 def doc_line(path: Path | None, line: int | None, machine: Machine) -> int | None:
