@@ -275,3 +275,33 @@ def test_one_channel_id_on_two_channels_is_1001850(tmp_path: Path) -> None:
     (listen / "kanal2.lis").write_text(text.replace("Ende", "channel_id 7\nEnde", 1))
     line = text.splitlines().index("Ende") + 1
     assert found(startup) == [("X019", "kanal2.lis", line, "P-ERR-1001850")]
+
+
+def test_path_axes_against_their_axis_lists(tmp_path: Path) -> None:
+    """Issue 38: a channel path axis whose axis list is a single axis (SAI) or a spindle is X020
+    (P-ERR-21238, start-up aborted); with alias names active, a path axis named like its axis list's
+    alias is X021 (P-ERR-22016); the clean machine has neither."""
+    import json
+    import shutil
+
+    from conftest import zero_cli
+
+    def found(startup: Path) -> list[tuple[str, str, str]]:
+        run = zero_cli("lint", "--machine", str(startup), "--select", "X020,X021", "--output-format", "json")
+        return sorted((d["code"], Path(str(d["path"])).name, str(d["kernel_error"])) for d in json.loads(run.stdout))
+
+    shutil.copytree(FIXTURES / "machine-clean", tmp_path / "m")
+    listen = tmp_path / "m" / "listen"
+    startup = listen / "hochlauf.lis"
+    assert found(startup) == []
+    kanal = listen / "kanal.lis"
+    kanal.write_text(kanal.read_text().replace("Ende", "use_alias_name_in_ax_list 1\nEnde", 1))
+    assert found(startup) == []  # the names X, Y, C are not the aliases X_Achse, ...
+    y = listen / "achse_y.lis"
+    y.write_text(y.read_text().replace("Ende", "kenngr.configure_sai TRUE\nEnde", 1))
+    x = listen / "achse_x.lis"
+    x.write_text(x.read_text().replace("X_Achse", "X"))
+    assert found(startup) == [("X020", "kanal.lis", "P-ERR-21238"), ("X021", "kanal.lis", "P-ERR-22016")]
+    c = listen / "achse_c.lis"
+    c.write_text(c.read_text().replace("kenngr.achs_typ                                       2", "kenngr.achs_typ 4"))
+    assert [f[0] for f in found(startup)] == ["X020", "X020", "X021"]

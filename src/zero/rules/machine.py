@@ -711,3 +711,68 @@ def check_channel_ids(ctx: MachineContext) -> Iterator[Diagnostic]:
                 param_id=_CHANNEL_ID, path=str(lf.path), kernel_error="P-ERR-1001850")
             continue
         seen[nr] = (ch.index, lf.path.name)
+
+
+PATH_AXIS_SAI_OR_SPINDLE = FAMILY.rule(
+    "X020", "path-axis-sai-or-spindle", E,
+    "P-ERR-21238: a path axis of the channel is a single axis (SAI) or a spindle",
+    """
+What it checks: the axis list of every path axis of a channel (`gruppe[0].achse[j].log_achs_nr`,
+P-CHAN-00035) neither marks the axis as a single axis (`kenngr.configure_sai`, P-AXIS-00250) nor
+makes it a spindle (`kenngr.achs_typ` 4, P-AXIS-00018). Values from two lists of the machine:
+checked with `zero lint --machine`.
+
+Why it matters on the machine: the kernel reports P-ERR-21238 (class 3) and aborts the start-up.
+Source: https://infosys.beckhoff.com/content/1033/tf5200_diagnosis/253892235.html
+
+Fix: take the axis out of the channel's path axes, or switch its SAI property off (a spindle
+belongs in `spindel[i]`).
+""")
+ALIAS_NAME_COLLISION = FAMILY.rule(
+    "X021", "alias-name-collision", E,
+    "P-ERR-22016: with alias names active, a channel axis named like its axis list's alias",
+    """
+What it checks: where a channel list activates the axis lists' alias names
+(`use_alias_name_in_ax_list`, P-CHAN-00253), no path axis's name (`gruppe[0].achse[j].bezeichnung`,
+P-CHAN-00006) is the alias name its axis list configures (`kopf.log_achs_name`, P-AXIS-00297).
+Values from two lists of the machine: checked with `zero lint --machine`.
+
+Why it matters on the machine: the kernel warns with P-ERR-22016 at start-up (class 1), sets
+P-CHAN-00253 to 0 (the alias names are not used) and continues.
+Source: https://infosys.beckhoff.com/content/1033/tf5200_diagnosis/482411787.html
+
+Fix: rename the channel axis, or leave P-CHAN-00253 at 0.
+""")
+_SAI, _USE_ALIAS, _ALIAS, _CHANNEL_AXIS_NAME = "P-AXIS-00250", "P-CHAN-00253", "P-AXIS-00297", "P-CHAN-00006"
+
+
+@FAMILY.check(PATH_AXIS_SAI_OR_SPINDLE, ALIAS_NAME_COLLISION)
+def check_path_axes(ctx: MachineContext) -> Iterator[Diagnostic]:
+    """X020 (P-ERR-21238), X021 (P-ERR-22016): a channel's path axes against their axis lists."""
+    axes = ctx.machine.axes()
+    for ch in ctx.machine.channels:
+        lf = ch.lists
+        if lf is None:
+            continue
+        use_alias = bool(lf.number(_USE_ALIAS))
+        for ca in ch.axes:
+            ax = axes.get(ca.log_nr)
+            if ca.entry is None or ax is None:
+                continue
+            path = str(ca.source or lf.path)
+            e = ca.entry
+            span = Span.on_line(e.line, e.value_start, e.value_end)
+            sai, kind = ax.list.number(_SAI), ax.list.number(_AXIS_TYPE)
+            if sai or (kind is not None and int(kind) == 4):
+                what = "is marked a single axis (SAI, kenngr.configure_sai)" if sai else "has axis type 4 (spindle)"
+                yield ctx.report(
+                    "X020", span, f"P-ERR-21238: path axis {ca.index} (`{ca.name}`) is logical axis {ca.log_nr}, whose "
+                    f"axis list ({ax.list.path.name}) {what}: the controller reports error 21238 and aborts the "
+                    "start-up", param_id="P-CHAN-00035", path=path, kernel_error="P-ERR-21238")
+            alias = ax.list.text(_ALIAS)
+            if use_alias and alias and ax.list.entry(_ALIAS) is not None and alias == ca.name:
+                yield ctx.report(
+                    "X021", span, f"P-ERR-22016: with alias names active (use_alias_name_in_ax_list), path axis "
+                    f"{ca.index} is named `{ca.name}`, the alias its axis list ({ax.list.path.name}) configures: the "
+                    "controller warns with 22016 at start-up, sets use_alias_name_in_ax_list to 0 and continues",
+                    param_id=_CHANNEL_AXIS_NAME, path=path, kernel_error="P-ERR-22016")
