@@ -3,7 +3,10 @@
 
 from __future__ import annotations
 
+import os
 import shutil
+import subprocess
+import sys
 from pathlib import Path
 
 from conftest import FIXTURES
@@ -128,3 +131,36 @@ def test_two_projects_compared_as_machines(tmp_path: Path, registry: Registry) -
                      "kenngr.swe_pos                                        13000000")
     changes = machine_changes(load_machine(PROJECT, registry), load_machine(other, registry), registry)
     assert [(c.group, c.key) for c in changes] == [("axis 1 (achs_mds[0]): kenngr", "kenngr.swe_pos")]
+
+
+def test_git_diff_of_two_revisions_of_a_project_through_textconv(tmp_path: Path) -> None:
+    """Issue 37: `git diff` of two revisions of a project, with `zero show --textconv --machine` as the
+    textconv docs/machines.md gives, shows the one changed value and nothing of git's temporary
+    folders (without --textconv every line named the temporary copy and differed)."""
+    repo = tmp_path / "repo"
+    repo.mkdir()
+    shutil.copy(PROJECT, repo / "Maschine.tsproj")
+    (repo / ".gitattributes").write_text("*.tsproj diff=zeromachine\n", encoding="utf-8")
+    zero = f"{sys.executable} -m zero"
+    env = {**os.environ, "GIT_CONFIG_NOSYSTEM": "1", "HOME": str(tmp_path), "GIT_AUTHOR_NAME": "t",
+           "GIT_AUTHOR_EMAIL": "t@t", "GIT_COMMITTER_NAME": "t", "GIT_COMMITTER_EMAIL": "t@t"}
+
+    def git(*args: str) -> str:
+        return subprocess.run(["git", "-C", str(repo), *args], env=env, check=True, capture_output=True,
+                              text=True, timeout=120).stdout
+
+    git("init", "-q")
+    git("config", "diff.zeromachine.textconv", f"{zero} show --textconv --machine")
+    git("add", "-A")
+    git("commit", "-qm", "one")
+    text = (repo / "Maschine.tsproj").read_text(encoding="utf-8")
+    lines = text.splitlines(keepends=True)
+    assert "kenngr.swe_pos" in lines[110] and "12000000" in lines[110]
+    lines[110] = lines[110].replace("12000000", "13000000")
+    (repo / "Maschine.tsproj").write_text("".join(lines), encoding="utf-8")
+    git("commit", "-qam", "two")
+    out = git("diff", "HEAD~1", "HEAD")
+    changed = [line for line in out.splitlines() if line[:1] in "+-" and line[:3] not in ("+++", "---")]
+    assert [line.split()[:3] for line in changed] == [["-kenngr.swe_pos", "=", "12000000"],
+                                                      ["+kenngr.swe_pos", "=", "13000000"]]
+    assert all("Maschine.tsproj:111" in line for line in changed)

@@ -554,6 +554,9 @@ def show(
         metavar="STARTUP")] = None,
     effective_: Annotated[bool, typer.Option(
         "--effective", help="With --machine: also the catalogue defaults of what no list sets.")] = False,
+    textconv: Annotated[bool, typer.Option(
+        "--textconv", help="With --machine: name files relative to the start-up list's folder (for a git "
+        "textconv, whose copy lies in a new temporary folder each time).")] = False,
     output_format: Annotated[str, typer.Option(
         "--output-format", help="text or json (with --machine).", metavar="FORMAT", **choice(REPORTS))] = "text",
     from_: Annotated[str | None, typer.Option("--from", help="Input format.", metavar="FORMAT",
@@ -566,7 +569,7 @@ def show(
 
     def body() -> int:
         if machine is not None:
-            return _effective(machine, args or [], effective_, False, output_format)
+            return _effective(machine, args or [], effective_, False, output_format, textconv)
         if not args or len(args) != 1:
             raise ZeroError("give one file to show (or --machine STARTUP [KEY...])")
         registry = _registry(args[0])
@@ -578,12 +581,12 @@ def show(
 
 
 def _effective(machine: Path | None, keys: list[str], with_defaults: bool, explain: bool,
-               output_format: str) -> int:
+               output_format: str, textconv: bool = False) -> int:
     run = run_effective(_project(machine), keys, with_defaults, explain)
     if output_format == "json":
         sys.stdout.write(json.dumps(run.to_json(), indent=2, ensure_ascii=False) + "\n")
     else:
-        render_effective(run.summary, run.scopes, explain=explain)
+        render_effective(run.summary, run.scopes, explain=explain, textconv=textconv)
     return exits.OK
 
 

@@ -4,6 +4,8 @@ table on a terminal and as aligned plain text otherwise.
 
 from __future__ import annotations
 
+import io
+import os
 import sys
 from collections.abc import Iterable, Sequence
 from typing import TYPE_CHECKING, TextIO
@@ -226,10 +228,25 @@ def render_limits(rows: Sequence[LimitRow], violations: Sequence[Ip247Violation]
         stream.write(_ip247_line(v) + "\n")
 
 
+def _below(path: str, folder: str) -> str:
+    """``path`` relative to ``folder`` (``.`` for the folder itself)."""
+    return os.path.relpath(path, folder) if os.path.isabs(path) and os.path.isabs(folder) else path
+
+
 def render_effective(summary: dict[str, object], scopes: Sequence[Scope], stream: TextIO | None = None,
-                     explain: bool = False) -> None:
-    """Effective values, one line per parameter with its origin (``git config --show-origin``)."""
+                     explain: bool = False, textconv: bool = False) -> None:
+    """Effective values, one line per parameter with its origin (``git config --show-origin``).
+    ``textconv``: every file named relative to the start-up list's folder, as a git textconv needs
+    (git hands it a copy in a temporary folder whose name changes on every call)."""
     stream = stream or sys.stdout
+    if textconv:
+        buffer = io.StringIO()
+        render_effective(summary, scopes, buffer, explain)
+        folder = os.path.dirname(str(summary["startup"]))
+        text = buffer.getvalue().replace(f"working directory {summary['working_directory']},",
+                                         f"working directory {_below(str(summary['working_directory']), folder)},")
+        stream.write(text.replace(folder.rstrip("/\\") + os.sep, ""))
+        return
     named = summary["lists"]
     assert isinstance(named, list)
     read = sum(1 for n in named if n["status"] in ("loaded", "overridden"))
