@@ -138,9 +138,10 @@ def run_lint(request: LintRequest, registries: Registries, echo: Echo,
     if request.reads_stdin:
         return _lint_stdin(request, project, echo, read_stdin())
     named = [Path(p) for p in request.paths]
-    skipped: dict[str, int] = {}
-    files = lint_files(named, project, request.force_exclude, skipped)
+    files = lint_files(named, project, request.force_exclude)
     if not files and any(p.is_dir() for p in named):
+        skipped: dict[str, int] = {}  # counted only here: walking an excluded folder costs a run nothing else
+        lint_files(named, project, request.force_exclude, skipped)
         raise ZeroError("no list files or NC programs found (looked for *.lis, *.lst, *.nc, *.mpf, *.spf, and *.xml "
                         "holding lists)" + skipped_note(skipped))
     groups: dict[Path | None, list[Path]] = {}
