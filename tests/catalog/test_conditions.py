@@ -105,3 +105,16 @@ def test_facts_of_the_whole_list_are_asked_of_the_lookup() -> None:
     for bad in ("elsewhere(P-CHAN-00037)", "unique(3)", "unique(P-CHAN-00036.1)", "supports(DEFAULT_LIST)"):
         with pytest.raises(ValueError):
             parse(bad)
+
+
+def test_isname_accepts_letters_digits_and_the_underscore_only() -> None:
+    """Issue 38 (21438): a variable type of the external variables may hold letters, the digits 0-9
+    and the underscore only."""
+    assert run("isname(P-EXTV-00003)", {"P-EXTV-00003": "My_Type2"}) is True
+    assert run("isname(P-EXTV-00003)", {"P-EXTV-00003": "REAL-64"}) is False
+    assert run("isname(P-EXTV-00003)", {"P-EXTV-00003": "Typ ä"}) is False
+    assert run("isname(P-EXTV-00003)", {"P-EXTV-00003": ""}) is None  # empty: nothing to check
+    assert run("isname(P-EXTV-00003)", {"P-EXTV-00003": 5}) is None
+    assert run("isname(P-EXTV-00003)", {}) is None
+    with pytest.raises(ValueError):
+        parse("isname(P-EXTV-00003, 2)")

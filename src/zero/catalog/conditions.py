@@ -9,7 +9,8 @@ tests (``(P-AXIS-00015 & 0x40) != 0``), and one fact about the list itself: ``DE
 a default list, the template the controller reads under the lists of its kind, else 0).
 
 What the documentation says of text and of the drive type can be said too: string literals
-(``"S"`` or ``'S'``), ``len(x)`` (a string's length), ``startswith(x, "S")``, set membership
+(``"S"`` or ``'S'``), ``len(x)`` (a string's length), ``startswith(x, "S")``, ``isname(x)`` (a
+non-empty text of the letters A-Z and a-z, the digits 0-9 and the underscore only), set membership
 ``x in ("X", "Y", 4)`` and ``x not in (...)``, ``unique(P-CHAN-00007)`` (a fact of the whole list,
 answered by the lookup under the name ``unique:P-CHAN-00007``: 1 where the checked element's value
 is no other element's value of the parameters named, 0 where it is one, unknown where it is not
@@ -37,8 +38,10 @@ DEFAULT_LIST = "DEFAULT_LIST"  # a fact of the list, not a parameter: read by th
 _TOKEN = re.compile(r"\s*(?:(P-[A-Z]{4}-[0-9]{5}(?:\.[0-9]+)?|DEFAULT_LIST\b)"
                     r"|(0x[0-9A-Fa-f]+|[0-9]+(?:\.[0-9]+)?(?:e[+-]?[0-9]+)?)"
                     r"|(\"[^\"\\\n]*\"|'[^'\\\n]*')"
-                    r"|(<=|>=|==|!=|<|>|\+|-|\*|/|&|\(|\)|,)|(and|or|not|in|abs|len|startswith|supports|unique|elsewhere)\b)")
-_FUNCTIONS = {"abs": 1, "len": 1, "startswith": 2, "supports": 1, "unique": 0, "elsewhere": 2}  # 0: one or more IDs
+                    r"|(<=|>=|==|!=|<|>|\+|-|\*|/|&|\(|\)|,)|(and|or|not|in|abs|len|startswith|isname|supports|unique|elsewhere)\b)")
+# arguments of each function; 0: one or more IDs
+_FUNCTIONS = {"abs": 1, "len": 1, "startswith": 2, "isname": 1, "supports": 1, "unique": 0, "elsewhere": 2}
+_NAME = re.compile(r"[A-Za-z0-9_]+")  # what isname() accepts
 UNIQUE = "unique:"  # the lookup's name of the fact unique(...) asks for
 ELSEWHERE = "elsewhere:"  # and of elsewhere(...)
 
@@ -397,6 +400,9 @@ def _compile_call(node: Call) -> Compiled:
     if node.name == "len":
         arg = args[0]
         return lambda lookup: len(v) if isinstance(v := arg(lookup), str) else None
+    if node.name == "isname":
+        arg = args[0]
+        return lambda lookup: _NAME.fullmatch(v) is not None if isinstance(v := arg(lookup), str) and v else None
     text, prefix = args
 
     def startswith(lookup: Lookup) -> _Value:
