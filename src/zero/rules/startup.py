@@ -232,17 +232,26 @@ def _unique(ctx: Context, pids: list[str], idx: tuple[int, ...]) -> int | None:
 
 def _elsewhere(ctx: Context, first: str, second: str, idx: tuple[int, ...]) -> int | None:
     """``elsewhere(P, Q)`` for element ``idx`` of ``P``: 1 where its value is ``Q``'s in another element
-    of the same group (all indices but the last equal), 0 where it is not; unknown where this list does
-    not set it, or sets it empty or 0."""
+    of the same group (all indices but the last equal), or in any element where ``Q`` belongs to another
+    structure than ``P``; 0 where it is not; unknown where this list does not set it, or sets it empty
+    or 0."""
     element = _element(ctx, first, idx)
     mine = _value(ctx, first, idx)
     if _own(ctx, first, idx) is None or mine in (None, "", 0) or not _counted(ctx, first, element):
         return None
+    apart = _structure(ctx, first) != _structure(ctx, second)  # var[i].type against struct[j].name: any j
     for other in ctx.ids_of(second):
-        if other != element and other[:-1] == element[:-1] and _counted(ctx, second, other) \
+        if (apart or (other != element and other[:-1] == element[:-1])) and _counted(ctx, second, other) \
                 and _value(ctx, second, other) == mine:
             return 1
     return 0
+
+
+def _structure(ctx: Context, pid: str) -> str:
+    """The structure a parameter is an element of (``var[]`` for ``var[].type``), "" where it is none."""
+    spec = ctx.registry.get(pid)
+    key = (spec.key if spec is not None else None) or ""
+    return key[:key.rfind("[]") + 2] if "[]" in key else ""
 
 
 def _counted(ctx: Context, pid: str, idx: tuple[int, ...]) -> bool:
