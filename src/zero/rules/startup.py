@@ -233,15 +233,16 @@ def _unique(ctx: Context, pids: list[str], idx: tuple[int, ...]) -> int | None:
 def _elsewhere(ctx: Context, first: str, second: str, idx: tuple[int, ...]) -> int | None:
     """``elsewhere(P, Q)`` for element ``idx`` of ``P``: 1 where its value is ``Q``'s in another element
     of the same group (all indices but the last equal), or in any element where ``Q`` belongs to another
-    structure than ``P``; 0 where it is not; unknown where this list does not set it, or sets it empty
-    or 0."""
+    structure than ``P``; for ``elsewhere(P, P)`` an earlier element of the group (the later of two is
+    reported); 0 where it is not; unknown where this list does not set it, or sets it empty or 0."""
     element = _element(ctx, first, idx)
     mine = _value(ctx, first, idx)
     if _own(ctx, first, idx) is None or mine in (None, "", 0) or not _counted(ctx, first, element):
         return None
     apart = _structure(ctx, first) != _structure(ctx, second)  # var[i].type against struct[j].name: any j
     for other in ctx.ids_of(second):
-        if (apart or (other != element and other[:-1] == element[:-1])) and _counted(ctx, second, other) \
+        later = first != second or other < element  # elsewhere(P, P): an earlier element's, the later reported
+        if (apart or (other != element and other[:-1] == element[:-1] and later)) and _counted(ctx, second, other) \
                 and _value(ctx, second, other) == mine:
             return 1
     return 0
