@@ -305,3 +305,26 @@ def test_path_axes_against_their_axis_lists(tmp_path: Path) -> None:
     c = listen / "achse_c.lis"
     c.write_text(c.read_text().replace("kenngr.achs_typ                                       2", "kenngr.achs_typ 4"))
     assert [f[0] for f in found(startup)] == ["X020", "X020", "X021"]
+
+
+def test_a_gantry_slave_as_path_axis_is_21020(tmp_path: Path) -> None:
+    """Issue 38: a channel path axis whose axis list names a gantry master (P-AXIS-00070) is X022
+    (P-ERR-21020, the current job aborted); the clean machine has none."""
+    import json
+    import shutil
+
+    from conftest import zero_cli
+
+    def found(startup: Path) -> list[tuple[str, str, int]]:
+        run = zero_cli("lint", "--machine", str(startup), "--select", "X022", "--output-format", "json")
+        return [(d["code"], str(d["kernel_error"]), d["line"]) for d in json.loads(run.stdout)]
+
+    shutil.copytree(FIXTURES / "machine-clean", tmp_path / "m")
+    listen = tmp_path / "m" / "listen"
+    startup = listen / "hochlauf.lis"
+    assert found(startup) == []
+    y = listen / "achse_y.lis"  # Y becomes X's gantry slave but stays a path axis of the channel
+    y.write_text(y.read_text().replace("Ende", "kenngr.gantry_ax_nr 1\nEnde", 1))
+    line = (listen / "kanal.lis").read_text().splitlines().index(
+        "gruppe[0].achse[1].log_achs_nr                        2") + 1
+    assert found(startup) == [("X022", "P-ERR-21020", line)]

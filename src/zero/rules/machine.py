@@ -743,12 +743,26 @@ Source: https://infosys.beckhoff.com/content/1033/tf5200_diagnosis/482411787.htm
 
 Fix: rename the channel axis, or leave P-CHAN-00253 at 0.
 """)
+PATH_AXIS_GANTRY_SLAVE = FAMILY.rule(
+    "X022", "path-axis-gantry-slave", E, "P-ERR-21020: a path axis of the channel is a gantry slave axis",
+    """
+What it checks: no path axis of a channel (`gruppe[0].achse[j].log_achs_nr`, P-CHAN-00035) is an
+axis whose axis list names a gantry master (`kenngr.gantry_ax_nr`, P-AXIS-00070): a gantry slave
+moves with its master and is not known in the channel. Values from two lists of the machine:
+checked with `zero lint --machine`.
+
+Why it matters on the machine: the kernel reports P-ERR-21020 (class 3, abort current job).
+Source: https://infosys.beckhoff.com/content/1033/tf5200_diagnosis/253230731.html
+
+Fix: remove the slave axis from the channel's path axes (program its master).
+""")
 _SAI, _USE_ALIAS, _ALIAS, _CHANNEL_AXIS_NAME = "P-AXIS-00250", "P-CHAN-00253", "P-AXIS-00297", "P-CHAN-00006"
 
 
-@FAMILY.check(PATH_AXIS_SAI_OR_SPINDLE, ALIAS_NAME_COLLISION)
+@FAMILY.check(PATH_AXIS_SAI_OR_SPINDLE, ALIAS_NAME_COLLISION, PATH_AXIS_GANTRY_SLAVE)
 def check_path_axes(ctx: MachineContext) -> Iterator[Diagnostic]:
-    """X020 (P-ERR-21238), X021 (P-ERR-22016): a channel's path axes against their axis lists."""
+    """X020 (P-ERR-21238), X021 (P-ERR-22016), X022 (P-ERR-21020): a channel's path axes against their
+    axis lists."""
     axes = ctx.machine.axes()
     for ch in ctx.machine.channels:
         lf = ch.lists
@@ -769,6 +783,13 @@ def check_path_axes(ctx: MachineContext) -> Iterator[Diagnostic]:
                     "X020", span, f"P-ERR-21238: path axis {ca.index} (`{ca.name}`) is logical axis {ca.log_nr}, whose "
                     f"axis list ({ax.list.path.name}) {what}: the controller reports error 21238 and aborts the "
                     "start-up", param_id="P-CHAN-00035", path=path, kernel_error="P-ERR-21238")
+            master = ax.list.number(_GANTRY_MASTER_NR)
+            if master:
+                yield ctx.report(
+                    "X022", span, f"P-ERR-21020: path axis {ca.index} (`{ca.name}`) is logical axis {ca.log_nr}, a "
+                    f"gantry slave of axis {int(master)} ({ax.list.path.name}: kenngr.gantry_ax_nr): the controller "
+                    "reports error 21020 and aborts the current job", param_id="P-CHAN-00035", path=path,
+                    kernel_error="P-ERR-21020")
             alias = ax.list.text(_ALIAS)
             if use_alias and alias and ax.list.entry(_ALIAS) is not None and alias == ca.name:
                 yield ctx.report(
