@@ -44,3 +44,17 @@ def test_ci_runs_the_readmes_test_command_verbatim() -> None:
     lines = [line.strip() for line in (ROOT / ".ci" / "run").read_text(encoding="utf-8").splitlines()]
     assert command in lines, "the README's test command is not a line of .ci/run"
     assert lines[-1] == command, "the README's test command is not the last step of .ci/run"
+
+
+def test_the_sample_report_is_what_zero_prints() -> None:
+    """The README's report of the quick-start list is zero's output today (severities follow the evidence)."""
+    import os
+    import subprocess
+    import sys
+
+    block = README.split("## What a report looks like", 1)[1].split("```text\n", 1)[1].split("```", 1)[0]
+    run = subprocess.run([sys.executable, "-m", "zero", "lint", "fixtures/seed/nullp_3achsen.lis"], cwd=ROOT,
+                         capture_output=True, text=True, timeout=120, env={**os.environ, "NO_COLOR": "1"},
+                         check=False)
+    assert block in run.stdout
+    assert ("--strict" in README) == (run.returncode == 0)  # the quick start says how it ends
