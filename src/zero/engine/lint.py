@@ -439,7 +439,8 @@ def lint_update_in_machine(path: str, data: bytes, machine: Machine, registry: R
 def _update_target(doc: Document, kind: str | None, machine: Machine,
                    severities: dict[str, Severity]) -> tuple[ListFile | None, list[Diagnostic]]:
     """The list of the machine an update changes, or why there is none (U003)."""
-    from zero.machine.model import axis_of  # start-up: only with a machine
+    from zero.catalog.evidence import claim  # start-up: only with a machine
+    from zero.machine.model import axis_of  # start-up: as above
 
     if kind == "AXIS":
         entry = next((e for e in doc.entries if e.key_text == "kopf.achs_nr"), None)
@@ -453,11 +454,13 @@ def _update_target(doc: Document, kind: str | None, machine: Machine,
         if "U003" not in severities or not machine.complete_axes():
             return None, []
         known = ", ".join(str(n) for n in sorted(machine.axes())) or "none"
+        c = claim("update-axis-unknown")  # what the kernel does, and the page (zero.catalog.evidence)
         return None, [Diagnostic("U003", severities["U003"],
                                  f"this update is for logical axis {nr}, which no axis list of the machine has "
-                                 f"(its axes: {known}): the kernel's double check of the axis refuses it",
+                                 f"(its axes: {known}): {c.says}",
                                  Span.on_line(entry.line, entry.value_start, entry.value_end), doc.path,
-                                 "P-AXIS-00016")]
+                                 "P-AXIS-00016", kernel_error=c.kernel_error, consequence=c.consequence,
+                                 source=c.source)]
     if len(machine.channels) != 1:  # which channel a channel-wide update is for: not said
         return None, []
     channel = machine.channels[0]

@@ -10,6 +10,7 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 
+from zero.catalog.evidence import claim
 from zero.diagnostics import Diagnostic, Span
 from zero.rules.base import Context, E, Family, W
 
@@ -81,5 +82,6 @@ def check_update(ctx: Context) -> Iterator[Diagnostic]:
         first = next((e for e in ctx.doc.entries), None)
         span = Span.on_line(first.line, first.key_start, first.key_end) if first else Span(1, 1, 1, 1)
         yield ctx.report("U002", span, "this axis update does not carry the logical axis number P-AXIS-00016 "
-                         "(`kopf.achs_nr`), which the kernel uses to double-check the axis it updates",
+                         "(`kopf.achs_nr`), which the kernel uses to double-check the axis it updates; not set, it "
+                         f"is 0 (its default), and {claim('update-axis-zero').says}",
                          param_id=AXIS_NUMBER)
