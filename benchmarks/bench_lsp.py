@@ -13,7 +13,9 @@ one code in one file, so five kinds of fault: R001, R004, R005, R007, S004), wit
 findings published per file on (``maxFindings`` 2000, the default) and off (0): open and edit to
 findings, and the size of one publish as JSON.
 
-usage: python benchmarks/bench_lsp.py [--rounds N] [--cap-only]
+``--many N``: only N small lists opened at once, then one saved: the first answers after each.
+
+usage: python benchmarks/bench_lsp.py [--rounds N] [--cap-only] [--many N]
 """
 
 from __future__ import annotations
@@ -128,11 +130,51 @@ async def measure_cap(folder: Path, cap: int) -> dict[str, float]:
     return medians
 
 
-async def main(rounds: int, cap_only: bool = False) -> None:
+async def measure_many(folder: Path, n: int) -> dict[str, float]:
+    """``n`` lists opened at once (an editor restoring a session, a "open all" of a fleet's folder),
+    then one saved (every open document is linted again): how long the first hover waits after the
+    last open, and after the save (issue 43: 5,000 lists, 354 s to the first answer, none within
+    600 s after a save)."""
+    many = folder / "many"
+    many.mkdir()
+    paths = []
+    for i in range(n):
+        path = many / f"nullp_{i}.lis"
+        path.write_text(f"np_grp[1].achse[0].versch {i}\nnp_grp[1].achse[1].inaktiv 7\nEnde\n", encoding="utf-8")
+        paths.append(path)
+    figures: dict[str, float] = {}
+    async for client in session(folder / "cache-many", options={"debounce": 0}):
+        first = types.TextDocumentIdentifier(uri=paths[0].as_uri())
+        hover = types.HoverParams(first, types.Position(line=0, character=2))
+        t0 = time.perf_counter()
+        for path in paths:
+            client.text_document_did_open(types.DidOpenTextDocumentParams(
+                types.TextDocumentItem(path.as_uri(), "isg-list", 1, path.read_text(encoding="utf-8"))))
+        ms, _ = await timed(lambda c=client, h=hover: c.text_document_hover_async(h))  # type: ignore[misc]
+        figures["open all → first hover answered"] = (time.perf_counter() - t0) * 1000
+        figures["hover after the opens"] = ms
+        published: list[types.PublishDiagnosticsParams] = client.published  # type: ignore[attr-defined]
+        since = len(published)
+        client.text_document_did_save(types.DidSaveTextDocumentParams(first))
+        ms, _ = await timed(lambda c=client, h=hover: c.text_document_hover_async(h))  # type: ignore[misc]
+        figures["save → next hover answered"] = ms
+        t0 = time.perf_counter()
+        every = {p.as_uri() for p in paths}
+        while not every <= {p.uri for p in published[since:]}:
+            await asyncio.sleep(0.05)
+        figures["… and every list linted again"] = (time.perf_counter() - t0) * 1000 + ms
+    print(f"\n{n} lists open at once: " + ", ".join(f"{k} {v:.0f} ms" for k, v in figures.items()))
+    return figures
+
+
+async def main(rounds: int, cap_only: bool = False, many: int = 0) -> None:
     global ROUNDS
     ROUNDS = rounds
     with tempfile.TemporaryDirectory() as tmp:
         folder = Path(tmp)
+        if many:
+            await measure_many(folder, many)
+            return
         await measure_cap(folder, 2000)
         await measure_cap(folder, 0)
         if cap_only:
@@ -168,5 +210,6 @@ if __name__ == "__main__":
     a = argparse.ArgumentParser()
     a.add_argument("--rounds", type=int, default=ROUNDS)
     a.add_argument("--cap-only", action="store_true", help="only the 50,000-finding list, cap on and off")
+    a.add_argument("--many", type=int, default=0, metavar="N", help="only N lists open at once, then a save")
     args = a.parse_args()
-    asyncio.run(main(args.rounds, args.cap_only))
+    asyncio.run(main(args.rounds, args.cap_only, args.many))

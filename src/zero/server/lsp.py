@@ -2,7 +2,10 @@
 
 Documents are synchronised incrementally; a document is linted when it is opened, and again
 after a quiet spell once it changes (``debounce``, 250 ms by default), on the event loop's one
-thread (the engine is never run twice at once). A request about a document whose findings are
+thread (the engine is never run twice at once). Lints nobody waits for (documents opened, a
+machine's other lists after an edit, every open document after a save) wait in one queue, each
+document once, and run one per turn of the event loop: requests are answered in between, and a
+newer lint of a document (or its closing) drops its queued one. A request about a document whose findings are
 not current lints it first, so that answers always match the text. Once an edited list of a
 machine is linted, the other open documents of that machine (its lists, NC programs checked
 against it) are linted again right after it: their X findings follow its unsaved text; a list
@@ -29,8 +32,10 @@ import os
 import re
 import sys
 import threading
+import time
 import traceback
-from collections.abc import Callable
+from collections import OrderedDict
+from collections.abc import Callable, Iterator, Mapping
 from pathlib import Path
 from typing import Any
 from urllib.parse import unquote
@@ -66,6 +71,10 @@ class _Answered:
 ANSWERED = _Answered()
 
 
+heard = [0.0]  # when the client's last message came (time.monotonic)
+QUIET = 0.05  # seconds without a message before a queued lint runs: a request never waits behind the queue
+
+
 class ZeroProtocol(LanguageServerProtocol):
     """pygls's protocol, answering a request whose parameters it cannot read with ``InvalidParams``
     (pygls would log it and leave the client waiting)."""
@@ -86,6 +95,7 @@ class ZeroProtocol(LanguageServerProtocol):
             raise
 
     def handle_message(self, message: Any) -> None:
+        heard[0] = time.monotonic()  # the queue of lints waits while the client is talking
         if message is ANSWERED:
             return
         if self._shutdown and getattr(message, "id", None) is not None \
@@ -151,6 +161,26 @@ class _QuietRefusals(logging.Filter):
                     and record.msg.startswith("Unable to deserialize message"))
 
 
+class _Buffers(Mapping[str, str]):
+    """The open documents' text by real path, looked up when asked (built for every analysis, the
+    map cost a real path per open document: 5,000 open lists made each lint resolve 5,000 paths)."""
+
+    def __init__(self, server: ZeroServer) -> None:
+        self.server = server
+
+    def __getitem__(self, real: str) -> str:
+        doc = self.server.document(self.server.by_real[real])
+        if doc is None:
+            raise KeyError(real)
+        return doc.source
+
+    def __iter__(self) -> Iterator[str]:
+        return iter(list(self.server.by_real))
+
+    def __len__(self) -> int:
+        return len(self.server.by_real)
+
+
 class ZeroServer(LanguageServer):
     def __init__(self, registries: Registries, param_desc: Path | None = None) -> None:
         super().__init__("zero", __version__, text_document_sync_kind=types.TextDocumentSyncKind.Incremental,
@@ -161,6 +191,14 @@ class ZeroServer(LanguageServer):
         self.analyses: dict[str, Analysis] = {}
         self.timers: dict[str, asyncio.TimerHandle] = {}
         self.edited: set[str] = set()  # documents changed since they were last linted by their timer
+        # Lints nobody waits for (documents opened, a machine's other lists after an edit, every open
+        # document after a save): one per turn of the event loop, so that requests are answered in
+        # between; each document once however often it is asked for, and not at all once a newer
+        # lint of it (its own timer, a request) or its closing supersedes it.
+        self.queue: OrderedDict[str, str] = OrderedDict()
+        self.draining = False
+        self.by_real: dict[str, str] = {}  # an open document's real path → its URI
+        self.real_of: dict[str, str] = {}  # an open document (by decoded URI) → its real path
         self.pull = False  # the client pulls findings (textDocument/diagnostic): none pushed
         self.refresh = False  # … and may be told to pull again (workspace/diagnostic/refresh)
         self.snippets = False
@@ -193,14 +231,51 @@ class ZeroServer(LanguageServer):
         doc: TextDocument | None = self.workspace.text_documents.get(unquote(uri))
         return doc
 
-    def buffers(self) -> dict[str, str]:
+    def buffers(self) -> Mapping[str, str]:
         """The open documents' text by real path (for the machine's lists)."""
-        out = {}
-        for doc in self.workspace.text_documents.values():
-            path = path_of(doc.uri)
-            if path is not None:
-                out[os.path.realpath(path)] = doc.source
-        return out
+        return _Buffers(self)
+
+    def opened(self, uri: str) -> None:
+        """Where an open document lies (its real path, resolved once while it is open)."""
+        path = path_of(uri)
+        if path is not None:
+            real = os.path.realpath(path)
+            self.real_of[unquote(uri)] = real
+            self.by_real[real] = uri
+
+    def closed(self, uri: str) -> None:
+        real = self.real_of.pop(unquote(uri), None)
+        if real is not None and self.by_real.get(real) == uri:
+            del self.by_real[real]
+        self.queue.pop(unquote(uri), None)
+
+    def enqueue(self, uri: str) -> None:
+        """Lint a document soon, in the background (see ``queue``); nothing to do where its own timer
+        is set already."""
+        key = unquote(uri)
+        if key in self.timers or key in self.queue:
+            return
+        self.queue[key] = uri
+        if not self.draining:
+            self.draining = True
+            asyncio.get_running_loop().call_soon(self._drain)
+
+    def _drain(self) -> None:
+        self.draining = False
+        if not self.queue or self.shut_down:
+            return
+        wait = heard[0] + QUIET - time.monotonic()
+        if wait > 0:  # the client is talking (a thousand documents opened, a request): answer it first
+            self.draining = True
+            asyncio.get_running_loop().call_later(wait, self._drain)
+            return
+        _, uri = self.queue.popitem(last=False)
+        try:
+            self.publish(uri)
+        finally:
+            if self.queue and not self.draining:
+                self.draining = True
+                asyncio.get_running_loop().call_soon(self._drain)
 
     def analysis(self, uri: str) -> Analysis:
         """The current analysis of a document (linted now when it is not current); a document that is
@@ -243,6 +318,7 @@ class ZeroServer(LanguageServer):
         its machine are linted again next (their X findings follow its unsaved text)."""
         key = unquote(uri)
         self.timers.pop(key, None)
+        self.queue.pop(key, None)  # this lint supersedes a queued one
         doc = self.document(uri)
         if doc is None:
             return
@@ -279,8 +355,7 @@ class ZeroServer(LanguageServer):
             return []  # not a list of a machine (an NC program, a list of none): nothing depends on its text
         out = []
         for doc in self.workspace.text_documents.values():
-            other = path_of(doc.uri)
-            real = os.path.realpath(other) if other is not None else None
+            real = self.real_of.get(unquote(doc.uri))
             if real is None or real == me:
                 continue
             a = self.analyses.get(unquote(doc.uri))
@@ -296,7 +371,7 @@ class ZeroServer(LanguageServer):
         for other in others:
             self.analyses.pop(unquote(other), None)
             if not self.pull:
-                self.schedule(other, MIN_DEBOUNCE)
+                self.enqueue(other)
         if others and self.pull and self.refresh:
             future = self.workspace_diagnostic_refresh(None)
             future.add_done_callback(lambda f: f.cancelled() or f.exception())
@@ -318,8 +393,11 @@ class ZeroServer(LanguageServer):
         """Configuration or lists on disk changed: read them again and re-lint every open document."""
         self.projects.forget()
         self.analyses.clear()
-        for doc in list(self.workspace.text_documents.values()):
-            self.schedule(doc.uri, 0)
+        self.by_real.clear()
+        self.real_of.clear()
+        for doc in list(self.workspace.text_documents.values()):  # links may have changed: resolved again
+            self.opened(doc.uri)
+            self.enqueue(doc.uri)
 
 
 def create_server(registries: Registries, param_desc: Path | None = None) -> ZeroServer:
@@ -359,13 +437,17 @@ def create_server(registries: Registries, param_desc: Path | None = None) -> Zer
     @server.feature(types.SHUTDOWN)
     def shutdown(params: None) -> None:
         server.shut_down = True
+        server.queue.clear()
         for uri in list(server.timers):
             server.cancel(uri)
 
     @server.feature(types.TEXT_DOCUMENT_DID_OPEN)
     def did_open(params: types.DidOpenTextDocumentParams) -> None:
-        server.projects.forget()  # a configuration file may have changed while nothing was open
-        server.publish(params.text_document.uri)
+        uri = params.text_document.uri
+        if len(server.workspace.text_documents) <= 1:  # a configuration file may have changed while nothing
+            server.projects.forget()  # was open (while others are, a change is watched or saved: refresh_all)
+        server.opened(uri)
+        server.enqueue(uri)
 
     @server.feature(types.TEXT_DOCUMENT_DID_CHANGE)
     def did_change(params: types.DidChangeTextDocumentParams) -> None:
@@ -380,6 +462,7 @@ def create_server(registries: Registries, param_desc: Path | None = None) -> Zer
     def did_close(params: types.DidCloseTextDocumentParams) -> None:
         uri = params.text_document.uri
         server.cancel(uri)
+        server.closed(uri)
         server.edited.discard(unquote(uri))
         closed = server.analyses.pop(unquote(uri), None)
         if closed is not None and not closed.saved:  # its unsaved text no longer counts for the machine
