@@ -10,7 +10,7 @@ from __future__ import annotations
 import enum
 import re
 
-from zero.forms import XML_ROOTS
+from zero.forms import XML_ROOTS, root_of
 from zero.records import field, record
 
 # An index with more digits than this is not converted to an int: it is clamped
@@ -20,7 +20,6 @@ HUGE_INDEX = 10**MAX_INDEX_DIGITS
 
 _KEY_RE = re.compile(r"[A-Za-z0-9_]+(?:\[[0-9]+\])*(?:\.[A-Za-z0-9_]+(?:\[[0-9]+\])*)*")
 _INDEX_RE = re.compile(r"\[([0-9]+)\]")
-_ROOT_RE = re.compile(r"# ?\s*<([A-Za-z_][A-Za-z0-9_]*)[\s>]")
 
 
 class ValueKind(enum.Enum):
@@ -274,13 +273,14 @@ class Document:
             return self.origin.kind
         if not self.holds_xml_lines():
             return None
-        for seen, item in enumerate(i for i in self.items if type(i) is not Blank):
-            if type(item) is not Comment or seen > 64:
-                return None
-            m = _ROOT_RE.match(self.lines[item.line - 1])
-            if m is not None:  # the first element is the root
-                return XML_ROOTS.get(m.group(1))
-        return None
+        held: list[str] = []  # the XML its leading comment lines hold: its root is the first element
+        for seen, item in enumerate(i for i in self.items if type(i) is not Blank):  # outside XML comments
+            if type(item) is not Comment or seen > 64:  # (`<AX_MDS>` inside `<!-- … -->` is none)
+                break
+            line = self.lines[item.line - 1]
+            held.append(line[2:] if line.startswith("# ") else line[1:])
+        root = root_of("\n".join(held).encode("utf-8", "surrogateescape"))
+        return XML_ROOTS.get(root) if root is not None else None
 
     def file_line(self, line: int) -> int:
         """A line of this list as the line of the file that holds it (an XML list, a TwinCAT export)."""
