@@ -34,7 +34,9 @@ def test_a_project_assembles_completely(registry: Registry) -> None:
     assert sorted(m.axes()) == [1, 2, 3, 4]
     assert [len(ch.axes) for ch in m.channels] == [3, 1]
     assert str(m.axis_lists[1].path).endswith("Maschine.tsproj#Y_Achse/AchsMds")
-    assert found(lint_machine(m, registry)) == [("Maschine.tsproj", "R001", 112, 1)]
+    # channel 2's only path axis is logical axis 4, a spindle (achs_typ 4): the kernel's 21238 (X020)
+    assert found(lint_machine(m, registry)) == [("Maschine.tsproj", "R001", 112, 1),
+                                                ("Maschine.tsproj", "X020", 68, 55)]
 
 
 def test_tc_virtual_never_reads_a_path_on_disk(tmp_path: Path, registry: Registry) -> None:
@@ -100,7 +102,8 @@ def test_a_50_mb_project_as_a_machine(tmp_path: Path, registry: Registry) -> Non
     shift = big_project(path)
     m = load_machine(path, registry)
     assert sorted(m.axes()) == [1, 2, 3, 4]
-    assert found(lint_machine(m, registry)) == [("Big.tsproj", "R001", 112 + shift, 1)]
+    assert found(lint_machine(m, registry)) == [("Big.tsproj", "R001", 112 + shift, 1),
+                                                ("Big.tsproj", "X020", 68 + shift, 55)]
 
 
 def test_what_twincat_says_of_each_item_is_part_of_the_machine(registry: Registry) -> None:

@@ -773,7 +773,8 @@ def check_path_axes(ctx: MachineContext) -> Iterator[Diagnostic]:
             ax = axes.get(ca.log_nr)
             if ca.entry is None or ax is None:
                 continue
-            path = str(ca.source or lf.path)
+            own = ca.source is None or str(lf.path).split("#")[0] == str(ca.source)  # a list inside a project too
+            path = str(lf.path) if own else str(ca.source)
             e = ca.entry
             span = Span.on_line(e.line, e.value_start, e.value_end)
             sai, kind = ax.list.number(_SAI), ax.list.number(_AXIS_TYPE)
