@@ -16,7 +16,7 @@ from zero.cli.options import SUGGEST_CUTOFF, close_matches, did_you_mean, parse_
 from zero.cli.run import check_kind
 from zero.errors import ZeroError
 
-BAD = b"g53_verfuegbr 1\nEnde\n"  # R001, an error
+BAD = b"kopf.achs_nr 1\nkenngr.swe_pso 1500\nEnde\n"  # R001 in an axis list: an error (P-ERR-1001119)
 SEED = (FIXTURES / "seed" / "nullp_3achsen.lis").read_bytes()  # two safe fixes; infos remain
 SUMMARY = "file checked"
 PLAIN = {"NO_COLOR": "1", "TERM": "dumb", "COLUMNS": "80"}
@@ -103,13 +103,13 @@ def test_output_format_from_the_environment(bad: Path, extra: list[str]) -> None
     assert json.loads(run.stdout)[0]["code"] == "R001"
     run = zero_cli("lint", *extra, "--output-format", "concise", "bad.lis", cwd=bad,
                    env={**PLAIN, "ZERO_OUTPUT_FORMAT": "json"})
-    assert run.stdout.startswith("bad.lis:1:1: R001")  # the command line wins
+    assert run.stdout.startswith("bad.lis:2:1: R001")  # the command line wins
 
 
 def test_a_bad_output_format_in_the_environment_names_the_variable(bad: Path) -> None:
     run = zero_cli("lint", "bad.lis", cwd=bad, env={**PLAIN, "ZERO_OUTPUT_FORMAT": "xml"})
     assert run.code == 2
-    assert "(from the environment variable ZERO_OUTPUT_FORMAT): 'xml' is not one of text, concise" in run.stderr
+    assert "(from the environment variable ZERO_OUTPUT_FORMAT): 'xml' is not one of text, full, concise" in run.stderr
 
 
 def test_the_lean_parser_reads_the_variable_as_typer_does() -> None:

@@ -37,12 +37,11 @@ def tree(tmp_path_factory: pytest.TempPathFactory) -> Path:
 def test_streamed_report_is_the_kept_report(tree: Path, fmt: str, jobs: str, tmp_path: Path) -> None:
     files = sorted(tree.rglob("*.lis"))
     assert len(files) >= 128  # -j 2 runs two processes from 64 files on
-    streamed = _zero("lint", "--output-format", fmt, "-j", jobs, "--statistics", ".", cwd=tree)
-    kept = _zero("lint", "--output-format", fmt, "-j", jobs, "--statistics", "--output-file", str(tmp_path / "r"),
-                 ".", cwd=tree)
+    streamed = _zero("lint", "--output-format", fmt, "-j", jobs, ".", cwd=tree)
+    kept = _zero("lint", "--output-format", fmt, "-j", jobs, "--output-file", str(tmp_path / "r"), ".", cwd=tree)
     assert streamed.returncode == kept.returncode == 2  # the broken link
     assert streamed.stdout == (tmp_path / "r").read_text(encoding="utf-8")
-    assert streamed.stderr == kept.stderr and "R001" in streamed.stderr  # summary and statistics
+    assert streamed.stderr == kept.stderr and "R001" in streamed.stdout  # the summary; the findings
 
 
 def test_run_lint_streams_only_when_asked(tree: Path) -> None:
@@ -67,5 +66,5 @@ def test_the_command_line_knows_which_formats_stream() -> None:
     from zero.output import OUTPUT_FORMATS, STREAMED_FORMATS
     from zero.output.formats import RENDERERS, STREAMED
 
-    assert set(STREAMED_FORMATS) == {"text", *STREAMED}
-    assert set(OUTPUT_FORMATS) == {"text", *RENDERERS}  # the formats are named once, in zero.output
+    assert set(STREAMED_FORMATS) == {"text", "full", *STREAMED}  # full: the text report
+    assert set(OUTPUT_FORMATS) == {"text", "full", *RENDERERS}  # the formats are named once, in zero.output
