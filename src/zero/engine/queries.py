@@ -220,3 +220,13 @@ def run_effective(project: Project, keys: Sequence[str] = (), with_defaults: boo
     return EffectiveRun(summary(m), scopes)
 
 
+def program_travel_of(path: Path, machine: Machine,
+                      registry: Registry) -> tuple[str, int, dict[int, tuple[float, float]]]:
+    """Where an NC program takes each axis of the machine's first channel (``zero report --program``):
+    its name, the line of its first move past a soft limit (-1: none) and each axis's lowest and
+    highest position."""
+    from zero.nc.program import read_program  # start-up: only a report with --program
+    from zero.rules.program import program_travel  # start-up: as above
+
+    found = program_travel(read_program(read_file(path), str(path), registry), registry, machine, str(path))
+    return (path.name, *found) if found is not None else (path.name, -1, {})

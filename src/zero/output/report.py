@@ -47,9 +47,8 @@ from zero.diff import effective as value_of
 from zero.engine.git import revision_reader
 from zero.engine.lint import LintResult, lint_machine
 from zero.engine.project import Project
-from zero.engine.queries import machine_changes
+from zero.engine.queries import machine_changes, program_travel_of
 from zero.errors import ZeroError
-from zero.files import read_file
 from zero.forms import split_part
 from zero.machine.effective import CATALOGUE, DEFAULT_LIST, LIST, Scope, effective, entries_of, scope_values
 from zero.machine.limits import pcs_limits
@@ -599,16 +598,6 @@ def build_report(project: Project, output: Path | None = None, against: str | No
                          _generated(), named, channels, axis_lists,
                          views, [name for name, _ in machine.scopes()], rows, findings, rules, template,
                          compared, counts, drift, values)
-
-
-def program_travel_of(path: Path, machine: Machine,
-                      registry: Registry) -> tuple[str, int, dict[int, tuple[float, float]]]:
-    """Where an NC program takes each axis of the machine's first channel (``zero report --program``)."""
-    from zero.nc.program import read_program  # start-up: only a report with --program
-    from zero.rules.program import program_travel  # start-up: as above
-
-    found = program_travel(read_program(read_file(path), str(path), registry), registry, machine, str(path))
-    return (path.name, *found) if found is not None else (path.name, -1, {})
 
 
 def _generated() -> str:
