@@ -26,18 +26,17 @@ JSON_KEYS = {"path", "line", "column", "end_line", "end_column", "code", "severi
 
 def test_lint_text_report_and_exit_code() -> None:
     result = runner.invoke(app, ["lint", SEED])
-    assert result.exit_code == 0, result.output  # two warnings, five infos (issue 36: no documented reaction)
-    assert runner.invoke(app, ["lint", "--strict", SEED]).exit_code == 1
-    assert f"{SEED}:19:20: S004 warning whitespace inside the key" in result.output
+    assert result.exit_code == 1, result.output
+    assert f"{SEED}:19:20: S004 error whitespace inside the key" in result.output
     assert " 19 | np_grp[0].achse[1]. inaktiv 0" in result.output
     assert "= hint: Remove the whitespace inside the key" in result.output
-    assert "1 file checked (0 clean): 0 errors, 2 warnings, 5 infos" in result.output
+    assert "1 file checked (0 clean): 2 errors, 0 warnings, 5 infos" in result.output
     assert "\x1b[" not in result.output  # not a terminal: no colour
 
 
 def test_json_contract() -> None:
     result = runner.invoke(app, ["lint", "--output-format", "json", SEED])
-    assert result.exit_code == 0
+    assert result.exit_code == 1
     data = json.loads(result.output)
     assert isinstance(data, list) and len(data) == 7
     for d in data:
@@ -85,7 +84,7 @@ def test_directories_recurse(tmp_path: Path) -> None:
     result = runner.invoke(app, ["lint", "--output-format", "json", str(tmp_path)])
     data = json.loads(result.output)
     assert [Path(str(d["path"])).name for d in data] == ["y.lst"]
-    assert result.exit_code == (1 if data[0]["severity"] == "error" else 0)
+    assert result.exit_code == 1
 
 
 def test_io_errors_exit_2(tmp_path: Path) -> None:
@@ -131,9 +130,9 @@ def _run(*args: str, env: dict[str, str] | None = None) -> subprocess.CompletedP
 
 def test_subprocess_lint() -> None:
     proc = _run("lint", SEED, env={"NO_COLOR": "1"})
-    assert proc.returncode == 0
-    assert "S004 warning" in proc.stdout and "checked" not in proc.stdout
-    assert proc.stderr == "1 file checked (0 clean): 0 errors, 2 warnings, 5 infos\n"
+    assert proc.returncode == 1
+    assert "S004 error" in proc.stdout and "checked" not in proc.stdout
+    assert proc.stderr == "1 file checked (0 clean): 2 errors, 0 warnings, 5 infos\n"
     proc = _run("lint", "--output-format", "json", CLEAN)
     assert proc.returncode == 0 and json.loads(proc.stdout) == []
 
@@ -157,13 +156,11 @@ def test_the_console_entry_ends_without_teardown_but_says_everything(tmp_path: P
     big = tmp_path / "unknown.lis"
     big.write_text("".join(f"made_up_key_{i} {i}\n" for i in range(3000)), encoding="utf-8")
     proc = _run("lint", "--output-format", "json", str(big))
-    # unknown keys in a list of no documented kind: warnings (issue 36); --strict fails on them
-    proc = _run("lint", "--strict", "--output-format", "json", str(big))
     assert proc.returncode == 1 and len(json.loads(proc.stdout)) == 3000  # ~1 MB through the pipe
-    proc = _run("lint", "--strict", "--output-format", "concise", str(big), env={"NO_COLOR": "1"})
+    proc = _run("lint", "--output-format", "concise", str(big), env={"NO_COLOR": "1"})
     assert proc.returncode == 1 and proc.stdout.count("R001") == 3000 and proc.stderr == ""
     proc = _run("lint", str(big), env={"NO_COLOR": "1"})
-    assert proc.returncode == 0 and proc.stderr == "1 file checked (0 clean): 0 errors, 3000 warnings, 0 infos\n"
+    assert proc.returncode == 1 and proc.stderr == "1 file checked (0 clean): 3000 errors, 0 warnings, 0 infos\n"
     a, b = tmp_path / "a.lis", tmp_path / "b.lis"
     a.write_text("kopf.achs_nr 1\n", encoding="utf-8")
     b.write_text("kopf.achs_nr 2\n", encoding="utf-8")

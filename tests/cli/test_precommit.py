@@ -33,12 +33,12 @@ def test_hook_fails_on_the_bad_list_and_passes_the_good_one(tmp_path: Path) -> N
 
     run("git", "init", "-q")
     (repo / "good.lis").write_bytes((FIXTURES / "rules" / "M006" / "pass.lis").read_bytes())
-    (repo / "bad.lis").write_bytes((FIXTURES / "rules" / "R001" / "fail.lis").read_bytes())  # an error
+    (repo / "bad.lis").write_bytes((FIXTURES / "seed" / "nullp_3achsen.lis").read_bytes())
     (repo / "notes.txt").write_text("not a list\n")
     run("git", "add", ".")
     both = run(PRE_COMMIT, "try-repo", str(ROOT), "zero-lint", "--all-files", "--verbose")
     assert both.returncode == 1, both.stdout + both.stderr
-    assert "bad.lis:3:1: R001 error unknown key" in both.stdout
+    assert "bad.lis:19:20: S004 error whitespace inside the key" in both.stdout
     assert "notes.txt" not in both.stdout
     # pre-commit names the files explicitly: an exclude in zero's configuration still applies
     (repo / "zero.toml").write_text('exclude = ["bad.lis"]\n')

@@ -84,8 +84,8 @@ S004 = "info"
     assert "old" not in out and out.count("S004 info") == 2 and "M003" not in out
     code, out, _ = lint(str(root / "lists" / "old" / "nullp.lis"))  # named, still excluded
     assert code == 0 and out == ""
-    code, out, _ = lint("--isolated", str(root / "lists"))  # S004 in a zero-offset list: a warning (issue 36)
-    assert code == 0 and "old/nullp.lis" in out and "M003" in out and "S004 warning" in out
+    code, out, _ = lint("--isolated", str(root / "lists"))
+    assert code == 1 and "old/nullp.lis" in out and "M003" in out
     code, out, _ = lint("--select", "M003", str(root / "lists" / "nullp.lis"))
     assert code == 0 and out.count("M003") == 5  # the command line's select wins
     (root / "zero.toml").write_text('[tool.zero.per-file-ignores]\n"lists/*.lis" = ["S004"]\n'

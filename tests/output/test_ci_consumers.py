@@ -79,13 +79,12 @@ def test_gitlab_and_github_paths_are_relative_to_the_repository(tmp_path: Path,
     out = io.StringIO()
     render_github([lint_text(TWO_INDICES, absolute)], out)
     lines = out.getvalue().splitlines()
-    # R004 in a zero-offset list: a warning (no reaction documented for that list kind; issue 36)
-    assert len(lines) == 2 and all(x.startswith("::warning file=machine/np.lis,line=") for x in lines)
+    assert len(lines) == 2 and all(x.startswith("::error file=machine/np.lis,line=") for x in lines)
     outside = str(tmp_path / "elsewhere" / "np.lis")
     assert {i["location"]["path"] for i in gitlab([lint_text(TWO_INDICES, outside)])} == {outside}
     out = io.StringIO()
     render_github([lint_text(TWO_INDICES, outside)], out)
-    assert out.getvalue().startswith(f"::warning file={outside.replace(':', '%3A')},line=1,")
+    assert out.getvalue().startswith(f"::error file={outside.replace(':', '%3A')},line=1,")
 
 
 # JUnit: Jenkins' junit-10.xsd
@@ -196,7 +195,7 @@ def test_junit_validates_against_the_junit_10_constraints(tmp_path: Path) -> Non
 def test_junit_testsuites_count_test_cases_not_files() -> None:
     import xml.etree.ElementTree as ET
 
-    root = ET.fromstring(junit([from_file(SEED), from_file(CLEAN)], fail_on=Severity.WARNING))  # the seed's: warnings
+    root = ET.fromstring(junit([from_file(SEED), from_file(CLEAN)]))
     cases = root.findall("testsuite/testcase")
     assert len(cases) == 8  # seven findings, one clean file
     assert root.get("tests") == "8" and root.get("failures") == "2" and root.get("errors") == "0"
@@ -204,7 +203,7 @@ def test_junit_testsuites_count_test_cases_not_files() -> None:
     # where each finding is stands in its text, since the schema has no attribute for it
     failure = root.find("testsuite/testcase/failure")
     assert failure is not None and failure.text is not None
-    assert failure.text.startswith(f"{SEED}:19:20: S004 warning ")
+    assert failure.text.startswith(f"{SEED}:19:20: S004 error ")
 
 
 def test_junit_warnings_fail_under_strict() -> None:

@@ -21,16 +21,15 @@ def _full(path: str) -> list[dict[str, object]]:
 
 
 def test_seed_zero_example(request: pytest.FixtureRequest) -> None:
-    """ZERO manual §3: findings exactly at the two `achse[j]. inaktiv` lines: warnings, as the vendor
-    documents no reaction to an element of a zero-offset list it cannot read (P-ERR-1001119 is the axis
-    list's), and the message says so."""
+    """ZERO manual §3: errors exactly at the two `achse[j]. inaktiv` lines: the plausibility check of a
+    zero-offset list reports an incorrectly written parameter and the job is aborted (P-ERR-20407)."""
     actual = _full("nullp_3achsen.lis")
     expected = golden(FIXTURES / "seed" / "nullp_3achsen.expected.json", actual,
                       request.config.getoption("--update-golden"))
     assert actual == expected
-    warnings = [(d["line"], d["code"]) for d in actual if d["severity"] == "warning"]
-    assert warnings == [(19, "S004"), (21, "S004")]
-    assert all("not documented" in str(d["message"]) and d["consequence"] == "undocumented"
+    errors = [(d["line"], d["code"]) for d in actual if d["severity"] == "error"]
+    assert errors == [(19, "S004"), (21, "S004")]
+    assert all(d["kernel_error"] == "P-ERR-20407" and d["consequence"] == "aborted"
                for d in actual if d["code"] == "S004")
     # the rest is information about offsets the example masks on purpose
     assert {d["code"] for d in actual if d["severity"] == "info"} == {"M003"}

@@ -35,6 +35,8 @@ Why it matters on the machine: in an axis parameter list the kernel ignores an e
 cannot interpret (P-ERR-1001119), so the parameter the engineer meant keeps the value it had; an
 error. For the other list kinds the vendor documents no reaction: a warning that says so. A key
 the vendor's own lists or templates write is R002, R010 or R013 instead (information).
+In a zero-offset list the plausibility check reports an unknown or incorrectly written
+parameter or an invalid value and the job is aborted (P-ERR-20407): an error there too.
 
 Example: `kenngr.swe_pso 15000000`
 Fix: correct the key (`kenngr.swe_pos`), or load the description of your kernel with
@@ -63,6 +65,8 @@ What it checks: each index of a key against the array size in the registry
 Why it matters on the machine: the element does not exist. In an axis parameter list the
 kernel ignores an element it cannot interpret (P-ERR-1001119): an error; for the other list kinds
 no reaction is documented: a warning that says so.
+In a zero-offset list the plausibility check reports an unknown or incorrectly written
+parameter or an invalid value and the job is aborted (P-ERR-20407): an error there too.
 
 Example: `np_grp[97].achse[0].versch 100`
 Fix: use an index inside the range.
@@ -322,8 +326,11 @@ exceed their maximum length.
 Why it matters on the machine: in an axis parameter list the kernel goes on with the list and
 sets a value of an invalid number format to 0, or limits one beyond the type to the permissible
 minimum or maximum (P-ERR-1001138): an error. For the other list kinds the vendor documents no
-reaction: a warning that says so. Where zero cannot read a value (`666666.667` for an integer),
-no other rule reasons on it: not on the default, not on a guessed number.
+reaction: a warning that says so.
+In a zero-offset list the plausibility check reports an unknown or incorrectly written
+parameter or an invalid value and the job is aborted (P-ERR-20407): an error there too.
+Where zero cannot read a value (`666666.667` for an integer), no other rule reasons on it: not
+on the default, not on a guessed number.
 
 Example: `kenngr.swe_pos 1500.5`
 Fix: write the value in the parameter's unit as an integer (`kenngr.swe_pos 15005000`).
@@ -342,7 +349,9 @@ Why it matters on the machine: in an axis parameter list the kernel goes on with
 limits a value beyond the permissible range to its minimum or maximum (P-ERR-1001138): an error
 that names the bound. For the other list kinds, for values outside the values the catalogue
 lists, and for ranges the documentation calls application-specific, no reaction is documented:
-a warning (information for an application-specific range) that says so. A parameter the
+a warning (information for an application-specific range) that says so.
+In a zero-offset list the plausibility check reports an unknown or incorrectly written
+parameter or an invalid value and the job is aborted (P-ERR-20407): an error there too. A parameter the
 documentation gives for other drive types than the axis has (P-AXIS-00020) is not used by the
 kernel: information.
 

@@ -25,29 +25,35 @@ What it checks: the first word of a line must be a key made of members and indic
 Why it matters on the machine: such a line sets no parameter. In an axis parameter list the
 kernel ignores an element it cannot interpret (P-ERR-1001119): an error there; for the other
 list kinds the vendor documents no reaction, and the warning says so.
+In a zero-offset list the plausibility check reports an unknown or incorrectly written
+parameter or an invalid value and the job is aborted (P-ERR-20407): an error there too.
 
 Example: `*****  decorative line`
 Fix: turn it into a comment (`# *****`) or correct the key.
 """)
 MISSING_VALUE = FAMILY.rule(
-    "S002", "missing-value", W, "A key without a value",
+    "S002", "missing-value", E, "A key without a value",
     """
 What it checks: every entry needs a value after its key.
 
 Why it matters on the machine: the entry sets nothing zero can read; what the controller does
 with it is not documented (a warning that says so), and it is rarely what the engineer who
 wrote the key meant.
+In a zero-offset list the plausibility check reports an unknown or incorrectly written
+parameter or an invalid value and the job is aborted (P-ERR-20407): an error there too.
 
 Example: `kenngr.swe_pos`
 Fix: write the value (`kenngr.swe_pos 15000000`) or delete the line.
 """)
 UNTERMINATED_QUOTE = FAMILY.rule(
-    "S003", "unterminated-quote", W, "A quoted string value without its closing quote",
+    "S003", "unterminated-quote", E, "A quoted string value without its closing quote",
     """
 What it checks: a value that starts with `"` must end with `"` on the same line.
 
 Why it matters on the machine: where the string ends is not said; what the controller does
 with such an entry is not documented (a warning that says so).
+In a zero-offset list the plausibility check reports an unknown or incorrectly written
+parameter or an invalid value and the job is aborted (P-ERR-20407): an error there too.
 
 Example: `example[0].name "STRING_WITH_COMMENT( # /*`
 Fix: close the quote: `example[0].name "STRING_WITH_COMMENT( # /*)"`.
