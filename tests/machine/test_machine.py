@@ -32,9 +32,10 @@ def test_fixture_machine_golden(request: pytest.FixtureRequest) -> None:
     expected = golden(FIXTURES / "machine" / "expected.json", actual, request.config.getoption("--update-golden"))
     assert actual == expected
     fired = {f["code"] for f in actual}
-    # every X rule fails on the fixture, but X007/X011: its missing axis list (X005) may be the one
+    # every X rule up to X014 fails on the fixture (X015 and later have machines of their own in
+    # tests/rules/test_startup.py), but X007/X011: its missing axis list (X005) may be the one
     # with the axis number a channel names, so no "axis without a list" is claimed (one root cause)
-    assert {c for c in RULES if c.startswith("X")} - {"X007", "X011"} <= fired
+    assert {c for c in RULES if c.startswith("X") and c <= "X014"} - {"X007", "X011"} <= fired
     assert not {"X007", "X011"} & fired
 
 

@@ -206,7 +206,7 @@ Example: `np_grp[1].achse[0].versch 20000000` (2000 mm) with `swe_pos 15000000` 
 Fix: correct the offset (often a sign or a factor of 10), or the soft limits.
 """)
 PCS_LIMIT_OVERFLOW = FAMILY.rule(
-    "X002", "pcs-limit-overflow", E, "A work offset moves a soft limit beyond SGN32",
+    "X002", "pcs-limit-overflow", W, "A work offset moves a soft limit beyond SGN32",
     """
 What it checks: soft limit minus offset stays inside the SGN32 range the controller computes in.
 
@@ -316,7 +316,7 @@ def check_offsets(ctx: MachineContext) -> Iterator[Diagnostic]:
 
 
 COMPENSATION_AXIS_UNKNOWN = FAMILY.rule(
-    "X009", "compensation-axis-unknown", E, "A compensation list assigned to an axis the machine does not have",
+    "X009", "compensation-axis-unknown", W, "A compensation list assigned to an axis the machine does not have",
     """
 What it checks: `achs_kw_log_ax_nr[i]` (P-STUP-00036) of each compensation list the controller
 reads (`achs_kw[i]`, i < `zahl_kw`) is the `kopf.achs_nr` of one of the machine's axis lists.
@@ -432,7 +432,7 @@ def check_compensation_tables(ctx: MachineContext) -> Iterator[Diagnostic]:
 
 
 CHANNEL_AXIS_TWICE = FAMILY.rule(
-    "X010", "channel-axis-twice", E, "One logical axis in two places of the channels",
+    "X010", "channel-axis-twice", W, "One logical axis in two places of the channels",
     """
 What it checks: every logical axis number appears once among the channel axes
 (`gruppe[0].achse[j].log_achs_nr`) and spindles (`spindel[s].log_achs_nr`) of all channels.
@@ -443,7 +443,7 @@ and a spindle); the channel configuration is contradictory.
 Fix: give each channel axis and spindle its own logical axis number.
 """)
 SPINDLE_WITHOUT_LIST = FAMILY.rule(
-    "X011", "spindle-without-list", E, "A spindle whose axis list is missing",
+    "X011", "spindle-without-list", W, "A spindle whose axis list is missing",
     """
 What it checks: every `spindel[s].log_achs_nr` (P-CHAN-00036) of a channel list is the
 `kopf.achs_nr` of one of the machine's axis lists.
@@ -460,6 +460,7 @@ def check_channel_axes(ctx: MachineContext) -> Iterator[Diagnostic]:
     machine = ctx.machine
     axes = machine.axes()
     seen: dict[int, str] = {}
+    path_axes: dict[int, int] = {}  # logical axis → the channel whose path axis it is first
     for ch in machine.channels:
         if ch.lists is None:
             continue
@@ -467,6 +468,9 @@ def check_channel_axes(ctx: MachineContext) -> Iterator[Diagnostic]:
         for ca in ch.axes:
             if ca.entry is not None:
                 e = ca.entry
+                if path_axes.get(ca.log_nr) == ch.index:
+                    continue  # two path axes of one channel list: K004 says it, with the kernel's number 20423
+                path_axes.setdefault(ca.log_nr, ch.index)
                 users.append((ca.log_nr, f"channel {ch.index} axis {ca.index} (`{ca.name}`)",
                               Span.on_line(e.line, e.value_start, e.value_end), str(ca.source or ch.lists.path)))
         for idx, res in sorted(ch.lists.values.ids_of(SPINDLE_AXIS).items()):
