@@ -57,4 +57,5 @@ def test_the_sample_report_is_what_zero_prints() -> None:
                          capture_output=True, text=True, timeout=120, env={**os.environ, "NO_COLOR": "1"},
                          check=False)
     assert block in run.stdout
-    assert ("--strict" in README) == (run.returncode == 0)  # the quick start says how it ends
+    quick = README.split("## Quick start", 1)[1].split("```sh", 1)[0]
+    assert ("exits 1" in quick) == (run.returncode == 1), quick  # the quick start says how it ends
