@@ -425,7 +425,9 @@ def test_the_patterns_the_timing_fuzzer_flagged_grow_linearly() -> None:
         (documents._ZERO_RECORD.search, lambda n: "\n" * n + "x"),
         (formats._EXPONENT_RE.fullmatch, lambda n: "0" * n + "x"),
         (motion._VALUE_START.match, lambda n: " " * n + "x"),
-        (motion._LABEL_AT.match, lambda n: " " * n + "x"),
+        (motion._SIMPLE.match, lambda n: "\n" * n + "!"),
+        (motion.assigned, lambda n: "V." * n + "=1"),
+        (motion._GOTO.findall, lambda n: "$GOTO[" * n),
         (completion._AXPARAM_OPEN.search, lambda n: "AXPARAM" + " " * n + "x"),
         (hover._AXPARAM.search, lambda n: "AXPARAM" + " " * n + "x"),
     ]

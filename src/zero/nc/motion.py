@@ -258,10 +258,14 @@ _VAR = re.compile(r"V\.[A-Z_]+\.[A-Z0-9_.]*(?:\[[^\]]*\])*(?:\.[A-Z0-9_]+)*")
 _PRIMARY = re.compile(r"[-+]?(?:\d+\.?\d*(?!\.)|\.\d+|P\d+|V\.[A-Z_]+\.[A-Z0-9_.]*(?:\[[^\]]*\])*)")
 _ASSIGN = re.compile(r"\s*=(?!=)")
 # a block of address letters and plain numbers only, and its words (the fast path of CAM programs)
-_SIMPLE = re.compile(r"\s*(?:N\d+(?=[\sA-Z]|$))?(?:\s*[A-Z]\s*[-+]?(?:\d+\.?\d*|\.\d+))+\s*$")
+_SIMPLE = re.compile(r"\s*+(?:N\d++(?=[\sA-Z]|$))?(?:\s*+[A-Z]\s*+[-+]?+(?:\d++(?:\.\d*+)?+|\.\d++))++\s*+$")
 _SIMPLE_WORD = re.compile(r"([A-Z])\s*([-+]?(?:\d+\.?\d*|\.\d+))")
 _CENTRE = frozenset("IJKR")
-_ASSIGNED = re.compile(r"(P\d+|V\.[A-Z_]+\.[A-Z0-9_.]*)\s*=(?!=)")
+# a run of name characters followed by `=` (never `==`), found once per run: a search for the
+# variable itself restarted inside a long run of `V.` (quadratic)
+_ASSIGNED_RUN = re.compile(r"(?<![A-Z0-9_.])([A-Z0-9_.]++)\s*+=(?!=)")
+_CHAIN_START = re.compile(r"V\.[A-Z_]++\.")  # a V.-variable: whatever follows in the run is its name
+_P_TAIL = re.compile(r"P\d++$")
 _G_DIMS = re.compile(r"\bG0*(?:90|91)\b")
 _G_OFFSET = re.compile(r"\bG0*(?:5[3-9]|159)\b")
 _CALL_WORD = re.compile(r"\bLL?\s|\bG0*92\b")
@@ -280,10 +284,21 @@ _COMMENT_BLOCK = re.compile(r"#COMMENT\s*(BEGIN|END)")
 _VAR_BLOCK = re.compile(r"\s*(?:N\d+\s+)?#VAR\b")
 _DECLARATION = re.compile(r"\s*(?:N\d+\s+)?(V\.(?:P|L|S|CYC)\.[A-Z0-9_]+)\s*(?::\s*[A-Z0-9_\[\]]+\s*)?(=\s*(.*))?$")
 _HEADER = re.compile(r"\s*%\s*(L\s+)?(\S*)")
-_LABEL_AT = re.compile(r"\s*+(?:/\d*+\s*+)?:?\s*+N(\d+)")
 _LOCAL_CALL = re.compile(r"\bLL\s+(?!CYCLE\b)\"?([^\s\"()\[\];]+)")
-_GOTO = re.compile(r"\$GOTO\s*(?:N(\d+)|\[([^\]]*)\])")
+_GOTO = re.compile(r"\$GOTO\s*+(?:N(\d++)|\[([^\]$]*+)\])")  # a label holds no `$`: each `$GOTO[` scans to the next
 _AXPARAM_SWE = re.compile(r"\s*KENNGR\.SWE_(NEG|POS)\s+([-+]?\d+)\s*$")
+
+
+def assigned(up: str) -> list[str]:
+    """The P-parameters and V.-variables a block assigns (``P1 = 5``, ``V.L.X=P1``), each once per
+    run of name characters before its `=`, in time linear in the block."""
+    out = []
+    for m in _ASSIGNED_RUN.finditer(up):
+        run = m.group(1)
+        starts = [x.start() for x in (_CHAIN_START.search(run), _P_TAIL.search(run)) if x is not None]
+        if starts:  # the earliest variable that reaches the `=`
+            out.append(run[min(starts):])
+    return out
 
 
 def _closing(text: str, start: int) -> int:
@@ -484,7 +499,7 @@ class Follower:
             if stack:
                 facts = stack[-1][2]
                 if "=" in up:
-                    facts.variables.update(_ASSIGNED.findall(up))
+                    facts.variables.update(assigned(up))
                 if "G" in up:
                     if _G_DIMS.search(up):
                         facts.dims = True
@@ -493,7 +508,7 @@ class Follower:
                 if "#" in up or _CALL_WORD.search(up):
                     facts.dims = facts.offset = True
                 for name, i in names.items():
-                    if name in up and re.search(rf"(?<![A-Z0-9_.]){re.escape(name)}\s*=?\s*[-+.\d\[PV]", up):
+                    if name in up and re.search(rf"(?<![A-Z0-9_.]){re.escape(name)}\s*+=?+\s*+[-+.\d\[PV]", up):
                         facts.axes.add(i)
             if "$" not in up:
                 continue
@@ -501,7 +516,7 @@ class Follower:
                 if kw in lang.OPENERS and not (kw == "IF" and "$GOTO" in up):
                     facts = _Facts()
                     if kw == "FOR":  # the loop variable changes per iteration
-                        facts.variables.update(_ASSIGNED.findall(up))
+                        facts.variables.update(assigned(up))
                     stack.append((number, kw, facts))
                 elif kw in lang.CLOSERS and stack:
                     self._close_loop(stack)

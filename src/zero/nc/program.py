@@ -28,11 +28,11 @@ _WORD_RE = re.compile(r"(?<![A-Za-z_#$.])([A-Z])\s*(=?)\s*([+-]?(?:[0-9]+\.?[0-9
 _G9X = re.compile(r"(?<![A-Za-z_#$.])G\s*0*9[0189](?![0-9.])", re.IGNORECASE)
 _G_RE = re.compile(r"(?<![A-Za-z_#$.])G\s*0*([0-9]+)(?![0-9.])", re.IGNORECASE)
 _ITEM_RE = re.compile(
-    r'\s*(?:(?P<ax>AX)\s*=\s*(?P<axname>[A-Za-z_][A-Za-z0-9_]*)'
-    r'|(?P<axnr>AXNR)\s*=\s*(?P<axnrv>\[[^\]]*\]|[^\s\]]+)'
-    r'|(?P<pid>P-AXIS-[0-9]{5})(?:\.(?P<pidx>[0-9]+))?\s*=\s*(?P<pval>[^\s\]]+)'
-    r'|(?P<axparam>AXPARAM)\s*=?\s*"(?P<axparamv>[^"]*)"'
-    r'|(?P<axparamvar>AXPARAM)\s*=?\s*(?P<axparamvarv>V\.[A-Za-z0-9_.\[\]]+)'
+    r'(?<!\s)\s*+(?:(?P<ax>AX)\s*+=\s*+(?P<axname>[A-Za-z_][A-Za-z0-9_]*)'
+    r'|(?P<axnr>AXNR)\s*+=\s*+(?P<axnrv>\[[^\]]*\]|[^\s\]]+)'
+    r'|(?P<pid>P-AXIS-[0-9]{5})(?:\.(?P<pidx>[0-9]+))?\s*+=\s*+(?P<pval>[^\s\]]+)'
+    r'|(?P<axparam>AXPARAM)\s*+=?+\s*+"(?P<axparamv>[^"]*)"'
+    r'|(?P<axparamvar>AXPARAM)\s*+=?+\s*+(?P<axparamvarv>V\.[A-Za-z0-9_.\[\]]+)'
     r'|(?P<wait>WAIT)\b'
     r'|(?P<other>\S+))', re.IGNORECASE)
 
