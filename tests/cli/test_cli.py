@@ -154,7 +154,8 @@ def test_the_console_entry_ends_without_teardown_but_says_everything(tmp_path: P
     """``zero.cli.lean.end`` skips the interpreter's teardown: output far beyond a pipe's buffer
     still arrives whole, and exit codes and messages of both command lines are kept."""
     big = tmp_path / "unknown.lis"
-    big.write_text("".join(f"made_up_key_{i} {i}\n" for i in range(3000)), encoding="utf-8")
+    # an axis list: its unknown elements are errors (P-ERR-1001119), so every run ends with 1
+    big.write_text("kopf.achs_nr 1\n" + "".join(f"made_up_key_{i} {i}\n" for i in range(3000)), encoding="utf-8")
     proc = _run("lint", "--output-format", "json", str(big))
     assert proc.returncode == 1 and len(json.loads(proc.stdout)) == 3000  # ~1 MB through the pipe
     proc = _run("lint", "--output-format", "concise", str(big), env={"NO_COLOR": "1"})
