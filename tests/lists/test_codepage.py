@@ -108,7 +108,8 @@ def test_a_byte_the_declared_code_page_lacks_is_kept_and_said() -> None:
     assert document_bytes(doc) == data
     result = lint_bytes(data, builtin_registry(), "a.lis", LintOptions(encoding="cp1252"))
     assert [(d.code, d.message) for d in result.diagnostics] == [
-        ("S007", "byte 0x81 is not defined in cp1252, the encoding the configuration declares")]
+        ("S007", "byte 0x81 is not defined in cp1252, the encoding the configuration declares; what the controller "
+         "does with these bytes is not documented")]
 
 
 @pytest.mark.parametrize(("name", "canonical"), [
