@@ -191,7 +191,9 @@ def test_a_hostile_configuration_is_refused_before_the_work(tmp_path: Path, conf
 
 
 def test_a_start_up_list_naming_one_list_ten_thousand_times(tmp_path: Path) -> None:
-    """The catalogue's array (achs_mds[0..63]) bounds what is read, and each file is read once."""
+    """The catalogue's array (achs_mds[0..63]) bounds what is read, each file is read once, and the
+    machine's entries are bounded: 20,001 entries named 64 times are refused where the start-up list
+    crosses 500,000, before any rule runs (issue 43)."""
     m = tmp_path / "m"
     m.mkdir()
     (m / "x.lis").write_text("kopf.achs_nr 1\n" + "".join(f"getriebe[0].dynamik.vb_max {i}\n" for i in range(20_000))
@@ -201,7 +203,8 @@ def test_a_start_up_list_naming_one_list_ten_thousand_times(tmp_path: Path) -> N
     run = zero_cli("lint", "--machine", "hochlauf.lis", "--output-format", "concise", cwd=m, memory_mib=1500,
                    timeout=120)
     _no_internal_error(run)
-    assert run.code == 1 and "R003" in run.stdout, run.stderr
+    assert run.code == 2 and run.stdout == "", run.stdout
+    assert "hochlauf.lis:27:1: `achs_mds[24]` brings the machine's lists to more than 500,000 entries" in run.stderr
     assert run.seconds < 60, run.seconds
 
 
