@@ -210,7 +210,7 @@ def test_emacs_eglot_findings_completion_and_reconnect(tmp_path: Path) -> None:
 @pytest.mark.parametrize(("text", "coding"), [
     ((FIXTURES / "codepage" / "cp850_comments.lis").read_bytes(), "iso-latin-1-unix"),  # bytes cp1252 lacks
     ("# Grüße, Maß\nkenngr.swe_pos 1500.5\nEnde\n".encode("cp1252"), "windows-1252-unix"),
-    ("# Grüße\nkenngr.swe_pos 1500.5\nEnde\n".encode("utf-8"), "utf-8-unix"),
+    ("# Grüße\nkenngr.swe_pos 1500.5\nEnde\n".encode(), "utf-8-unix"),
 ])
 def test_emacs_opens_a_list_in_the_code_page_zero_reads_it_in(tmp_path: Path, text: bytes, coding: str) -> None:
     """A list in CP850 (or another code page that is not UTF-8) once opened as `raw-text` or
