@@ -289,6 +289,23 @@ _GOTO = re.compile(r"\$GOTO\s*+(?:N(\d++)|\[([^\]$]*+)\])")  # a label holds no 
 _AXPARAM_SWE = re.compile(r"\s*KENNGR\.SWE_(NEG|POS)\s+([-+]?\d+)\s*$")
 
 
+def _reached(travel: dict[int, list[float]], i: int, machine: float, limits: tuple[float, float]) -> bool:
+    """Widen axis ``i``'s travel to take in ``machine``; ``True`` where that position lies beyond
+    the soft limits ``(negative, positive)`` by more than rounding."""
+    span = travel.get(i)
+    if span is None:
+        travel[i] = [machine, machine]
+    elif machine < span[0]:
+        span[0] = machine
+    elif machine > span[1]:
+        span[1] = machine
+    neg, posl = limits
+    if machine > posl or machine < neg:
+        tol = 1e-9 * max(1.0, abs(machine))
+        return machine > posl + tol or machine < neg - tol
+    return False
+
+
 def assigned(up: str) -> list[str]:
     """The P-parameters and V.-variables a block assigns (``P1 = 5``, ``V.L.X=P1``), each once per
     run of name characters before its `=`, in time linear in the block."""
@@ -937,16 +954,7 @@ class Follower:
                 value += base
             pos[i] = value
             machine = value + (row[i] if row is not None and i < len(row) else 0.0)
-            span = travel.get(i)
-            if span is None:
-                travel[i] = [machine, machine]
-            elif machine < span[0]:
-                span[0] = machine
-            elif machine > span[1]:
-                span[1] = machine
-            neg, posl = limits[i]
-            if (machine > posl or machine < neg) and (machine > posl + 1e-9 * max(1.0, abs(machine))
-                                                      or machine < neg - 1e-9 * max(1.0, abs(machine))):
+            if _reached(travel, i, machine, limits[i]):
                 self._crossing(i, value, machine, _Tok("axis", self.axes[i].name, line, -1, -1, value, raw), False)
         res.evaluated += 1
 
@@ -1112,18 +1120,8 @@ class Follower:
             travel = res.travel
             for k, (i, target, t) in enumerate(checks):
                 machine = target + (row[i] if row is not None and i < len(row) else 0.0)
-                span = travel.get(i)
-                if span is None:
-                    travel[i] = [machine, machine]
-                elif machine < span[0]:
-                    span[0] = machine
-                elif machine > span[1]:
-                    span[1] = machine
-                neg, posl = limits[i]
-                if machine > posl or machine < neg:
-                    tol = 1e-9 * max(1.0, abs(machine))
-                    if machine > posl + tol or machine < neg - tol:
-                        self._crossing(i, target, machine, t, arc=k >= targets)
+                if _reached(travel, i, machine, limits[i]):
+                    self._crossing(i, target, machine, t, arc=k >= targets)
         why = block or reason
         if why:
             res.skip(why, line)
