@@ -163,12 +163,14 @@ def command_line_config(exclude: Sequence[str], extend_exclude: Sequence[str], r
                         kernel: str | None) -> list[str]:
     """``--exclude``, ``--extend-exclude``, ``--[no-]respect-gitignore`` and ``--kernel`` as the
     ``KEY = VALUE`` overrides of ``--config`` (patterns repeatable or comma-separated, as ruff's)."""
+    out: list[str] = []
+    if not (exclude or extend_exclude or respect_gitignore is not None or kernel is not None):
+        return out
     import json  # start-up: only when one of these options is given
 
     def patterns(values: Sequence[str]) -> list[str]:
         return [p.strip() for v in values for p in v.split(",") if p.strip()]
 
-    out = []
     if exclude:
         out.append(f"exclude = {json.dumps(patterns(exclude))}")
     if extend_exclude:
