@@ -44,6 +44,9 @@ class Rule:
     explanation: str
     scope: Scope = "list"
     opt_in: bool = False  # runs only when selected by its full code
+    # the parameters its check reads, by ID (a key where the catalogue has no ID): the docs link them
+    # both ways, and tests/docs fails on a rule that declares none or one the catalogue does not know
+    reads: tuple[str, ...] = ()
 
     def render(self) -> str:
         return (
@@ -176,11 +179,11 @@ class Family(Generic[C]):
         self.checks: list[Check[C]] = []
 
     def rule(self, code: str, name: str, severity: Severity, summary: str, explanation: str,
-             opt_in: bool = False) -> Rule:
-        """Declare a rule of this family (its code is never reused)."""
+             opt_in: bool = False, reads: tuple[str, ...] = ()) -> Rule:
+        """Declare a rule of this family (its code is never reused) and the parameters it reads."""
         if not code.startswith(self.letter) or code in self.rules:
             raise ValueError(f"rule {code} does not belong to family {self.letter} or is declared twice")
-        r = Rule(code, name, severity, summary, explanation, self.scope, opt_in)
+        r = Rule(code, name, severity, summary, explanation, self.scope, opt_in, reads)
         self.rules[code] = r
         _defaults[code] = severity
         return r
