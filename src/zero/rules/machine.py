@@ -52,7 +52,9 @@ catalogue documents: for axis lists (P-STUP-00015) and compensation lists (P-STU
 start-up is aborted; for the other keys the catalogue does not say.
 
 Fix: correct the path, or add the file.
-""")
+""", reads=("P-STUP-00034", "P-STUP-00009", "P-STUP-00010", "P-STUP-00011", "P-STUP-00012", "P-STUP-00146",
+           "P-STUP-00013", "P-STUP-00135", "P-STUP-00136", "P-STUP-00035", "P-STUP-00015", "P-STUP-00017",
+           "P-STUP-00014", "P-STUP-00016"))
 
 
 def _on_reference(ctx: MachineContext, code: str, line: int, message: str) -> Diagnostic:
@@ -101,7 +103,9 @@ channels; the list named beyond the count is not read, however carefully it was 
 
 Example: `zahl_mds 1` with `achs_mds[0]` and `achs_mds[1]`
 Fix: raise the count, or remove the reference.
-""")
+""", reads=("P-STUP-00014", "P-STUP-00016", "P-STUP-00001", "P-STUP-00034", "P-STUP-00009", "P-STUP-00010",
+           "P-STUP-00011", "P-STUP-00012", "P-STUP-00146", "P-STUP-00013", "P-STUP-00135", "P-STUP-00136",
+           "P-STUP-00035", "P-STUP-00015", "P-STUP-00017"))
 
 
 @FAMILY.check(BEYOND_COUNT)
@@ -138,7 +142,7 @@ ones in effect. Sources: https://infosys.beckhoff.com/content/1033/tf5200_diagno
 (110064), https://infosys.beckhoff.com/content/1033/tf5200_diagnosis/269224331.html (1001121).
 
 Fix: give each axis list its own `kopf.achs_nr` and name.
-""")
+""", reads=("P-AXIS-00016", "P-AXIS-00297"))
 CHANNEL_AXIS_WITHOUT_LIST = FAMILY.rule(
     "X007", "channel-axis-without-list", E, "A channel axis whose axis list is missing",
     """
@@ -149,7 +153,7 @@ Why it matters on the machine: the channel names an axis the controller has no d
 start-up fails or the axis is missing in the channel.
 
 Fix: add the axis list to the start-up list (`achs_mds[i]`), or correct `log_achs_nr`.
-""")
+""", reads=("P-CHAN-00035", "P-AXIS-00016"))
 
 
 @FAMILY.check(DUPLICATE_AXIS, CHANNEL_AXIS_WITHOUT_LIST)
@@ -204,7 +208,8 @@ error, or, with `swe_behaviour WARNING`, drives on.
 
 Example: `np_grp[1].achse[0].versch 20000000` (2000 mm) with `swe_pos 15000000` (1500 mm)
 Fix: correct the offset (often a sign or a factor of 10), or the soft limits.
-""")
+""", reads=("P-ZERO-00003", "P-ZERO-00004", "P-ZERO-00001", "P-CHAN-00035", "P-AXIS-00016", "P-AXIS-00177",
+           "P-AXIS-00178"))
 PCS_LIMIT_OVERFLOW = FAMILY.rule(
     "X002", "pcs-limit-overflow", W, "A work offset moves a soft limit beyond SGN32",
     """
@@ -214,7 +219,8 @@ Why it matters on the machine: the soft limit in the programming coordinate syst
 represented; the displayed limits (`display_pcs_limits`) and any check on them are wrong.
 
 Fix: correct the offset; offsets of this size are always a data error.
-""")
+""", reads=("P-ZERO-00003", "P-ZERO-00004", "P-ZERO-00001", "P-CHAN-00035", "P-AXIS-00016", "P-AXIS-00177",
+           "P-AXIS-00178"))
 OFFSET_FOR_MISSING_AXIS = FAMILY.rule(
     "X003", "offset-for-missing-axis", W, "An offset for an axis the channel does not have",
     """
@@ -224,7 +230,7 @@ Why it matters on the machine: the offset is never applied; it usually belongs t
 index (the list was copied from another machine, or the axis order changed).
 
 Fix: move the offset to the right axis index, or remove it.
-""")
+""", reads=("P-ZERO-00003", "P-CHAN-00035"))
 ROTARY_OFFSET_IN_MM = FAMILY.rule(
     "X006", "rotary-offset-in-mm", W, "A rotary axis with an offset that only makes sense in mm",
     """
@@ -235,7 +241,7 @@ Why it matters on the machine: the value was almost certainly written for a line
 0.1 µm; on the rotary axis it turns the work zero by many revolutions.
 
 Fix: check the axis index and the unit; a rotary offset is given in 0.0001°.
-""")
+""", reads=("P-ZERO-00003", "P-ZERO-00004", "P-ZERO-00001", "P-CHAN-00035", "P-AXIS-00016", "P-AXIS-00018"))
 
 
 def _limit_entries(ax: Axis) -> tuple[Related, ...]:
@@ -325,7 +331,7 @@ Why it matters on the machine: the offset values of the list belong to no axis; 
 were measured for runs uncompensated.
 
 Fix: set `achs_kw_log_ax_nr[i]` to the logical axis number of the axis the list was measured on.
-""")
+""", reads=("P-STUP-00036", "P-STUP-00017", "P-STUP-00016", "P-AXIS-00016"))
 
 
 @FAMILY.check(COMPENSATION_AXIS_UNKNOWN)
@@ -362,7 +368,8 @@ Not claimed while a compensation list the start-up list names is not read (X005,
 
 Fix: add the compensation list to the start-up list (`zahl_kw`, `achs_kw[i]`,
 `achs_kw_log_ax_nr[i]`) with its table, or switch the compensation off.
-""")
+""", reads=("P-AXIS-00175", "P-AXIS-00047", "P-AXIS-00174", "P-COMP-00023", "P-COMP-00024", "P-COMP-00025",
+           "P-COMP-00006", "P-COMP-00007", "P-COMP-00016", "P-STUP-00036", "P-COMP-00001", "P-AXIS-00016"))
 COMPENSATION_AXIS_MISMATCH = FAMILY.rule(
     "X014", "compensation-list-axis-mismatch", W,
     "A compensation list whose header names another axis than the start-up list assigns it to",
@@ -375,7 +382,7 @@ says it was measured on another; one of them is wrong, and the documentation doe
 which of the two the controller follows.
 
 Fix: make the two numbers agree (the axis the values were measured on).
-""")
+""", reads=("P-COMP-00001", "P-STUP-00036"))
 
 
 def _compensation_lists(ctx: MachineContext) -> dict[int, list[ListFile]] | None:
@@ -441,7 +448,7 @@ Why it matters on the machine: one drive would be commanded by two channel axes 
 and a spindle); the channel configuration is contradictory.
 
 Fix: give each channel axis and spindle its own logical axis number.
-""")
+""", reads=("P-CHAN-00035", "P-CHAN-00036"))
 SPINDLE_WITHOUT_LIST = FAMILY.rule(
     "X011", "spindle-without-list", W, "A spindle whose axis list is missing",
     """
@@ -451,7 +458,7 @@ What it checks: every `spindel[s].log_achs_nr` (P-CHAN-00036) of a channel list 
 Why it matters on the machine: the channel names a spindle the controller has no axis data for.
 
 Fix: add the spindle's axis list to the start-up list (`achs_mds[i]`), or correct `log_achs_nr`.
-""")
+""", reads=("P-CHAN-00036", "P-AXIS-00016"))
 
 
 @FAMILY.check(CHANNEL_AXIS_TWICE, SPINDLE_WITHOUT_LIST)
@@ -508,7 +515,8 @@ a list" is claimed while an axis list is not followed.
 
 Fix: name the file where it lies in the repository with `[tool.zero.machine]`
 (`"achs_mds[0]" = "listen/achse_x.lis"`), or write the path relative to the working directory.
-""")
+""", reads=("P-STUP-00034", "P-STUP-00009", "P-STUP-00010", "P-STUP-00011", "P-STUP-00012", "P-STUP-00146",
+           "P-STUP-00013", "P-STUP-00135", "P-STUP-00136", "P-STUP-00035", "P-STUP-00015", "P-STUP-00017"))
 
 
 @FAMILY.check(LIST_NOT_CHECKED)
@@ -536,7 +544,7 @@ pre-output time to the cycle time and continues the start-up. Source:
 https://infosys.beckhoff.com/content/1033/tf5200_diagnosis/253779083.html
 
 Fix: give the function a pre-output time of at least one NC cycle.
-""")
+""", reads=("P-CHAN-00041", "P-CHAN-00027", "P-CHAN-00070", "P-CHAN-00107", "P-RTCF-00002"))
 
 _MET_SVS = 0x2000000
 _PRE_OUTPUT = (("P-CHAN-00041", "P-CHAN-00070", "M"), ("P-CHAN-00027", "P-CHAN-00107", "H"))
@@ -587,7 +595,7 @@ but no axes are available in the channel where the spindle is configured. Source
 https://infosys.beckhoff.com/content/1033/tf5200_diagnosis/262857355.html
 
 Fix: give the axis list the spindle axis type, or name the spindle's own logical axis number.
-""")
+""", reads=("P-CHAN-00036", "P-CHAN-00082", "P-AXIS-00018", "P-AXIS-00016"))
 GANTRY_MODULO_DIFFERS = FAMILY.rule(
     "X017", "gantry-modulo-differs", E, "P-ERR-70202: gantry master and slave with different modulo limits",
     """
@@ -602,7 +610,7 @@ https://infosys.beckhoff.com/content/1033/tf5200_diagnosis/260298379.html,
 https://infosys.beckhoff.com/content/1033/tf5200_gantry_operation/285690635.html
 
 Fix: give both axes the same modulo limits.
-""")
+""", reads=("P-AXIS-00070", "P-AXIS-00126", "P-AXIS-00127", "P-AXIS-00016"))
 GANTRY_MASTER_NOT_MASTER = FAMILY.rule(
     "X018", "gantry-master-not-master", W, "P-ERR-70124: a gantry slave's master axis is not marked gantry master",
     """
@@ -614,7 +622,7 @@ Why it matters on the machine: the kernel warns with P-ERR-70124 (class 1, warni
 no other reaction. Source: https://infosys.beckhoff.com/content/1033/tf5200_diagnosis/260115595.html
 
 Fix: set the gantry master bit in the master axis's `kenngr.achs_mode`, or name the right master.
-""")
+""", reads=("P-AXIS-00070", "P-AXIS-00015", "P-AXIS-00016"))
 _SPINDLE_NR, _AXIS_TYPE, _GANTRY_MASTER_NR, _AXIS_MODE = "P-CHAN-00036", "P-AXIS-00018", "P-AXIS-00070", "P-AXIS-00015"
 _MODULO = ("P-AXIS-00126", "P-AXIS-00127")
 
@@ -691,7 +699,7 @@ its configured ID finds another one. Source:
 https://infosys.beckhoff.com/content/1033/tf5200_diagnosis/1000916363.html
 
 Fix: give each channel its own `channel_id`.
-""")
+""", reads=("P-CHAN-00400",))
 _CHANNEL_ID = "P-CHAN-00400"
 
 
@@ -731,7 +739,7 @@ Source: https://infosys.beckhoff.com/content/1033/tf5200_diagnosis/253892235.htm
 
 Fix: take the axis out of the channel's path axes, or switch its SAI property off (a spindle
 belongs in `spindel[i]`).
-""")
+""", reads=("P-CHAN-00035", "P-AXIS-00016", "P-AXIS-00250", "P-AXIS-00018"))
 ALIAS_NAME_COLLISION = FAMILY.rule(
     "X021", "alias-name-collision", E,
     "P-ERR-22016: with alias names active, a channel axis named like its axis list's alias",
@@ -746,7 +754,7 @@ P-CHAN-00253 to 0 (the alias names are not used) and continues.
 Source: https://infosys.beckhoff.com/content/1033/tf5200_diagnosis/482411787.html
 
 Fix: rename the channel axis, or leave P-CHAN-00253 at 0.
-""")
+""", reads=("P-CHAN-00253", "P-CHAN-00006", "P-AXIS-00297", "P-CHAN-00035", "P-AXIS-00016"))
 PATH_AXIS_GANTRY_SLAVE = FAMILY.rule(
     "X022", "path-axis-gantry-slave", E, "P-ERR-21020: a path axis of the channel is a gantry slave axis",
     """
@@ -759,7 +767,7 @@ Why it matters on the machine: the kernel reports P-ERR-21020 (class 3, abort cu
 Source: https://infosys.beckhoff.com/content/1033/tf5200_diagnosis/253230731.html
 
 Fix: remove the slave axis from the channel's path axes (program its master).
-""")
+""", reads=("P-CHAN-00035", "P-AXIS-00016", "P-AXIS-00070"))
 _SAI, _USE_ALIAS, _ALIAS, _CHANNEL_AXIS_NAME = "P-AXIS-00250", "P-CHAN-00253", "P-AXIS-00297", "P-CHAN-00006"
 
 

@@ -56,7 +56,7 @@ warning that says so.
 
 Example: `kenngr.swe_neg 5000000` with `kenngr.swe_pos -5000000`
 Fix: swap or correct the values.
-""")
+""", reads=("P-AXIS-00177", "P-AXIS-00178"))
 SOFT_LIMIT_CHECK_OFF = FAMILY.rule(
     "M005", "soft-limit-check-off", W, "Soft-limit monitoring switched off (`swe_check 0`)",
     """
@@ -66,7 +66,7 @@ Why it matters on the machine: 0 switches soft-limit monitoring off whatever the
 type and mode; the axis can travel into its hardware limits or into the machine.
 
 Fix: use -1 (monitoring by axis type, the default) or 1.
-""")
+""", reads=("P-AXIS-00705",))
 SOFT_LIMIT_WARNING_ONLY = FAMILY.rule(
     "M006", "soft-limit-warning-only", W, "Overrunning a soft limit only warns (`swe_behaviour WARNING`)",
     """
@@ -76,7 +76,7 @@ Why it matters on the machine: path planning and the position controller then on
 when a soft limit is overrun; the movement is not stopped by the monitoring.
 
 Fix: use ERROR (default) or ERROR_LR.
-""")
+""", reads=("P-AXIS-00554",))
 MANUAL_OFFSET_CHECK_OFF = FAMILY.rule(
     "M007", "manual-offset-check-off", W, "Both manual-mode offset limits 0: monitoring off",
     """
@@ -87,7 +87,7 @@ Why it matters on the machine: with both at 0 the manual-mode offset monitoring 
 for an axis that is not homed these limits are the only range limit in manual mode.
 
 Fix: set real limits (defaults ±100 mm).
-""")
+""", reads=("P-AXIS-00137", "P-AXIS-00138"))
 SOFT_LIMIT_TOLERANCE_OVERFLOW = FAMILY.rule(
     "M008", "soft-limit-tolerance-overflow", W, "Soft limit plus tolerance leaves the SGN32 range",
     """
@@ -99,7 +99,7 @@ by the tolerance; a sum that does not fit the position type makes that monitorin
 meaningless or wraps around.
 
 Fix: reduce the tolerance or move the limit inward.
-""")
+""", reads=("P-AXIS-00177", "P-AXIS-00178", "P-AXIS-00179"))
 
 
 @FAMILY.check(SOFT_LIMITS_INVERTED, SOFT_LIMIT_CHECK_OFF, SOFT_LIMIT_WARNING_ONLY, MANUAL_OFFSET_CHECK_OFF,
@@ -172,7 +172,7 @@ offset; the values of group 0 are never applied. Someone expecting G53 to shift 
 will cut in the wrong place.
 
 Fix: set `g53_verfuegbar 1` if group 0 is meant as a full offset set, or clear the values.
-""")
+""", reads=("P-ZERO-00003", "P-ZERO-00001"))
 MASKED_OFFSET = FAMILY.rule(
     "M003", "masked-offset", INFO, "A non-zero offset masked by `inaktiv 1`",
     """
@@ -183,7 +183,7 @@ That can be intended (the ZERO manual's own example masks offsets), so this is
 information: make sure it is.
 
 Fix: set `inaktiv 0` to apply the offset, or set the offset to 0.
-""")
+""", reads=("P-ZERO-00003", "P-ZERO-00004"))
 DEFAULT_INDEX_EMPTY = FAMILY.rule(
     "M004", "default-index-empty", W, "`default_index` selects a group the list does not fill",
     """
@@ -194,7 +194,7 @@ G53); with no data in the list it holds whatever the controller has, usually zer
 probably not the offsets the engineer meant to activate.
 
 Fix: point `default_index` at the intended group, or add its offsets.
-""")
+""", reads=("P-ZERO-00002", "P-ZERO-00003", "P-ZERO-00004"))
 
 
 @FAMILY.check(G53_OFFSET_NO_EFFECT, MASKED_OFFSET, DEFAULT_INDEX_EMPTY)
@@ -260,7 +260,7 @@ for either. Information: check which of the two the machine's kernel uses.
 Example: `getriebe[0].wegaufz 4` with `antr.feed_const_num 100000`
 Fix: nothing where wegaufz/wegaufn are the gear ratio the kernel's documentation puts into the
 feed-constant formula; on a kernel that uses P-AXIS-00511/00512 there, write the gear ratio there.
-""")
+""", reads=("P-AXIS-00234", "P-AXIS-00233", "P-AXIS-00362", "P-AXIS-00363"))
 
 
 @FAMILY.check(TWO_RESOLUTIONS)

@@ -134,7 +134,7 @@ Why it matters on the machine: the controller warns (P-ERR-21648 / P-ERR-21650) 
 configured limit: the program does not run in the range its author expected.
 
 Fix: stay inside the configured limits, or allow widening (P-CHAN-00498 0) deliberately.
-""")
+""", reads=("P-CHAN-00498", "P-AXIS-00177", "P-AXIS-00178", "P-CHAN-00006", "P-CHAN-00035", "P-AXIS-00016"))
 PROGRAMMED_LIMITS_CROSSED = FAMILY.rule(
     "N004", "programmed-limits-crossed", E, "G98/G99 put the negative limit at or above the positive",
     """
@@ -145,7 +145,7 @@ Why it matters on the machine: error P-ERR-21649 / P-ERR-21878: the value is not
 the controller resets, stopping the program.
 
 Fix: check sign and unit of the programmed value (G98 sets the negative, G99 the positive limit).
-""")
+""", reads=("P-AXIS-00177", "P-AXIS-00178", "P-CHAN-00006", "P-CHAN-00035", "P-AXIS-00016"))
 
 
 @FAMILY.check(PROGRAMMED_LIMIT_WIDENS, PROGRAMMED_LIMITS_CROSSED)
@@ -218,7 +218,9 @@ zero checks the programmed point: tool length and radius offsets are not added.
 
 Example: `N30 G54 G1 X1600` with `kenngr.swe_pos 15000000` (1500 mm) on X.
 Fix: correct the program or the work offset; the limits are the machine's.
-""")
+""", reads=("P-AXIS-00177", "P-AXIS-00178", "P-AXIS-00554", "P-AXIS-00705", "P-ZERO-00003", "P-ZERO-00004",
+           "P-ZERO-00001", "P-ZERO-00002", "P-CHAN-00006", "P-CHAN-00035", "P-AXIS-00016", "P-CHAN-00063",
+           "P-CHAN-00498", "P-AXIS-00018"))
 SOFT_LIMIT_UNMONITORED = FAMILY.rule(
     "N006", "soft-limit-unmonitored", W, "A move beyond a soft limit nobody monitors",
     """
@@ -232,7 +234,9 @@ Why it matters on the machine: the axis moves past its soft limit unchecked (or 
 only): towards the hardware limit switch or into the machine's structure.
 
 Fix: correct the program or the work offset; switch monitoring on where the axis has limits.
-""")
+""", reads=("P-AXIS-00705", "P-AXIS-00554", "P-CHAN-00147", "P-AXIS-00121", "P-AXIS-00018", "P-AXIS-00177",
+           "P-AXIS-00178", "P-ZERO-00003", "P-ZERO-00004", "P-ZERO-00001", "P-ZERO-00002", "P-CHAN-00006",
+           "P-CHAN-00035", "P-AXIS-00016"))
 UNKNOWN_WORD = FAMILY.rule(
     "N007", "unknown-word", W, "A word the ISG NC language does not have",
     """
@@ -273,7 +277,7 @@ zero can only say that it did not find it in the folders it searched (the contro
 program paths may hold it).
 
 Fix: correct the name, or keep the subprogram beside the program.
-""")
+""", reads=("P-STUP-00018",))
 MOVES_NOT_EVALUATED = FAMILY.rule(
     "N010", "moves-not-evaluated", INFO, "Moves zero did not check against the soft limits",
     """

@@ -128,7 +128,9 @@ def _declare() -> list[StartupError]:
         when = str(row.get("when", ""))
         severity = W if row.get("correction") == "none" else E  # a documented warning without a reaction
         FAMILY.rule(str(row["code"]), f"kernel-{row['number']}", severity, f"P-ERR-{row['number']}: {row['title']}",
-                    _explanation(row, condition, when))
+                    _explanation(row, condition, when),  # reads: the reported parameters and the condition's
+                    reads=tuple(dict.fromkeys([*(str(p) for p in row.get("params", ()) or ()),
+                                               *re.findall(r"P-[A-Z]{4}-\d{5}", f"{condition} {when}")])))
         out.append(StartupError(str(row["code"]), int(str(row["number"])), str(row["list"]),
                                 tuple(str(p) for p in row.get("params", ()) or ()), condition, when,
                                 str(row.get("correction", "")), str(row["title"]), str(row["source"]),

@@ -42,7 +42,7 @@ needed"). Without it the update cannot be matched to its axis.
 
 Example: an `<AX_MDS>` update holding only `<P-AXIS-00297 Value="X2" />`
 Fix: add `<P-AXIS-00016 Value="N" />` with the axis's logical number.
-""")
+""", reads=("P-AXIS-00016",))
 
 
 UNKNOWN_AXIS = FAMILY.rule(
@@ -60,7 +60,7 @@ machine.
 
 Example: `<P-AXIS-00016 Value="7" />` on a machine of three axes
 Fix: correct the axis number, or apply the update on the machine it was written for.
-""")
+""", reads=("P-AXIS-00016",))
 
 
 @FAMILY.check(RESTART, AXIS_CHECK)
