@@ -59,10 +59,21 @@ def _commands() -> tuple[Any, Any, dict[str, Any]]:
     return group, ctx, shown
 
 
+def _help() -> Any:
+    """The module that renders a command's help: ``zero.cli.help`` (``zero.cli.app`` before it moved)."""
+    try:
+        from zero.cli import help as module
+    except ImportError:
+        from zero.cli import app as module
+    return module
+
+
 def _help_page(name: str) -> str:
     """A command's page: what it does, its usage, arguments and options, and ``--help`` as printed."""
-    from zero.cli.app import _record, _short_help, help_text, usage_line
     from zero.output.docs import md_code, md_text
+
+    h = _help()
+    _record, _short_help, help_text, usage_line = h._record, h._short_help, h.help_text, h.usage_line
 
     _, root_ctx, commands = _commands()
     command = commands[name]
@@ -89,8 +100,9 @@ def _help_page(name: str) -> str:
 
 
 def _commands_index() -> str:
-    from zero.cli.app import _short_help, help_text
     from zero.output.docs import md_text
+
+    _short_help, help_text = _help()._short_help, _help().help_text
 
     group, ctx, commands = _commands()
     with _columns(80):

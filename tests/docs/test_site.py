@@ -300,6 +300,71 @@ def test_rule_and_parameter_pages_link_both_ways() -> None:
     assert "[S009]" not in swe_pos  # an example that merely shows the key is no check of it
 
 
+# The rules that read no particular parameter (docs.GENERIC_RULES says why for each): listed here one by
+# one, so that a new rule that declares nothing fails below until it declares what it reads or is added.
+READS_NO_PARTICULAR_PARAMETER = {
+    "S001", "S002", "S003", "S004", "S005", "S006", "S007", "S008", "S009", "S010", "S011", "S012", "S013",
+    "S014", "S015", "S016", "S017",
+    "R001", "R002", "R003", "R004", "R005", "R006", "R007", "R008", "R009", "R010", "R011", "R012", "R013",
+    "U001", "Z001", "Z002", "F001", "N001", "N002", "N007", "N008", "N010",
+}
+
+
+def test_every_rule_declares_the_parameters_it_reads(registry: Registry) -> None:
+    """Every M, X, N, U and K rule declares what its check reads (``Rule.reads``), each an ID or key the
+    catalogue knows; only the rules listed above declare nothing, and each of those says why on its page."""
+    undeclared = {code for code, r in RULES.items() if not r.reads}
+    assert undeclared == READS_NO_PARTICULAR_PARAMETER
+    assert set(docs.GENERIC_RULES) == READS_NO_PARTICULAR_PARAMETER
+    assert docs.unknown_reads(registry) == []
+    for code in RULES:
+        if code[0] in "MXNUK" and code not in READS_NO_PARTICULAR_PARAMETER:
+            assert docs.named_params(code, registry), code
+    assert "| Parameters | none in particular: it reads the list's text" in generated()["rules/S001.md"]()
+
+
+def test_a_declared_parameter_the_catalogue_does_not_know_is_found(registry: Registry,
+                                                                     monkeypatch: pytest.MonkeyPatch) -> None:
+    from zero.records import replace
+
+    monkeypatch.setitem(RULES, "M005", replace(RULES["M005"], reads=("P-AXIS-99999", "kenngr.no_such_key")))
+    assert docs.unknown_reads(registry) == [("M005", "P-AXIS-99999"), ("M005", "kenngr.no_such_key")]
+    monkeypatch.setitem(RULES, "M005", replace(RULES["M005"], reads=("kenngr.swe_check",)))
+    assert docs.unknown_reads(registry) == [] and docs.named_params("M005", registry) == ["P-AXIS-00705"]
+
+
+def test_each_finding_is_on_a_parameter_its_rule_declares(registry: Registry) -> None:
+    """The findings of the fixture machines, programs and rule fixtures, each reported on a parameter
+    (``param_id``), are on one the rule declares it reads: the declaration is what the check does."""
+    from zero.engine.lint import LintOptions, lint_data, lint_program
+
+    failing, _ = docs._machine_results(ROOT, registry)
+    found = [d for r in failing for d in r.diagnostics]
+    for folder in sorted((ROOT / "fixtures" / "rules").iterdir()):
+        for path in sorted(p for p in folder.iterdir() if p.is_file()):
+            found += lint_data(path.read_bytes(), path.name, registry,
+                               LintOptions(extend_select=(folder.name,))).diagnostics
+    machine = docs._machine(ROOT / "fixtures" / "machine" / "listen" / "hochlauf.lis", registry)
+    for program in ("bad.nc", "good.nc"):
+        path = ROOT / "fixtures" / "programs" / program
+        found += lint_program(path.read_bytes(), registry, program, machine=machine).diagnostics
+    checked = [d for d in found if d.param_id and d.code not in READS_NO_PARTICULAR_PARAMETER]
+    assert {d.code[0] for d in checked} >= set("MXNUK")
+    wrong = {(d.code, d.param_id) for d in checked if d.param_id not in docs.named_params(d.code, registry)}
+    assert not wrong
+
+
+def test_declared_parameters_link_rule_and_parameter_pages() -> None:
+    """M002 names no parameter ID in its text (it was linked to none); X001's parameter page lists it."""
+    m002 = generated()["rules/M002.md"]()
+    assert "[P-ZERO-00001](../parameters/P-ZERO-00001.md) `g53_verfuegbar`" in m002
+    assert "[M002](../rules/M002.md)" in generated()["parameters/P-ZERO-00001.md"]()
+    swe_check = generated()["parameters/P-AXIS-00705.md"]()
+    assert "[M005](../rules/M005.md)" in swe_check and "[N006](../rules/N006.md)" in swe_check
+    assert "[N009](../rules/N009.md)" in generated()["parameters/P-STUP-00018.md"]()
+    assert "[X015](../rules/X015.md)" in generated()["parameters/P-RTCF-00002.md"]()
+
+
 def test_the_rule_index_shows_code_not_backticks() -> None:
     index = generated()["rules/index.md"]()
     assert "\\`" not in index  # the literal backticks of `#`, `Ende`, `swe_check 0`

@@ -407,13 +407,14 @@ def rule_page(code: str, root: Path, registry: Registry) -> str:
         rows.append(("Kernel error", f"`{kernel.kernel_error}` (list: {md_text(kernel.kind)})"))
         params = list(dict.fromkeys([*kernel.params, *compiled(kernel).read]))
         why = kernel_consequence(kernel, registry)
-    if code[0] in NAMING_FAMILIES:
-        params = list(dict.fromkeys([*params, *named_params(code, registry)]))
+    params = list(dict.fromkeys([*params, *named_params(code, registry)]))
     if params:
         links = [f"[{p}](../{param_page_path(p)})" + (f" {md_code(registry.specs[p].key or '')}"
                                                         if registry.specs[p].key else "")
                  if p in registry.specs else f"`{p}`" for p in params]
         rows.append(("Parameters", ", ".join(links)))
+    elif code in GENERIC_RULES:
+        rows.append(("Parameters", f"none in particular: it reads {md_text(GENERIC_RULES[code])}"))
     out = [f"# {code} {r.name}", "", md_inline(r.summary), ""]
     out += [f"| {k} | {v} |" for k, v in rows[:1]] + ["| --- | --- |"] + [f"| {k} | {v} |" for k, v in rows[1:]]
     out += ["", _linked_outside_code(explanation_markdown(r.explanation, why), registry)]
@@ -466,30 +467,51 @@ def kernel_consequence(err: StartupError, registry: Registry) -> str:
             "what the machine runs with is not known from the list.")
 
 
-NAMING_FAMILIES = "MXNU"  # rules about particular parameters, which their text names (R, S, F: examples only)
+# The rules that read no particular parameter, each with why: they check the list's text, every parameter
+# against its own catalogue entry (each parameter's page lists them from the catalogue's facts), zero's own
+# comments, or the program alone. Every other rule declares what it reads (``Rule.reads``), and
+# tests/docs fails on one that does not.
+_GENERIC: tuple[tuple[str, str], ...] = (
+    ("S001 S002 S003 S004 S005 S006 S007 S008 S009 S010 S011 S012 S013",
+     "the list's text (its lines, bytes and comments), whatever parameter a line sets"),
+    ("S014 S015 S016 S017", "the XML list's elements, whatever parameter each one names"),
+    ("R001 R002 R003 R004 R005 R006 R007 R008 R009 R010 R011 R012 R013",
+     "every parameter the list sets, against that parameter's own catalogue entry: each parameter's page "
+     "says which of these rules check it and how"),
+    ("U001", "every parameter an update changes, against its restart flag: each parameter that has the flag "
+     "lists this rule on its page"),
+    ("Z001 Z002", "zero's own suppression comments"),
+    ("F001", "the file itself, before any of its lines"),
+    ("N001", "whatever axis parameter a #MACHINE DATA block writes, checked as an entry of an axis list by the "
+     "S and R rules"),
+    ("N002 N007 N008 N010", "the NC program alone, no parameter of the machine's lists"),
+)
+GENERIC_RULES: dict[str, str] = {code: why for codes, why in _GENERIC for code in codes.split()}
+
+
+def _declared_id(name: str, registry: Registry) -> str | None:
+    """A declared parameter's ID: an ID the catalogue has, or the ID of a key it knows."""
+    from zero.lists.model import parse_key  # start-up: only the documentation site
+
+    if name in registry.specs:
+        return name
+    if name.startswith("P-"):
+        return None
+    key = parse_key(name)
+    spec = registry.by_pattern(key.pattern, None) if key is not None else None
+    return spec.id if spec is not None else None
+
+
+def unknown_reads(registry: Registry) -> list[tuple[str, str]]:
+    """(rule, name) for each parameter a rule declares that the catalogue does not know."""
+    return [(code, name) for code, r in RULES.items() for name in r.reads if _declared_id(name, registry) is None]
 
 
 def named_params(code: str, registry: Registry) -> list[str]:
-    """The parameters a rule reads: those it declares (a ``reads`` tuple of IDs on the rule, where the
-    rule modules give one), else those its summary and explanation name: by ID (``P-AXIS-00705``) or
-    by a key in backticks that the catalogue knows (``kenngr.swe_check``)."""
-    from zero.lists.model import parse_key  # start-up: only the documentation site
-
-    r = RULES[code]
-    declared = getattr(r, "reads", None)  # a rule that declares what it reads is taken at its word
-    if declared:
-        return [pid for pid in declared if pid in registry.specs]
-    text = f"{r.summary}\n{r.explanation}"
-    found = [m.group() for m in _ID.finditer(text) if m.group() in registry.specs]
-    for span in re.findall(r"`([^`\n]+)`", text):
-        word = span.split()[0] if span.split() else ""
-        if "." not in word and "[" not in word:
-            continue  # a bare word (`0`, `ERROR`) names no parameter
-        key = parse_key(word)
-        spec = registry.by_pattern(key.pattern, None) if key is not None else None
-        if spec is not None:
-            found.append(spec.id)
-    return list(dict.fromkeys(found))
+    """The parameters a rule reads, by ID: those it declares (``Rule.reads``; a key the catalogue knows
+    taken as its ID). A rule of :data:`GENERIC_RULES` reads no particular parameter and names none."""
+    found = [_declared_id(name, registry) for name in RULES[code].reads]
+    return list(dict.fromkeys(pid for pid in found if pid is not None))
 
 
 def evidence_markdown(code: str) -> str:
@@ -597,9 +619,7 @@ def param_checks(registry: Registry) -> dict[str, list[Checked]]:
     for err in CHECKS:
         for pid in dict.fromkeys([*err.params, *compiled(err).read]):
             add(pid, err.code, f"the kernel's start-up check {err.kernel_error}: {err.title}")
-    for code in RULES:  # the M, X, N and U rules: the parameters their text names
-        if code[0] not in NAMING_FAMILIES:
-            continue  # R and K: said above, from the tables; S, F, …: their examples name keys they do not read
+    for code in RULES:  # every rule's declared parameters (a K rule's are said above, with its number)
         for pid in named_params(code, registry):
             if not any(c.code == code for c in out.get(pid, [])):
                 add(pid, code, md_inline(RULES[code].summary))
