@@ -118,3 +118,14 @@ def test_isname_accepts_letters_digits_and_the_underscore_only() -> None:
     assert run("isname(P-EXTV-00003)", {}) is None
     with pytest.raises(ValueError):
         parse("isname(P-EXTV-00003, 2)")
+
+
+def test_the_remainder_says_whether_one_time_is_a_whole_multiple_of_another() -> None:
+    """Issue 38 (1000153): the real-time configuration's cycle time must be a whole multiple of its
+    time slice; `%` binds like `*` and `/`, and a remainder by 0 is unknown, never an exception."""
+    assert run("P-RTCF-00002 % P-RTCF-00003 == 0", {"P-RTCF-00002": 2000, "P-RTCF-00003": 500}) is True
+    assert run("P-RTCF-00002 % P-RTCF-00003 == 0", {"P-RTCF-00002": 2000, "P-RTCF-00003": 300}) is False
+    assert run("P-RTCF-00002 % P-RTCF-00003 == 0", {"P-RTCF-00002": 2000, "P-RTCF-00003": 0}) is None
+    assert run("P-RTCF-00002 % P-RTCF-00003 == 0", {"P-RTCF-00002": 2000}) is None
+    assert run("1 + 7 % 4 * 2 == 7", {}) is True  # 1 + ((7 % 4) * 2)
+    assert refs(parse("P-RTCF-00002 % P-RTCF-00003 == 0")) == ["P-RTCF-00002", "P-RTCF-00003"]

@@ -4,6 +4,7 @@ on a list's values.
 The language is small and closed (no names but parameter IDs, no calls but the few below), so a table
 row can never run code: numbers (``12``, ``0x40``, ``1.5``, ``1e199``), parameter IDs (``P-AXIS-00219``; with an
 element ``P-AXIS-00212.0``, without one the element of the parameter being checked), ``+ - * /``,
+``%`` (the remainder: ``P-RTCF-00002 % P-RTCF-00003 == 0``, a whole multiple),
 parentheses, comparisons ``< <= > >= == !=``, ``and``, ``or``, ``not``, ``abs(x)`` and ``&`` for bit
 tests (``(P-AXIS-00015 & 0x40) != 0``), and one fact about the list itself: ``DEFAULT_LIST`` (1 in
 a default list, the template the controller reads under the lists of its kind, else 0).
@@ -38,7 +39,7 @@ DEFAULT_LIST = "DEFAULT_LIST"  # a fact of the list, not a parameter: read by th
 _TOKEN = re.compile(r"\s*(?:(P-[A-Z]{4}-[0-9]{5}(?:\.[0-9]+)?|DEFAULT_LIST\b)"
                     r"|(0x[0-9A-Fa-f]+|[0-9]+(?:\.[0-9]+)?(?:e[+-]?[0-9]+)?)"
                     r"|(\"[^\"\\\n]*\"|'[^'\\\n]*')"
-                    r"|(<=|>=|==|!=|<|>|\+|-|\*|/|&|\(|\)|,)|(and|or|not|in|abs|len|startswith|isname|supports|unique|elsewhere)\b)")
+                    r"|(<=|>=|==|!=|<|>|\+|-|\*|/|%|&|\(|\)|,)|(and|or|not|in|abs|len|startswith|isname|supports|unique|elsewhere)\b)")
 # arguments of each function; 0: one or more IDs
 _FUNCTIONS = {"abs": 1, "len": 1, "startswith": 2, "isname": 1, "supports": 1, "unique": 0, "elsewhere": 2}
 _NAME = re.compile(r"[A-Za-z0-9_]+")  # what isname() accepts
@@ -204,7 +205,7 @@ class _Parser:
 
     def product(self) -> Node:
         node = self.unary()
-        while self.peek() in ("*", "/"):
+        while self.peek() in ("*", "/", "%"):
             op = self.take()
             node = Binary(op, node, self.unary())
         return node
@@ -309,7 +310,8 @@ def supported_drive_types(pid: str) -> frozenset[int] | None:
 Compiled = Callable[[Lookup], "_Value"]
 _OPS: dict[str, Callable[[Number, Number], _Value]] = {
     "+": lambda a, b: a + b, "-": lambda a, b: a - b, "*": lambda a, b: a * b,
-    "/": lambda a, b: None if b == 0 else a / b, "&": lambda a, b: int(a) & int(b),
+    "/": lambda a, b: None if b == 0 else a / b, "%": lambda a, b: None if b == 0 else a % b,
+    "&": lambda a, b: int(a) & int(b),
     "<": lambda a, b: a < b, "<=": lambda a, b: a <= b, ">": lambda a, b: a > b, ">=": lambda a, b: a >= b,
     "==": lambda a, b: a == b, "!=": lambda a, b: a != b,
 }
