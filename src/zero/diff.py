@@ -16,7 +16,7 @@ from typing import Any
 
 from zero.catalog.ids import AXIS_TYPE, axis_unit, fixed, g_code_with_index, in_units
 from zero.catalog.registry import INTEGER_TYPES, NO_DEFAULT, ParamSpec, Registry
-from zero.catalog.values import canonical_key, default_number, parse_int, read_value
+from zero.catalog.values import bind, canonical_key, default_number, parse_int, read_value
 from zero.errors import ZeroError
 from zero.lists.model import Comment, Entry, Key, ValueKind, parse_key
 from zero.lists.tokenizer import tokenize_text
@@ -110,10 +110,13 @@ def read_side(data: bytes, fmt: str, path: str, registry: Registry, kind: str | 
 
 
 def spec_for(key: str, kind: str | None, registry: Registry, parsed: Key | None = None) -> ParamSpec | None:
+    """The parameter of a key (its entry's parsed key where given), bound as every reader of values
+    binds it (:func:`zero.catalog.values.bind`: the documented key, an alias, another release's spelling)."""
     k = parsed or parse_key(key)
     if k is None:
         return None
-    return registry.by_pattern(k.pattern, kind) or registry.alias(k.pattern, kind)
+    hit = bind(registry, k.pattern, kind)
+    return hit[0] if hit is not None else None
 
 
 def effective(entry: Entry, spec: ParamSpec | None) -> tuple[str, Any]:

@@ -18,11 +18,11 @@ from typing import TypeVar
 from zero.catalog.ids import AXIS_TYPE, is_rotary
 from zero.catalog.ranges import TYPE_LIMITS, Number
 from zero.catalog.registry import INTEGER_TYPES, NO_DEFAULT, ParamSpec, Registry
-from zero.lists.model import HUGE_INDEX, MAX_INDEX_DIGITS, Document, Entry, ValueKind, format_key
+from zero.lists.model import HUGE_INDEX, MAX_INDEX_DIGITS, Document, Entry, ValueKind, format_key, parse_key
 from zero.records import field, record
 
-__all__ = ["NO_DEFAULT", "ListValues", "Resolved", "Slot", "Value", "canonical_key", "default_number", "parse_int",
-           "read_value", "slot_of"]
+__all__ = ["NO_DEFAULT", "ListValues", "Resolved", "Slot", "Value", "bind", "canonical_key", "default_number",
+           "parse_int", "read_value", "slot_of", "spec_of"]
 
 # One element of a parameter: its ID and indices (``("P-AXIS-00178", ())``); an entry whose key the
 # catalogue does not know is its key pattern behind a `?` (``("?a.b[]", (1,))``). `[01]` and `[1]`
@@ -40,6 +40,27 @@ def _renamed(registry: Registry, pattern: str, kind: str | None) -> ParamSpec | 
     return registry.get(row.id) if row is not None else None
 
 
+def bind(registry: Registry, pattern: str, kind: str | None) -> tuple[ParamSpec, bool] | None:
+    """The one binding of a key pattern to its parameter, and whether by an alias: the documented
+    key, else an alias, else another kernel release's spelling (the release tables). Every reader of
+    values binds through it: the rules, the machine's effective values, diff, the fleet, the report."""
+    spec = registry.by_pattern(pattern, kind)
+    if spec is not None:
+        return spec, False
+    spec = registry.alias(pattern, kind)
+    if spec is not None:
+        return spec, True
+    spec = _renamed(registry, pattern, kind)  # its annotation still checked (R008)
+    return (spec, False) if spec is not None else None
+
+
+def spec_of(registry: Registry, key: str, kind: str | None) -> ParamSpec | None:
+    """The parameter a key as written names (any spelling :func:`bind` knows), ``None``: none."""
+    parsed = parse_key(key)
+    hit = bind(registry, parsed.pattern, kind) if parsed is not None else None
+    return hit[0] if hit is not None else None
+
+
 def rotary(values: ListValues) -> bool | None:
     """Whether the lengths of a list are degrees: ``None`` for a list that is not an axis list, else
     from its axis type (``kenngr.achs_typ``: the list's, the default list's under it, else the
@@ -54,11 +75,10 @@ def slot_of(registry: Registry, kind: str | None, entry: Entry) -> tuple[Slot, P
     key = entry.key
     if key is None:
         return ("?" + entry.key_text, ()), None
-    spec = registry.by_pattern(key.pattern, kind) or registry.alias(key.pattern, kind) or \
-        _renamed(registry, key.pattern, kind)
-    if spec is None:
+    hit = bind(registry, key.pattern, kind)
+    if hit is None:
         return ("?" + key.pattern, key.indices), None
-    return (spec.id, key.indices), spec
+    return (hit[0].id, key.indices), hit[0]
 
 
 def canonical_key(registry: Registry, kind: str | None, entry: Entry) -> str:
@@ -67,9 +87,8 @@ def canonical_key(registry: Registry, kind: str | None, entry: Entry) -> str:
     key = entry.key
     if key is None:
         return entry.key_text
-    spec = registry.by_pattern(key.pattern, kind) or registry.alias(key.pattern, kind) or \
-        _renamed(registry, key.pattern, kind)  # another release's spelling: today's key
-    pattern = spec.key if spec is not None and spec.key else key.pattern
+    hit = bind(registry, key.pattern, kind)  # another release's spelling: today's key
+    pattern = hit[0].key if hit is not None and hit[0].key else key.pattern
     if pattern == key.pattern and ("[0" not in key.text or _LEADING_ZERO.search(key.text) is None):
         return key.text  # written as documented (the usual case): as it is
     return format_key(pattern, key.indices)
@@ -265,13 +284,7 @@ class ListValues:
             try:
                 hit = bound[pattern]
             except KeyError:
-                spec = registry.by_pattern(pattern, kind)
-                via_alias = False
-                if spec is None:
-                    spec = registry.alias(pattern, kind)
-                    via_alias = spec is not None
-                    spec = spec or _renamed(registry, pattern, kind)  # its annotation still checked (R008)
-                hit = bound[pattern] = (spec, via_alias) if spec is not None else None
+                hit = bound[pattern] = bind(registry, pattern, kind)
             if hit is None:
                 continue
             spec = hit[0]

@@ -42,7 +42,6 @@ from collections.abc import Callable, Hashable, Sequence
 from pathlib import Path
 
 from zero.catalog.registry import ParamSpec, Registry
-from zero.catalog.values import ListValues, canonical_key
 from zero.diff import (
     ADDED,
     CHANGED,
@@ -61,7 +60,7 @@ from zero.engine.project import Project, Registries
 from zero.errors import ZeroError
 from zero.files import read_file, within
 from zero.lists.model import Entry
-from zero.machine.effective import entries_of
+from zero.machine.effective import entries_of, own_entries
 from zero.machine.model import Machine
 from zero.records import field, record
 
@@ -289,26 +288,11 @@ def _scopes(project: Project, startup: str, fleet: bool) -> tuple[dict[str, _Sco
         hit = _KEY_IN_NAME.search(name)
         key = hit.group(1) if hit else (lf.key if name != "start-up" else name)
         values = lf.values
-        own = _own(values)
-        entries = {**_layered(values.base, bases), **own} if values.base is not None else own
+        own = own_entries(values)  # the one value model (zero.machine.effective): bound once, layered once
+        entries = {**entries_of(values.base, bases), **own} if values.base is not None else own
         out[name] = _Scope(name, key, values.kind, Side(str(lf.path), values.kind, entries), own,
                            values.base is not None)
     return out, m
-
-
-def _own(values: ListValues) -> dict[str, Entry]:
-    """The entries of a list itself by documented key (the later one wins, as on the controller)."""
-    return {canonical_key(values.registry, values.kind, e): e for e in values.doc.entries}
-
-
-def _layered(values: ListValues, found: dict[int, dict[str, Entry]]) -> dict[str, Entry]:
-    """:func:`~zero.machine.effective.entries_of` (a list's entries over its default list's), each
-    default list's found once."""
-    hit = found.get(id(values))
-    if hit is None:
-        own = _own(values)
-        hit = found[id(values)] = {**_layered(values.base, found), **own} if values.base is not None else own
-    return hit
 
 
 def _golden(project: Project, golden: str, options: DiffOptions) -> _Golden:

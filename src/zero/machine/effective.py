@@ -14,7 +14,7 @@ import fnmatch
 from collections.abc import Sequence
 
 from zero.catalog.registry import NO_DEFAULT, ParamSpec
-from zero.catalog.values import ListValues, Slot, canonical_key, slot_of
+from zero.catalog.values import ListValues, Slot, bind, canonical_key, slot_of
 from zero.lists.model import Entry, format_key, parse_key
 from zero.machine.model import ListFile, Machine
 from zero.records import field, record, replace
@@ -109,12 +109,26 @@ def _catalogue(spec: ParamSpec | None) -> str | None:
     return spec.default_display
 
 
-def _matches(key: str, spec: ParamSpec | None, wanted: Sequence[str]) -> bool:
+def _bound(values: ListValues, w: str) -> tuple[str, tuple[int, ...] | None] | None:
+    """The parameter ID a key as asked names (any spelling the binding knows: an alias, another
+    release's), and its indices where it gives some."""
+    given = parse_key(w)
+    hit = bind(values.registry, given.pattern, values.kind) if given is not None else None
+    if hit is None or given is None:
+        return None
+    return hit[0].id, given.indices or None
+
+
+def _matches(key: str, spec: ParamSpec | None, wanted: Sequence[str], values: ListValues | None = None) -> bool:
     if not wanted:
         return True
     parsed = parse_key(key)
     pattern = parsed.pattern if parsed is not None else key
     for w in wanted:
+        bound = _bound(values, w) if values is not None and spec is not None else None
+        if bound is not None and spec is not None and bound[0] == spec.id and \
+                (bound[1] is None or (parsed is not None and bound[1] == parsed.indices)):
+            return True  # the key as any spelling binds it: `antr_simu.zeitkonstante_z` is P-AXIS-00239
         given = parse_key(w)
         # a key as written first: `[1]` is an index, not fnmatch's character class; `[01]` is `[1]`
         if w in (key, pattern) or (given is not None and parsed is not None and given.indices
@@ -148,7 +162,7 @@ def scope_values(name: str, lf: ListFile, keys: Sequence[str] = (), with_default
     values = lf.values
     seen: set[Slot] = set()
     for slot, s in sorted(settings(values).items(), key=lambda item: item[1].key):
-        if not _matches(s.key, s.spec, keys):
+        if not _matches(s.key, s.spec, keys, values):
             continue
         seen.add(slot)
         scope.values.append(Value(s.key, s.spec.id if s.spec else None, s.entry.value, s.origin,
@@ -159,11 +173,12 @@ def scope_values(name: str, lf: ListFile, keys: Sequence[str] = (), with_default
             if spec is None or spec.kind != values.kind or not spec.key:
                 continue
             key = spec.key
-            wanted = next((given for w in keys if (given := parse_key(w)) is not None and given.pattern == key), None)
-            indices = wanted.indices if wanted is not None else (0,) * key.count("[]")
+            wanted = next((given for w in keys if (given := parse_key(w)) is not None
+                           and (given.pattern == key or (_bound(values, w) or ("",))[0] == spec.id)), None)
+            indices = wanted.indices if wanted is not None and wanted.indices else (0,) * key.count("[]")
             shown = format_key(key, indices)
             slot = (spec.id, indices)
-            if slot in seen or (keys and not _matches(shown, spec, keys)) or (not keys and not with_defaults):
+            if slot in seen or (keys and not _matches(shown, spec, keys, values)) or (not keys and not with_defaults):
                 continue
             if not keys and spec.dims:
                 continue  # arrays: only the elements a list sets are shown
@@ -198,6 +213,21 @@ def summary(machine: Machine) -> dict[str, object]:
     return out
 
 
-def entries_of(values: ListValues) -> dict[str, Entry]:
-    """Documented key → the entry the controller uses (this list's, else the default list's)."""
-    return {s.key: s.entry for s in settings(values).values()}
+def own_entries(values: ListValues) -> dict[str, Entry]:
+    """The entries of a list itself by documented key (the later one wins, as on the controller)."""
+    return {canonical_key(values.registry, values.kind, e): e for e in values.doc.entries}
+
+
+def entries_of(values: ListValues, found: dict[int, dict[str, Entry]] | None = None) -> dict[str, Entry]:
+    """Documented key → the entry the controller uses: this list's over the default list's (the
+    layering of :func:`settings`, by key, without the origins). ``found``: the default lists already
+    layered (a fleet's machines share them), by identity."""
+    if found is not None:
+        hit = found.get(id(values))
+        if hit is not None:
+            return hit
+    own = own_entries(values)
+    out = {**entries_of(values.base, found), **own} if values.base is not None else own
+    if found is not None:
+        found[id(values)] = out
+    return out
