@@ -328,3 +328,69 @@ def test_a_gantry_slave_as_path_axis_is_21020(tmp_path: Path) -> None:
     line = (listen / "kanal.lis").read_text().splitlines().index(
         "gruppe[0].achse[1].log_achs_nr                        2") + 1
     assert found(startup) == [("X022", "P-ERR-21020", line)]
+
+
+def test_plane_compensation_masters_against_the_axis_lists(tmp_path: Path) -> None:
+    """Issue 38: an axis that switches plane compensation on (P-AXIS-00174) with a compensation list
+    whose master axis is 0 or no axis of the machine is X023 (P-ERR-70182); a master axis that is not
+    linear is X024 (P-ERR-70184); linear masters of the machine are neither, and the clean machine has none."""
+    import json
+    import shutil
+
+    from conftest import zero_cli
+
+    shutil.copytree(FIXTURES / "machine-clean", tmp_path / "m")
+    listen = tmp_path / "m" / "listen"
+    startup = listen / "hochlauf.lis"
+
+    def found() -> list[tuple[str, str, int, str]]:
+        run = zero_cli("lint", "--machine", str(startup), "--select", "X023,X024,X013", "--output-format", "json")
+        return sorted((d["code"], Path(str(d["path"])).name, d["line"], str(d["kernel_error"]))
+                      for d in json.loads(run.stdout))
+
+    assert found() == []
+    y = listen / "achse_y.lis"
+    y.write_text(y.read_text().replace("Ende", "lr_param.crosscomp2 1\nEnde", 1))
+    startup.write_text(startup.read_text().replace(
+        "Ende", "zahl_kw 1\nachs_kw[0] ./listen/kw_y.lis\nachs_kw_log_ax_nr[0] 2\nEnde", 1))
+    table = "kw.crosscomp2.table[0][0].correction 5\n"
+    kw = listen / "kw_y.lis"
+    kw.write_text(f"kopf.achs_nr 2\nkw.crosscomp2.master1_ax_nr 1\nkw.crosscomp2.master2_ax_nr 3\n{table}Ende\n")
+    assert found() == [("X024", "kw_y.lis", 3, "P-ERR-70184")]  # axis 3 (C) is rotary
+    kw.write_text(f"kopf.achs_nr 2\nkw.crosscomp2.master1_ax_nr 9\n{table}Ende\n")
+    assert found() == [("X023", "achse_y.lis", y.read_text().count("\n") - 1, "P-ERR-70182"),  # master 2 unset
+                       ("X023", "kw_y.lis", 2, "P-ERR-70182")]  # no axis list has number 9
+    kw.write_text(f"kopf.achs_nr 2\nkw.crosscomp2.master1_ax_nr 1\nkw.crosscomp2.master2_ax_nr 2\n{table}Ende\n")
+    assert found() == []
+
+
+def test_feedforward_delays_against_the_interpolator_cycle(tmp_path: Path) -> None:
+    """Issue 38: a feedforward delay time (P-AXIS-00390, P-AXIS-00389) an axis list writes at or above
+    the cycle of the real-time configuration's CNC_IPO thread is X025 (P-ERR-70348) or X026
+    (P-ERR-70349); below it, or without a real-time configuration that names the thread, nothing."""
+    import json
+    import shutil
+
+    from conftest import zero_cli
+
+    shutil.copytree(FIXTURES / "machine-clean", tmp_path / "m")
+    listen = tmp_path / "m" / "listen"
+    startup = listen / "hochlauf.lis"
+
+    def found() -> list[tuple[str, str, str, str]]:
+        run = zero_cli("lint", "--machine", str(startup), "--select", "X025,X026", "--output-format", "json")
+        return sorted((d["code"], Path(str(d["path"])).name, str(d["param_id"]), str(d["kernel_error"]))
+                      for d in json.loads(run.stdout))
+
+    x, y = listen / "achse_x.lis", listen / "achse_y.lis"
+    x.write_text(x.read_text().replace("Ende", "vorsteuer.acceleration_delay_time 2000\n"
+                                       "vorsteuer.velocity_delay_time 500\nEnde", 1))
+    y.write_text(y.read_text().replace("Ende", "vorsteuer.velocity_delay_time 3000\nEnde", 1))
+    assert found() == []  # no real-time configuration: the interpolator cycle is not known
+    (listen / "rtconf.lis").write_text("cycle_time 1000\ntime_slice 1000\nthread[0].name CNC_DEC\n"
+                                       "thread[0].cycle 8000\nthread[1].name CNC_IPO\nthread[1].cycle 2000\nEnde\n")
+    startup.write_text(startup.read_text().replace("Ende", "rtconf_lis ./listen/rtconf.lis\nEnde", 1))
+    assert found() == [("X025", "achse_x.lis", "P-AXIS-00390", "P-ERR-70348"),
+                       ("X026", "achse_y.lis", "P-AXIS-00389", "P-ERR-70349")]
+    (listen / "rtconf.lis").write_text("cycle_time 1000\nthread[0].name CNC_IPO\nthread[0].cycle 4000\nEnde\n")
+    assert found() == []

@@ -810,3 +810,160 @@ def check_path_axes(ctx: MachineContext) -> Iterator[Diagnostic]:
                     f"{ca.index} is named `{ca.name}`, the alias its axis list ({ax.list.path.name}) configures: the "
                     "controller warns with 22016 at start-up, sets use_alias_name_in_ax_list to 0 and continues",
                     param_id=_CHANNEL_AXIS_NAME, path=path, kernel_error="P-ERR-22016")
+
+
+PLANE_MASTER_INVALID = FAMILY.rule(
+    "X023", "plane-compensation-master-invalid", E,
+    "P-ERR-70182: a master axis of a plane compensation is 0 or no axis of the machine",
+    """
+What it checks: for every axis whose axis list switches plane compensation on (`lr_param.crosscomp2`,
+P-AXIS-00174), the compensation list for that axis (`achs_kw[i]`, assigned by `achs_kw_log_ax_nr[i]` or
+its own `kopf.achs_nr`) that holds a plane compensation table (`kw.crosscomp2.table[][]`) names two
+master axes (`kw.crosscomp2.master1_ax_nr` P-COMP-00014, `kw.crosscomp2.master2_ax_nr` P-COMP-00015)
+that are not 0 and are logical axis numbers of the machine's axis lists. Values from two lists of the
+machine: checked with `zero lint --machine`; "no axis of the machine" only where every axis list the
+start-up list names was read.
+
+Why it matters on the machine: the kernel reports P-ERR-70182 (class 7, error type 2): a closed-loop
+controlled stop of the axis, and plane compensation is switched off for it, so the axis runs
+uncompensated. Source: https://infosys.beckhoff.com/content/1033/tf5200_diagnosis/260224395.html
+
+Fix: give both master axes the logical axis numbers of the axes whose positions the table is measured
+over.
+""", reads=("P-AXIS-00174", "P-COMP-00014", "P-COMP-00015", "P-COMP-00016", "P-AXIS-00016"))
+PLANE_MASTER_NOT_LINEAR = FAMILY.rule(
+    "X024", "plane-compensation-master-not-linear", E,
+    "P-ERR-70184: a master axis of a plane compensation is not a linear axis",
+    """
+What it checks: the master axes of a plane compensation (as X023 finds them) have the axis type
+translatory (`kenngr.achs_typ` 1, P-AXIS-00018) in their axis lists. Values from the compensation list
+and the master axes' axis lists: checked with `zero lint --machine`.
+
+Why it matters on the machine: the plane compensation manual lists error 70184 ("Axis type of a master
+axis for plane compensation is invalid": a master axis does not have the required axis type
+translatory); errors in the configuration of plane compensation deselect the function for the axis and
+output an error message, so the axis runs uncompensated. Source:
+https://infosys.beckhoff.com/content/1033/axiscompensation/15327294987.html
+
+Fix: use linear axes as master axes (`kenngr.achs_typ 1`), or switch plane compensation off.
+""", reads=("P-AXIS-00174", "P-COMP-00014", "P-COMP-00015", "P-COMP-00016", "P-AXIS-00018"))
+_PLANE_ON, _PLANE_TABLE, _PLANE_MASTERS = "P-AXIS-00174", "P-COMP-00016", ("P-COMP-00014", "P-COMP-00015")
+
+
+@FAMILY.check(PLANE_MASTER_INVALID, PLANE_MASTER_NOT_LINEAR)
+def check_plane_compensation(ctx: MachineContext) -> Iterator[Diagnostic]:
+    """X023 (P-ERR-70182), X024 (P-ERR-70184): the master axes of each plane compensation an axis
+    switches on, against the machine's axis lists."""
+    machine = ctx.machine
+    by_axis = _compensation_lists(ctx)
+    if by_axis is None:
+        return  # a compensation list was not read: nothing is known of its table
+    axes = machine.axes()
+    complete = machine.complete_axes()
+    said: set[tuple[str, int, int]] = set()  # (list, line, master): a default list's line once
+    for nr, ax in sorted(axes.items()):
+        on = ax.list.values.value_of(_PLANE_ON)
+        if on is None or on.value.number != 1:
+            continue
+        for lf in by_axis.get(nr, []):
+            if not lf.values.ids_of(_PLANE_TABLE):
+                continue  # no table: X013 says so
+            for which, pid in enumerate(_PLANE_MASTERS, start=1):
+                master = lf.number(pid)
+                entry = lf.entry(pid)
+                if entry is not None:
+                    span, path, param = Span.on_line(entry.line, entry.value_start, entry.value_end), lf.path, pid
+                else:  # not written (0): said on the line that switches plane compensation on
+                    layer = ax.list.values.layer_of(_PLANE_ON) or ax.list.values
+                    span = Span.on_line(on.entry.line, on.entry.value_start, on.entry.value_end)
+                    path, param = Path(layer.doc.path), _PLANE_ON
+                where = (str(path), span.line, which)
+                if where in said:
+                    continue
+                target = axes.get(int(master)) if master else None
+                if not master or (target is None and complete):
+                    said.add(where)
+                    what = "is 0 (not set)" if not master else \
+                        f"is {int(master)}, which no axis list of the machine has"
+                    yield ctx.report(
+                        "X023", span, f"P-ERR-70182: master axis {which} of the plane compensation of axis {nr} "
+                        f"(`kw.crosscomp2.master{which}_ax_nr` in {lf.path.name}) {what}: the controller reports "
+                        "error 70182, stops the axis (closed-loop) and switches its plane compensation off",
+                        param_id=param, path=str(path), kernel_error="P-ERR-70182")
+                    continue
+                kind = target.list.number(_AXIS_TYPE) if target is not None else None
+                if target is not None and kind is not None and int(kind) != 1:
+                    said.add(where)
+                    yield ctx.report(
+                        "X024", span, f"P-ERR-70184: master axis {which} of the plane compensation of axis {nr} is "
+                        f"logical axis {int(master)}, whose axis list ({target.list.path.name}) has axis type "
+                        f"{int(kind)}, not 1 (translatory): the controller reports error 70184 and deselects plane "
+                        "compensation for the axis", param_id=param, path=str(path), kernel_error="P-ERR-70184")
+
+
+FEEDFORWARD_DELAY_ACCELERATION = FAMILY.rule(
+    "X025", "acceleration-feedforward-delay-cycle", E,
+    "P-ERR-70348: delay time of the acceleration feedforward not below the interpolator cycle time",
+    """
+What it checks: the delay time of the acceleration feedforward (`vorsteuer.acceleration_delay_time`,
+P-AXIS-00390, µs) an axis list writes is shorter than the interpolator's cycle time: the cycle
+(`thread[i].cycle`, P-RTCF-00009, µs) of the real-time configuration's thread named `CNC_IPO`
+(`thread[i].name`, P-RTCF-00008), in the list `rtconf_lis` names. Values from two lists of the machine:
+checked with `zero lint --machine`, and only where the real-time configuration names that thread with
+a cycle.
+
+Why it matters on the machine: the kernel reports P-ERR-70348 when it takes over the list (class 1,
+error type 2) and disables the delay (P-AXIS-00390 = 0). Source:
+https://infosys.beckhoff.com/content/1033/tf5200_diagnosis/260824971.html
+
+Fix: give the delay a value below one interpolator cycle.
+""", reads=("P-AXIS-00390", "P-RTCF-00008", "P-RTCF-00009"))
+FEEDFORWARD_DELAY_VELOCITY = FAMILY.rule(
+    "X026", "velocity-feedforward-delay-cycle", E,
+    "P-ERR-70349: delay time of the velocity feedforward not below the interpolator cycle time",
+    """
+What it checks: the delay time of the velocity feedforward (`vorsteuer.velocity_delay_time`,
+P-AXIS-00389, µs) an axis list writes is shorter than the interpolator's cycle time, found as for X025.
+Values from two lists of the machine: checked with `zero lint --machine`.
+
+Why it matters on the machine: the kernel reports P-ERR-70349 when it takes over the list (class 1,
+error type 2) and disables the delay (P-AXIS-00389 = 0). Source:
+https://infosys.beckhoff.com/content/1033/tf5200_diagnosis/260829323.html
+
+Fix: give the delay a value below one interpolator cycle.
+""", reads=("P-AXIS-00389", "P-RTCF-00008", "P-RTCF-00009"))
+_IPO_THREAD = "CNC_IPO"  # the interpolator's thread of the vendor's real-time configuration
+_FEEDFORWARD_DELAYS = (("X025", "P-AXIS-00390", "acceleration", 70348), ("X026", "P-AXIS-00389", "velocity", 70349))
+
+
+def _interpolator_cycle(ctx: MachineContext) -> tuple[int, str] | None:
+    """The cycle (µs) of the real-time configuration's interpolator thread, and the list's name; ``None``
+    where the machine has no real-time configuration or it names no such thread with a cycle."""
+    rtconf = ctx.machine.singles.get("rtconf_lis")
+    if rtconf is None:
+        return None
+    for idx in sorted(rtconf.values.ids_of("P-RTCF-00008")):
+        if rtconf.text("P-RTCF-00008", idx) == _IPO_THREAD:
+            cycle = rtconf.number("P-RTCF-00009", idx)
+            return (int(cycle), rtconf.path.name) if cycle else None
+    return None
+
+
+@FAMILY.check(FEEDFORWARD_DELAY_ACCELERATION, FEEDFORWARD_DELAY_VELOCITY)
+def check_feedforward_delays(ctx: MachineContext) -> Iterator[Diagnostic]:
+    """X025 (P-ERR-70348), X026 (P-ERR-70349): feedforward delay times against the interpolator cycle."""
+    found = _interpolator_cycle(ctx)
+    if found is None:
+        return
+    cycle, rtconf = found
+    for lf in ctx.machine.axis_lists:
+        for code, pid, what, number in _FEEDFORWARD_DELAYS:
+            delay, entry = lf.number(pid), lf.entry(pid)
+            if entry is None or delay is None or delay < cycle:
+                continue  # not written here (a default list's is reported there), or below the cycle
+            yield ctx.report(
+                code, Span.on_line(entry.line, entry.value_start, entry.value_end),
+                f"P-ERR-{number}: the delay time of the {what} feedforward is {int(delay)} µs, not below the "
+                f"interpolator cycle time {cycle} µs (thread {_IPO_THREAD} in {rtconf}): the controller reports "
+                f"error {number} when it takes over the list and disables the delay ({pid} = 0)",
+                param_id=pid, path=str(lf.path), kernel_error=f"P-ERR-{number}")
