@@ -705,6 +705,27 @@ def _json_form(data: bytes) -> bool:
     return not (sarif or json_schema)
 
 
+def write_disposable(path: Path, data: bytes) -> None:
+    """Write a file of zero's own that can always be made again (a cache entry): complete in a
+    temporary file beside it (this process's ID in its name), then renamed over ``path`` in one
+    step, so a reader sees the old file or the new one, never half of one; of two writers racing
+    for one name the last rename wins, each complete. No fsync (a power cut may leave a torn
+    entry, which its reader finds out by its checksum and treats as missing); never through a
+    symbolic link; :class:`OSError` when it cannot be written (the caller goes on without it)."""
+    tmp = temp_name(path)
+    fd = os.open(tmp, os.O_WRONLY | os.O_CREAT | os.O_EXCL | _O_BINARY | getattr(os, "O_NOFOLLOW", 0), 0o644)
+    try:
+        try:
+            _write_all(fd, data)
+        finally:
+            os.close(fd)
+        os.replace(tmp, path)
+    except BaseException:
+        with contextlib.suppress(OSError):
+            os.unlink(tmp)
+        raise
+
+
 def write_report(path: Path, data: bytes, inputs: tuple[Path, ...] = (), force: bool = True) -> None:
     """Write a report (``lint -o``, ``report -o``, ``schema -o``): over a previous report (only with
     ``force`` where the command asks for it), never over a list, a program, a structured form, a

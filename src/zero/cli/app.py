@@ -502,6 +502,9 @@ def diff(
         metavar="GOLDEN")] = None,
     jobs: Annotated[int | None, typer.Option(
         "--jobs", "-j", help="With --fleet: compare in this many processes [default: all cores].", metavar="N")] = None,
+    no_cache: Annotated[bool, typer.Option(
+        "--no-cache", help="With --fleet: compare every machine again; neither read nor write the cache "
+        "(.zero_cache; also ZERO_NO_CACHE=1).")] = False,
     param_desc: ParamDesc = None,
 ) -> None:
     """Compare two lists by parameter: added, removed, changed, with mm/° deltas.
@@ -515,7 +518,7 @@ def diff(
             other = [name for name, given in (("--defaults", defaults), ("--machine", machine), ("--strict", strict),
                                               ("--comments", comments), ("--revert", revert is not None),
                                               ("--from", from_ is not None), ("--kind", kind is not None)) if given]
-            return _fleet_diff(fleet, [a, *(b or [])], output_format, jobs, other)
+            return _fleet_diff(fleet, [a, *(b or [])], output_format, jobs, other, cache=not no_cache)
         if output_format == "csv":
             raise ZeroError("--output-format csv is the report of --fleet")
         if b is not None and len(b) > 1:
@@ -533,15 +536,16 @@ def diff(
     _run(body)
 
 
-def _fleet_diff(golden: str, machines: list[str], output_format: str, jobs: int | None, other: list[str]) -> int:
+def _fleet_diff(golden: str, machines: list[str], output_format: str, jobs: int | None, other: list[str],
+                cache: bool = True) -> int:
     """``zero diff --fleet GOLDEN MACHINE...``: the report on standard output, and its exit code."""
     if other:
         raise ZeroError(f"--fleet compares machines' effective values: {', '.join(other)} does not apply to it")
     from zero.engine.fleet import FleetRequest  # start-up: only with --fleet
     from zero.output.fleet import run_fleet_diff  # start-up: as above
 
-    return run_fleet_diff(FleetRequest(golden, machines, jobs=jobs, param_desc=state.param_desc), REGISTRIES,
-                          output_format, sys.stdout)
+    return run_fleet_diff(FleetRequest(golden, machines, jobs=jobs, param_desc=state.param_desc, cache=cache),
+                          REGISTRIES, output_format, sys.stdout)
 
 
 @app.command(cls=ZeroCommand)

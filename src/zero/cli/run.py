@@ -288,7 +288,7 @@ def lint(paths: Sequence[str | Path] = (), output_format: str = "text", output_f
          show_files: bool = False, param_desc: str | Path | None = None,
          exclude: Sequence[str] = (), extend_exclude: Sequence[str] = (), respect_gitignore: bool | None = None,
          force_exclude: bool | None = None, kernel: str | None = None, fix_only: bool = False,
-         show_fixes: bool = False, watch: bool = False, ignore_noqa: bool = False) -> int:
+         show_fixes: bool = False, watch: bool = False, ignore_noqa: bool = False, no_cache: bool = False) -> int:
     """``zero lint``: report what the controller will do with the files; the exit code.
 
     ``quiet``: the findings only (no summary line, progress bar or notes); ``silent``: not even
@@ -296,7 +296,8 @@ def lint(paths: Sequence[str | Path] = (), output_format: str = "text", output_f
     ``respect_gitignore`` and ``kernel`` are the configuration's keys of those names, laid over it
     as ``--config KEY=VALUE`` is; ``fix_only``: ``fix`` without a report (as ruff's ``--fix-only``);
     ``show_statistics``: the counts per code instead of the findings; ``watch``: lint again on
-    every change below ``paths`` (:func:`watch_loop`)."""
+    every change below ``paths`` (:func:`watch_loop`); ``no_cache``: neither read nor write the
+    cache of results (:mod:`zero.engine.cache`; ``ZERO_NO_CACHE=1`` does the same)."""
     if watch:
         again = {k: v for k, v in locals().items() if k != "watch"}
         return watch_loop(lambda: lint(**again), paths)
@@ -322,7 +323,8 @@ def lint(paths: Sequence[str | Path] = (), output_format: str = "text", output_f
     request = LintRequest([str(p) for p in paths], tuple(select), tuple(ignore), kind, param_desc, jobs,
                           config, isolated, fix, show_diff, unsafe_fixes, stdin_filename, machine,
                           tuple(extend_select), add_noqa, force_exclude is not False, ignore_noqa,
-                          stream=output_file is None and output_format in STREAMED_FORMATS and not show_fixes)
+                          stream=output_file is None and output_format in STREAMED_FORMATS and not show_fixes,
+                          cache=not no_cache)
     streams = echo()
     if quiet:
         streams = Echo(out=streams.out, err=_discard, out_bytes=streams.out_bytes)

@@ -98,6 +98,7 @@ class LintRequest:
     # The results may come as a stream, each made as it is read: for a report written as it goes,
     # which then keeps no result (used only where the order and the results are the same).
     stream: bool = False
+    cache: bool = False  # keep results between runs (zero.engine.cache; the command line's default, --no-cache)
 
     @property
     def reads_stdin(self) -> bool:
@@ -144,21 +145,32 @@ def run_lint(request: LintRequest, registries: Registries, echo: Echo,
         lint_files(named, project, request.force_exclude, skipped)
         raise ZeroError("no list files or NC programs found (looked for *.lis, *.lst, *.nc, *.mpf, *.spf, and *.xml "
                         "holding lists)" + skipped_note(skipped))
+    cache = None  # results kept between runs (zero.engine.cache); never for a run that writes or shows fixes
+    if request.cache and not (request.fix or request.show_diff or request.add_noqa):
+        from zero.engine.cache import open_lint_cache  # start-up: only when the cache is on
+
+        cache = open_lint_cache(project)
+    kept = cache.lookup(files) if cache is not None else {}
+    todo = [f for f in files if f not in kept] if kept else files
     groups: dict[Path | None, list[Path]] = {}
-    for f in files:  # files sharing a parameter description share a registry
+    for f in todo:  # files sharing a parameter description share a registry
         groups.setdefault(project.param_desc(f), []).append(f)
     bar = progress(len(files)) if progress is not None else None
 
     across: dict[int, dict[str, list[Diagnostic]]] = {}  # the X findings of each machine, found once
 
     def finish(f: Path, r: LintResult) -> LintResult:
-        return _with_machine(f, r, project, found=across)
+        r = _with_machine(f, r, project, found=across)
+        if cache is not None:
+            cache.store(f, r)
+        return r
 
-    if (request.stream and bar is None and len(groups) == 1
+    if (request.stream and bar is None and len(groups) <= 1
             and not (request.fix or request.show_diff or request.add_noqa)):
-        desc = next(iter(groups))  # one group: its files are all the files, in their order
-        stream = iter_lint_many(files, registries(desc), project.options, request.jobs)
-        return LintRun(finish(f, r) for f, r in zip(files, stream, strict=True))
+        desc = next(iter(groups), None)  # one group: its files are all the files to lint, in their order
+        stream = iter_lint_many(todo, registries(desc), project.options, request.jobs) if todo else iter(())
+        made = (finish(f, r) for f, r in zip(todo, stream, strict=True))
+        return LintRun(cache.merged(files, kept, made) if cache is not None and kept else made)
     by_file: dict[Path, LintResult] = {}
     done = 0
     for desc, members in groups.items():
@@ -170,7 +182,7 @@ def run_lint(request: LintRequest, registries: Registries, echo: Echo,
                                            step if bar is not None else None), strict=True):
             by_file[f] = r
         done += len(members)
-    results = [finish(f, by_file[f]) for f in files]
+    results = [kept[f] if f in kept else finish(f, by_file[f]) for f in files]
     run = LintRun(results, findings_to_stderr=request.show_diff)
     if request.add_noqa:
         run.results = [_add_noqa(f, r, project.options(f), project.registry(f), echo, run)

@@ -35,11 +35,13 @@ The same whatever ``jobs``.
 
 from __future__ import annotations
 
+import contextlib
 import gc
 import os
 import re
 from collections.abc import Callable, Hashable, Sequence
 from pathlib import Path
+from typing import TYPE_CHECKING, Any
 
 from zero.catalog.registry import ParamSpec, Registry
 from zero.diff import (
@@ -63,6 +65,9 @@ from zero.lists.model import Entry
 from zero.machine.effective import entries_of, own_entries
 from zero.machine.model import Machine
 from zero.records import field, record
+
+if TYPE_CHECKING:  # start-up: the cache only when it is on
+    from zero.engine.cache import FleetCache
 
 # The names of a start-up list, as a folder of machines is searched for them (lower case, in order).
 STARTUP_NAMES = ("hochlauf.lis", "startup.xml")
@@ -166,8 +171,9 @@ MAX_DEPTH = 32  # folders of machines are a few levels deep; a deeper walk stops
 
 
 def _startup_in(folder: Path, top: Path) -> Path | None:
-    try:
-        names = {p.name.lower(): p for p in sorted(folder.iterdir()) if p.is_file() and within(p, top)}
+    try:  # names first: a folder of a machine's lists is not asked about each of them
+        named = [p for p in sorted(folder.iterdir()) if p.name.lower() in STARTUP_NAMES]
+        names = {p.name.lower(): p for p in named if p.is_file() and within(p, top)}
     except OSError:
         return None
     return next((names[n] for n in STARTUP_NAMES if n in names), None)
@@ -248,6 +254,7 @@ class _MachineDrift:
     found: list[_Found] = field(default_factory=list)
     lists: list[tuple[str, str, str]] = field(default_factory=list)  # scope, status, reason
     error: str | None = None
+    deps: tuple[Any, ...] | None = None  # what the machine was read from, for the cache (None: not kept)
 
 
 @record
@@ -269,6 +276,7 @@ class _Golden:
     options: DiffOptions
     scopes: dict[str, _Scope]
     defaults: dict[str, tuple[str, dict[str, Entry]]]  # kind → (start-up key, the default list's entries)
+    keep: FleetCache | None = None  # the cache: each comparison then says what its machine was read from
 
 
 _KEY_IN_NAME = re.compile(r"\(([^()]*)\)$")
@@ -295,10 +303,12 @@ def _scopes(project: Project, startup: str, fleet: bool) -> tuple[dict[str, _Sco
     return out, m
 
 
-def _golden(project: Project, golden: str, options: DiffOptions) -> _Golden:
+def _golden(project: Project, golden: str, options: DiffOptions, keep: FleetCache | None = None) -> _Golden:
     scopes, m = _scopes(project, golden, fleet=False)
     defaults = {kind: (lf.key, entries_of(lf.values)) for kind, lf in m.defaults.items()}
-    return _Golden(project, project.registry(Path(golden)), options, scopes, defaults)
+    if keep is not None:
+        keep.put_golden(keep.deps(m), list(scopes), [key for key, _ in defaults.values()])
+    return _Golden(project, project.registry(Path(golden)), options, scopes, defaults, keep)
 
 
 def _why(machine: Machine, key: str) -> str:
@@ -326,6 +336,8 @@ def compare_machine(golden: _Golden, startup: str) -> _MachineDrift:
     except ZeroError as exc:
         out.error = str(exc)
         return out
+    if golden.keep is not None:
+        out.deps = golden.keep.deps(m)
     registry = golden.registry
     missing_defaults: dict[str, dict[str, Entry]] = {}
     for kind, (key, entries) in golden.defaults.items():
@@ -409,20 +421,64 @@ def _compare_all(golden: _Golden, machines: list[str], jobs: int | None,
 
 
 def fleet_drift(golden: str | Path, machines: Sequence[str | Path], project: Project, *, jobs: int | None = None,
-                progress: Callable[[int, int], None] | None = None) -> FleetDrift:
+                progress: Callable[[int, int], None] | None = None, cache: bool = False) -> FleetDrift:
     """Every effective parameter (and list) that differs from the ``golden`` machine (its start-up
     list) on any of ``machines`` (start-up lists or folders of machines), compared in ``jobs``
     processes (default: all cores). Raises :class:`ZeroError` where the golden machine cannot be read
-    or a folder holds no machine; a machine that cannot be read is :attr:`FleetDrift.unreadable`."""
-    g = _golden(project, str(golden), DiffOptions())
+    or a folder holds no machine; a machine that cannot be read is :attr:`FleetDrift.unreadable`.
+
+    ``cache``: keep each machine's comparison between runs (:mod:`zero.engine.cache`), and take it
+    from there while neither the golden machine's files nor the machine's changed: a fleet compared
+    again reads no list of an unchanged machine (nor of the golden machine when none changed)."""
+    options = DiffOptions()
+    keep = None
+    if cache:
+        from zero.engine.cache import open_fleet_cache  # start-up: only when the cache is on
+
+        keep = open_fleet_cache(project, str(golden), options)
+    order = keep.golden_order() if keep is not None else None
+    g = _golden(project, str(golden), options, keep) if order is None else None
     startups = machine_startups(machines, golden)
     if not startups:
         raise ZeroError("no machine to compare with the golden machine (give start-up lists or folders)")
-    results = _compare_all(g, startups, jobs, progress)
-    return _gather(str(golden), g, startups, results)
+    kept: dict[str, _MachineDrift] = {}
+    if keep is not None:
+        for s in startups:
+            packed = keep.machine(s)
+            if packed is not None:
+                with contextlib.suppress(TypeError, ValueError):
+                    kept[s] = _unpack(s, packed)
+    todo = [s for s in startups if s not in kept]
+    if todo and g is None:
+        g = _golden(project, str(golden), options, keep)
+    made = _compare_all(g, todo, jobs, progress) if g is not None and todo else []
+    if keep is not None:
+        for r in made:
+            if r.error is None:
+                keep.put_machine(r.machine, _pack(r), r.deps)
+    by_machine = {**kept, **{r.machine: r for r in made}}
+    if g is not None:
+        scopes, defaults = list(g.scopes), [key for key, _ in g.defaults.values()]
+    else:
+        assert order is not None
+        scopes, defaults = order
+    return _gather(str(golden), scopes, defaults, startups, [by_machine[s] for s in startups])
 
 
-def _gather(golden: str, g: _Golden, startups: list[str], results: list[_MachineDrift]) -> FleetDrift:
+def _pack(r: _MachineDrift) -> tuple[Any, ...]:
+    """A machine's comparison as plain tuples (what the cache keeps)."""
+    found = tuple((f.scope, f.key, f.param_id, f.group, f.golden, f.golden_note, f.golden_name, f.unit, f.value,
+                   f.note, f.name, f.delta, f.same) for f in r.found)
+    return (found, tuple(r.lists))
+
+
+def _unpack(machine: str, packed: tuple[Any, ...]) -> _MachineDrift:
+    found, lists = packed
+    return _MachineDrift(machine, [_Found(*f) for f in found], [tuple(x) for x in lists])
+
+
+def _gather(golden: str, scopes: list[str], defaults: list[str], startups: list[str],
+            results: list[_MachineDrift]) -> FleetDrift:
     drift = FleetDrift(golden, startups)
     params: dict[tuple[str, str], tuple[ParamDrift, dict[Hashable, FleetValue]]] = {}
     lists: dict[tuple[str, str, str], ListDrift] = {}
@@ -446,13 +502,12 @@ def _gather(golden: str, g: _Golden, startups: list[str], results: list[_Machine
             if ld is None:
                 ld = lists[(scope, status, reason)] = ListDrift(scope, status, reason)
             ld.machines.append(r.machine)
-    rank = {name: n for n, name in enumerate(g.scopes)}
+    rank = {name: n for n, name in enumerate(scopes)}
     order = {m: n for n, m in enumerate(startups)}
     for p, _ in params.values():
         p.values.sort(key=lambda v: (-v.count, order[v.machines[0]]))
     drift.params = sorted((p for p, _ in params.values()),
                           key=lambda p: (rank.get(p.scope, len(rank)), group_order(p.group), key_order(p.key)))
-    defaults = [key for key, _ in g.defaults.values()]
     drift.lists = sorted(lists.values(), key=lambda ld: (
         0 if ld.scope in defaults else 1, rank.get(ld.scope, len(rank)), ld.scope, ld.status,
         order[ld.machines[0]], ld.reason))
@@ -472,6 +527,7 @@ class FleetRequest:
     param_desc: str | Path | None = None
     config: str | Path | Sequence[str] | None = None
     isolated: bool = False
+    cache: bool = False  # keep each machine's comparison between runs (the command line's default, --no-cache)
 
 
 def run_fleet(request: FleetRequest, registries: Registries,
@@ -482,7 +538,7 @@ def run_fleet(request: FleetRequest, registries: Registries,
                         "of machines after it")
     project = Project(registries, config=request.config, isolated=request.isolated, param_desc=request.param_desc)
     return fleet_drift(request.golden, request.machines, project, jobs=request.jobs,
-                       progress=progress)
+                       progress=progress, cache=request.cache)
 
 
 __all__ = ["EXTRA", "MISSING", "STARTUP_NAMES", "FleetDrift", "FleetRequest", "FleetValue", "ListDrift",

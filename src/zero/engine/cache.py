@@ -1,0 +1,645 @@
+"""The cache of ``zero lint`` and ``zero diff --fleet``: results kept between runs, as ruff's.
+
+**What it keeps.** Per file linted, the findings (codes, spans, messages, fixes, related places,
+consequences, sources), the lines they show, the list kind and the note; per machine of a fleet,
+what it differs in from the golden machine. They are kept in the cache folder (see
+:func:`cache_folder`: ``.zero_cache/`` in the folder of the configuration that applies to the
+current directory, else the current directory; ``$ZERO_CACHE_DIR``), which holds a ``.gitignore``
+of its own (``*``) and a ``CACHEDIR.TAG``, one file per entry.
+
+**When it is trusted.** An entry's name is a hash of everything that decides the result, so that
+a change to any of them is a miss, never a stale hit:
+
+* zero itself (:func:`generation`): its version, the Python that runs it, and in a development
+  install the size and modification time of every file of zero's own source (an edited rule never
+  gets a result of the rule before);
+* the file: its path as given and a hash of its content (read through :func:`zero.files.read_file`,
+  so a file that cannot be read now is read again, and reported, never answered from the cache);
+* the options the resolver gives the file (:meth:`zero.engine.project.Project.options`: selection,
+  severities, per-file ignores, kind, code page, kernel release, ``--ignore-noqa``; every field of
+  the record, fingerprinted whatever fields it gains: :func:`fingerprint`);
+* the catalogue (:func:`catalogue_id`): the built-in table (part of zero), or the parameter
+  description's path and a hash of its content;
+* for a list of a machine (the X findings on it, its kind as the start-up list reads it) and for
+  a fleet's machine: the machine's configuration (start-up list, list overrides, working directory,
+  folder mapping, forced kind, the current directory) in the name, and in the entry the machine's
+  files (:func:`machine_deps`): every list it read or looked for (size, modification time and a
+  hash of the content, checked again by content where the time is too recent to tell, as git
+  does with its index), the folders that hold them (a list added or removed), and every place the
+  working directory and the project's ceiling are looked for.
+
+**What it never keeps.** Standard input, a file that could not be read or that zero refused
+(F001, S014/S017 "not checked"), NC programs (they read the subprograms of their folder), a
+machine that could not be read, and anything of a run with ``--fix``, ``--diff`` or ``--add-noqa``.
+
+**Safe.** Entries are written through :func:`zero.files.write_disposable` (a temporary file, then
+renamed), so concurrent runs each see whole entries; each entry carries a checksum, and an entry
+that is torn, garbage or of another format is a miss. The folder is bounded (:data:`MAX_ENTRIES`,
+:data:`MAX_BYTES`): past either, the oldest entries go (:meth:`Store.prune`). ``--no-cache`` and
+``ZERO_NO_CACHE=1`` switch it off; a folder that cannot be written is the same as none.
+
+The format is :mod:`marshal` of plain tuples (measured against :mod:`json`: loading is about
+3× faster, writing 2×, see docs/performance.md); only this module reads it.
+"""
+
+from __future__ import annotations
+
+import contextlib
+import enum
+import marshal
+import os
+import sys
+import time
+from collections.abc import Callable, Iterable, Iterator
+from pathlib import Path
+from typing import TYPE_CHECKING, Any
+
+from zero import __version__
+from zero.diagnostics import Diagnostic, Edit, Fix, Related, Severity, Span
+from zero.engine.lint import LintResult
+from zero.errors import ZeroError
+from zero.files import read_file, write_disposable
+from zero.forms import CONFIG_NAMES, controller_absolute, is_list, is_program, split_part
+from zero.lists.model import Document, Excerpt
+from zero.records import fields
+
+try:  # start-up: `_blake2` is hashlib's own BLAKE2 without OpenSSL (hashlib costs 14 ms to import)
+    from _blake2 import blake2b
+except ImportError:  # pragma: no cover - an interpreter without the module
+    from hashlib import blake2b
+
+if TYPE_CHECKING:  # start-up: a plain lint loads no machine model
+    from zero.engine.project import Project
+    from zero.machine.model import Machine
+
+FOLDER = ".zero_cache"
+FORMAT = 1  # of an entry; a new one makes every entry of the old one a miss
+MAX_ENTRIES = 50_000  # past this many entries, the oldest go (to three quarters of it)
+MAX_BYTES = 512 * 1024 * 1024  # the same for their size
+GENERATIONS = 4  # versions of zero whose entries are kept side by side
+RACY_NS = 3_000_000_000  # a file modified this close to when it was checked is checked by its content
+_MAGIC = b"ZEROCACHE\n"
+_DIGEST = 16
+_TAG = (b"Signature: 8a477f597d28d172789f06886806bc55\n"
+        b"# This file is a cache directory tag created by zero.\n"
+        b"# For information about cache directory tags see https://bford.info/cachedir/\n")
+_IGNORE = b"# Automatically created by zero.\n*\n"
+_OFF = ("", "0", "false", "no", "off")
+
+# The fields a stored finding has: a record that gains one is not cached until this module keeps it.
+_DIAGNOSTIC_FIELDS = ("code", "severity", "message", "span", "path", "param_id", "fix", "hint", "related",
+                      "kernel_error", "consequence", "source")
+_RESULT_FIELDS = ("path", "document", "kind", "diagnostics", "note")
+
+
+def disabled() -> bool:
+    """``ZERO_NO_CACHE`` set to anything but ``0``, ``false``, ``no``, ``off`` or nothing."""
+    return os.environ.get("ZERO_NO_CACHE", "").strip().lower() not in _OFF
+
+
+def digest(data: bytes) -> bytes:
+    return blake2b(data, digest_size=_DIGEST).digest()
+
+
+# ----------------------------------------------------------------------------- keys
+
+
+def _source_files(folder: str, out: list[tuple[str, int, int]]) -> None:
+    with os.scandir(folder) as it:
+        for e in it:
+            if e.is_dir(follow_symlinks=False):
+                if e.name != "__pycache__":
+                    _source_files(e.path, out)
+            elif not e.name.endswith((".pyc", ".pyo")):
+                st = e.stat()
+                out.append((e.path, st.st_size, st.st_mtime_ns))
+
+
+_generation: list[str] = []
+
+
+def generation() -> str:
+    """What zero itself contributes to every key: its version, the cache's format, the Python that
+    runs it, and (in a development install, where the source can be edited) every file of zero's
+    source by size and modification time. Found once per process."""
+    if _generation:
+        return _generation[0]
+    package = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+    parts: list[object] = [FORMAT, __version__, sys.implementation.cache_tag, sys.version, package]
+    if not any(p in ("site-packages", "dist-packages") for p in Path(package).parts):
+        files: list[tuple[str, int, int]] = []
+        with contextlib.suppress(OSError):
+            _source_files(package, files)
+        parts.append(tuple(sorted(files)))
+    _generation.append(digest(repr(parts).encode("utf-8", "surrogateescape")).hex())
+    return _generation[0]
+
+
+def _canonical(value: object) -> object:
+    """``value`` as nested tuples of plain values whose ``repr`` is the same in every run."""
+    if value is None or isinstance(value, (bool, int, float, str, bytes)):
+        return value
+    if isinstance(value, enum.Enum):
+        return (type(value).__name__, value.name)
+    if isinstance(value, os.PathLike):
+        return ("path", os.fspath(value))
+    if isinstance(value, (tuple, list)):
+        return tuple(_canonical(v) for v in value)
+    if isinstance(value, dict):
+        return ("dict", tuple(sorted(((_canonical(k), _canonical(v)) for k, v in value.items()), key=repr)))
+    if isinstance(value, (set, frozenset)):
+        return ("set", tuple(sorted((_canonical(v) for v in value), key=repr)))
+    names = getattr(type(value), "__record_fields__", None)
+    if names is not None:
+        return (type(value).__qualname__, tuple((f.name, _canonical(getattr(value, f.name))) for f in fields(value)))
+    raise TypeError(f"cannot fingerprint {type(value).__name__}")
+
+
+def fingerprint(value: object) -> str:
+    """A deterministic fingerprint of a settings object (a record such as ``LintOptions``, with every
+    field it has, nested records, tuples, dictionaries, enumerations, paths): equal settings give
+    equal fingerprints in every run. :class:`TypeError` for a value it cannot fingerprint."""
+    return digest(repr(_canonical(value)).encode("utf-8", "surrogateescape")).hex()
+
+
+def catalogue_id(param_desc: Path | None) -> tuple[str, ...]:
+    """The identity of a catalogue: the built-in table (part of zero, so in :func:`generation`),
+    or a parameter description by its absolute path and the hash of its content."""
+    if param_desc is None:
+        return ("built-in",)
+    data = read_file(param_desc)
+    return ("description", os.path.abspath(param_desc), digest(data).hex())
+
+
+def cache_folder(project: Project) -> Path:
+    """``$ZERO_CACHE_DIR``, else ``.zero_cache`` in the folder of the configuration that applies to the
+    current directory (the project's root, as ruff's ``.ruff_cache``), else in the current directory."""
+    given = os.environ.get("ZERO_CACHE_DIR", "").strip()
+    if given:
+        return Path(os.path.abspath(given))
+    return Path(os.path.abspath(project.config(None).root)) / FOLDER
+
+
+# ----------------------------------------------------------------------------- the folder
+
+
+class Store:
+    """The cache folder: entries by name, each a checksummed :mod:`marshal` payload."""
+
+    def __init__(self, folder: Path) -> None:
+        self.folder = folder
+        self.entries = folder / generation()[:20]
+        self.ready: bool | None = None  # None: not yet made; False: cannot be written
+        self.written = 0
+
+    def path(self, key: str) -> Path:
+        return self.entries / key
+
+    def get(self, key: str) -> Any:
+        """The value stored under ``key``; ``None`` when there is none, or it is torn or garbage."""
+        try:
+            with open(self.entries / key, "rb") as f:
+                data = f.read()
+        except OSError:
+            return None
+        head = len(_MAGIC) + _DIGEST
+        if len(data) < head or not data.startswith(_MAGIC) or digest(data[head:]) != data[len(_MAGIC):head]:
+            return None
+        try:
+            return marshal.loads(data[head:])
+        except (EOFError, ValueError, TypeError):  # pragma: no cover - the checksum matched
+            return None
+
+    def put(self, key: str, value: Any) -> bool:
+        """Store ``value`` (plain values only) under ``key``; ``False`` when it cannot be."""
+        if not self._ready():
+            return False
+        try:
+            payload = marshal.dumps(value, 4)
+        except ValueError:  # a value marshal does not keep: not cached
+            return False
+        if self.written % max(1, MAX_ENTRIES // 4) == 0:
+            self.prune()
+        try:
+            write_disposable(self.entries / key, _MAGIC + digest(payload) + payload)
+        except OSError:
+            return False
+        self.written += 1
+        return True
+
+    def _ready(self) -> bool:
+        if self.ready is None:
+            try:
+                if not self.entries.is_dir():  # a new zero (or an edited one): the oldest others' go
+                    self.entries.mkdir(parents=True, exist_ok=True)
+                    self._drop_generations()
+                for name, text in ((".gitignore", _IGNORE), ("CACHEDIR.TAG", _TAG)):
+                    if not os.path.lexists(self.folder / name):
+                        write_disposable(self.folder / name, text)
+                self.ready = os.access(self.entries, os.W_OK)
+            except OSError:
+                self.ready = False
+        return self.ready
+
+    def _drop_generations(self) -> None:
+        """Keep the entries of at most :data:`GENERATIONS` versions of zero (the newest, by when their
+        folder last changed): a development install makes one whenever its source is edited."""
+        import shutil  # start-up: only when a new version of zero writes its first entry
+
+        with contextlib.suppress(OSError):
+            others = sorted((e.stat(follow_symlinks=False).st_mtime_ns, e.path) for e in os.scandir(self.folder)
+                            if e.is_dir(follow_symlinks=False) and e.path != str(self.entries))
+            for _, path in others[:max(0, len(others) - (GENERATIONS - 1))]:
+                shutil.rmtree(path, ignore_errors=True)
+
+    def prune(self) -> int:
+        """Keep the folder within :data:`MAX_ENTRIES` and :data:`MAX_BYTES`: past either, remove the
+        oldest entries (by when they were written, of every generation of zero) down to three quarters
+        of the bound, and temporary files an hour old. Returns how many files went."""
+        found: list[tuple[int, int, str]] = []
+        old = time.time_ns() - 3600 * 10**9
+        removed = 0
+        try:
+            generations = [e.path for e in os.scandir(self.folder) if e.is_dir(follow_symlinks=False)]
+        except OSError:
+            return 0
+        for g in generations:
+            with contextlib.suppress(OSError), os.scandir(g) as it:
+                for e in it:
+                    with contextlib.suppress(OSError):
+                        st = e.stat(follow_symlinks=False)
+                        if e.name.endswith(".tmp"):
+                            if st.st_mtime_ns < old:
+                                os.unlink(e.path)
+                                removed += 1
+                            continue
+                        found.append((st.st_mtime_ns, st.st_size, e.path))
+        total = sum(size for _, size, _ in found)
+        if len(found) <= MAX_ENTRIES and total <= MAX_BYTES:
+            return removed
+        found.sort()
+        count, keep_count, keep_bytes = len(found), MAX_ENTRIES * 3 // 4, MAX_BYTES * 3 // 4
+        for _, size, path in found:
+            if count <= keep_count and total <= keep_bytes:
+                break
+            with contextlib.suppress(OSError):
+                os.unlink(path)
+                removed += 1
+            count, total = count - 1, total - size
+        for g in generations:
+            if g != str(self.entries):
+                with contextlib.suppress(OSError):
+                    os.rmdir(g)  # an older zero's folder, once empty
+        return removed
+
+
+def open_store(project: Project) -> Store | None:
+    """The cache of a run, or ``None`` where ``ZERO_NO_CACHE`` switches it off."""
+    if disabled():
+        return None
+    return Store(cache_folder(project))
+
+
+# ----------------------------------------------------------------------------- dependencies
+
+# What a machine read or looked for: ("f", path, size, mtime, code page) for a file (size -1:
+# absent), ("d", path, mtime) for a folder, ("e", path, exists) for a place looked at.
+Dep = tuple[Any, ...]
+
+
+class Checker:
+    """Checks stored dependencies against the file system, each path once per run."""
+
+    def __init__(self, encoding: Callable[[Path], str | None]) -> None:
+        self.encoding = encoding
+        self._stat: dict[str, os.stat_result | None] = {}
+
+    def stat(self, path: str) -> os.stat_result | None:
+        if path not in self._stat:
+            try:
+                self._stat[path] = os.stat(path)
+            except (OSError, ValueError):
+                self._stat[path] = None
+        return self._stat[path]
+
+    def holds(self, deps: Iterable[Dep]) -> bool:
+        """Is every dependency as it was?"""
+        for dep in deps:
+            tag, path = dep[0], dep[1]
+            st = self.stat(path)
+            if tag == "e":
+                if (st is not None) != dep[2]:
+                    return False
+            elif tag == "f":
+                if (st is None and dep[2] != -1) or (st is not None and (st.st_size != dep[2]
+                                                                         or st.st_mtime_ns != dep[3])):
+                    return False
+                if self.encoding(Path(path)) != dep[4]:
+                    return False
+            elif tag != "d" or st is None or st.st_mtime_ns != dep[2]:
+                return False
+        return True
+
+
+def settled(deps: Iterable[Dep], started: int) -> bool:
+    """Were all the files and folders last changed well before ``started`` (when the run began)?
+    Only then is what was read from them surely what their size and time now describe: a file
+    changed while the run read it, or in the same tick of a coarse clock, is left to the next run."""
+    return all(dep[0] == "e" or dep[3 if dep[0] == "f" else 2] < started - RACY_NS for dep in deps)
+
+
+def machine_deps(machine: Machine, encoding: Callable[[Path], str | None]) -> tuple[Dep, ...]:
+    """What a machine depends on: every list it read or looked for (the start-up list, each list it
+    names, found or not; for a start-up list that is no list file, every file of its folder), the
+    folders that hold them (a file added or removed), the places its working directory is looked
+    for (the start-up list's folder and the ancestors above it, each joined with each path the
+    start-up list names) and the places the project's ceiling is looked for (``.git`` and the
+    configuration files in every folder above it)."""
+    from zero.machine.model import MAX_ANCESTORS  # start-up: only with a machine
+
+    startup = split_part(machine.startup.path)[0]
+    files = [startup, *(split_part(n.path)[0] for n in machine.named if n.path is not None)]
+    if not is_list(startup):  # an export or a project: the other files of its folder may hold its lists
+        with contextlib.suppress(OSError):
+            folder = os.path.dirname(os.path.abspath(startup))
+            files += sorted(e.path for e in os.scandir(folder) if e.is_file())
+    out: list[Dep] = []
+    folders: dict[str, None] = {}
+    for f in dict.fromkeys(os.path.abspath(p) for p in files):
+        folders[os.path.dirname(f)] = None
+        try:
+            st = os.stat(f)
+            out.append(("f", f, st.st_size, st.st_mtime_ns, encoding(Path(f))))
+        except OSError:
+            out.append(("f", f, -1, -1, encoding(Path(f))))
+    for d in folders:
+        try:
+            out.append(("d", d, os.stat(d).st_mtime_ns))
+        except OSError:
+            out.append(("e", d, False))
+    base = Path(os.path.dirname(os.path.abspath(startup)))
+    raws = [r for r in (n.raw.strip().strip('"').replace("\\", "/") for n in machine.named)
+            if r and not controller_absolute(r)]
+    for n, above in enumerate((base, *base.parents)):
+        d = str(above)
+        if n <= MAX_ANCESTORS + 1:
+            out.extend(("e", os.path.join(d, r), os.path.exists(os.path.join(d, r))) for r in raws)
+        out.extend(("e", os.path.join(d, m), os.path.exists(os.path.join(d, m))) for m in (".git", *CONFIG_NAMES))
+    return tuple(out)
+
+
+# ----------------------------------------------------------------------------- lint results
+
+
+def _span(s: Span) -> tuple[int, int, int, int]:
+    return (s.line, s.column, s.end_line, s.end_column)
+
+
+def _fix(f: Fix | None) -> tuple[Any, ...] | None:
+    if f is None:
+        return None
+    return (f.title, f.safe, tuple((*_span(e.span), e.replacement) for e in f.edits))
+
+
+def pack_result(r: LintResult) -> tuple[Any, ...]:
+    """A lint result as plain tuples: the findings with everything they say, and of the document
+    only the lines they show (as many-file runs keep them)."""
+    doc = r.document
+    lines: dict[int, str] = {}
+    diagnostics = []
+    for d in r.diagnostics:
+        for n in (d.span.line, d.span.end_line):
+            if n not in lines and doc.has_line(n):
+                lines[n] = doc.line_text(n)
+        diagnostics.append((d.code, int(d.severity), d.message, _span(d.span), d.path, d.param_id, _fix(d.fix),
+                            d.hint, tuple((_span(x.span), x.message, x.path) for x in d.related), d.kernel_error,
+                            d.consequence, d.source))
+    shown = (doc.path, doc.encoding, doc.bom, doc.end_line, tuple(sorted(lines.items())))
+    return (r.path, r.kind, r.note, shown, tuple(diagnostics))
+
+
+def unpack_result(packed: tuple[Any, ...]) -> LintResult:
+    path, kind, note, (doc_path, encoding, bom, end_line, lines), found = packed
+    doc: Document = Excerpt(doc_path, encoding, [], [], [], [], bom, end_line, shown=dict(lines))
+    diagnostics = [
+        Diagnostic(code, Severity(severity), message, Span(*span), where, param_id,
+                   None if fix is None else Fix(fix[0], tuple(Edit(Span(*e[:4]), e[4]) for e in fix[2]), fix[1]),
+                   hint, tuple(Related(Span(*s), m, p) for s, m, p in related), kernel_error, consequence, source)
+        for (code, severity, message, span, where, param_id, fix, hint, related, kernel_error, consequence,
+             source) in found]
+    return LintResult(path, doc, kind, diagnostics, note)
+
+
+def _records_known() -> bool:
+    """Do the result and finding records have exactly the fields this module keeps?"""
+    return (tuple(f.name for f in fields(Diagnostic)) == _DIAGNOSTIC_FIELDS
+            and tuple(f.name for f in fields(LintResult)) == _RESULT_FIELDS)
+
+
+def refused_or_unreadable(r: LintResult) -> bool:
+    """A result about a file zero could not read or would not read (never kept)."""
+    return any(d.code == "F001" or (d.code in ("S014", "S017") and d.message.endswith("not checked"))
+               for d in r.diagnostics)
+
+
+class LintCache:
+    """``zero lint``'s results by file, for one run: :meth:`lookup` before linting, :meth:`store` after."""
+
+    def __init__(self, store: Store, project: Project) -> None:
+        self.disk = store
+        self.project = project
+        self.checker = Checker(project.encoding)
+        self.started = time.time_ns()  # before anything is read
+        self.cwd = os.getcwd()
+        # file → (entry name, its machine's name, (size, time, inode) before it was read)
+        self._keys: dict[Path, tuple[str, str | None, tuple[int, int, int]]] = {}
+        self._catalogues: dict[Path | None, tuple[str, ...]] = {}
+        self._holds: dict[str, bool] = {}  # a machine's name → do its files hold
+        self._deps: dict[str, tuple[Dep, ...] | None] = {}  # a machine's name → its files (None: not settled)
+        self.hits = 0
+        self.on = _records_known()
+
+    def _catalogue(self, desc: Path | None) -> tuple[str, ...]:
+        hit = self._catalogues.get(desc)
+        if hit is None:
+            hit = self._catalogues[desc] = catalogue_id(desc)
+        return hit
+
+    def _machine_part(self, path: Path) -> tuple[object, ...] | None:
+        """What of a machine decides a list's findings (its files are checked from the entry)."""
+        startup = self.project.startup(path)
+        if startup is None:
+            return None
+        cfg = self.project.config(startup)
+        own = self.project.config(path)
+        return (str(startup), str(self.project.machine_shown or own.machine), self.cwd, self.project.cli.kind,
+                _canonical(cfg.machine), _canonical(cfg.machine_lists), _canonical(cfg.machine_workdir),
+                _canonical(cfg.machine_roots))
+
+    def key(self, path: Path, data: bytes) -> tuple[str, str | None]:
+        """The entry name of a file as read now, and that of its machine (``None``: it has none).
+        :class:`TypeError` where the options cannot be fingerprinted, :class:`ZeroError` where the
+        catalogue cannot be read."""
+        machine = self._machine_part(path) if is_list(path) else None
+        machine_key = None if machine is None else fingerprint(machine)
+        parts = (generation(), "lint", str(path), digest(data).hex(), fingerprint(self.project.options(path)),
+                 self._catalogue(self.project.param_desc(path)), machine_key)
+        return fingerprint(parts), machine_key
+
+    def lookup(self, files: Iterable[Path]) -> dict[Path, LintResult]:
+        """The files whose results are kept and still hold, with them."""
+        out: dict[Path, LintResult] = {}
+        if not self.on:
+            return out
+        for f in files:
+            if is_program(f):
+                continue
+            try:
+                st = os.stat(f)
+                key, machine = self.key(f, read_file(f))
+            except (OSError, ZeroError, TypeError):
+                continue
+            self._keys[f] = (key, machine, (st.st_size, st.st_mtime_ns, st.st_ino))
+            value = self.disk.get(key)
+            if value is None:
+                continue
+            try:
+                packed, deps = value
+                if machine is not None:
+                    holds = self._holds.get(machine)
+                    if holds is None:
+                        holds = self._holds[machine] = self.checker.holds(deps)
+                    if not holds:
+                        continue
+                out[f] = unpack_result(packed)
+            except (TypeError, ValueError, KeyError, IndexError):
+                continue
+        self.hits = len(out)
+        return out
+
+    def store(self, path: Path, result: LintResult) -> None:
+        """Keep a file's result (the one reported: its machine's findings included), unless it is one
+        never kept, or the file (or a list of its machine) changed while the run read it or too
+        recently to tell; a failure to keep it is silent (the next run lints the file again)."""
+        known = self._keys.get(path)
+        if known is None or not self.on or refused_or_unreadable(result):
+            return
+        key, machine_key, before = known
+        try:
+            st = os.stat(path)
+        except OSError:
+            return
+        if (st.st_size, st.st_mtime_ns, st.st_ino) != before or st.st_mtime_ns >= self.started - RACY_NS:
+            return
+        deps: tuple[Dep, ...] | None = ()
+        if machine_key is not None:
+            deps = self._machine_deps(path, machine_key)
+            if deps is None:
+                return
+        with contextlib.suppress(ValueError, TypeError):
+            self.disk.put(key, (pack_result(result), deps))
+
+    def _machine_deps(self, path: Path, machine_key: str) -> tuple[Dep, ...] | None:
+        if machine_key not in self._deps:
+            try:
+                machine = self.project.machine(path)
+            except ZeroError:
+                machine = None
+            deps = machine_deps(machine, self.project.encoding) if machine is not None else None
+            self._deps[machine_key] = deps if deps is not None and settled(deps, self.started) else None
+        return self._deps[machine_key]
+
+    def merged(self, files: list[Path], hits: dict[Path, LintResult],
+               made: Iterator[LintResult]) -> Iterator[LintResult]:
+        """The results in the order of ``files``: kept ones from ``hits``, the others from ``made``
+        (made in the order of the files not in ``hits``)."""
+        for f in files:
+            hit = hits.get(f)
+            yield hit if hit is not None else next(made)
+
+
+def open_lint_cache(project: Project) -> LintCache | None:
+    """The lint cache of a run (``None``: switched off by ``ZERO_NO_CACHE``)."""
+    store = open_store(project)
+    return LintCache(store, project) if store is not None else None
+
+
+# ----------------------------------------------------------------------------- fleets
+
+
+class FleetCache:
+    """``zero diff --fleet``'s comparisons by machine, for one run: the golden machine's order and
+    files, and each machine's differences from it, valid while neither machine's files changed."""
+
+    def __init__(self, store: Store, project: Project, golden: str, options: object) -> None:
+        self.disk = store
+        self.project = project
+        self.checker = Checker(project.encoding)
+        self.started = time.time_ns()  # before anything is read
+        self.cwd = os.getcwd()
+        start = Path(os.path.abspath(golden))
+        self.common = (generation(), self.cwd, catalogue_id(project.param_desc(start)), fingerprint(options),
+                       project.cli.kind)
+        self.golden_key = fingerprint(("golden", str(start), golden, self._layout(start), *self.common))
+        self.golden_id: str | None = None  # the fingerprint of the golden machine's files, once known
+
+    def _layout(self, startup: Path) -> object:
+        cfg = self.project.config(startup)
+        return _canonical((cfg.machine, cfg.machine_lists, cfg.machine_workdir, cfg.machine_roots))
+
+    def deps(self, machine: Machine) -> tuple[Dep, ...] | None:
+        """A machine's files as they are kept, ``None`` where one changed too recently to tell."""
+        deps = machine_deps(machine, self.project.encoding)
+        return deps if settled(deps, self.started) else None
+
+    def golden_order(self) -> tuple[list[str], list[str]] | None:
+        """The golden machine's scope names and default lists' keys, if its files are as they were."""
+        value = self.disk.get(self.golden_key)
+        try:
+            deps, scopes, defaults = value
+            if not self.checker.holds(deps):
+                return None
+            self.golden_id = fingerprint(deps)
+            return list(scopes), list(defaults)
+        except (TypeError, ValueError):
+            return None
+
+    def put_golden(self, deps: tuple[Dep, ...] | None, scopes: list[str], defaults: list[str]) -> None:
+        """Keep the golden machine (``deps`` ``None``: not settled, so neither it nor any comparison)."""
+        self.golden_id = fingerprint(deps) if deps is not None else None
+        if deps is not None:
+            self.disk.put(self.golden_key, (deps, tuple(scopes), tuple(defaults)))
+
+    def _key(self, startup: str) -> str:
+        start = Path(os.path.abspath(startup))
+        return fingerprint(("machine", self.golden_id, str(start), startup, self._layout(start), *self.common))
+
+    def machine(self, startup: str) -> Any:
+        """A machine's stored comparison (as :meth:`put_machine` got it), if its files are as they were."""
+        if self.golden_id is None:
+            return None
+        value = self.disk.get(self._key(startup))
+        try:
+            packed, deps = value
+            return packed if self.checker.holds(deps) else None
+        except (TypeError, ValueError):
+            return None
+
+    def put_machine(self, startup: str, packed: object, deps: tuple[Dep, ...] | None) -> None:
+        if self.golden_id is not None and deps is not None:
+            self.disk.put(self._key(startup), (packed, deps))
+
+
+def open_fleet_cache(project: Project, golden: str, options: object) -> FleetCache | None:
+    store = open_store(project)
+    if store is None:
+        return None
+    try:
+        return FleetCache(store, project, golden, options)
+    except (ZeroError, TypeError):  # a description that cannot be read is said where it is loaded
+        return None
+
+
+__all__ = ["FOLDER", "MAX_BYTES", "MAX_ENTRIES", "Checker", "FleetCache", "LintCache", "Store", "cache_folder",
+           "catalogue_id", "disabled", "fingerprint", "generation", "machine_deps", "open_fleet_cache",
+           "open_lint_cache", "open_store", "pack_result", "unpack_result"]
