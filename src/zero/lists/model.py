@@ -107,6 +107,34 @@ def parse_key(text: str, trusted: bool = False) -> Key | None:
     return key
 
 
+_shapes: dict[tuple[str, str], tuple[str, tuple[int, ...]]] = {}
+
+
+def scanned_key(text: str, name: str, first: str | None, tail: str) -> Key:
+    """The key the tokenizer's fast path matched as ``name[first]tail`` (``first`` ``None``: no index
+    on the first name): what ``parse_key(text, True)`` gives, from one look-up per distinct shape
+    (``wz[].laenge``) instead of a parse of each key."""
+    got = _keys.get(text)
+    if got is not None:
+        return got
+    shape = _shapes.get((name, tail)) if first is not None else None
+    if shape is None:
+        if first is None:
+            return parse_key(text, True)  # type: ignore[return-value]  # trusted: never None
+        tail_pattern, tail_indices = _part(tail)
+        pattern = name + "[]" + tail_pattern
+        pattern = _patterns.get(pattern) or (
+            _patterns.setdefault(pattern, pattern) if len(_patterns) < _CACHE_LIMIT else pattern)
+        shape = (pattern, tail_indices)
+        if len(_shapes) < _CACHE_LIMIT and len(tail) < 512:
+            _shapes[(name, tail)] = shape
+    index = int(first) if len(first) <= MAX_INDEX_DIGITS else HUGE_INDEX
+    key = Key(text, shape[0], (index, *shape[1]) if shape[1] else (index,))
+    if len(_keys) < _KEY_CACHE_LIMIT:
+        _keys[text] = key
+    return key
+
+
 def format_key(pattern: str, indices: tuple[int, ...] | list[int]) -> str:
     """Fill the ``[]`` slots of a pattern with indices: the inverse of ``parse_key``."""
     parts = pattern.split("[]")

@@ -28,6 +28,7 @@ from zero.lists.model import (
     Problem,
     ValueKind,
     parse_key,
+    scanned_key,
 )
 
 END_KEYWORD = "Ende"
@@ -51,9 +52,11 @@ _MAX_KEY_JOINS = 8
 # The common line, matched in one go: `KEY VALUE [COMMENT]` where nothing needs the
 # careful scanner (no quotes, flags, key continuations or `Ende`). Whatever this does
 # not match goes to scan_line, which gives the same result for what it does match.
+# Groups: 1 the key, as 2 its first name, 3 that name's index (if any) and 4 the rest (what
+# model.scanned_key reads); 5 the value; 6 the comment.
 _FAST_ENTRY_RE = re.compile(
-    r"[ \t]*([A-Za-z_][A-Za-z0-9_]*(?:\[[0-9]+\])*(?:\.[A-Za-z0-9_]+(?:\[[0-9]+\])*)*)"
-    r"[ \t]+([^\s\"|.\[\]][^\s|]*)(?:[ \t]+([^\s|](?:(?<=\()\s*(P-[A-Z]{4}-[0-9]{5}))?.*)|[ \t]*)\Z",
+    r"[ \t]*(([A-Za-z_][A-Za-z0-9_]*)(?:\[([0-9]+)\])?((?:\[[0-9]+\])*(?:\.[A-Za-z0-9_]+(?:\[[0-9]+\])*)*))"
+    r"[ \t]+([^\s\"|.\[\]][^\s|]*)(?:[ \t]+([^\s|].*)|[ \t]*)\Z",
     re.DOTALL)
 _KIND_RE = re.compile(
     r"(?P<int>[+-]?[0-9]+)|(?P<hex>[+-]?0[xX][0-9A-Fa-f]+)|(?P<ref>P-[A-Z]{4}-[0-9]{5}(?:\.[0-9]+)?)"
@@ -291,10 +294,11 @@ def tokenize_text(text: str, path: str = "-", encoding: str = "utf-8", bom: bool
     after_end_reported = False
     fast = _FAST_ENTRY_RE.match if use_fast else None
     kind_match = _KIND_RE.fullmatch
-    # Values repeat ("0", "1"), and annotations and comments too (`( P-TOOL-00005`): each is
-    # classified once and kept once, whatever the number of entries that share it.
+    # Values repeat ("0", "1"), and comments too (`( P-TOOL-00005 : …`): each is classified once and
+    # kept once, whatever the number of entries that share it. A big list repeats a few dozen
+    # comments: one string each instead of 114,000 (17 MB of a 14 MB tool list).
     values: dict[str, tuple[str, ValueKind]] = {}
-    notes: dict[str, str] = {}
+    notes: dict[str, tuple[str, CommentStyle, str | None, int]] = {}
     append = items.append
     has_nul = "\x00" in text  # one scan of the text, not one per line
     for number, s in enumerate(lines, 1):
@@ -303,36 +307,35 @@ def tokenize_text(text: str, path: str = "-", encoding: str = "utf-8", bom: bool
             m = None
         else:
             m = fast(s) if fast is not None else None
-        if m is not None and end_line is None and m.group(1) != END_KEYWORD:
-            key_text, value, comment, note = m.group(1, 2, 3, 4)
-            seen = values.get(value)
-            if seen is not None:
-                value, kind = seen
-            else:
-                km = kind_match(value)
-                kind = _KIND_OF[km.lastgroup] if km is not None and km.lastgroup else ValueKind.WORD
-                if len(values) < 4096:
-                    values[value] = (value, kind)
-            ks, ke = m.span(1)
-            vs, ve = m.span(2)
-            if comment is None:
-                append(Entry(number, key_text, key_text, parse_key(key_text, True), ks, ke, value, kind, vs, ve))
+        if m is not None and end_line is None:
+            key_text, name, first, tail, value, comment = m.group(1, 2, 3, 4, 5, 6)
+            if key_text != END_KEYWORD:
+                seen = values.get(value)
+                if seen is not None:
+                    value, kind = seen
+                else:
+                    km = kind_match(value)
+                    kind = _KIND_OF[km.lastgroup] if km is not None and km.lastgroup else ValueKind.WORD
+                    if len(values) < 4096:
+                        values[value] = (value, kind)
+                ks, ke = m.span(1)
+                vs, ve = m.span(5)
+                key = scanned_key(key_text, name, first, tail)
+                if comment is None:
+                    append(Entry(number, key_text, key_text, key, ks, ke, value, kind, vs, ve))
+                    continue
+                known = notes.get(comment)
+                if known is None:
+                    am = _ANNOTATION_RE.search(comment) if "P-" in comment else None
+                    known = (comment, _STYLE_OF.get(comment[0]) or comment_style(comment),
+                             am.group(1) if am is not None else None, am.start(1) if am is not None else -1)
+                    if len(notes) < 4096:
+                        notes[comment] = known
+                comment, style, note, at = known
+                cs = m.start(6)
+                append(Entry(number, key_text, key_text, key, ks, ke, value, kind, vs, ve,
+                             comment, cs, style, note, cs + at if at >= 0 else -1))
                 continue
-            cs = m.start(3)
-            # A big list repeats a few dozen comments (a tool block's `( P-TOOL-00005 : …`): one
-            # string each instead of 114,000 (17 MB of a 14 MB tool list).
-            comment = notes.get(comment) or (notes.setdefault(comment, comment) if len(notes) < 4096 else comment)
-            style = _STYLE_OF.get(comment[0]) or comment_style(comment)
-            if note is not None:  # `( P-AXIS-00001 …` at the comment's start: matched above
-                ns = m.start(4)
-                note = notes.get(note) or (notes.setdefault(note, note) if len(notes) < 4096 else note)
-            elif "P-" in comment and (am := _ANNOTATION_RE.search(comment)) is not None:
-                note, ns = am.group(1), cs + am.start(1)
-            else:
-                ns = -1
-            append(Entry(number, key_text, key_text, parse_key(key_text, True), ks, ke, value, kind, vs, ve,
-                         comment, cs, style, note, ns))
-            continue
         if fast is not None:  # the common comment and blank lines, as scan_line reads them
             if s[:2] in _PLAIN_COMMENT or s == "#":
                 append(Comment(number, s))
