@@ -8,6 +8,9 @@ that is added gets its page at the next build, and ``tests/docs`` fails when one
 
 Run by ``mkdocs build`` (the ``gen-files`` plugin in ``mkdocs.yml``); ``tests/docs`` imports it
 and calls :func:`pages` to see which pages it makes without building the site.
+
+``ZERO_PARAM_DESC``, where set, names the user's own ``CncParaDesc.xml``: its German parameter names
+go onto the parameters' pages as search terms (read at build time, never written into the project).
 """
 
 from __future__ import annotations
@@ -136,11 +139,13 @@ def pages() -> dict[str, Callable[[], str]]:
     from zero.rules import RULES
 
     registry = load_registry()
+    desc = os.environ.get("ZERO_PARAM_DESC")  # the user's CncParaDesc.xml: its German names as search terms
+    german = docs.german_names(desc) if desc else {}
     out: dict[str, Callable[[], str]] = {
         "commands/index.md": _commands_index,
         "commands/SUMMARY.md": _commands_summary,
         "rules/index.md": docs.rules_index_page,
-        "parameters/index.md": partial(docs.params_index_page, registry),
+        "parameters/index.md": partial(docs.params_index_page, registry, desc),
         "parameters/SUMMARY.md": partial(_params_summary, registry),
     }
     for name in _commands()[2]:
@@ -154,7 +159,7 @@ def pages() -> dict[str, Callable[[], str]]:
     def param(pid: str) -> str:
         if not checks:
             checks.update(docs.param_checks(registry))
-        return docs.param_page(registry.specs[pid], registry, checks[pid])
+        return docs.param_page(registry.specs[pid], registry, checks[pid], german.get(pid))
 
     for pid in registry.specs:
         out[docs.param_page_path(pid)] = partial(param, pid)

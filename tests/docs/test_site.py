@@ -20,12 +20,13 @@ from types import ModuleType
 
 import pytest
 
-from conftest import ROOT
+from conftest import ROOT, corpus_dir
 from zero.catalog.registry import Registry
 from zero.output import docs
 from zero.rules import RULES
 
 CHROMIUM = Path("/usr/bin/chromium")
+CATALOGUE = corpus_dir() / "isg-sdk" / "meta-data" / "CncParaDesc.xml"  # the vendor's, read at build time only
 QUIET = {"NO_MKDOCS_2_WARNING": "1", "DISABLE_MKDOCS_2_WARNING": "true"}  # the plugins' banners, not warnings
 
 
@@ -181,9 +182,12 @@ def site(tmp_path_factory: pytest.TempPathFactory) -> Path:
     if reason:
         pytest.skip(reason)
     out = tmp_path_factory.mktemp("site")
+    env = {**os.environ, **QUIET}
+    if CATALOGUE.is_file():  # built as a user with the catalogue builds it: its German names as search terms
+        env["ZERO_PARAM_DESC"] = str(CATALOGUE)
     start = time.perf_counter()
     run = subprocess.run([sys.executable, "-m", "mkdocs", "build", "--strict", "--site-dir", str(out)],
-                         cwd=ROOT, capture_output=True, text=True, env={**os.environ, **QUIET}, timeout=600)
+                         cwd=ROOT, capture_output=True, text=True, env=env, timeout=600)
     took = time.perf_counter() - start
     assert run.returncode == 0, run.stderr[-5000:]
     pages = sum(1 for _ in out.rglob("index.html"))
@@ -444,7 +448,14 @@ def test_the_built_site_finds_german_words_and_filters_tables(site: Path, served
             assert any("parameters/P-AXIS-00178/" in link or "parameters/P-AXIS-00177/" in link
                        for link in links), links
             links = _search(page, served, "Nullpunktverschiebung")
-            assert any("parameters/P-ZERO-" in link for link in links), links
+            assert any("parameters/P-ZERO-00003/" in link for link in links), links
+            page.screenshot(path=str(tmp_path / "search-nullpunktverschiebung.png"))
+            if CATALOGUE.is_file():  # a word only the catalogue's German names give, none of zero's glossary
+                links = _search(page, served, "Festanschlag")
+                named = {pid for pid, name in docs.german_names(CATALOGUE).items() if "Festanschlag" in name}
+                assert links and all(link.split("/parameters/")[1].split("/")[0] in named for link in links), links
+            links = _search(page, served, "Endschalter")
+            page.screenshot(path=str(tmp_path / "search-endschalter.png"))
 
             page.goto(served + "parameters/AXIS/")
             box = page.locator("input.zero-filter").first
@@ -466,7 +477,54 @@ def test_the_built_site_finds_german_words_and_filters_tables(site: Path, served
             keep = os.environ.get("ZERO_DOCS_SCREENSHOTS")
             if keep:
                 Path(keep).mkdir(parents=True, exist_ok=True)
-                for shot in ("params-filtered.png", "rule-K093.png"):
+                for shot in ("params-filtered.png", "rule-K093.png", "search-endschalter.png",
+                             "search-nullpunktverschiebung.png"):
                     shutil.copy(tmp_path / shot, Path(keep) / shot)
         finally:
             browser.close()
+
+
+def _pages_with(monkeypatch: pytest.MonkeyPatch, catalogue: Path) -> dict[str, Callable[[], str]]:
+    monkeypatch.setenv("ZERO_PARAM_DESC", str(catalogue))
+    pages: dict[str, Callable[[], str]] = generator().pages()
+    return pages
+
+
+def test_the_catalogue_given_at_build_time_gives_german_names(corpus: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """Built with ``ZERO_PARAM_DESC``, each parameter page carries the German name the catalogue gives it, and
+    the glossary's words inside its compounds (Softwareendschalterüberwachung: Endschalter)."""
+    pages = _pages_with(monkeypatch, CATALOGUE)
+    swe_check = pages["parameters/P-AXIS-00705.md"]()
+    assert "German name (from the CncParaDesc.xml this site was built with): Softwareendschalterüberwachung" \
+        in swe_check
+    assert re.search(r"Search terms \(German\): .*\bEndschalter\b", swe_check)
+    assert "Festanschlag" in pages["parameters/P-AXIS-00330.md"]()
+    assert "`CncParaDesc.xml`, read at build time through `ZERO_PARAM_DESC`" in pages["parameters/index.md"]()
+
+
+def test_without_a_catalogue_no_vendor_text_reaches_the_pages(corpus: Path) -> None:
+    """The site built without a catalogue (the one zero publishes) holds zero's glossary words only: none of
+    the catalogue's German names of more than one word is on any parameter page."""
+    names = docs.german_names(CATALOGUE)
+    assert names["P-AXIS-00178"] == "Positiver Softwareendschalter"
+    if os.environ.get("ZERO_PARAM_DESC"):
+        pytest.skip("ZERO_PARAM_DESC is set: the pages are built with a catalogue")
+    long_names = {pid: name for pid, name in names.items() if len(name.split()) > 1}
+    for pid, name in long_names.items():
+        page = generated()[docs.param_page_path(pid)]()
+        assert docs.md_text(name) not in page, pid
+    assert "German name" not in generated()["parameters/P-AXIS-00178.md"]()
+    assert "Softwareendschalter, Endschalter" in generated()["parameters/P-AXIS-00178.md"]()  # the glossary's
+    assert "zero does not ship" in generated()["parameters/index.md"]()
+
+
+def test_a_bad_catalogue_at_build_time_is_a_located_error(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    from zero.errors import ZeroError
+
+    bad = tmp_path / "CncParaDesc.xml"
+    bad.write_text("<Parameters><Parameter>", encoding="utf-8")
+    with pytest.raises(ZeroError, match="cannot read parameter description"):
+        _pages_with(monkeypatch, bad)
+    bad.write_text("<other/>", encoding="utf-8")
+    with pytest.raises(ZeroError, match="not a CncParaDesc file"):
+        _pages_with(monkeypatch, bad)

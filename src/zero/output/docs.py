@@ -12,6 +12,7 @@ from typing import TYPE_CHECKING
 
 from zero.catalog.registry import KINDS, ParamSpec, Registry
 from zero.diagnostics import Diagnostic, Fix
+from zero.forms import EXTENSION, format_of
 from zero.records import record, replace
 from zero.rules import RULES
 
@@ -236,7 +237,7 @@ def findings_text(diagnostics: Sequence[Diagnostic], document: Document, name: s
 
 def _fixture(folder: Path, stem: str) -> Path | None:
     """``fail.lis`` / ``pass.lis``, or the XML, update-file or YAML form a rule's fixtures take."""
-    for suffix in (".xml", "-Update.xml", ".yaml", ".lis"):
+    for suffix in (EXTENSION["xml"], "-Update" + EXTENSION["xml"], EXTENSION["yaml"], EXTENSION["lis"]):
         if (folder / f"{stem}{suffix}").is_file():
             return folder / f"{stem}{suffix}"
     return None
@@ -271,9 +272,9 @@ _MACHINES: dict[tuple[Path, int], tuple[list[LintResult], list[LintResult]]] = {
 def _machine(startup: Path, registry: Registry) -> Machine | None:
     """A fixture machine as `zero lint --machine` builds it: through the one resolver, with no
     configuration but the catalogue given."""
-    from zero.engine.project import Project  # start-up: only the documentation site lints its examples
+    from zero.engine.project import Common, open_project  # start-up: only the documentation site lints its examples
 
-    return Project(lambda _path: registry, isolated=True).machine(startup=startup, required=True)
+    return open_project(lambda _path: registry, Common(isolated=True)).machine(startup=startup, required=True)
 
 
 def _machine_results(root: Path, registry: Registry) -> tuple[list[LintResult], list[LintResult]]:
@@ -299,7 +300,7 @@ def _machine_examples(code: str, root: Path, registry: Registry) -> RuleExamples
         mine = [d for d in result.diagnostics if d.code == code]
         if not mine:
             continue
-        path = Path(result.path)
+        path = Path(result.path).resolve()  # a machine's lists may be named relative to the working directory
         text, _ = shown_list(path.read_bytes())
         name = path.relative_to(root).as_posix()
         fail = Example("A failing machine: one of its lists", name, text, tuple(sorted({d.span.line for d in mine})),
@@ -373,8 +374,8 @@ def _fence(text: str) -> str:
 
 
 def _language(name: str) -> str:
-    return {".xml": "xml", ".yaml": "yaml", ".yml": "yaml", ".json": "json", ".toml": "toml"}.get(
-        Path(name).suffix.lower(), "text")
+    form = format_of(name)
+    return form if form is not None and form != "lis" else "text"
 
 
 def example_markdown(example: Example, code: str) -> str:
@@ -699,14 +700,31 @@ GERMAN: tuple[tuple[str, str], ...] = (
 _GERMAN = tuple((re.compile(pattern), words) for pattern, words in GERMAN)
 
 
-def german_terms(spec: ParamSpec) -> list[str]:
-    """German search terms for a parameter, from the German words in its key."""
+_GLOSSARY_WORDS = tuple(dict.fromkeys(w for _, said in GERMAN for w in said.split() if len(w) >= 6))
+
+
+def german_terms(spec: ParamSpec, name: str | None = None) -> list[str]:
+    """German search terms for a parameter: the glossary's words for the German abbreviations in its key,
+    and, given its German name from the user's catalogue (``name``), the glossary's words that name holds
+    inside its compounds (``Softwareendschalterüberwachung``: Endschalter), which a search for the
+    word alone would not find in it."""
     key = (spec.key or "").lower()
     words: list[str] = []
     for pattern, said in _GERMAN:
         if pattern.search(key):
             words += said.split()
+    if name:
+        folded = name.casefold()
+        words += [w for w in _GLOSSARY_WORDS if w.casefold() in folded]
     return list(dict.fromkeys(words))
+
+
+def german_names(path: str | Path) -> dict[str, str]:
+    """The German names (short descriptions) of the parameters in the user's ``CncParaDesc.xml``, read
+    when the site is built (``ZERO_PARAM_DESC``): they go into the pages built, never into this project."""
+    from zero.catalog.vendor_names import short_names  # start-up: only the documentation site
+
+    return short_names(path, "de")
 
 
 def _vendor_docs(spec: ParamSpec) -> list[str]:
@@ -732,9 +750,10 @@ def _vendor_docs(spec: ParamSpec) -> list[str]:
     return out
 
 
-def param_page(spec: ParamSpec, registry: Registry, checks: Sequence[Checked]) -> str:
+def param_page(spec: ParamSpec, registry: Registry, checks: Sequence[Checked], german: str | None = None) -> str:
     """A parameter's page: its facts (as ``zero param`` shows them), the rules that check it, where
-    the vendor documents it, and German search terms."""
+    the vendor documents it, and German search terms (``german``: its German name in the catalogue the
+    site is built with, where one is given)."""
     title = f"{spec.id} {spec.key}" if spec.key else spec.id
     out = [f"# {md_text(title)}", ""]
     if spec.description:
@@ -757,9 +776,11 @@ def param_page(spec: ParamSpec, registry: Registry, checks: Sequence[Checked]) -
     else:
         out.append("No rule zero knows of checks this parameter by its ID.")
     out += ["", "## Vendor documentation", "", *_vendor_docs(spec)]
-    german = german_terms(spec)
+    terms = german_terms(spec, german)
     if german:
-        out += ["", f"Search terms (German): {md_text(', '.join(german))}"]
+        out += ["", f"German name (from the CncParaDesc.xml this site was built with): {md_text(german)}"]
+    if terms:
+        out += ["", f"Search terms (German): {md_text(', '.join(terms))}"]
     out += ["", f"`zero param {spec.key or spec.id}` prints these facts in the terminal.", ""]
     return "\n".join(out)
 
@@ -779,8 +800,9 @@ def kind_page(kind: str, registry: Registry) -> str:
     return "\n".join(out)
 
 
-def params_index_page(registry: Registry) -> str:
-    """The parameters' index: one row per list kind."""
+def params_index_page(registry: Registry, german_source: str | None = None) -> str:
+    """The parameters' index: one row per list kind, and where the German search terms come from
+    (``german_source``: the catalogue the site was built with, where one was given)."""
     counts: dict[str, int] = {}
     for s in registry.specs.values():
         counts[s.kind] = counts.get(s.kind, 0) + 1
@@ -791,5 +813,16 @@ def params_index_page(registry: Registry) -> str:
     for kind in sorted(counts, key=lambda k: (list(KINDS).index(k) if k in KINDS else len(KINDS), k)):
         name = KINDS.get(kind, (kind, kind))[1]
         out.append(f"| [{md_text(name)}]({kind}.md) | `{kind}` | {counts[kind]} |")
+    out += ["", "## German search terms", ""]
+    if german_source:
+        out.append("Each parameter page carries the German name the catalogue this site was built with gives the "
+                   f"parameter ({md_code(Path(german_source).name)}, read at build time through "
+                   "`ZERO_PARAM_DESC` and not part of zero), and German words for the abbreviations in its key "
+                   "from zero's own glossary.")
+    else:
+        out.append("Each parameter page carries German words for the German abbreviations in its key (`swe`: "
+                   "Softwareendschalter, Endschalter) from zero's own glossary. The catalogue's German names are "
+                   "the vendor's text, which zero does not ship: build the site with `ZERO_PARAM_DESC` naming your "
+                   "`CncParaDesc.xml` and each page carries its German name too.")
     out.append("")
     return "\n".join(out)
