@@ -117,10 +117,10 @@ def scanned_key(text: str, name: str, first: str | None, tail: str) -> Key:
     got = _keys.get(text)
     if got is not None:
         return got
-    shape = _shapes.get((name, tail)) if first is not None else None
+    if first is None:
+        return parse_key(text, True)  # type: ignore[return-value]  # trusted: never None
+    shape = _shapes.get((name, tail))
     if shape is None:
-        if first is None:
-            return parse_key(text, True)  # type: ignore[return-value]  # trusted: never None
         tail_pattern, tail_indices = _part(tail)
         pattern = name + "[]" + tail_pattern
         pattern = _patterns.get(pattern) or (
