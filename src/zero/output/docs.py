@@ -776,12 +776,14 @@ def param_page(spec: ParamSpec, registry: Registry, checks: Sequence[Checked], g
     else:
         out.append("No rule zero knows of checks this parameter by its ID.")
     out += ["", "## Vendor documentation", "", *_vendor_docs(spec)]
-    terms = german_terms(spec, german)
-    if german:
-        out += ["", f"German name (from the CncParaDesc.xml this site was built with): {md_text(german)}"]
-    if terms:
-        out += ["", f"Search terms (German): {md_text(', '.join(terms))}"]
     out += ["", f"`zero param {spec.key or spec.id}` prints these facts in the terminal.", ""]
+    terms = german_terms(spec, german)
+    if german or terms:
+        out += ["## German", ""]
+    if german:
+        out += [f"German name (from the CncParaDesc.xml this site was built with): {md_text(german)}", ""]
+    if terms:
+        out += [f"Search terms (German): {md_text(', '.join(terms))}", ""]
     return "\n".join(out)
 
 
