@@ -413,7 +413,7 @@ def lint_update_in_machine(path: str, data: bytes, machine: Machine, registry: R
     STARTUP UPDATE``): its own findings, U003 when its axis number names no axis of the machine, and
     the findings its values get among the other values of the list it changes (the list with the
     update applied, each finding on the update's line). ``None`` when ``path`` is no update file."""
-    from zero.markup.documents import relocate, xml_document  # start-up: only for XML
+    from zero.markup.documents import xml_document  # start-up: only for XML
 
     if not is_update(path) or not is_xml(data):
         return None
@@ -431,9 +431,8 @@ def lint_update_in_machine(path: str, data: bytes, machine: Machine, registry: R
         extra.extend(_in_context(doc, target, registry, kind, severities))
     if not extra:
         return result
-    placed = funnel(path, [relocate(d, doc.origin) for d in extra], severities)
-    found = sorted([*result.diagnostics, *placed], key=lambda d: d.sort_key())
-    return replace(result, diagnostics=found)
+    # through the update's own funnel (its selection, severities and suppressions), as its own findings
+    return lint_document(doc, registry, replace(opts, kind=kind) if kind else opts, extra)
 
 
 def _update_target(doc: Document, kind: str | None, machine: Machine,
@@ -486,9 +485,10 @@ def _in_context(doc: Document, target: ListFile, registry: Registry, kind: str |
         lines.append(doc.lines[e.line - 1])
         where[len(lines)] = e.line
     merged = tokenize_text("\n".join([*lines, "Ende"]) + "\n", doc.path)
-    alone = {(d.code, d.span.line) for d in check_document(doc, registry, kind, severities)[1]}
+    # the update's directives are applied once, by its own funnel (lint_update_in_machine), not here
+    alone = {(d.code, d.span.line) for d in check_document(doc, registry, kind, severities, noqa=False)[1]}
     out = []
-    for d in check_document(merged, registry, kind, severities)[1]:
+    for d in check_document(merged, registry, kind, severities, noqa=False)[1]:
         line = where.get(d.span.line)
         if line is None or (d.code, line) in alone:
             continue

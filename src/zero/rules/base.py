@@ -70,7 +70,8 @@ def _shorten_word(m: re.Match[str]) -> str:
 
 
 class Reporter:
-    """Makes findings with the severity the run gives each code (the rule's default otherwise)."""
+    """Makes findings with the severity their evidence gives them (the run's severity for a code is
+    the funnel's to apply: :mod:`zero.rules.funnel`)."""
 
     __slots__ = ()
     severities: dict[str, Severity]
@@ -81,19 +82,18 @@ class Reporter:
                related: tuple[Related, ...] = (), kernel_error: str | None = None,
                claim: str | Claim | None = None) -> Diagnostic:
         """A finding of ``code``. Its severity, consequence and source follow its claim (``claim``, else
-        the rule's own claim in the evidence table: :mod:`zero.catalog.evidence`), unless the run
-        gives the code a severity other than the rule's default (the user's word wins)."""
+        the rule's own claim in the evidence table: :mod:`zero.catalog.evidence`); the rule's declared
+        severity is the most its findings can be. Whether it is reported, and with the severity the
+        run gives its code (the user's word wins), is decided by the funnel alone."""
         if len(message) > 300:
             message = _LONG_WORD.sub(_shorten_word, _LONG_QUOTED.sub(_shorten, message))
         default = _defaults.get(code, Severity.ERROR)
-        configured = self.severities.get(code)
         c = claim if isinstance(claim, Claim) else \
             evidence_claim(claim, self.list_kind) if claim is not None else rule_claim(code, self.list_kind)
         if c is None:
-            return Diagnostic(code, configured or default, message, span, self.path if path is None else path,
+            return Diagnostic(code, default, message, span, self.path if path is None else path,
                               param_id, fix, hint, related, kernel_error)
-        # the rule's declared severity is the most its findings can be; the evidence may lower it
-        severity = min(c.severity, default) if configured is None or configured is default else configured
+        severity = min(c.severity, default)  # the evidence may lower the declared severity
         return Diagnostic(code, severity, message, span, self.path if path is None else path,
                           param_id, fix, hint, related, kernel_error or c.kernel_error, c.consequence, c.source)
 
@@ -103,7 +103,14 @@ class Reporter:
         return None
 
 
-_defaults: dict[str, Severity] = {}  # code → default severity, filled as families declare rules
+_defaults: dict[str, Severity] = {}  # code → declared severity: set once, by the registry (zero.rules.families)
+
+
+def declare(severities: dict[str, Severity]) -> None:
+    """The declared severity of every rule, given by the one registry of families
+    (:mod:`zero.rules.families`, imported with :mod:`zero.rules`, before any check runs)."""
+    _defaults.clear()
+    _defaults.update(severities)
 
 
 def default_severity(code: str) -> Severity | None:
@@ -112,7 +119,7 @@ def default_severity(code: str) -> Severity | None:
 
 
 def declared_codes() -> set[str]:
-    """Every rule code the families have declared."""
+    """Every rule code the registry lists."""
     return set(_defaults)
 
 
@@ -185,7 +192,6 @@ class Family(Generic[C]):
             raise ValueError(f"rule {code} does not belong to family {self.letter} or is declared twice")
         r = Rule(code, name, severity, summary, explanation, self.scope, opt_in, reads)
         self.rules[code] = r
-        _defaults[code] = severity
         return r
 
     def check(self, *rules: Rule) -> Callable[[Callable[[C], Iterator[Diagnostic]]],
@@ -202,7 +208,8 @@ MAX_PER_CODE = 10_000  # findings of one code in one file; the rest are counted 
 
 
 def run_checks(checks: list[Check[C]], context: C) -> list[Diagnostic]:
-    """The findings of the selected rules, from the checks that report any of them: at most
+    """The findings of the checks that report any selected rule (``context.severities``: a pre-filter
+    for speed; what is reported is the funnel's decision, :mod:`zero.rules.funnel`): at most
     ``MAX_PER_CODE`` of one code, and then one that counts the rest (a file of five million
     malformed lines held five million findings: 9 GB and minutes; one root cause, a bounded report)."""
     severities = context.severities
@@ -213,8 +220,6 @@ def run_checks(checks: list[Check[C]], context: C) -> list[Diagnostic]:
         if not check.wanted(severities):
             continue
         for d in check.run(context):
-            if d.code not in severities:
-                continue
             n = counts.get(d.code, 0) + 1
             counts[d.code] = n
             if n <= MAX_PER_CODE:

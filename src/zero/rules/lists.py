@@ -1,6 +1,7 @@
-"""The list families together: one list checked by every selected S, R, M, U and K rule, then
-the suppressions written in it applied (Z). The engine lints a list through
-:func:`check_document`; the N rules lint the key and value of an ``AXPARAM`` the same way.
+"""The list families together: one list checked by every selected S, R, M, U and K rule, its
+findings (and those its machine or an update attach to it) decided by the one funnel
+(:mod:`zero.rules.funnel`: selection, severity, one root cause, the suppressions written in it).
+The engine lints a list through :func:`check_document`.
 
 One root cause, one finding: a K rule (the kernel's own documented start-up check, with its
 error number) supersedes the generic findings on the parameters it names (R005 out of range,
@@ -19,13 +20,10 @@ from zero.catalog.values import ListValues
 from zero.diagnostics import Diagnostic, Severity
 from zero.lists.model import Document
 from zero.records import replace
-from zero.rules import elements, meaning, registry, startup, suppress, syntax, update
-from zero.rules.base import Check, Context, declared_codes, run_checks
+from zero.rules import startup, suppress, syntax
+from zero.rules.base import Context, declared_codes, run_checks
+from zero.rules.families import LIST_CHECKS as CHECKS
 from zero.rules.funnel import funnel
-
-FAMILIES = (syntax.FAMILY, registry.FAMILY, meaning.FAMILY, update.FAMILY, startup.FAMILY)
-assert elements.FAMILY is syntax.FAMILY  # its checks are the syntax family's
-CHECKS: list[Check[Context]] = [c for family in FAMILIES for c in family.checks]
 
 # the generic findings a K rule on the same parameter supersedes
 SUPERSEDED = frozenset({"R005", "R006", "R011", "M001"})
@@ -46,8 +44,9 @@ def kernel_rules() -> dict[str, tuple[frozenset[str], str, str]]:
 
 
 def _kernel_first(ctx: Context, kept: list[Diagnostic]) -> list[Diagnostic]:
-    """``kept`` with the generic findings that a K finding on the same parameter (and the same
-    element of an array) supersedes left out, and each K finding with its consequence and source."""
+    """``kept`` (the selected findings: the funnel's consolidation step) with the generic findings that
+    a K finding on the same parameter (and the same element of an array) supersedes left out, and
+    each K finding with its consequence and source."""
     rules = kernel_rules()
     kernel = [d for d in kept if d.code in rules]
     if not kernel:
@@ -76,9 +75,10 @@ def check_document(doc: Document, registry: Registry, kind: str | None,
                    extra: Sequence[Diagnostic] = (), kernel: str | None = None,
                    default_list: bool = False, base: ListValues | None = None,
                    noqa: bool = True) -> tuple[Context, list[Diagnostic]]:
-    """The list's context (kind detected when ``None``) and its findings, sorted, suppressions applied.
-    ``extra``: findings about this list from elsewhere (the X rules of its machine), which pass the
-    same funnel (:mod:`zero.rules.funnel`): this list's selection, severities and suppressions.
+    """The list's context (kind detected when ``None``) and its findings as the funnel reports them
+    (:mod:`zero.rules.funnel`), sorted. ``extra``: findings about this list from elsewhere (the X rules
+    of its machine, an update's findings in the list it changes), which pass the same funnel: this
+    list's selection, severities and suppressions.
     ``kernel``: the kernel release the machine runs, where the configuration says it; ``default_list``:
     the machine reads this list as a default list (an XML list says so by its root element itself);
     ``base``: the default list the machine reads under this one (its values count where this list
@@ -93,6 +93,6 @@ def check_document(doc: Document, registry: Registry, kind: str | None,
         return ctx, funnel(doc.path, [d for d in syntax.check_problems(ctx) if d.code == "S013"], severities)
     found = run_checks(CHECKS, ctx)
     found.extend(extra)
-    # noqa=False (--ignore-noqa): the suppression directives written in the list are not applied
-    kept = funnel(doc.path, found, severities, suppress.parse_directives(doc, declared_codes()) if noqa else None)
-    return ctx, _kernel_first(ctx, kept)
+    # --ignore-noqa: the suppression directives written in the list are not applied
+    directives = suppress.parse_directives(doc, declared_codes()) if noqa else None
+    return ctx, funnel(doc.path, found, severities, directives, functools.partial(_kernel_first, ctx))

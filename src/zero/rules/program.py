@@ -34,14 +34,13 @@ from zero.lists.encoding import decode
 from zero.lists.tokenizer import tokenize
 from zero.nc import language as lang
 from zero.records import record
-from zero.rules import registry, syntax
-from zero.rules.base import INFO, E, Family, ProgramContext, W
+from zero.rules import elements, registry, syntax
+from zero.rules.base import INFO, Check, Context, E, Family, ProgramContext, W, run_checks
 
 if TYPE_CHECKING:  # start-up: a list's lint does not load the machine model
     from zero.catalog.registry import Registry
     from zero.machine.model import Axis, Channel, Machine
     from zero.nc.program import Program
-from zero.rules.lists import check_document
 
 MOD_CALC = "P-AXIS-00121"  # kenngr.mod_rechng: the axis counts modulo
 SOFT_LIMIT_WARNING_AXES = "P-CHAN-00147"  # soft_limit_warning_axes: bit j, channel axis j only warns
@@ -70,10 +69,12 @@ Example: `#MACHINE DATA [AX=X P-AXIS-00209=80000 WAIT]` (WAIT without SYN)
 Fix: write the block as in the manual's examples.
 """)
 
-# AXPARAM's key and value are checked like an entry of an axis list, by the S and R rules
-# (not R007/R008, which need a whole list).
+# AXPARAM's key and value are checked like an entry of an axis list, by the S and R checks (not
+# R007/R008, which need a whole list): what they say is this check's reading, its N001 the finding
+assert elements.FAMILY is syntax.FAMILY  # the S rules on XML elements are the syntax family's
 _AXPARAM_RULES = {code: rule.severity for family in (syntax.FAMILY, registry.FAMILY)
                   for code, rule in family.rules.items() if code not in ("R007", "R008")}
+_AXPARAM_CHECKS: list[Check[Context]] = [*syntax.FAMILY.checks, *registry.FAMILY.checks]
 
 
 def check_axparam(text: str, ctx: ProgramContext) -> list[str]:
@@ -82,7 +83,9 @@ def check_axparam(text: str, ctx: ProgramContext) -> list[str]:
     if len(parts) != 2:
         return [f"AXPARAM=\"{text}\" needs a key and a value (\"kenngr.swe_pos 15000000\")"]
     doc = tokenize(f"{parts[0]} {parts[1]}\n".encode("utf-8", "surrogateescape"), "axparam.lis")
-    _, found = check_document(doc, ctx.registry, "AXIS", _AXPARAM_RULES)
+    entry = Context.of(doc, ctx.registry, "AXIS")
+    entry.severities = _AXPARAM_RULES
+    found = sorted((d for d in run_checks(_AXPARAM_CHECKS, entry) if d.code in _AXPARAM_RULES), key=Diagnostic.sort_key)
     return [f"AXPARAM: {d.message}" for d in found if d.severity >= Severity.WARNING]
 
 
