@@ -1,7 +1,10 @@
 """The resolver: which configuration, catalogue and machine apply to a file.
 
 Every command and the language server ask one :class:`Project` (one per run, or per
-workspace in the server) three questions about a path, and no other module answers them:
+workspace in the server, built by :func:`open_project` and nowhere else) for the finished
+:class:`Settings` of a path (:meth:`Project.settings`), as ruff's ``Resolver::resolve(path)``
+gives one ``Settings`` per file with the command line laid over it once. A command reads
+what applies to a file from that one object, and no other module answers these questions:
 
 * **configuration**: the ``zero.toml`` / ``.zero.toml`` / ``pyproject.toml`` ``[tool.zero]``
   nearest the file (``--config`` for every file, ``--isolated`` none), found from the
@@ -20,6 +23,10 @@ workspace in the server) three questions about a path, and no other module answe
 In the spirit of ruff's settings resolver and flake8's style guide manager: resolved once,
 cached by identity (absolute paths and the registry object, never a string two different
 things could share), and the only place that reads a configuration file or loads a machine.
+
+Paths in messages: a machine's files are named relative to the current directory when they lie
+below it, else absolutely (as ruff names them), whether the start-up list came from ``--machine``
+or from ``[tool.zero.machine]`` (:func:`shown_path`; the language server names them absolutely).
 """
 
 from __future__ import annotations
@@ -35,6 +42,7 @@ from zero.engine.config import Config, ConfigFinder, is_inline
 from zero.engine.lint import LintOptions
 from zero.errors import ZeroError
 from zero.files import read_file, resolve
+from zero.records import field, record
 
 if TYPE_CHECKING:  # start-up: `zero lint` of lists loads no machine model
     from zero.lists.model import Document
@@ -49,6 +57,97 @@ Layout = tuple[dict[str, Path], Path | None, tuple[tuple[str, Path], ...]]  # ov
 def absolute(path: str | Path) -> Path:
     """``path`` made absolute against the current directory, links and ``..`` kept as written."""
     return Path(os.path.abspath(path))
+
+
+def shown_path(path: str | Path, base: Path | None) -> Path:
+    """How messages name a file: relative to ``base`` (the current directory of the run) when it lies
+    below it, else absolute (ruff's ``relativize_path``); ``base`` ``None``: always absolute (the
+    language server, whose current directory is nobody's)."""
+    full = absolute(path)
+    if base is not None:
+        try:
+            rel = full.relative_to(base)
+        except ValueError:
+            return full
+        return rel if rel.parts else Path(".")
+    return full
+
+
+@record(frozen=True)
+class Common:
+    """The options of every command that reads lists (declared once in :mod:`zero.cli.options`):
+    ``--config`` (a file, or ``KEY = VALUE`` over the configuration that applies), ``--isolated``,
+    ``--param-desc`` and the kernel release (``--kernel``, laid over as ``kernel = …``)."""
+
+    config: tuple[str, ...] = ()
+    isolated: bool = False
+    param_desc: Path | None = None
+    kernel: str | None = None
+
+    @property
+    def configs(self) -> tuple[str, ...]:
+        """``--config`` with the kernel release as one more ``KEY = VALUE`` over it."""
+        if self.kernel is None:
+            return self.config
+        escaped = self.kernel.replace("\\", "\\\\").replace('"', '\\"')
+        return (*self.config, f'kernel = "{escaped}"')
+
+
+def common_of(config: str | Path | Sequence[str] | None, isolated: bool = False,
+              param_desc: str | Path | None = None, kernel: str | None = None) -> Common:
+    """The common options as a library function is given them (``config``: one file, or files and
+    ``KEY = VALUE`` overrides)."""
+    given = [config] if isinstance(config, (str, Path)) else list(config or ())
+    return Common(tuple(str(c) for c in given), isolated, Path(param_desc) if param_desc else None, kernel)
+
+
+@record(frozen=True, eq=False)
+class Settings:
+    """Everything that applies to one file, resolved once: its configuration, the lint options with
+    the command line laid over them (per-file ignores, severities, kind, code page, kernel release),
+    the catalogue it is read against, and (lazily) the machine it belongs to. Every command and the
+    language server read a file's answers from here, never from the configuration or the loaders."""
+
+    path: Path | None  # the file (None: standard input without a name, or the current directory's)
+    config: Config
+    options: LintOptions
+    param_desc: Path | None  # the parameter description of the catalogue (None: the built-in table)
+    project: Project = field(repr=False)
+
+    @property
+    def root(self) -> Path:
+        """The folder relative paths of the configuration are relative to."""
+        return self.config.root
+
+    @property
+    def encoding(self) -> str | None:
+        """The code page the configuration declares for the list (None: detected from the bytes)."""
+        return self.options.encoding
+
+    @property
+    def release(self) -> str | None:
+        """The kernel release the machines run (``kernel``, ``--kernel``); None: not said."""
+        return self.options.kernel
+
+    @property
+    def kind(self) -> str | None:
+        """The list kind the command line or the configuration forces (None: detected)."""
+        return self.options.kind
+
+    @property
+    def registry(self) -> Registry:
+        """The catalogue (loaded once per description, :class:`ZeroError` when it cannot be read)."""
+        return self.project.registries(self.param_desc)
+
+    @property
+    def startup(self) -> Path | None:
+        """The start-up list of the machine the file belongs to (absolute), if one is named."""
+        return self.project.startup(self.path)
+
+    def machine(self, *, required: bool = False, reader: Reader | None = None,
+                reader_key: Hashable = None) -> Machine | None:
+        """The machine the file belongs to, read once per run (:meth:`Project.machine`)."""
+        return self.project.machine(self.path, required=required, reader=reader, reader_key=reader_key)
 
 
 def _signature(machine: Machine, encoding: Callable[[Path], str | None]) -> Signature:
@@ -70,8 +169,9 @@ class Project:
 
     def __init__(self, registries: Registries, *, config: str | Path | Sequence[str] | None = None,
                  isolated: bool = False, param_desc: str | Path | None = None, cli: LintOptions | None = None,
-                 machine: str | Path | None = None) -> None:
+                 machine: str | Path | None = None, shown_from: Path | None = None) -> None:
         self.registries = registries
+        self.shown_from = shown_from  # messages name a machine's files relative to it (None: absolutely)
         given = [config] if isinstance(config, (str, Path)) else list(config or ())
         files = [Path(c) for c in given if not is_inline(str(c))]
         if len(files) > 1:
@@ -81,9 +181,26 @@ class Project:
         self.param_desc_given = Path(param_desc) if param_desc else None
         self.cli = cli or LintOptions()
         self.machine_given = absolute(machine) if machine is not None else None
-        self.machine_shown = Path(machine) if machine is not None else None
+        self.machine_shown = shown_path(machine, shown_from) if machine is not None else None
+        self._settings: dict[Path | None, Settings] = {}
         self._machines: dict[Hashable, tuple[Signature, Machine]] = {}
         self._shaped: OrderedDict[Hashable, Machine] = OrderedDict()  # read with an editor's unsaved text
+
+    def shown(self, path: str | Path) -> Path:
+        """How messages of this run name a file (:func:`shown_path`)."""
+        return shown_path(path, self.shown_from)
+
+    # ----------------------------------------------------------------- settings
+
+    def settings(self, path: Path | None) -> Settings:
+        """The finished settings of one file: its configuration with the command line laid over it
+        once (cached by the path; :meth:`forget` drops them)."""
+        hit = self._settings.get(path)
+        if hit is None:
+            cfg = self.config(path)
+            options = cfg.options_for(path if path is not None else Path("-"), self.cli)
+            hit = self._settings[path] = Settings(path, cfg, options, self.param_desc_given or cfg.param_desc, self)
+        return hit
 
     # ----------------------------------------------------------------- configuration
 
@@ -95,13 +212,13 @@ class Project:
         return self.finder.for_path(path, directory)
 
     def options(self, path: Path | None) -> LintOptions:
-        """The options of one file: the command line over its configuration."""
-        return self.config(path).options_for(path if path is not None else Path("-"), self.cli)
+        """The options of one file: the command line over its configuration (:meth:`settings`)."""
+        return self.settings(path).options
 
     def encoding(self, path: Path | None) -> str | None:
         """The codec the configuration declares for a list (``[tool.zero] encoding``), else ``None``:
         detected from the bytes. Standard input without a name has none."""
-        return self.config(path).encoding_for(path) if path is not None else None
+        return self.config(path).encoding_for(path) if path is not None else None  # asked per file of a machine
 
     def excluded(self, path: Path) -> bool:
         """Excluded by the configuration of the directory that holds it (a file or a directory)."""
@@ -118,11 +235,11 @@ class Project:
 
     def param_desc(self, path: Path | None) -> Path | None:
         """The parameter description of a file: the command line's, else its configuration's."""
-        return self.param_desc_given or self.config(path).param_desc
+        return self.settings(path).param_desc
 
     def registry(self, path: Path | None) -> Registry:
         """The catalogue a file is checked against (:class:`ZeroError` when a description cannot be read)."""
-        return self.registries(self.param_desc(path))
+        return self.settings(path).registry
 
     # ----------------------------------------------------------------- machine
 
@@ -144,10 +261,12 @@ class Project:
         says what it gives (the machines read with it are kept apart)."""
         if startup is not None:
             start: Path | None = absolute(startup)
-            shown: Path | None = Path(startup)
+            shown: Path | None = shown_path(startup, self.shown_from)
         else:
             start = self.startup(path)
-            shown = self.machine_shown if self.machine_given is not None else self.config(path).machine
+            named = self.config(path).machine
+            shown = self.machine_shown if self.machine_given is not None else \
+                shown_path(named, self.shown_from) if named is not None else None
         if start is None or shown is None:
             if required:
                 raise ZeroError("name the start-up list with --machine (or [tool.zero.machine] startup)")
@@ -205,13 +324,15 @@ class Project:
 
     def forget(self) -> None:
         """Configuration files changed (or may have): find and read them again."""
-        self.finder = ConfigFinder(self.finder.explicit.path if self.finder.explicit else None, self.finder.isolated)
+        self.finder = ConfigFinder(self.finder.explicit.path if self.finder.explicit else None, self.finder.isolated,
+                                   self.finder.overrides)
+        self._settings.clear()
 
 
 def require_startup(machine: Machine, registry: Registry) -> Machine:
     """A machine question needs a start-up list that names lists: anything else is said plainly."""
     doc = machine.startup.values.doc
-    kind = doc.declared_kind() or registry.detect_kind((e.key.pattern for e in doc.entries if e.key), doc.path)
+    kind = registry.kind_of(doc)
     if not machine.named:
         if kind not in (None, "STUP"):
             raise ZeroError(f"not a start-up list: it reads as a {KINDS[kind][1]} and names no other list; "
@@ -221,13 +342,26 @@ def require_startup(machine: Machine, registry: Registry) -> Machine:
     return machine
 
 
-__all__ = ["Project", "Registries", "absolute", "require_startup"]
+def open_project(registries: Registries, common: Common | None = None, *, cli: LintOptions | None = None,
+                 machine: str | Path | None = None, shown_from: Path | bool | None = True) -> Project:
+    """The resolver of one run (ruff's ``resolve``: isolated defaults, one ``--config``, or the
+    configuration found per file): the one place a :class:`Project` is made. ``shown_from``: the
+    folder messages name a machine's files relative to (``True``: the current directory; ``None``:
+    absolutely, as the language server does)."""
+    common = common or Common()
+    base = Path(os.path.abspath(os.curdir)) if shown_from is True else shown_from or None
+    return Project(registries, config=common.configs, isolated=common.isolated, param_desc=common.param_desc,
+                   cli=cli, machine=machine, shown_from=base)
+
+
+__all__ = ["Common", "Project", "Registries", "Settings", "absolute", "common_of", "open_project", "require_startup",
+           "shown_path"]
 
 
 def _no_catalogue(_desc: Path | None) -> Registry:
     raise ZeroError("no catalogue is resolved here")  # pragma: no cover - only configurations are asked
 
 
-def configurations_only() -> Project:
+def configurations_only(common: Common | None = None) -> Project:
     """A project asked only for configurations (a list's declared code page): it loads no catalogue."""
-    return Project(_no_catalogue)
+    return open_project(_no_catalogue, common)
