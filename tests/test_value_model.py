@@ -111,3 +111,16 @@ def test_effective_values_answer_any_spelling(tmp_path: Path, registry: Registry
     (value,) = scope.values
     assert (value.key, value.param_id, value.value) == (NEW, PID, "10")
     assert [o.source for _, o in value.layers] == ["list", "catalogue default"]
+
+
+def test_the_language_server_hovers_an_older_spelling(registry: Registry) -> None:
+    """The editor's hover bound a key by its documented spelling and alias only: over
+    `antr_simu.zeitkonstante_z` it showed nothing, while lint (R013) and `zero show` bind it."""
+    from zero.server import hover
+    from zero.server.documents import Projects
+
+    a = Projects(lambda _desc: registry).analyse("untitled:achsmds1.lis", 1, f"kopf.achs_nr 1\n{OLD} 10\n")
+    h = hover.hover(a, 1, 3)
+    assert h is not None and isinstance(h.contents, str) is False
+    text = getattr(h.contents, "value", "")
+    assert text.startswith(f"**{OLD}** — {PID}") and f"key      {NEW}" in text

@@ -21,7 +21,7 @@ from lsprotocol import types
 from zero.catalog.ids import length_text
 from zero.catalog.ranges import Number, format_number
 from zero.catalog.registry import KINDS, ParamSpec, Registry
-from zero.catalog.values import ListValues, read_value, rotary
+from zero.catalog.values import ListValues, bind, read_value, rotary
 from zero.forms import LIST, PROGRAM, STRUCTURED, format_of
 from zero.lists.model import Comment, Entry, format_key, parse_key
 from zero.machine.effective import Origin, canonical, scope_values
@@ -67,13 +67,9 @@ def _id_at(line: str, col: int, registry: Registry) -> Target | None:
 
 
 def _spec_of(registry: Registry, key: str, kind: str | None) -> tuple[ParamSpec | None, bool]:
-    parsed = parse_key(key)
-    if parsed is None:
-        return None, False
-    spec = registry.by_pattern(parsed.pattern, kind)
-    if spec is not None:
-        return spec, False
-    return registry.alias(parsed.pattern, kind), True
+    parsed = parse_key(key)  # bound as every reader of values binds it (an alias, another release's spelling)
+    hit = bind(registry, parsed.pattern, kind) if parsed is not None else None
+    return hit if hit is not None else (None, False)
 
 
 def _entry_target(entry: Entry, registry: Registry, kind: str | None) -> Target | None:
