@@ -124,3 +124,10 @@ def test_the_language_server_hovers_an_older_spelling(registry: Registry) -> Non
     assert h is not None and isinstance(h.contents, str) is False
     text = getattr(h.contents, "value", "")
     assert text.startswith(f"**{OLD}** — {PID}") and f"key      {NEW}" in text
+
+
+def test_zero_param_binds_an_older_spelling(tmp_path: Path) -> None:
+    """`zero param antr_simu.zeitkonstante_z` answered "unknown parameter" (did you mean the new one?)."""
+    run = zero_cli("param", OLD, cwd=tmp_path)
+    assert run.code == 0, run.stderr
+    assert f"ID       {PID}" in run.stdout and f"key      {NEW}" in run.stdout

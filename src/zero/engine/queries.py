@@ -12,6 +12,7 @@ from collections.abc import Callable, Sequence
 from pathlib import Path
 
 from zero.catalog.registry import ParamSpec, Registry
+from zero.catalog.values import bind
 from zero.diff import Change, DiffOptions, Side, diff_defaults, diff_sides, read_side
 from zero.engine.convert import source_format
 from zero.engine.project import Project, configurations_only
@@ -155,9 +156,9 @@ def find_param(registry: Registry, name: str, kind: str | None = None) -> ParamL
         return ParamLookup(spec)
     key = parse_key(text)
     if key is not None:
-        spec = registry.by_pattern(key.pattern, kind) or registry.alias(key.pattern, kind)
-        if spec is not None:
-            return ParamLookup(spec, key.indices)
+        hit = bind(registry, key.pattern, kind)  # as every reader of values binds it: another release's spelling too
+        if hit is not None:
+            return ParamLookup(hit[0], key.indices)
     found = registry.search(name)
     if len(found) == 1:
         return ParamLookup(found[0], searched=True)
