@@ -131,3 +131,16 @@ def test_zero_param_binds_an_older_spelling(tmp_path: Path) -> None:
     run = zero_cli("param", OLD, cwd=tmp_path)
     assert run.code == 0, run.stderr
     assert f"ID       {PID}" in run.stdout and f"key      {NEW}" in run.stdout
+
+
+def test_the_language_server_completes_the_values_of_an_older_spelling(registry: Registry) -> None:
+    """Value completion bound the key by its documented spelling and alias only: no values after
+    `antr.sercos.reference_cam_signal` (today `antr.reference_cam_signal`), as zero show binds it."""
+    from zero.server import completion
+    from zero.server.documents import Projects
+
+    key = "antr.sercos.reference_cam_signal"
+    text = f"kopf.achs_nr 1\n{key} \n"
+    a = Projects(lambda _desc: registry).analyse("untitled:achsmds1.lis", 1, text)
+    labels = {i.label for i in completion.completion(a, 1, len(key) + 1, False).items}
+    assert {"PLC", "RT_STATUS_BIT_1"} <= labels

@@ -18,7 +18,7 @@ import re
 from lsprotocol import types
 
 from zero.catalog.registry import ParamSpec, Registry
-from zero.catalog.values import ListValues
+from zero.catalog.values import ListValues, bind
 from zero.forms import LIST, PROGRAM, XML_LIST, XML_ROOTS, root_of
 from zero.lists.model import Entry, parse_key
 from zero.markup.lists import escape, key_of
@@ -190,9 +190,10 @@ def _value_items(a: Analysis, kind: str | None, line: int, start: int, col: int,
     parsed = parse_key(key)
     if parsed is None:
         return []
-    spec = a.registry.by_pattern(parsed.pattern, kind) or a.registry.alias(parsed.pattern, kind)
-    if spec is None:
+    hit = bind(a.registry, parsed.pattern, kind)  # as every reader of values binds it: another release's spelling too
+    if hit is None:
         return []
+    spec = hit[0]
     items = _Items(a, line, start, col, False)
     _spec_values(items, spec, a.registry)
     return items.items
