@@ -192,3 +192,25 @@ def test_the_decision_lives_in_the_funnel_alone() -> None:
                     and isinstance(node.left, ast.Attribute) and node.left.attr == "code":
                 comparators = [ast.unparse(c) for c in node.comparators]
                 assert not any("severities" in c or "selected" in c for c in comparators), (rel, node.lineno)
+
+
+def test_the_language_server_takes_the_same_funnel(tmp_path: Path, registry: Registry) -> None:
+    """The editor's findings are `zero lint`'s: the configuration's selection with its per-file ignore,
+    its severity, and the list's own directives."""
+    from zero.server.documents import Projects
+
+    (tmp_path / "zero.toml").write_text('select = ["R005", "M"]\n[severity]\nR005 = "info"\n'
+                                        '[per-file-ignores]\n"old/*.lis" = ["R"]\n')
+    for folder in ("old", "new"):
+        (tmp_path / folder).mkdir()
+        (tmp_path / folder / "achsmds1.lis").write_bytes(AXIS % b"")
+
+    def found(folder: str, text: bytes) -> list[tuple[str, Severity]]:
+        uri = (tmp_path / folder / "achsmds1.lis").as_uri()
+        a = Projects(lambda _desc: registry).analyse(uri, 1, text.decode())
+        assert a.result is not None
+        return [(d.code, d.severity) for d in a.result.diagnostics]
+
+    assert found("new", AXIS % b"") == [("R005", Severity.INFO)]
+    assert found("old", AXIS % b"") == []
+    assert found("new", AXIS % b"  ( noqa: R005 )") == []
