@@ -213,6 +213,25 @@ def test_the_value_the_controller_uses_units_and_default(machine: dict[str, Any]
     page.close()
 
 
+def test_rows_a_finding_concerns_carry_its_code(machine: dict[str, Any], browser: Any) -> None:
+    """A value row on the line of a finding carries the finding's code, linked to it (the rows were unmarked)."""
+    page = browser.new_page(viewport={"width": 1366, "height": 900})
+    page.goto(machine["html"].as_uri())
+    rows = page.eval_on_selector_all("#value-table tbody tr", """trs => trs
+        .filter(tr => tr.querySelector('td.key a.badge'))
+        .map(tr => [tr.dataset.scope.split(' (')[0], tr.querySelector('td.key').firstChild.textContent.trim(),
+                    [...tr.querySelectorAll('td.key a.badge')].map(a => [a.textContent, a.getAttribute('href')])])""")
+    marked = {(scope, key): badges for scope, key, badges in rows}
+    assert [code for code, _ in marked[("axis 2", "kenngr.swe_check")]] == ["M005"]
+    assert [code for code, _ in marked[("axis 3", "kenngr.swe_behaviour")]] == ["M006"]
+    assert [code for code, _ in marked[("axis 5", "getriebe[0].gear_fact_denom")]] == ["K093"]
+    for badges in marked.values():
+        for code, href in badges:
+            assert page.locator(f"{href}.finding").get_attribute("data-code") == code  # each leads to its finding
+    assert ("axis 1", "kenngr.swe_check") not in marked  # a row no finding concerns stays unmarked
+    page.close()
+
+
 # ---------------------------------------------------------------------------------- layout
 
 
