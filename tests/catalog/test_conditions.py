@@ -4,7 +4,7 @@ from __future__ import annotations
 
 import pytest
 
-from zero.catalog.conditions import DEFAULT_LIST, compile_condition, parse, ref_elements, refs
+from zero.catalog.conditions import DEFAULT_LIST, compile_condition, parse, ref_elements, refs, supported_drive_types
 
 
 def run(text: str, values: dict[str, float | int | str | None]) -> object:
@@ -85,7 +85,36 @@ def test_every_drive_type_row_is_sourced_and_known(registry: object) -> None:
     for row in DRIVE_TYPES:
         assert str(row["source"]).startswith("https://infosys.beckhoff.com/"), row
         assert set(row["types"]) <= {1, 2, 3, 4, 5, 6, 7, 8, 16, 32}, row  # P-AXIS-00020's documented values
-        assert registry.get(row["param"]) is not None, row  # type: ignore[attr-defined]
+        assert ("param" in row) != ("key" in row), row  # one parameter, or one subtree of keys
+        if "param" in row:
+            assert registry.get(row["param"]) is not None, row  # type: ignore[attr-defined]
+        else:
+            assert str(row["key"]).endswith("."), row
+
+
+def test_each_drive_type_fact_lives_in_one_table(registry: object) -> None:
+    """Issue 38: the evidence table's drive-type rows (a range finding on a parameter of another drive
+    type is information) are drive_types.toml's, compiled by key (tools/gen_evidence.py), not a second
+    table: what supports() reads and what a range finding says come from the same row."""
+    import tomllib
+
+    from conftest import ROOT
+    from zero.catalog.data.drive_types import DRIVE_TYPES
+    from zero.catalog.data.evidence_table import DRIVES
+    from zero.catalog.evidence import drive_types
+
+    assert "drive" not in tomllib.loads((ROOT / "src" / "zero" / "catalog" / "data" / "evidence.toml")
+                                        .read_text(encoding="utf-8"))
+    assert len(DRIVES) == len(DRIVE_TYPES)
+    for row, compiled in zip(DRIVE_TYPES, DRIVES, strict=True):
+        key = row["key"] if "key" in row else registry.get(row["param"]).key  # type: ignore[attr-defined]
+        assert compiled == {"key": key, "types": row["types"], "source": row["source"]}
+    assert drive_types("lr_hw[].mask_mess_1") == ((2,), "https://infosys.beckhoff.com/content/1033/"
+                                                  "tf5200_axis_parameter/117337611.html")
+    assert drive_types("antr.sercos.times.t1") is not None  # a subtree
+    assert drive_types("kenngr.measure.input_edge_banding") == ((2, 3), "https://infosys.beckhoff.com/content/"
+                                                                "1033/tf5200_axis_parameter/117333003.html")
+    assert supported_drive_types("P-AXIS-00106") == frozenset({2})  # and supports() reads the same row
 
 
 def test_facts_of_the_whole_list_are_asked_of_the_lookup() -> None:

@@ -41,7 +41,7 @@ def _at(found: list[Diagnostic]) -> list[tuple[int, str, str]]:
 def test_the_compiled_table_is_the_toml() -> None:
     """tools/gen_evidence.py was run after the last edit of evidence.toml."""
     data = tomllib.loads((DATA / "evidence.toml").read_text(encoding="utf-8"))
-    assert data["claim"] == CLAIMS and data["rules"] == RULES and data.get("drive", []) == DRIVES
+    assert data["claim"] == CLAIMS and data["rules"] == RULES and "drive" not in data and DRIVES  # drive_types.toml's
 
 
 def test_an_error_needs_a_documented_consequence_and_its_page() -> None:

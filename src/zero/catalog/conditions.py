@@ -294,7 +294,8 @@ def _num(v: Number | bool) -> Number:
 def _drive_types() -> dict[str, frozenset[int]]:
     from zero.catalog.data.drive_types import DRIVE_TYPES  # start-up: read at the first supports()
 
-    return {str(row["param"]): frozenset(int(str(t)) for t in row["types"]) for row in DRIVE_TYPES}
+    return {str(row["param"]): frozenset(int(str(t)) for t in row["types"]) for row in DRIVE_TYPES
+            if "param" in row}  # a row for a subtree of keys (`antr.sercos.`) names no one parameter
 
 
 _SUPPORTED: dict[str, frozenset[int]] = {}

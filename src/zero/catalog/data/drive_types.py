@@ -5,6 +5,9 @@ Generated: do not edit."""
 from typing import Any
 
 DRIVE_TYPES: list[dict[str, Any]] = [
+    {'param': 'P-AXIS-00106', 'types': [2], 'names': 'SERCOS (lr_hw[].mask_mess_1)', 'source': 'https://infosys.beckhoff.com/content/1033/tf5200_axis_parameter/117337611.html'},
+    {'param': 'P-AXIS-00060', 'types': [2], 'names': 'SERCOS (kenngr.echtzeit_bit_nr)', 'source': 'https://infosys.beckhoff.com/content/1031/tf5200_axis_parameter/117336075.html'},
+    {'key': 'antr.sercos.', 'types': [2], 'names': 'SERCOS (the antr.sercos.* parameters)', 'source': 'https://infosys.beckhoff.com/content/1033/tf5200_axis_parameter/117965323.html'},
     {'param': 'P-AXIS-00294', 'types': [5], 'names': 'Lightbus', 'source': 'https://infosys.beckhoff.com/content/1031/tf5200_axis_parameter/117257867.html'},
     {'param': 'P-AXIS-00388', 'types': [2], 'names': 'SERCOS ("this parameter is currently supported only for SERCOS")', 'source': 'https://infosys.beckhoff.com/content/1031/tf5200_axis_parameter/117920395.html'},
     {'param': 'P-AXIS-00539', 'types': [2, 3], 'names': 'SERCOS, Profidrive (remarks: a value other than 0 for other drive types is error 110614)', 'source': 'https://infosys.beckhoff.com/content/1033/tf5200_axis_parameter/117333003.html'},
