@@ -17,4 +17,6 @@ DRIVE_TYPES: list[dict[str, Any]] = [
     {'param': 'P-AXIS-00709', 'types': [4, 2, 3, 8, 6], 'names': 'Simulation, SERCOS, Profidrive, CANopen, Terminal', 'source': 'https://infosys.beckhoff.com/content/1031/tf5200_axis_parameter/117947403.html'},
     {'param': 'P-AXIS-00426', 'types': [2], 'names': "SERCOS (remarks: 'at the moment supported for drive type SERCOS only')", 'source': 'https://infosys.beckhoff.com/content/1033/tf5200_axis_parameter/117303691.html'},
     {'param': 'P-AXIS-00425', 'types': [2], 'names': "SERCOS (remarks: 'supported for SERCOS drive types only')", 'source': 'https://infosys.beckhoff.com/content/1033/tf5200_axis_parameter/117302155.html'},
+    {'param': 'P-AXIS-00405', 'types': [2, 8], 'names': 'SERCOS, CANopen (remarks: coarsening the encoder resolution is currently possible with SERCOS and CANopen drives only)', 'source': 'https://infosys.beckhoff.com/content/1031/tf5200_axis_parameter/117930507.html'},
+    {'param': 'P-AXIS-00328', 'types': [2, 3, 8], 'names': 'SERCOS, Profidrive, CANopen', 'source': 'https://infosys.beckhoff.com/content/1033/tf5200_axis_parameter/117797003.html'},
 ]
