@@ -141,6 +141,7 @@ def pages() -> dict[str, Callable[[], str]]:
     registry = load_registry()
     desc = os.environ.get("ZERO_PARAM_DESC")  # the user's CncParaDesc.xml: its German names as search terms
     german = docs.german_names(desc) if desc else {}
+    english = docs.english_names(desc) if desc else {}  # the meaning of those zero describes nowhere
     out: dict[str, Callable[[], str]] = {
         "commands/index.md": _commands_index,
         "commands/SUMMARY.md": _commands_summary,
@@ -159,7 +160,7 @@ def pages() -> dict[str, Callable[[], str]]:
     def param(pid: str) -> str:
         if not checks:
             checks.update(docs.param_checks(registry))
-        return docs.param_page(registry.specs[pid], registry, checks[pid], german.get(pid))
+        return docs.param_page(registry.specs[pid], registry, checks[pid], german.get(pid), english.get(pid))
 
     for pid in registry.specs:
         out[docs.param_page_path(pid)] = partial(param, pid)

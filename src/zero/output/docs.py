@@ -727,6 +727,14 @@ def german_names(path: str | Path) -> dict[str, str]:
     return short_names(path, "de")
 
 
+def english_names(path: str | Path) -> dict[str, str]:
+    """The English short descriptions in the user's ``CncParaDesc.xml``, read when the site is built: the
+    meaning of a parameter zero has no description of, on the pages built, never in this project."""
+    from zero.catalog.vendor_names import short_names  # start-up: only the documentation site
+
+    return short_names(path, "en")
+
+
 def _vendor_docs(spec: ParamSpec) -> list[str]:
     """Where the vendor documents a parameter: its page in the TF5200 documentation (titled with its
     ID), the kind's overview where zero knows its address, and every vendor page zero's tables cite
@@ -750,10 +758,12 @@ def _vendor_docs(spec: ParamSpec) -> list[str]:
     return out
 
 
-def param_page(spec: ParamSpec, registry: Registry, checks: Sequence[Checked], german: str | None = None) -> str:
+def param_page(spec: ParamSpec, registry: Registry, checks: Sequence[Checked], german: str | None = None,
+               english: str | None = None) -> str:
     """A parameter's page: its facts (as ``zero param`` shows them), the rules that check it, where
     the vendor documents it, and German search terms (``german``: its German name in the catalogue the
-    site is built with, where one is given)."""
+    site is built with, where one is given; ``english``: its English short description there, the
+    meaning where zero has none)."""
     title = f"{spec.id} {spec.key}" if spec.key else spec.id
     out = [f"# {md_text(title)}", ""]
     if spec.description:
@@ -761,6 +771,8 @@ def param_page(spec: ParamSpec, registry: Registry, checks: Sequence[Checked], g
     for n, (label, value) in enumerate(param_rows(spec, registry)):
         if label == "meaning" and spec.description:
             continue  # said above the table
+        if label == "meaning" and english:
+            value = f"{english} (the short description in the CncParaDesc.xml this site was built with)"
         if label == "key" and spec.key:
             value = md_code(spec.key)
         elif label == "list":
@@ -820,11 +832,13 @@ def params_index_page(registry: Registry, german_source: str | None = None) -> s
         out.append("Each parameter page carries the German name the catalogue this site was built with gives the "
                    f"parameter ({md_code(Path(german_source).name)}, read at build time through "
                    "`ZERO_PARAM_DESC` and not part of zero), and German words for the abbreviations in its key "
-                   "from zero's own glossary.")
+                   "from zero's own glossary; a parameter zero describes nowhere has that catalogue's English "
+                   "short description as its meaning.")
     else:
         out.append("Each parameter page carries German words for the German abbreviations in its key (`swe`: "
                    "Softwareendschalter, Endschalter) from zero's own glossary. The catalogue's German names are "
                    "the vendor's text, which zero does not ship: build the site with `ZERO_PARAM_DESC` naming your "
-                   "`CncParaDesc.xml` and each page carries its German name too.")
+                   "`CncParaDesc.xml` and each page carries its German name too (and its English short description "
+                   "where zero has no description of its own).")
     out.append("")
     return "\n".join(out)
