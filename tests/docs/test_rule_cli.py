@@ -36,3 +36,9 @@ def test_zero_rule_all_has_no_generic_kernel_sentence() -> None:
     out = _zero("rule", "--all")
     assert "the message appears when the controller starts" not in out
     assert out.count("Why it matters on the machine") >= len(CHECKS)
+
+
+def test_zero_rule_says_which_parameters_the_rule_reads() -> None:
+    assert "\nReads: P-AXIS-00177 (kenngr.swe_neg), P-AXIS-00178 (kenngr.swe_pos).\n" in _zero("rule", "M001")
+    assert "\nReads: P-AXIS-00512 (getriebe[].gear_fact_denom).\n" in _zero("rule", "K093")
+    assert "\nReads: no particular parameter; it reads the list's text" in _zero("rule", "S001")

@@ -501,8 +501,8 @@ def test_the_catalogue_given_at_build_time_gives_german_names(corpus: Path, monk
         in swe_check
     assert re.search(r"Search terms \(German\): .*\bEndschalter\b", swe_check)
     assert "Festanschlag" in pages["parameters/P-AXIS-00330.md"]()
-    assert "| meaning | Measurement with movement to a fixed stop (the short description in the CncParaDesc.xml this site " \
-        "was built with) |" in pages["parameters/P-AXIS-00330.md"]()
+    assert "| meaning | Measurement with movement to a fixed stop (the short description in the CncParaDesc.xml " \
+        "this site was built with) |" in pages["parameters/P-AXIS-00330.md"]()
 
     def undescribed(made: dict[str, Callable[[], str]]) -> int:
         return sum("| meaning | (no description" in made[docs.param_page_path(pid)]() for pid in registry.specs)

@@ -35,7 +35,16 @@ def rule_text(code: str, registry: Registry | None = None) -> str:
             why = kernel_consequence(err, registry if registry is not None else _builtin_registry())
             said = f"Why it matters on the machine: {why[:1].lower()}{why[1:]}"
             r = replace(r, explanation=_WHY.sub(lambda _m: said, r.explanation, count=1))
-    return r.render()
+    return r.render() + reads_text(code, registry if registry is not None else _builtin_registry())
+
+
+def reads_text(code: str, registry: Registry) -> str:
+    """The parameters a rule reads, as ``zero rule`` prints them after its explanation (its page links them)."""
+    if code in GENERIC_RULES:
+        return f"\nReads: no particular parameter; it reads {GENERIC_RULES[code]}.\n"
+    named = [f"{pid} ({registry.specs[pid].key})" if registry.specs[pid].key else pid
+             for pid in named_params(code, registry)]
+    return f"\nReads: {', '.join(named)}.\n" if named else ""
 
 
 _WHY = re.compile(r"^Why it matters on the machine:.*?(?=\n\s*\n|\Z)", re.M | re.S)
