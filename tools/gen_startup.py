@@ -45,6 +45,9 @@ def main() -> None:
                  {name: [{f: getattr(r, f) for f in ("old", "kind", "new", "id", "release", "source", "see")
                           if hasattr(r, f)} for r in rs] for name, rs in rows.items()})
     print(f"wrote {DATA / 'releases_table.py'}")
+    import gen_conditions  # the K conditions as Python (issue 40: start-up), from the rows just written
+
+    gen_conditions.main()
 
 
 if __name__ == "__main__":

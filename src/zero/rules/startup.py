@@ -74,6 +74,12 @@ def compiled(err: StartupError) -> _Compiled:
     needs the axis checks)."""
     hit = _compiled.get(err.code)
     if hit is None:
+        from zero.catalog.data.startup_compiled import COMPILED  # start-up: written at build time, at the first check
+
+        pre = COMPILED.get(err.code)
+        if pre is not None and pre[:2] == (err.condition_text, err.when_text):  # else stale: compiled here
+            hit = _compiled[err.code] = _Compiled(*pre[2:])
+            return hit
         node = parse(err.condition_text)
         hit = _compiled[err.code] = _Compiled(compile_condition(node),
                                               compile_condition(parse(err.when_text)) if err.when_text else None,

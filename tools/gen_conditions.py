@@ -1,0 +1,53 @@
+#!/usr/bin/env python3
+"""Write the K rules' conditions (``src/zero/catalog/data/startup_errors.py``) as Python functions to
+``startup_compiled.py``: read from bytecode at start-up instead of parsed and compiled at each run
+(issue 40). A row whose condition text differs from the one written here is compiled at run time, so a
+stale module is slower, never wrong; a test fails while it is stale. Run it after tools/gen_startup.py.
+
+Usage: python tools/gen_conditions.py
+"""
+
+from __future__ import annotations
+
+import sys
+from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parent.parent / "src"))
+
+DATA = Path(__file__).resolve().parent.parent / "src" / "zero" / "catalog" / "data"
+
+
+def render() -> str:
+    """The module's text, from the rows as they are now."""
+    from zero.catalog.condition_source import HELPERS, source
+    from zero.catalog.conditions import parse, ref_elements, refs
+    from zero.catalog.data.startup_errors import ERRORS
+
+    defs: list[str] = []
+    table: list[str] = []
+    for row in ERRORS:
+        condition, when = str(row.get("condition", "")), str(row.get("when", ""))
+        if not condition:
+            continue
+        code = str(row["code"])
+        node = parse(condition)
+        defs.append(source(f"_{code}", node))
+        if when:
+            defs.append(source(f"_{code}_when", parse(when)))
+        table.append(f"    {code!r}: ({condition!r}, {when!r}, _{code}, {f'_{code}_when' if when else 'None'},\n"
+                     f"             {tuple(refs(node))!r}, {tuple(ref_elements(node))!r}),")
+    head = ('"""The K rules\' conditions of startup_errors.toml as Python, written by tools/gen_conditions.py.\n\n'
+            'Generated: do not edit."""\n\n'
+            "# ruff: noqa\n# mypy: ignore-errors\n"
+            f"from zero.catalog.condition_source import {', '.join(HELPERS)}\n\n\n")
+    return head + "\n\n".join(defs) + "\n\nCOMPILED = {\n" + "\n".join(table) + "\n}\n"
+
+
+def main() -> None:
+    target = DATA / "startup_compiled.py"
+    target.write_text(render(), encoding="utf-8")
+    print(f"wrote {target}")
+
+
+if __name__ == "__main__":
+    main()
