@@ -186,15 +186,16 @@ def readme_tree() -> set[str]:
     page = (ROOT / "docs" / "contributing" / "architecture.md").read_text(encoding="utf-8")
     block = page.split("src/zero/\n", 1)[1].split("```", 1)[0]
     out: set[str] = set()
-    folder = ""
+    folders: dict[int, str] = {0: ""}  # depth → the folder a line at the next depth is in
     for line in block.splitlines():
         name = line.strip().split(" ", 1)[0]
         depth = (len(line) - len(line.lstrip(" "))) // 2
-        if depth == 1:
-            folder = name if name.endswith("/") else ""
-            out.add(name.rstrip("/"))
-        elif depth == 2 and folder:
-            out.add(folder + name.rstrip("/"))
+        if depth < 1 or depth - 1 not in folders:
+            continue  # a line that goes on the one above it
+        folders = {d: f for d, f in folders.items() if d < depth}
+        out.add(folders[depth - 1] + name.rstrip("/"))
+        if name.endswith("/"):
+            folders[depth] = folders[depth - 1] + name
     return out
 
 
@@ -204,6 +205,8 @@ def test_the_readme_layout_matches_the_tree() -> None:
     actual = {str(p.relative_to(SRC / "zero")) for p in MODULES.values()
               if (p.name != "__init__.py" or p.parent == SRC / "zero") and p.parent != data}
     actual |= {str(p.relative_to(SRC / "zero")) for p in (SRC / "zero").iterdir() if (p / "__init__.py").is_file()}
+    actual |= {str(p.parent.relative_to(SRC / "zero")) for p in MODULES.values()  # packages in packages
+               if p.name == "__init__.py" and p.parent.parent != SRC / "zero" and p.parent != SRC / "zero"}
     actual.add("catalog/data")
     assert shown == actual
 

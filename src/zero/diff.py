@@ -91,7 +91,7 @@ def read_side(data: bytes, fmt: str, path: str, registry: Registry, kind: str | 
         if kind is None and isinstance(tree.meta.get("kind"), str):
             kind = tree.meta["kind"]
     if kind is None:
-        kind = doc.declared_kind() or registry.detect_kind((e.key.pattern for e in doc.entries if e.key), path)
+        kind = registry.kind_of(doc)
     entries: dict[str, Entry] = {}
     comments: dict[str, tuple[str, ...]] = {}
     pending: list[str] = []

@@ -15,19 +15,25 @@ import re
 LIST, PROGRAM, STRUCTURED = "list", "program", "structured"
 LIST_SUFFIXES = (".lis", ".lst")
 PROGRAM_SUFFIXES = (".nc", ".mpf", ".spf")  # NC programs (zero.nc)
+PROGRAM_SUFFIX = PROGRAM_SUFFIXES[0]  # the suffix of a subprogram called by a name without one (`L sub` → sub.nc)
 STRUCTURED_SUFFIXES = {".yaml": "yaml", ".yml": "yaml", ".toml": "toml", ".json": "json"}
-# What a directory walk picks up: lists, NC programs, and XML files that hold lists (by content:
-# zero.engine.discovery.holds_lists skips every other XML file in silence).
-# TwinCAT projects and their independent project files (zero.markup.tsproj): lists in `<Data>` CDATA.
-PROJECT_SUFFIXES = (".tsproj", ".xti")
-DEFAULT_INCLUDE = tuple(f"*{s}" for s in (*LIST_SUFFIXES, *PROGRAM_SUFFIXES, ".xml", *PROJECT_SUFFIXES))
-CONFIG_NAMES = ("zero.toml", ".zero.toml", "pyproject.toml")  # nearest wins; in this order within a folder
-# A report (`zero lint -o FILE`) never replaces one of these: lists, programs, list forms, configuration.
-NOT_A_REPORT = (*LIST_SUFFIXES, *PROGRAM_SUFFIXES, *(s for s in STRUCTURED_SUFFIXES if s != ".json"))  # JSON: reports
-EXTENSION = {"lis": ".lis", "yaml": ".yaml", "toml": ".toml", "json": ".json", "xml": ".xml"}
-
+COMMENTED_FORMS = ("yaml", "toml")  # the structured forms that hold comments (and so noqa directives)
 # XML: a list by its root element, never by the suffix alone (a TwinCAT project holds many XML files).
 XML_SUFFIX = ".xml"
+# TwinCAT projects and their independent project files (zero.markup.tsproj): lists in `<Data>` CDATA.
+INDEPENDENT_SUFFIX = ".xti"
+PROJECT_SUFFIXES = (".tsproj", INDEPENDENT_SUFFIX)
+# What a directory walk picks up: lists, NC programs, and XML files that hold lists (by content:
+# zero.engine.discovery.holds_lists skips every other XML file in silence), and TwinCAT projects.
+WALKED_SUFFIXES = (*LIST_SUFFIXES, *PROGRAM_SUFFIXES, XML_SUFFIX, *PROJECT_SUFFIXES)
+DEFAULT_INCLUDE = tuple(f"*{s}" for s in WALKED_SUFFIXES)
+CONFIG_NAMES = ("zero.toml", ".zero.toml", "pyproject.toml")  # nearest wins; in this order within a folder
+# A report (`zero lint -o FILE`) never replaces one of these: lists, programs, list forms (JSON: reports too),
+# configuration.
+NOT_A_REPORT = (*LIST_SUFFIXES, *PROGRAM_SUFFIXES, *(s for s, f in STRUCTURED_SUFFIXES.items() if f != "json"))
+# The suffix `zero convert` writes for each format, in the order --to lists them.
+EXTENSION = {"lis": LIST_SUFFIXES[0], "yaml": ".yaml", "toml": ".toml", "json": ".json", "xml": XML_SUFFIX}
+
 XML_LIST, TWINCAT = "xml", "twincat"
 # The root element of each list kind in the kernel's XML lists.
 XML_ROOTS: dict[str, str] = {
@@ -68,6 +74,26 @@ def is_list(name: str | os.PathLike[str]) -> bool:
 
 def is_program(name: str | os.PathLike[str]) -> bool:
     return _suffix(name) in PROGRAM_SUFFIXES
+
+
+def structured_format(name: str | os.PathLike[str]) -> str | None:
+    """``"yaml"``, ``"toml"`` or ``"json"`` for a structured form by its name, else ``None``."""
+    return STRUCTURED_SUFFIXES.get(_suffix(name))
+
+
+def is_xml_name(name: str | os.PathLike[str]) -> bool:
+    """An XML file by its name (a list, a TwinCAT export or anything else: the content tells)."""
+    return _suffix(name) == XML_SUFFIX
+
+
+def is_independent_file(name: str | os.PathLike[str]) -> bool:
+    """A TwinCAT independent project file (``Achse_X.xti``) by its name, as a project names it."""
+    return _suffix(name) == INDEPENDENT_SUFFIX
+
+
+def walked_names() -> str:
+    """What a directory walk looks for, in words: ``*.lis, *.lst, … and *.xti``."""
+    return ", ".join(DEFAULT_INCLUDE[:-1]) + " and " + DEFAULT_INCLUDE[-1]
 
 
 def format_of(name: str | os.PathLike[str]) -> str | None:

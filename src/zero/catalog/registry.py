@@ -17,10 +17,13 @@ import re
 from collections import Counter
 from collections.abc import Iterable, Iterator, Mapping
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 from zero.catalog.ranges import Range, parse_range
 from zero.records import field, record
+
+if TYPE_CHECKING:
+    from zero.lists.model import Document, Entry
 
 NO_DEFAULT = ("", "-", "--", "----")  # how the catalogue writes "no default documented"
 BUILTIN_SOURCE = "built-in (CncParaDesc.xml facts + seeds)"
@@ -294,6 +297,16 @@ class Registry:
             rng = parse_range(spec.range_text, spec.id) if spec.range_text else None
             self._ranges[spec.id] = rng
             return rng
+
+    def kind_of(self, doc: Document, entries: Iterable[Entry] | None = None) -> str | None:
+        """The list kind of a document, the one way every command tells it: what the document declares
+        itself (an XML list's root element), else detected from the keys of its entries (``entries``,
+        by default all before ``Ende``) with the file name breaking a tie (:meth:`detect_kind`)."""
+        declared = doc.declared_kind()
+        if declared is not None:
+            return declared
+        return self.detect_kind((e.key.pattern for e in (doc.entries if entries is None else entries) if e.key),
+                                doc.path)
 
     def detect_kind(self, patterns: Iterable[str], path: str = "") -> str | None:
         """The list kind whose keys match most of ``patterns``; file name breaks ties."""

@@ -268,7 +268,7 @@ class ListValues:
         """Bind a document's entries (before ``Ende``); ``kind`` detected when ``None``."""
         entries = doc.entries
         if kind is None:
-            kind = doc.declared_kind() or registry.detect_kind((e.key.pattern for e in entries if e.key), doc.path)
+            kind = registry.kind_of(doc, entries)
         out = cls(doc, registry, kind, entries)
         append = out.resolved.append
         by_id = out.by_id

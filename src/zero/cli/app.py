@@ -888,7 +888,7 @@ def _standalone(application: typer.Typer) -> int:
     try:
         code = application(prog_name="zero", standalone_mode=False)
     except SystemExit as exc:
-        return exc.code if isinstance(exc.code, int) else (0 if exc.code is None else 1)
+        return exits.of_system_exit(exc.code)
     except typer.Abort:  # click's form of an interrupt
         raise KeyboardInterrupt from None
     except _CLICK_ERROR as exc:

@@ -41,6 +41,14 @@ def found(anything: bool) -> int:
     return FINDINGS if anything else OK
 
 
+def of_system_exit(code: object) -> int:
+    """The exit code of ``SystemExit(code)``, as Python gives it: a number as it is, ``None`` 0, anything
+    else (a message) 1."""
+    if isinstance(code, int):
+        return code
+    return OK if code is None else FINDINGS
+
+
 def _quiet_stdout() -> None:
     os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
 

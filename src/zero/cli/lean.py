@@ -14,7 +14,7 @@ import os
 import sys
 from typing import NoReturn
 
-from zero.cli.exits import guard
+from zero.cli.exits import guard, of_system_exit
 from zero.cli.options import parse_lint_args
 
 
@@ -32,11 +32,9 @@ def main() -> None:
     try:
         typer_main()
     except SystemExit as stop:
-        code = stop.code
-        if isinstance(code, str):  # what Python does with SystemExit("message")
-            sys.stderr.write(code + "\n")
-            code = 1
-        end(code or 0)
+        if isinstance(stop.code, str):  # what Python does with SystemExit("message")
+            sys.stderr.write(stop.code + "\n")
+        end(of_system_exit(stop.code))
 
 
 def end(code: int) -> NoReturn:

@@ -15,7 +15,9 @@ from collections.abc import Iterable, Mapping
 from pathlib import Path
 from typing import Literal
 
-from zero.output import OUTPUT_FORMATS
+from zero.forms import LIST_SUFFIXES, PROGRAM_SUFFIXES, XML_SUFFIX
+from zero.output.formats import OUTPUT_FORMATS
+from zero.output.formats import help_text as format_help
 from zero.records import record
 
 
@@ -42,15 +44,13 @@ class Option:
 # but not `--bogus` → `--jobs` (0.62) nor `respect-gitignore` → `per-file-ignores` (0.61).
 SUGGEST_CUTOFF = 0.7
 
-PATHS_HELP = ("Files or directories: lists (*.lis, *.lst), the kernel's XML lists and TwinCAT exports (*.xml), "
-              "YAML/TOML/JSON forms named on the command line, NC programs (*.nc, *.mpf, *.spf); "
-              "- reads standard input.")
+PATHS_HELP = (f"Files or directories: lists ({', '.join('*' + s for s in LIST_SUFFIXES)}), the kernel's XML lists "
+              f"and TwinCAT exports (*{XML_SUFFIX}), YAML/TOML/JSON forms named on the command line, NC programs "
+              f"({', '.join('*' + s for s in PROGRAM_SUFFIXES)}); - reads standard input.")
 
 LINT_OPTIONS: tuple[Option, ...] = (
-    Option("output_format", ("--output-format",),
-           "text or full (for people, with the source lines), concise (one line each), grouped (by file), "
-           "json (a stable contract), json-lines, github, gitlab, azure, junit, sarif, rdjson (reviewdog) or "
-           "pylint.", choices=OUTPUT_FORMATS, default="text", metavar="FORMAT", envvar="ZERO_OUTPUT_FORMAT"),
+    Option("output_format", ("--output-format",), format_help(), choices=OUTPUT_FORMATS, default="text",
+           metavar="FORMAT", envvar="ZERO_OUTPUT_FORMAT"),
     Option("output_file", ("--output-file", "-o"),
            "Write the report to this file (atomically) instead of stdout.", type=Path, metavar="FILE"),
     Option("show_statistics", ("--statistics",),

@@ -22,7 +22,7 @@ from zero.engine.commands import Echo, LintRequest, run_lint
 from zero.engine.lint import LintResult, Totals, tallied
 from zero.errors import ZeroError
 from zero.files import max_file_bytes, read_stream, write_report
-from zero.output import OUTPUT_FORMATS, STREAMED_FORMATS
+from zero.output.formats import FORMATS, OUTPUT_FORMATS, STREAMED_FORMATS, emitter
 from zero.output.text import ProgressBar, printable, render_text, statistics
 
 
@@ -142,21 +142,18 @@ def render_lint(results: Iterable[LintResult], output_format: str, stream: TextI
     """The findings in one of the output formats, each result counted into ``totals``; the text
     summary goes to ``summary_stream`` (stderr by default); ``fail_on``: the severity from which a
     finding fails the run (a JUnit failure)."""
-    if output_format in ("text", "full"):  # `full`: ruff's name for the report with the source lines
+    chosen = FORMATS[output_format]
+    if chosen.module is None:  # the report for people (`full`: ruff's name for it with the source lines)
         render_text(results, stream, color=color, summary_stream=summary_stream or sys.stderr, totals=totals)
         return
-    from zero.output.formats import RENDERERS, STREAMED  # start-up: only for machine-readable reports
-
+    emit = emitter(output_format)  # its module only: the others are never imported
     counted = tallied(results, totals)
-    if output_format in STREAMED:
-        STREAMED[output_format](counted, stream)
+    if chosen.streamed:
+        emit(counted, stream)
+    elif chosen.fail_on:
+        emit(list(counted), stream, fail_on=fail_on)
     else:
-        if output_format == "junit":
-            from zero.output.formats import render_junit  # start-up: as above
-
-            render_junit(list(counted), stream, fail_on=fail_on)
-        else:
-            RENDERERS[output_format](list(counted), stream)
+        emit(list(counted), stream)
 
 
 def command_line_config(exclude: Sequence[str], extend_exclude: Sequence[str], respect_gitignore: bool | None,
@@ -184,7 +181,7 @@ def command_line_config(exclude: Sequence[str], extend_exclude: Sequence[str], r
 
 def statistics_report(totals: Totals, output_format: str) -> str:
     """``--statistics``: the count per code, most frequent first; a JSON array with a JSON format."""
-    if output_format in ("json", "json-lines"):
+    if FORMATS[output_format].json_statistics:
         import json  # start-up: only for --statistics with JSON
 
         from zero.rules import RULES  # start-up: as above

@@ -35,7 +35,7 @@ from zero.engine.parallel import iter_lint_many, lint_many
 from zero.engine.project import Project, Registries
 from zero.errors import ZeroError
 from zero.files import read_file, write_atomic
-from zero.forms import PROJECT_ROOTS, TWINCAT_ROOT, is_list, is_program, is_update, is_xml
+from zero.forms import PROJECT_ROOTS, TWINCAT_ROOT, is_list, is_program, is_update, is_xml, walked_names
 from zero.records import field, record, replace
 from zero.rules import RULES
 
@@ -143,8 +143,8 @@ def run_lint(request: LintRequest, registries: Registries, echo: Echo,
     if not files and any(p.is_dir() for p in named):
         skipped: dict[str, int] = {}  # counted only here: walking an excluded folder costs a run nothing else
         lint_files(named, project, request.force_exclude, skipped)
-        raise ZeroError("no list files or NC programs found (looked for *.lis, *.lst, *.nc, *.mpf, *.spf, and *.xml "
-                        "holding lists)" + skipped_note(skipped))
+        raise ZeroError(f"no list files or NC programs found (looked for {walked_names()}, XML files only where "
+                        "they hold lists)" + skipped_note(skipped))
     cache = None  # results kept between runs (zero.engine.cache); never for a run that writes or shows fixes
     if request.cache and not (request.fix or request.show_diff or request.add_noqa):
         from zero.engine.cache import open_lint_cache  # start-up: only when the cache is on

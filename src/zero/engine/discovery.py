@@ -12,7 +12,7 @@ from pathlib import Path
 from zero.engine.git import visible_files
 from zero.errors import ZeroError
 from zero.files import check_regular, read_file
-from zero.forms import LIST_SUFFIXES, PROGRAM_SUFFIXES, PROJECT_SUFFIXES, xml_form
+from zero.forms import WALKED_SUFFIXES, is_project, is_xml_name, xml_form
 
 
 def git_visible(directory: Path, note: Callable[[str], None] | None = None) -> set[str] | None:
@@ -30,20 +30,20 @@ def _stderr(text: str) -> None:
     sys.stderr.write(text)
 
 
-_WALKED = (*LIST_SUFFIXES, *PROGRAM_SUFFIXES, ".xml", *PROJECT_SUFFIXES)
+_WALKED = WALKED_SUFFIXES
 
 
 def holds_lists(path: Path) -> bool:
     """Does a walked file hold parameter lists? Always, but for XML, which is a list only by its
     content: a kernel XML list or a TwinCAT export (every other XML file of a project is skipped in
     silence). An XML file that cannot be read is kept, so that the lint reports it."""
-    if path.suffix.lower() in PROJECT_SUFFIXES:  # a TwinCAT project: one that holds a `<Data>` block
+    if is_project(path.name):  # a TwinCAT project: one that holds a `<Data>` block
         try:
             check_regular(path)
             return b"<Data " in read_file(path)
         except (OSError, ZeroError):
             return True
-    if path.suffix.lower() != ".xml":
+    if not is_xml_name(path):
         return True
     try:
         check_regular(path)

@@ -20,7 +20,7 @@ from zero.catalog.registry import Registry, kind_from_name
 from zero.diagnostics import Diagnostic, Severity, Span
 from zero.errors import ZeroError
 from zero.files import read_file
-from zero.forms import LIST_SUFFIXES, PROGRAM_SUFFIXES, STRUCTURED_SUFFIXES, is_update, is_xml
+from zero.forms import is_program, is_update, is_xml, structured_format
 from zero.lists.model import Document
 from zero.lists.tokenizer import tokenize
 from zero.records import field, record, replace
@@ -333,10 +333,9 @@ def lint_program(data: bytes, registry: Registry, path: str = "-", options: Lint
 def lint_data(data: bytes, path: str, registry: Registry, options: LintOptions | None = None) -> LintResult:
     """Lint bytes as the file ``path`` names: an NC program, YAML/TOML/JSON, else a list (an XML list
     or a TwinCAT export when the content is XML)."""
-    suffix = Path(path).suffix.lower()
-    if suffix in PROGRAM_SUFFIXES:
+    if is_program(path):
         return lint_program(data, registry, path, options)
-    fmt = STRUCTURED_SUFFIXES.get(suffix)
+    fmt = structured_format(path)
     if fmt is not None:
         return lint_structured(data, fmt, registry, path, options)
     if is_xml(data):
@@ -565,9 +564,6 @@ def lint_in_machine(path: str, machine: Machine, registry: Registry, options: Li
 
 
 __all__ = [
-    "LIST_SUFFIXES",
-    "PROGRAM_SUFFIXES",
-    "STRUCTURED_SUFFIXES",
     "Layer",
     "LintOptions",
     "LintResult",

@@ -46,6 +46,7 @@ from zero.forms import (
     CONFIG_NAMES,
     KERNEL_ROOT,
     TWINCAT,
+    XML_SUFFIX,
     controller_absolute,
     is_project,
     kernel_rooted,
@@ -471,7 +472,7 @@ def _from_exports(startup: Path, named: list[Named], reader: Callable[[Path], by
 
     channels: list[tuple[int, Path, set[str]]] = []
     axes: list[tuple[int, Path]] = []
-    for f in sorted(startup.parent.glob("*.xml")):
+    for f in sorted(startup.parent.glob(f"*{XML_SUFFIX}")):
         if f == startup or not within(f, bound if bound is not None else startup.parent):
             continue  # a link to an export elsewhere is never read
         try:

@@ -28,7 +28,7 @@ import re
 from xml.sax.saxutils import unescape
 
 from zero.errors import ZeroError
-from zero.forms import EMBEDDED
+from zero.forms import EMBEDDED, is_independent_file
 from zero.lists.encoding import BOM
 from zero.markup.safe import Scan, _line_starts, check, encoding_of
 from zero.records import field, record
@@ -245,7 +245,7 @@ def read_project(data: bytes, path: str = "-", root: str = "") -> ProjectFile:
             continue
         attrs = _attrs(m.group("attrs") or "")
         if name != "Data":
-            if attrs.get("File", "").lower().endswith(".xti"):
+            if is_independent_file(attrs.get("File", "")):
                 files.append((m.start(), attrs["File"]))
             continue
         if m.group("empty") or "Name" not in attrs:

@@ -28,6 +28,7 @@ import math
 import re
 from collections.abc import Callable, Sequence
 
+from zero.forms import PROGRAM_SUFFIX
 from zero.nc import language as lang
 from zero.nc.program import strip_comments
 from zero.records import field, record
@@ -1454,7 +1455,7 @@ def find_subprogram(name: str, dirs: Sequence[str]) -> str | None:
     import os  # start-up: only programs with calls
 
     name = name.strip('"').replace("\\", "/")
-    candidates = (name, f"{name}.nc") if "." not in os.path.basename(name) else (name,)
+    candidates = (name, name + PROGRAM_SUFFIX) if "." not in os.path.basename(name) else (name,)
     for folder in dirs:
         for cand in candidates:
             path = cand if os.path.isabs(cand) else os.path.join(folder, cand)

@@ -29,7 +29,7 @@ from zero.engine.baseline import NOT_RECORDED, add_noqa
 from zero.engine.fixes import fix_bytes
 from zero.engine.formatting import format_bytes
 from zero.engine.lint import LintResult
-from zero.forms import LIST, PROGRAM, STRUCTURED
+from zero.forms import COMMENTED_FORMS, LIST, PROGRAM, STRUCTURED, structured_format
 from zero.lists.encoding import BOM, decode
 from zero.server.documents import Analysis
 from zero.server.findings import RuleDocs, span_range, to_lsp
@@ -152,7 +152,7 @@ def _noqa_edit(a: Analysis, d: Diagnostic) -> types.TextEdit | None:
             return None
         new_lines = [x[:-1] if x.endswith("\r") else x for x in _decoded(baseline.data, doc.encoding).split("\n")]
         old, new = doc.line_text(line), new_lines[line - 1] if line <= len(new_lines) else ""
-    elif a.form == STRUCTURED and a.name.lower().endswith((".yaml", ".yml", ".toml")):
+    elif a.form == STRUCTURED and structured_format(a.name) in COMMENTED_FORMS:
         old = a.text.line(line - 1)
         if "#" in old or d.message.startswith("(list line") or not old.strip():
             return None  # a trailing comment there already, or no line of its own

@@ -287,7 +287,7 @@ def from_document(doc: Document, registry: Registry, kind: str | None = None) ->
     _check_carriable(doc)
     entries_all = [i for i in doc.items if type(i) is Entry and not i.after_end]
     if kind is None:
-        kind = doc.declared_kind() or registry.detect_kind((e.key.pattern for e in entries_all if e.key), doc.path)
+        kind = registry.kind_of(doc, entries_all)
 
     meta: dict[str, Any] = {"zero": FORMAT_VERSION}
     if kind:

@@ -1,0 +1,19 @@
+"""``--output-format concise``: one line per finding."""
+
+from __future__ import annotations
+
+from collections.abc import Iterable
+from typing import TextIO
+
+from zero.engine.lint import LintResult
+from zero.output.formats.common import each
+from zero.output.text import printable
+
+
+def render_concise(results: Iterable[LintResult], stream: TextIO) -> None:
+    """One line per finding: ``path:line:col: CODE severity message``. A control character or an
+    undecodable byte in the path or the message is written as its escape (``\\n``, ``\\r``,
+    ``\\xff``): one finding stays one line, and the name can still be told."""
+    for d in each(results):
+        stream.write(f"{printable(d.path, escape=True)}:{d.span.line}:{d.span.column}: {d.code} "
+                     f"{d.severity.label} {printable(d.message, escape=True)}\n")

@@ -1,0 +1,17 @@
+"""``--output-format json-lines``: each finding's JSON object on a line of its own."""
+
+from __future__ import annotations
+
+import json
+from collections.abc import Iterable
+from typing import TextIO
+
+from zero.engine.lint import LintResult
+from zero.output.formats.common import each
+
+
+def render_json_lines(results: Iterable[LintResult], stream: TextIO) -> None:
+    """JSON Lines (``json-lines``, as ruff's): each finding's JSON object of ``--output-format json``
+    on a line of its own."""
+    for d in each(results):
+        stream.write(json.dumps(d.to_json(), ensure_ascii=False) + "\n")

@@ -1,0 +1,18 @@
+"""``--output-format pylint``: the lines pylint's parseable output has."""
+
+from __future__ import annotations
+
+from collections.abc import Iterable
+from typing import TextIO
+
+from zero.engine.lint import LintResult
+from zero.output.formats.common import each
+from zero.output.text import printable
+
+
+def render_pylint(results: Iterable[LintResult], stream: TextIO) -> None:
+    """The pylint (flake8 ``pylint`` formatter) lines ruff's ``pylint`` format writes:
+    ``path:line: [CODE] message``, read by tools made for pylint's parseable output."""
+    for d in each(results):
+        stream.write(f"{printable(d.path, escape=True)}:{d.span.line}: [{d.code}] "
+                     f"{printable(d.message, escape=True)}\n")
