@@ -460,3 +460,13 @@ def test_the_cache_folder_is_at_the_project_root(tmp_path: Path, monkeypatch: py
     assert cache_folder(Project(load_registry)) == tmp_path / FOLDER
     monkeypatch.setenv("ZERO_CACHE_DIR", "elsewhere")
     assert cache_folder(Project(load_registry)) == tmp_path / "sub" / "elsewhere"
+
+
+def test_a_result_of_many_files_keeps_the_line_a_finding_ends_on_too() -> None:
+    """As the cache keeps it: rdjson counts the end column in the bytes of the end line, so a report
+    of many files (each result slimmed) says what a report of one file says."""
+    d = Diagnostic("S001", Severity.ERROR, "m", Span(2, 1, 3, 4), "a.lis")
+    doc = Document("a.lis", "utf-8", ["l1", "l2", "ä3", "l4"], ["\n"] * 4, [])
+    slim = parallel._slim(LintResult("a.lis", doc, None, [d]))
+    assert [slim.document.has_line(n) for n in (1, 2, 3, 4)] == [False, True, True, False]
+    assert slim.document.line_text(3) == "ä3"

@@ -22,7 +22,8 @@ _worker_state: tuple[Registry, OptionsFor] | None = None
 def _slim(result: LintResult) -> LintResult:
     """A result without the parsed items, keeping only the lines findings show (cheap to pickle)."""
     doc = result.document
-    shown = {d.span.line: doc.lines[d.span.line - 1] for d in result.diagnostics if doc.has_line(d.span.line)}
+    shown = {n: doc.line_text(n) for d in result.diagnostics for n in (d.span.line, d.span.end_line)
+             if doc.has_line(n)}  # the end's too: a report (rdjson) counts its column in the line's bytes
     slim = Excerpt(doc.path, doc.encoding, [], [], [], [], doc.bom, doc.end_line, shown=shown)
     return LintResult(result.path, slim, result.kind, result.diagnostics, result.note)
 
