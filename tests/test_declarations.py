@@ -265,9 +265,25 @@ def test_a_list_kind_by_name_is_parsed_in_one_place() -> None:
     """`zero`, `ZERO`, `Axis`: zero.catalog.registry.kind_from_name; the lists of kind names for
     messages come from KINDS."""
     from zero.catalog.registry import KINDS, kind_from_name
+    from zero.cli.run import check_kind
+    from zero.engine.commands import parse_kind
 
     assert all(kind_from_name(name) == code and kind_from_name(code.lower()) == code
                for code, (name, _) in KINDS.items())
+    messages = []
+    for check in (parse_kind, check_kind):  # the engine and the command line refuse a kind alike
+        with pytest.raises(ZeroError) as caught:
+            check("axsi")
+        messages.append(str(caught.value))
+    assert messages[0] == messages[1] and "did you mean axis?" in messages[0]
+
+
+def test_a_list_kind_by_file_name_is_told_in_forms() -> None:
+    from zero.forms import kind_hint
+
+    assert (kind_hint("listen/nullp_d1.lis"), kind_hint("achskw1.lis"), kind_hint("ACHSMDS2.LIS"),
+            kind_hint("x.lis")) == ("ZERO", "COMP", "AXIS", None)
+    assert "_FILE_HINTS" not in (SRC / "catalog" / "registry.py").read_text(encoding="utf-8")
 
 
 # ------------------------------------------------------------------------------ exit codes

@@ -76,6 +76,22 @@ def is_program(name: str | os.PathLike[str]) -> bool:
     return _suffix(name) in PROGRAM_SUFFIXES
 
 
+# A list's kind by fragments of its file name (`nullp_d1.lis`, `achsmds1.lis`), first match: only
+# to break a tie when its keys fit several kinds equally (zero.catalog.registry.Registry.detect_kind).
+KIND_HINTS = (
+    ("nullp", "ZERO"), ("achskw", "COMP"), ("achs", "AXIS"), ("mds", "AXIS"),
+    ("sda", "CHAN"), ("werkz", "TOOL"), ("tool", "TOOL"), ("hand", "MANU"),
+    ("hochlauf", "STUP"), ("startup", "STUP"), ("rtconf", "RTCF"), ("ext_var", "EXTV"),
+    ("pzv", "CLMP"), ("zero", "ZERO"),
+)
+
+
+def kind_hint(name: str | os.PathLike[str]) -> str | None:
+    """The list kind a file's name suggests (its four letters, ``ZERO``), else ``None``."""
+    base = os.path.basename(os.fspath(name)).lower()
+    return next((kind for fragment, kind in KIND_HINTS if fragment in base), None)
+
+
 def structured_format(name: str | os.PathLike[str]) -> str | None:
     """``"yaml"``, ``"toml"`` or ``"json"`` for a structured form by its name, else ``None``."""
     return STRUCTURED_SUFFIXES.get(_suffix(name))

@@ -20,6 +20,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from zero.catalog.ranges import Range, parse_range
+from zero.forms import kind_hint
 from zero.records import field, record
 
 if TYPE_CHECKING:
@@ -46,13 +47,6 @@ KINDS: dict[str, tuple[str, str]] = {
     "CMLD": ("cmld", "CMLD list"),
 }
 _NAME_TO_KIND = {name: code for code, (name, _) in KINDS.items()}
-# File-name fragments used only to break a tie in content detection.
-_FILE_HINTS = (
-    ("nullp", "ZERO"), ("achskw", "COMP"), ("achs", "AXIS"), ("mds", "AXIS"),
-    ("sda", "CHAN"), ("werkz", "TOOL"), ("tool", "TOOL"), ("hand", "MANU"),
-    ("hochlauf", "STUP"), ("startup", "STUP"), ("rtconf", "RTCF"), ("ext_var", "EXTV"),
-    ("pzv", "CLMP"), ("zero", "ZERO"),
-)
 
 INTEGER_TYPES = frozenset(
     {"BOOLEAN", "SGN08", "UNS08", "SGN16", "UNS16", "SGN32", "UNS32", "SGN64", "UNS64",
@@ -314,8 +308,7 @@ class Registry:
         for p, n in Counter(patterns).items():  # counted in C: a big list has few patterns
             for k in self._kinds_of.get(p, ()):
                 votes[k] += n
-        name = Path(path).name.lower()
-        hint = next((k for frag, k in _FILE_HINTS if frag in name), None)
+        hint = kind_hint(path)
         if not votes:
             return hint
         best = max(votes.values())

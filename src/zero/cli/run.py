@@ -14,11 +14,10 @@ from collections.abc import Callable, Iterable, Iterator, Sequence
 from pathlib import Path
 from typing import TextIO
 
-from zero.catalog.registry import KINDS, Registry, kind_from_name, load_registry
+from zero.catalog.registry import KINDS, Registry, load_registry
 from zero.cli import exits
-from zero.cli.options import close_matches
 from zero.diagnostics import Severity
-from zero.engine.commands import Echo, LintRequest, run_lint
+from zero.engine.commands import Echo, LintRequest, parse_kind, run_lint
 from zero.engine.lint import LintResult, Totals, tallied
 from zero.errors import ZeroError
 from zero.files import max_file_bytes, read_stream, write_report
@@ -75,15 +74,9 @@ def kind_names() -> dict[str, str]:
 
 
 def check_kind(kind: str | None) -> str | None:
-    """``--kind`` as given, refused with the nearest kind when it names none.
-
-    (The engine's ``parse_kind`` refuses it too, without a suggestion: this belongs there.)"""
-    if kind is None or kind_from_name(kind) is not None:
-        return kind
-    names = kind_names()
-    near = close_matches(kind.strip().lower(), names)
-    hint = f"; did you mean {near[0]}?" if near else ""
-    raise ZeroError(f"unknown list kind {kind!r}{hint} (use one of: {', '.join(names)})")
+    """``--kind`` as given, refused (by the engine's ``parse_kind``) with the nearest kind when it names none."""
+    parse_kind(kind)
+    return kind
 
 
 def rule_completions(incomplete: str) -> list[tuple[str, str]]:

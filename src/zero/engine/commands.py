@@ -66,8 +66,12 @@ def parse_kind(kind: str | None) -> str | None:
         return None
     forced = kind_from_name(kind)
     if forced is None:
-        names = ", ".join(v[0] for v in KINDS.values())
-        raise ZeroError(f"unknown list kind {kind!r} (use one of: {names})")
+        import difflib  # start-up: only for a kind that is not known
+
+        names = [name for name, _ in KINDS.values()]
+        near = difflib.get_close_matches(kind.strip().lower(), names, n=1, cutoff=0.7)  # as the command line
+        hint = f"; did you mean {near[0]}?" if near else ""
+        raise ZeroError(f"unknown list kind {kind!r}{hint} (use one of: {', '.join(names)})")
     return forced
 
 
