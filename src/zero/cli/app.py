@@ -815,13 +815,14 @@ def rule_cmd(
 
     def body() -> int:
         if all_:
-            sys.stdout.write("\n".join(rule_text(c) for c in RULES) + "\n")
+            registry = _registry()  # a K rule's consequence and every rule's parameters name keys
+            sys.stdout.write("\n".join(rule_text(c, registry) for c in RULES) + "\n")
         elif code is None:
             sys.stdout.write(rules_overview())
         elif code.upper() not in RULES:
             raise ZeroError(f"unknown rule {code!r} (see `zero rule` for the list)")
         else:
-            sys.stdout.write(rule_text(code.upper()))
+            sys.stdout.write(rule_text(code.upper(), _registry()))
         return exits.OK
 
     _run(body)

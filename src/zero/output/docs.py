@@ -3,7 +3,6 @@ as the documentation site's Markdown pages (one per rule and per parameter)."""
 
 from __future__ import annotations
 
-import functools
 import re
 import textwrap
 from collections.abc import Sequence
@@ -23,19 +22,23 @@ if TYPE_CHECKING:
     from zero.rules.startup import StartupError
 
 
-def rule_text(code: str, registry: Registry | None = None) -> str:
-    """A rule's explanation as ``zero rule CODE`` prints it; a K rule's "why it matters" the specific
-    consequence its documented correction gives (:func:`kernel_consequence`), as its page says it."""
+def rule_text(code: str, registry: Registry) -> str:
+    """A rule's explanation as ``zero rule CODE`` prints it, and the parameters it reads; a K rule's "why
+    it matters" the specific consequence its documented correction gives (:func:`kernel_consequence`),
+    as its page says it."""
     r = RULES[code]
     if code.startswith("K"):
         from zero.rules.startup import CHECKS  # start-up: only a K rule's explanation needs them
 
         err = next((c for c in CHECKS if c.code == code), None)
         if err is not None:
-            why = kernel_consequence(err, registry if registry is not None else _builtin_registry())
+            why = kernel_consequence(err, registry)
             said = f"Why it matters on the machine: {why[:1].lower()}{why[1:]}"
             r = replace(r, explanation=_WHY.sub(lambda _m: said, r.explanation, count=1))
-    return r.render() + reads_text(code, registry if registry is not None else _builtin_registry())
+    return r.render() + reads_text(code, registry)
+
+
+_WHY = re.compile(r"^Why it matters on the machine:.*?(?=\n\s*\n|\Z)", re.M | re.S)
 
 
 def reads_text(code: str, registry: Registry) -> str:
@@ -45,16 +48,6 @@ def reads_text(code: str, registry: Registry) -> str:
     named = [f"{pid} ({registry.specs[pid].key})" if registry.specs[pid].key else pid
              for pid in named_params(code, registry)]
     return f"\nReads: {', '.join(named)}.\n" if named else ""
-
-
-_WHY = re.compile(r"^Why it matters on the machine:.*?(?=\n\s*\n|\Z)", re.M | re.S)
-
-
-@functools.cache
-def _builtin_registry() -> Registry:
-    from zero.catalog.registry import load_registry  # start-up: only a K rule's explanation needs it
-
-    return load_registry()
 
 
 def rules_overview() -> str:
