@@ -144,3 +144,27 @@ def test_the_language_server_completes_the_values_of_an_older_spelling(registry:
     a = Projects(lambda _desc: registry).analyse("untitled:achsmds1.lis", 1, text)
     labels = {i.label for i in completion.completion(a, 1, len(key) + 1, False).items}
     assert {"PLC", "RT_STATUS_BIT_1"} <= labels
+
+
+def test_the_rules_values_and_the_effective_values_are_one_layering(registry: Registry) -> None:
+    """On a machine with default lists under its axis and channel lists, every element the effective
+    values show comes from the entry the rules read (`ListValues.value_of`: this list, else the default
+    list under it), and its origin names that entry's list and line."""
+    from conftest import FIXTURES
+    from zero.machine.effective import LIST
+    from zero.machine.model import load_machine
+
+    m = load_machine(FIXTURES / "machine-layered" / "listen" / "hochlauf.lis", registry)
+    compared = 0
+    for _, lf in m.scopes():
+        values = lf.values
+        for (pid, indices), s in settings(values).items():
+            if s.spec is None:
+                continue
+            res = values.value_of(pid, indices)
+            assert res is not None and res.entry is s.entry, (lf.path, s.key)
+            layer = values.layer_of(pid, indices)
+            assert layer is not None and (s.origin.source == LIST) == (layer is values)
+            assert s.origin.path == layer.doc.path and s.origin.line == layer.doc.file_line(s.entry.line)
+            compared += 1
+    assert compared > 20 and any(lf.values.base is not None for _, lf in m.scopes())
