@@ -214,3 +214,22 @@ def test_the_language_server_takes_the_same_funnel(tmp_path: Path, registry: Reg
     assert found("new", AXIS % b"") == [("R005", Severity.INFO)]
     assert found("old", AXIS % b"") == []
     assert found("new", AXIS % b"  ( noqa: R005 )") == []
+
+
+def test_convert_checks_a_structured_form_with_its_configuration(tmp_path: Path) -> None:
+    """`zero convert x.yaml --to lis` checked the list it makes with no configuration at all: it showed
+    an R005 the file's configuration ignores (and `zero lint x.yaml` hides), and graded nothing as configured."""
+    yaml = b"kopf:\n  achs_nr: 1\nkenngr:\n  swe_check: 5\n_zero:\n  zero: 1\n  kind: \"AXIS\"\n"
+    (tmp_path / "achsmds1.yaml").write_bytes(yaml)
+
+    def convert_shows(toml: str, out: str) -> str:
+        (tmp_path / "zero.toml").write_text(toml)
+        p = subprocess.run([sys.executable, "-m", "zero", "convert", "achsmds1.yaml", "--to", "lis", "-o", out],
+                           cwd=tmp_path, capture_output=True, text=True, timeout=120, check=False)
+        assert p.returncode == 0 and "Traceback" not in p.stderr, p.stderr
+        return p.stdout + p.stderr
+
+    assert "R005" in convert_shows("", "a.lis")
+    assert "R005" not in convert_shows('ignore = ["R005"]\n', "b.lis")
+    assert "R005" not in convert_shows('[per-file-ignores]\n"*.yaml" = ["R"]\n', "c.lis")
+    assert "R005" not in convert_shows('[severity]\nR005 = "info"\n', "d.lis")  # convert shows warnings and errors

@@ -19,7 +19,7 @@ from pathlib import Path
 from zero.catalog.registry import Registry, kind_from_name
 from zero.diagnostics import Severity
 from zero.engine.formatting import undeclared_code_page
-from zero.engine.lint import LintResult, lint_tree
+from zero.engine.lint import LintOptions, LintResult, lint_tree
 from zero.engine.project import Project, configurations_only
 from zero.errors import ZeroError
 from zero.files import read_file, write_atomic
@@ -68,8 +68,9 @@ def xml_bytes(tree: Tree, registry: Registry, path: str) -> bytes:
 
 
 def convert(data: bytes, src: str, dst: str, registry: Registry, path: str = "-", kind: str | None = None,
-            check: bool = True, encoding: str | None = None, item: str | None = None) -> Conversion:
-    """Convert bytes from one format to another.
+            check: bool = True, encoding: str | None = None, item: str | None = None,
+            options: LintOptions | None = None) -> Conversion:
+    """Convert bytes from one format to another (``options``: the file's, for the check's findings).
 
     A structured input becomes a list only after every entry line has been
     verified to read back as written; ``check`` also lints that list. ``encoding``: the code
@@ -93,7 +94,7 @@ def convert(data: bytes, src: str, dst: str, registry: Registry, path: str = "-"
     result = None
     if check and src != "lis" and dst in ("lis", "xml"):
         source = data.decode("utf-8", "replace").lstrip("\ufeff")
-        result = lint_tree(tree, registry, None, source if src in ("yaml", "toml") else None)
+        result = lint_tree(tree, registry, options, source if src in ("yaml", "toml") else None)
     return Conversion(output, tree, list(tree.notes), result)
 
 
@@ -191,7 +192,8 @@ def convert_inputs(inputs: Sequence[str], registry: Registry | Callable[[str], R
         item.element = element
         try:
             encoding = project.encoding(Path(name)) if name != "-" else None
-            result = convert(data, src_fmt, item.fmt, catalogue, name, kind, check, encoding, element)
+            result = convert(data, src_fmt, item.fmt, catalogue, name, kind, check, encoding, element,
+                             project.settings(Path(name)).options if name != "-" else None)  # its selection
         except ZeroError as exc:
             item.error = str(exc)
             items.append(item)
