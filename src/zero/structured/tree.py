@@ -104,8 +104,26 @@ _SPLIT_RE = re.compile(r"[.\[\]]+")
 _PLAIN_KEY_RE = re.compile(r"[A-Za-z_][A-Za-z0-9_]*(?:\[[0-9]+\])*(?:\.[A-Za-z_][A-Za-z0-9_]*(?:\[[0-9]+\])*)*")
 
 
+# A plain key split after its first index: ``wz[17]`` + ``.laenge``; the tails repeat (a few dozen in a
+# tool list of 114,000 keys), so each is checked and split once.
+_HEAD_RE = re.compile(r"([A-Za-z_][A-Za-z0-9_]*)\[([0-9]+)\]")
+_TAIL_RE = re.compile(r"(?:\[[0-9]+\])*(?:\.[A-Za-z_][A-Za-z0-9_]*(?:\[[0-9]+\])*)*")
+_tails: dict[str, tuple[str, ...] | None] = {}
+
+
 def split_key(key: str) -> tuple[str, ...] | None:
     """``np_grp[1].achse[0].versch`` → ``("np_grp", "1", "achse", "0", "versch")``."""
+    head = _HEAD_RE.match(key)
+    if head is not None:
+        tail = key[head.end():]
+        if tail in _tails:
+            rest = _tails[tail]
+        else:
+            rest = tuple(filter(None, _SPLIT_RE.split(tail))) if _TAIL_RE.fullmatch(tail) else None
+            if len(_tails) < 100_000:
+                _tails[tail] = rest
+        if rest is not None:  # the whole key is plain: what splitting it whole gives
+            return (head.group(1), head.group(2), *rest)
     if _PLAIN_KEY_RE.fullmatch(key):
         return tuple(filter(None, _SPLIT_RE.split(key)))
     out: list[str] = []
@@ -266,8 +284,21 @@ def normalized(line: str) -> str:
     return line.strip()
 
 
+_scalars: dict[tuple[str, str | None], tuple[Scalar, str]] = {}
+
+
 def _scalar_from_list(value: str, spec_type: str | None) -> tuple[Scalar, str]:
-    """A list value as the structured form holds it: int where exact, else text."""
+    """A list value as the structured form holds it: int where exact, else text (values repeat: each
+    distinct one read once)."""
+    got = _scalars.get((value, spec_type))
+    if got is None:
+        got = _scalar_uncached(value, spec_type)
+        if len(_scalars) < 65_536 and len(value) < 256:
+            _scalars[(value, spec_type)] = got
+    return got
+
+
+def _scalar_uncached(value: str, spec_type: str | None) -> tuple[Scalar, str]:
     if spec_type != "STRING" and value.isascii() and (
             value.isdigit() or (value[:1] == "-" and value[1:].isdigit())):
         n = int(value) if len(value) < 4000 else None

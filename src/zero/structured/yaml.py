@@ -71,18 +71,31 @@ def yaml_scalar(value: Scalar) -> str:
 
 def write_yaml(tree: Tree) -> str:
     out: list[str] = []
+    append = out.append
     open_path: tuple[str, ...] = ()
+    # a leaf's text after its key (`: value  # comment`): values and comments repeat, so each pair is
+    # written once (114,000 tool entries hold a few thousand pairs)
+    tails: dict[tuple[type, Scalar, str | None], str] = {}  # by type too: 1 and 1.0 are equal keys
     for segs, leaf in emit_items(tree):
         parents = segs[:-1]
-        common = 0
-        while common < min(len(open_path), len(parents)) and open_path[common] == parents[common]:
-            common += 1
-        pad = "  " * common
-        out.extend(pad + c if c else "" for c in leaf.before)
+        if parents == open_path:  # a sibling of the leaf before: the common case
+            common = len(parents)
+        else:
+            common, most = 0, min(len(open_path), len(parents))
+            while common < most and open_path[common] == parents[common]:
+                common += 1
+        if leaf.before:
+            pad = "  " * common
+            out.extend(pad + c if c else "" for c in leaf.before)
         for depth in range(common, len(parents)):
-            out.append("  " * depth + _yaml_key(parents[depth]) + ":")
-        out.append("  " * len(parents) + _yaml_key(segs[-1]) + ": " + yaml_scalar(leaf.value)
-                   + comment_suffix(leaf.after))
+            append("  " * depth + _yaml_key(parents[depth]) + ":")
+        value, after = leaf.value, leaf.after
+        tail = tails.get((type(value), value, after))
+        if tail is None:
+            tail = ": " + yaml_scalar(value) + comment_suffix(after)
+            if len(tails) < 65_536:
+                tails[(type(value), value, after)] = tail
+        append("  " * len(parents) + _yaml_key(segs[-1]) + tail)
         open_path = parents
     out.extend(tree.tail)
     out.append(META_KEY + ":")
