@@ -288,3 +288,88 @@ def test_the_architecture_check_sees_a_program_started_elsewhere(tmp_path: Path)
         bad = tmp_path / "bad.py"
         bad.write_text(text)
         assert _spawns(bad), text
+
+
+# --------------------------------------------------------------------- issue 39: one answer, one path
+
+
+def _calls(path: Path, name: str) -> list[int]:
+    """The lines where a module calls ``name(...)`` or ``x.name(...)``."""
+    out = []
+    for node in ast.walk(ast.parse(path.read_text(encoding="utf-8"))):
+        if isinstance(node, ast.Call):
+            f = node.func
+            if (isinstance(f, ast.Name) and f.id == name) or (isinstance(f, ast.Attribute) and f.attr == name):
+                out.append(node.lineno)
+    return out
+
+
+def test_a_project_is_made_only_by_open_project() -> None:
+    """The resolver of a run is made in one place (zero.engine.project.open_project, ruff's
+    ``resolve``); every command and the server get theirs from it (issue 39: it was made in eight)."""
+    made = sorted(f"{m}:{line}" for m, path in MODULES.items() for line in _calls(path, "Project") if m != RESOLVER)
+    assert made == []
+    assert len(_calls(MODULES[RESOLVER], "Project")) == 1
+
+
+def test_the_architecture_check_sees_a_project_made_elsewhere(tmp_path: Path) -> None:
+    bad = tmp_path / "bad.py"
+    bad.write_text("from zero.engine import project\np = project.Project(r)\nq = Project(r, isolated=True)\n")
+    assert _calls(bad, "Project") == [2, 3]
+
+
+# What only the engine does: linting, running git, comparing machines and fleets, making the resolver.
+ORCHESTRATION = {"lint_machine", "lint_file", "lint_data", "lint_bytes", "lint_document", "lint_program", "lint_many",
+                 "iter_lint_many", "run_lint", "run_format", "run_fleet", "fleet_drift", "revision_reader",
+                 "machine_changes", "program_travel_of", "run_diff", "run_effective", "run_limits", "report_facts",
+                 "open_project", "Project", "load_machine"}
+# output/docs.py lints each rule's examples for the documentation site (the docs' own build step);
+# the one module of output/ allowed to, until that build step moves into the engine.
+RENDERS_AND_LINTS = {"zero.output.docs"}
+
+
+def test_output_only_renders() -> None:
+    """output/ lays out what the engine found; it lints nothing, runs no git, compares no machine and
+    makes no resolver (issue 39: output/report.py linted the machine and ran git, output/fleet.py ran
+    the fleet comparison)."""
+    wrong = sorted(f"{m} uses {name}" for m, path in MODULES.items()
+                   if component(m) == "output" and m not in RENDERS_AND_LINTS
+                   for name in _names_used(path) & ORCHESTRATION)
+    assert wrong == []
+
+
+def test_the_command_line_builds_no_json() -> None:
+    """The JSON of every command is written by output/ (issue 39: cli/app.py built it inline)."""
+    wrong = sorted(f"{m}:{line}" for m, path in MODULES.items() if component(m) == "cli"
+                   for line in _calls(path, "dumps"))
+    allowed = {f"zero.cli.run:{line}" for line in _calls(MODULES["zero.cli.run"], "dumps")
+               if "command_line_config" in _function_at(MODULES["zero.cli.run"], line)}
+    assert sorted(set(wrong) - allowed) == []
+
+
+def _function_at(path: Path, line: int) -> str:
+    """The name of the top-level function that holds ``line``."""
+    for node in ast.parse(path.read_text(encoding="utf-8")).body:
+        if isinstance(node, ast.FunctionDef) and node.lineno <= line <= (node.end_lineno or node.lineno):
+            return node.name
+    return ""
+
+
+def test_every_command_that_reads_lists_takes_the_common_options() -> None:
+    """--config, --isolated, --param-desc and --kernel, declared once, on every command that reads
+    lists (issue 39: only lint, format and config had --config)."""
+    import typer.main
+
+    from zero.cli.app import app
+
+    group = typer.main.get_command(app)
+    for name in ("lint", "format", "show", "explain", "diff", "limits", "convert", "report", "config"):
+        command = group.commands[name]  # type: ignore[attr-defined]
+        names = {o for p in command.params for o in getattr(p, "opts", ())}
+        assert {"--config", "--isolated", "--param-desc", "--kernel"} <= names, name
+
+
+def test_the_command_line_is_thin() -> None:
+    """The typer commands say which parameters they take and hand over; the help is cli/help.py's."""
+    assert "def help_text" not in MODULES["zero.cli.app"].read_text(encoding="utf-8")
+    assert len(MODULES["zero.cli.app"].read_text(encoding="utf-8").splitlines()) < 800

@@ -12,6 +12,8 @@ import pytest
 
 from conftest import FIXTURES
 from zero.catalog.registry import Registry
+from zero.cli.app import run_fleet_diff
+from zero.cli.exits import fleet_exit
 from zero.engine.fleet import (
     EXTRA,
     MISSING,
@@ -26,12 +28,10 @@ from zero.engine.queries import run_diff
 from zero.errors import ZeroError
 from zero.output.fleet import (
     CSV_COLUMNS,
-    fleet_exit,
     fleet_json,
     render_fleet_csv,
     render_fleet_json,
     render_fleet_text,
-    run_fleet_diff,
     short_names,
 )
 

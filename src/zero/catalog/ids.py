@@ -9,6 +9,7 @@ named here once. Lengths and angles in the lists are integers in 0.1 µm and
 from __future__ import annotations
 
 import math
+from collections.abc import Sequence
 
 Number = int | float
 
@@ -124,3 +125,47 @@ def g_code_with_index(group: int) -> str:
     """The G code with its G159 form where they differ: ``G54 (G159=1)``, ``G159=7``."""
     code = g_code(group)
     return code if code.startswith("G159") else f"{code} (G159={group})"
+
+
+# ------------------------------------------------------------------------- engineering units
+
+# The catalogue's units (linear, rotary) and what an engineer reads: factor and unit for each.
+_UNIT_PAIRS: dict[tuple[str, ...], tuple[tuple[float, str], tuple[float, str]]] = {
+    ("0.1um", "0.1mdeg"): ((1e-4, "mm"), (1e-4, "°")),
+    ("um/s", "mdeg/s"): ((6e-5, "m/min"), (0.06, "°/min")),
+    ("mm/s^2", "deg/s^2"): ((1, "mm/s²"), (1, "°/s²")),
+    ("mm/s^3", "deg/s^3"): ((1, "mm/s³"), (1, "°/s³")),
+    ("m/s^3", "kdeg/min^3"): ((1, "m/s³"), (1, "k°/min³")),
+    ("um", "mdeg"): ((1, "µm"), (1e-3, "°")),
+    ("mm", "deg"): ((1, "mm"), (1, "°")),
+    ("0.1um/rev", "0.1mdeg/rev"): ((1e-4, "mm/rev"), (1e-4, "°/rev")),
+}
+_UNIT_ONE: dict[str, tuple[float, str]] = {
+    "us": (1, "µs"), "ms": (1, "ms"), "s": (1, "s"), "Hz": (1, "Hz"), "0.1%": (0.1, "%"), "%": (1, "%"),
+    "0.01/s": (0.01, "1/s"), "deg": (1, "°"), "rev/min": (1, "rpm"), "mm/min": (1, "mm/min"),
+    "um/m": (1, "µm/m"), "0.1um/m": (0.1, "µm/m"), "rev": (1, "rev"),
+}
+
+
+def engineering_number(value: float) -> str:
+    """1040 → "1,040"; up to four decimals."""
+    text = f"{value:,.4f}".rstrip("0").rstrip(".")
+    return "0" if text in ("-0", "") else text
+
+
+def in_engineering(units: Sequence[str], number: float | int, rotary: bool | None) -> str | None:
+    """A number in the catalogue's ``units`` as an engineer reads it: 10400000 0.1 µm → "1,040 mm",
+    2000000 µm/s → "120 m/min"; ``rotary`` None (not known): both readings. None: no known unit."""
+    pair = _UNIT_PAIRS.get(tuple(units))
+    try:
+        if pair is not None:
+            if rotary is None:
+                return " or ".join(f"{engineering_number(number * f)} {u}" for f, u in pair)
+            factor, unit = pair[1 if rotary else 0]
+        elif len(units) == 1 and units[0] in _UNIT_ONE:
+            factor, unit = _UNIT_ONE[units[0]]
+        else:
+            return None
+        return f"{engineering_number(number * factor)} {unit}"
+    except (OverflowError, ValueError):
+        return None

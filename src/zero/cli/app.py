@@ -8,14 +8,11 @@ so a :class:`~zero.errors.ZeroError` is one line on stderr and exit 2, never a t
 from __future__ import annotations
 
 import inspect
-import json
-import shutil
 import sys
-import textwrap
+import typing
 from collections.abc import Callable, Sequence
-from enum import Enum
 from pathlib import Path
-from typing import Annotated, Any
+from typing import TYPE_CHECKING, Annotated, Any, TextIO
 
 import typer
 import typer.core
@@ -23,205 +20,27 @@ import typer.core
 from zero import __version__
 from zero.catalog.registry import KINDS, ParamSpec, Registry
 from zero.cli import exits
-from zero.cli.options import LINT_OPTIONS, PATHS_HELP, Option, close_matches
+from zero.cli.help import ZeroCommand, ZeroGroup
+from zero.cli.options import COMMON_OPTIONS, LINT_OPTIONS, PATHS_HELP, Option, close_matches
 from zero.cli.run import REGISTRIES, check_kind, echo, kind_completions, read_stdin, render_lint, rule_completions
 from zero.cli.run import lint as run_lint_command
 from zero.diff import SAME, DiffOptions, show_lines
 from zero.engine.commands import parse_kind, run_format
 from zero.engine.convert import check_convert_options, convert_inputs, write_into, write_outputs
-from zero.engine.project import Project
+from zero.engine.project import Common, Project, open_project
 from zero.engine.queries import find_param, load_side, machine_of, run_diff, run_effective, run_limits
 from zero.errors import ZeroError
 from zero.files import write_report
 from zero.output.docs import param_text, rule_text, rules_overview
+from zero.output.queries import diff_json, effective_json, limits_json, schema_json
 from zero.output.tables import render_diff, render_effective, render_limits
 from zero.output.text import render_text
 from zero.rules import RULES
 from zero.structured.schema import build_schema
 
-# ------------------------------------------------------------------------------ help
-# The help and the usage line are written here from the parameters (their names, metavar, help,
-# default, environment variable), not by typer: what typer/click print differs between their
-# versions (typer 0.29 shows Python types: `PATH... <list[Path]>`, `{FILE...}...`).
-
-HELP_WIDTH = 80  # help lines never exceed this, whatever the terminal
-_COLUMN = 30  # the widest option column before its text goes to the next line
-
-
-def help_width() -> int:
-    """The width of the help: the terminal's (COLUMNS), at most :data:`HELP_WIDTH`."""
-    return max(min(shutil.get_terminal_size((HELP_WIDTH, 24)).columns, HELP_WIDTH), 40)
-
-
-def _wrap(text: str, width: int, indent: str, first: str | None = None) -> list[str]:
-    """Paragraphs (blank-line separated) rewrapped to ``width``; words never broken."""
-    out: list[str] = []
-    for n, paragraph in enumerate(p for p in inspect.cleandoc(text).split("\n\n") if p.strip()):
-        if n:
-            out.append("")
-        out.extend(textwrap.wrap(" ".join(paragraph.split()), width, initial_indent=first if first and not n
-                                 else indent, subsequent_indent=indent, break_long_words=False,
-                                 break_on_hyphens=False))
-    return out
-
-
-def _is_argument(param: Any) -> bool:
-    return getattr(param, "param_type_name", "") == "argument"
-
-
-def _placeholder(param: Any) -> str:
-    """An argument's or option value's placeholder: its metavar, or its name in capitals."""
-    name = getattr(param, "metavar", None) or (param.name or "").upper()
-    return str(name)
-
-
-def _usage_piece(param: Any) -> str:
-    name = _placeholder(param)
-    many = getattr(param, "nargs", 1) != 1
-    piece = name if param.required else f"[{name}]"
-    return f"{piece}..." if many else piece
-
-
-def usage_line(command: Any, ctx: Any) -> str:
-    """``Usage: zero lint [OPTIONS] [PATH]...``: arguments by their placeholders."""
-    pieces = ["[OPTIONS]"] + [_usage_piece(p) for p in command.params if _is_argument(p) and not p.hidden]
-    if isinstance(command, typer.core.TyperGroup):
-        pieces.append("COMMAND [ARGS]...")
-    lines = textwrap.wrap(" ".join(pieces), help_width(), initial_indent=f"Usage: {ctx.command_path} ",
-                          subsequent_indent=" " * 8, break_long_words=False, break_on_hyphens=False)
-    return "\n".join(lines)
-
-
-def _shown(value: Any) -> str:
-    if isinstance(value, Enum):
-        value = value.value
-    if isinstance(value, (list, tuple)):
-        return ", ".join(_shown(v) for v in value)
-    return str(value)
-
-
-def _extras(param: Any) -> list[str]:
-    """``default: …``, ``env var: …``, ``required``: what the help adds in brackets."""
-    extras: list[str] = []
-    show_default = getattr(param, "show_default", None)
-    default = param.default
-    if isinstance(show_default, str):
-        extras.append(f"default: {show_default}")
-    elif show_default is not False and not callable(default):
-        if getattr(param, "is_flag", False):
-            if param.secondary_opts:  # --strict / --no-strict: which one holds
-                name = param.opts[0] if default else param.secondary_opts[0]
-                extras.append(f"default: {name.lstrip('-')}")
-        elif default not in (None, [], (), "") and not param.required:
-            extras.append(f"default: {_shown(default)}")
-    envvar = getattr(param, "envvar", None)
-    if envvar and getattr(param, "show_envvar", True):
-        extras.append(f"env var: {envvar if isinstance(envvar, str) else ', '.join(envvar)}")
-    if param.required and _is_argument(param):
-        extras.append("required")
-    return extras
-
-
-def _record(param: Any) -> tuple[str, str]:
-    """One line of the Arguments or Options section: the names, and the help text."""
-    if _is_argument(param):
-        names = _placeholder(param)
-    else:
-        opts = sorted(param.opts, key=lambda o: len(o) - len(o.lstrip("-")))  # -o before --output
-        names = ", ".join(opts)
-        if param.secondary_opts:
-            names += " / " + ", ".join(param.secondary_opts)
-        if not getattr(param, "is_flag", False) and not getattr(param, "count", False):
-            names += f" {_placeholder(param)}"
-    text = getattr(param, "help", None) or ""
-    extras = _extras(param)
-    if extras:
-        text = f"{text}  [{'; '.join(extras)}]" if text else f"[{'; '.join(extras)}]"
-    return names, text
-
-
-def _section(title: str, rows: Sequence[tuple[str, str]], width: int) -> list[str]:
-    """A titled definition list: names in the first column, the text wrapped beside them."""
-    if not rows:
-        return []
-    column = min(max(len(name) for name, _ in rows), _COLUMN)
-    out = ["", f"{title}:"]
-    for name, text in rows:
-        indent = " " * (2 + column + 2)
-        first = f"  {name:<{column}}  "
-        if len(name) > column:
-            out.append(f"  {name}")
-            first = indent
-        out.extend(_wrap(text, width, indent, first) if text.strip() else [first.rstrip()])
-    return out
-
-
-def _short_help(command: Any, limit: int) -> str:
-    """The first sentence of a command's help, cut at a word to fit ``limit``."""
-    text = " ".join((getattr(command, "short_help", None) or command.help or "").split("\n\n")[0].split())
-    sentence, dot, _ = text.partition(". ")
-    text = sentence + "." if dot else text
-    if len(text) <= limit:
-        return text
-    return text[:limit - 3].rsplit(" ", 1)[0].rstrip(",;:") + "..."
-
-
-def help_text(command: Any, ctx: Any) -> str:
-    """A command's whole --help: usage, description, arguments, options, commands."""
-    width = help_width()
-    lines = [usage_line(command, ctx)]
-    if command.help:
-        lines += ["", *_wrap(command.help, width, "  ")]
-    visible = [p for p in command.get_params(ctx) if not getattr(p, "hidden", False)]
-    lines += _section("Arguments", [_record(p) for p in visible if _is_argument(p)], width)
-    lines += _section("Options", [_record(p) for p in visible if not _is_argument(p)], width)
-    if isinstance(command, typer.core.TyperGroup):
-        commands = {n: command.get_command(ctx, n) for n in command.list_commands(ctx)}
-        shown = {n: c for n, c in commands.items() if c is not None and not c.hidden}
-        if shown:
-            column = max(len(n) for n in shown)
-            lines += _section("Commands", [(n, _short_help(c, width - column - 6)) for n, c in shown.items()], width)
-    return "\n".join(lines)  # echoed with its newline
-
-
-def _suggest_option(command: Any, ctx: Any, exc: Exception) -> None:
-    """A mistyped option: suggest only a close one (click's cutoff offers ``--jobs`` for ``--bogus``)."""
-    name = getattr(exc, "option_name", None)
-    if not isinstance(name, str) or not hasattr(exc, "possibilities"):
-        return
-    known = [o for p in command.get_params(ctx) if not _is_argument(p) for o in (*p.opts, *p.secondary_opts)]
-    near = close_matches(name, known)
-    exc.possibilities = None  # the message says it, in zero's words
-    exc.message = f"No such option: {name}" + (f" (did you mean {near[0]}?)" if near else "")  # type: ignore[attr-defined]
-
-
-class _ZeroHelp:
-    """Help, usage line and option suggestions in zero's own words (for a command or the group)."""
-
-    def get_help(self, ctx: Any) -> str:
-        return help_text(self, ctx)
-
-    def get_usage(self, ctx: Any) -> str:
-        return usage_line(self, ctx)
-
-    def format_help(self, ctx: Any, formatter: Any) -> None:
-        formatter.write(help_text(self, ctx))
-
-    def parse_args(self, ctx: Any, args: list[str]) -> list[str]:
-        try:
-            return super().parse_args(ctx, args)  # type: ignore[misc,no-any-return]
-        except Exception as exc:
-            _suggest_option(self, ctx, exc)
-            raise
-
-
-class ZeroCommand(_ZeroHelp, typer.core.TyperCommand):
-    """A typer command whose help, usage line and option suggestions are zero's own."""
-
-
-class ZeroGroup(_ZeroHelp, typer.core.TyperGroup):
-    """The ``zero`` group, with the help of :class:`ZeroCommand`."""
-
+if TYPE_CHECKING:  # start-up: the fleet only with --fleet
+    from zero.engine.fleet import FleetRequest
+    from zero.engine.project import Registries
 
 # ---------------------------------------------------------------- values, completion
 # Values are checked here, not by typer: typer 0.29 checks them with pydantic and says
@@ -316,15 +135,19 @@ ParamDesc = Annotated[Path | None, typer.Option(
 state = _State()
 
 
-def _project(machine: Path | None = None, config: Path | None = None, isolated: bool = False) -> Project:
-    """The resolver of this run: the configuration, catalogue and machine of each file."""
-    return Project(REGISTRIES, config=config, isolated=isolated, param_desc=state.param_desc, machine=machine)
+def _project(common: Common | None = None, machine: Path | None = None) -> Project:
+    """The resolver of this run (one per command): the settings of each file, from the common options."""
+    return open_project(REGISTRIES, common or Common(param_desc=state.param_desc), machine=machine)
+
+
+def _file(name: str | Path | None) -> Path | None:
+    """A file named on the command line as the resolver is asked about it (``-``: none)."""
+    return Path(name) if name is not None and str(name) != "-" else None
 
 
 def _registry(path: str | Path | None = None) -> Registry:
-    """The catalogue of a file (its configuration's `param-desc`, `--param-desc` over it); of the
-    current directory where there is no file."""
-    return _project().registry(Path(path) if path is not None and str(path) != "-" else None)
+    """The catalogue of the current directory (``zero schema``, ``zero param``: no list is read)."""
+    return _project().settings(_file(path)).registry
 
 
 def _run(command: Callable[[], int]) -> None:
@@ -406,10 +229,37 @@ _lint.__annotations__ = {p.name: p.annotation for p in _lint.__signature__.param
 app.command("lint", cls=ZeroCommand)(_lint)
 
 
+_COMMON = tuple(o.dest for o in COMMON_OPTIONS)
+
+
+def common_options(command: Callable[..., None]) -> Callable[..., None]:
+    """A command that reads lists takes the common options (``--config``, ``--isolated``,
+    ``--param-desc``, ``--kernel``) from the one table (:data:`zero.cli.options.COMMON_OPTIONS`,
+    as ``zero lint`` does) and receives them as one :class:`~zero.engine.project.Common`
+    (its keyword ``common``)."""
+    hints = typing.get_type_hints(command, include_extras=True)  # the annotations are strings (postponed)
+    own = [p.replace(annotation=hints[p.name]) for p in inspect.signature(command).parameters.values()
+           if p.name != "common"]
+
+    def wrapper(**params: Any) -> None:
+        given = {name: params.pop(name) for name in _COMMON}
+        common = Common(tuple(given["config"] or ()), bool(given["isolated"]),
+                        given["param_desc"] or state.param_desc, given["kernel"])
+        command(**params, common=common)
+
+    wrapper.__name__ = command.__name__
+    wrapper.__doc__ = command.__doc__
+    wrapper.__signature__ = inspect.Signature(  # type: ignore[attr-defined]
+        [*own, *(_typer_parameter(o) for o in COMMON_OPTIONS)])
+    wrapper.__annotations__ = {p.name: p.annotation for p in wrapper.__signature__.parameters.values()}  # type: ignore[attr-defined]
+    return wrapper
+
+
 # --------------------------------------------------------------------------- convert
 
 
 @app.command(cls=ZeroCommand)
+@common_options
 def convert(
     inputs: Annotated[list[str], typer.Argument(
         help="Files to convert (list, YAML, TOML or JSON); - reads standard input.", metavar="FILE")],
@@ -435,22 +285,26 @@ def convert(
     into: Annotated[Path | None, typer.Option(
         "--into", help="Put the list back into this TwinCAT export (its --item element's CDATA; every other "
         "byte kept).", metavar="EXPORT")] = None,
-    param_desc: ParamDesc = None,
+    *, common: Common,
 ) -> None:
     """Convert lists to XML/YAML/TOML/JSON and back, keeping values, order, comments and layout."""
 
     def body() -> int:
         forced = parse_kind(check_kind(kind))
+        project = _project(common)
+
+        def catalogue(name: str) -> Registry:
+            return project.settings(_file(name)).registry
+
         if into is not None:
             if len(inputs) != 1 or output is not None or out_dir is not None or to is not None:
                 raise ZeroError("--into puts one list into an export: give one input and no -o/--out-dir/--to")
-            write_into(inputs[0], into, item, _registry, read_stdin,
-                       src=from_, kind=forced)
+            write_into(inputs[0], into, item, catalogue, read_stdin, src=from_, kind=forced, project=project)
             return exits.OK
         check_convert_options(inputs, output, out_dir)
-        items = convert_inputs(inputs, _registry, read_stdin, src=from_,
+        items = convert_inputs(inputs, catalogue, read_stdin, src=from_,
                                to=to, output=output, kind=forced, check=check,
-                               strict=strict, element=item, every_list=out_dir is not None)
+                               strict=strict, element=item, every_list=out_dir is not None, project=project)
         for done in items:
             if done.error is not None and done.findings is None:
                 sys.stderr.write(f"zero: {done.error}\n")
@@ -475,6 +329,7 @@ def convert(
 
 
 @app.command(cls=ZeroCommand)
+@common_options
 def diff(
     a: Annotated[str, typer.Argument(help="Old side: list, YAML, TOML or JSON (- for stdin).", metavar="A")],
     b: Annotated[list[str] | None, typer.Argument(
@@ -505,7 +360,7 @@ def diff(
     no_cache: Annotated[bool, typer.Option(
         "--no-cache", help="With --fleet: compare every machine again; neither read nor write the cache "
         "(.zero_cache; also ZERO_NO_CACHE=1).")] = False,
-    param_desc: ParamDesc = None,
+    *, common: Common,
 ) -> None:
     """Compare two lists by parameter: added, removed, changed, with mm/° deltas.
 
@@ -518,17 +373,17 @@ def diff(
             other = [name for name, given in (("--defaults", defaults), ("--machine", machine), ("--strict", strict),
                                               ("--comments", comments), ("--revert", revert is not None),
                                               ("--from", from_ is not None), ("--kind", kind is not None)) if given]
-            return _fleet_diff(fleet, [a, *(b or [])], output_format, jobs, other, cache=not no_cache)
+            return _fleet_diff(fleet, [a, *(b or [])], output_format, jobs, other, common, cache=not no_cache)
         if output_format == "csv":
             raise ZeroError("--output-format csv is the report of --fleet")
         if b is not None and len(b) > 1:
             raise ZeroError(f"give two files to compare, not {1 + len(b)} (many machines: --fleet GOLDEN MACHINE...)")
         forced = parse_kind(check_kind(kind))
-        run = run_diff(a, b[0] if b else None, _project(), read_stdin, defaults=defaults,
+        run = run_diff(a, b[0] if b else None, _project(common), read_stdin, defaults=defaults,
                        options=DiffOptions(strict=strict, comments=comments),
                        fmt=from_, kind=forced, machine=machine, revert=revert)
         if output_format == "json":
-            sys.stdout.write(json.dumps([c.to_json() for c in run.changes], indent=2, ensure_ascii=False) + "\n")
+            sys.stdout.write(diff_json(run.changes))
         elif run.changes:
             render_diff(run.changes, run.header)
         return exits.found(any(c.kind != SAME for c in run.changes))
@@ -537,18 +392,31 @@ def diff(
 
 
 def _fleet_diff(golden: str, machines: list[str], output_format: str, jobs: int | None, other: list[str],
-                cache: bool = True) -> int:
+                common: Common, cache: bool = True) -> int:
     """``zero diff --fleet GOLDEN MACHINE...``: the report on standard output, and its exit code."""
     if other:
         raise ZeroError(f"--fleet compares machines' effective values: {', '.join(other)} does not apply to it")
     from zero.engine.fleet import FleetRequest  # start-up: only with --fleet
-    from zero.output.fleet import run_fleet_diff  # start-up: as above
 
-    return run_fleet_diff(FleetRequest(golden, machines, jobs=jobs, param_desc=state.param_desc, cache=cache),
-                          REGISTRIES, output_format, sys.stdout)
+    return run_fleet_diff(FleetRequest(golden, machines, jobs=jobs, param_desc=common.param_desc, config=common.configs,
+                                       isolated=common.isolated, cache=cache), REGISTRIES, output_format, sys.stdout)
+
+
+def run_fleet_diff(request: FleetRequest, registries: Registries, output_format: str, stream: TextIO) -> int:
+    """``zero diff --fleet``: the engine compares (:func:`zero.engine.fleet.run_fleet`), the output
+    layer writes the report in ``output_format`` to ``stream``; the exit code (:func:`exits.fleet_exit`).
+    :class:`~zero.errors.ZeroError` where the golden machine cannot be read."""
+    from zero.engine.fleet import run_fleet  # start-up: only with --fleet
+    from zero.output.fleet import check_fleet_format, render_fleet  # start-up: as above
+
+    check_fleet_format(output_format)
+    drift = run_fleet(request, registries)
+    render_fleet(drift, output_format, stream)
+    return exits.fleet_exit(drift)
 
 
 @app.command(cls=ZeroCommand)
+@common_options
 def show(
     args: Annotated[list[str] | None, typer.Argument(
         help="A list, YAML, TOML or JSON file (- for stdin); with --machine: keys, IDs or patterns.",
@@ -566,35 +434,37 @@ def show(
     from_: Annotated[str | None, typer.Option("--from", help="Input format.", metavar="FORMAT",
                                               **choice(FORMATS))] = None,
     kind: Annotated[str | None, typer.Option(help="List kind instead of detecting it.", **KIND_OPTION)] = None,
-    param_desc: ParamDesc = None,
+    *, common: Common,
 ) -> None:
     """Print a list as the controller reads it: one parameter per line, grouped (for git textconv);
     with --machine, every list of a machine with each value's origin."""
 
     def body() -> int:
         if machine is not None:
-            return _effective(machine, args or [], effective_, False, output_format, textconv)
+            return _effective(_project(common, machine), args or [], effective_, False, output_format, textconv)
         if not args or len(args) != 1:
             raise ZeroError("give one file to show (or --machine STARTUP [KEY...])")
-        registry = _registry(args[0])
-        side = load_side(args[0], from_, parse_kind(check_kind(kind)), registry, read_stdin)
+        project = _project(common)
+        registry = project.settings(_file(args[0])).registry
+        side = load_side(args[0], from_, parse_kind(check_kind(kind)), registry, read_stdin, project)
         sys.stdout.write("\n".join(show_lines(side, registry)) + "\n")
         return exits.OK
 
     _run(body)
 
 
-def _effective(machine: Path | None, keys: list[str], with_defaults: bool, explain: bool,
+def _effective(project: Project, keys: list[str], with_defaults: bool, explain: bool,
                output_format: str, textconv: bool = False) -> int:
-    run = run_effective(_project(machine), keys, with_defaults, explain)
+    run = run_effective(project, keys, with_defaults, explain)
     if output_format == "json":
-        sys.stdout.write(json.dumps(run.to_json(), indent=2, ensure_ascii=False) + "\n")
+        sys.stdout.write(effective_json(run))
     else:
         render_effective(run.summary, run.scopes, explain=explain, textconv=textconv)
     return exits.OK
 
 
 @app.command(cls=ZeroCommand)
+@common_options
 def explain(
     keys: Annotated[list[str], typer.Argument(
         help="Keys, IDs or patterns (kenngr.swe_pos, P-AXIS-00178, 'kenngr.*').", metavar="KEY")],
@@ -603,11 +473,11 @@ def explain(
         metavar="STARTUP")] = None,
     output_format: Annotated[str, typer.Option("--output-format", help="text or json.",
         metavar="FORMAT", **choice(REPORTS))] = "text",
-    param_desc: ParamDesc = None,
+    *, common: Common,
 ) -> None:
     """Where the value of a parameter comes from on a machine: the list, the default list under it,
     or the catalogue, for every list of the machine that has it."""
-    _run(lambda: _effective(machine, keys, False, True, output_format))
+    _run(lambda: _effective(_project(common, machine), keys, False, True, output_format))
 
 
 # ---------------------------------------------------------------------------- schema
@@ -626,8 +496,7 @@ def schema(
     """Print a JSON Schema of the structured (YAML/TOML/JSON) form for editors."""
 
     def body() -> int:
-        text = json.dumps(build_schema(_registry(), parse_kind(check_kind(kind)), strict=not allow_unknown),
-                          indent=2, ensure_ascii=False) + "\n"
+        text = schema_json(build_schema(_registry(), parse_kind(check_kind(kind)), strict=not allow_unknown))
         if output is None or output == "-":
             sys.stdout.write(text)
         else:
@@ -641,6 +510,7 @@ def schema(
 
 
 @app.command(cls=ZeroCommand)
+@common_options
 def limits(
     machine: Annotated[Path | None, typer.Option(
         "--machine", help="The start-up list (hochlauf.lis) [default: [tool.zero.machine] startup].",
@@ -653,22 +523,19 @@ def limits(
     profile: Annotated[str | None, typer.Option(
         help="Also apply a rule set: ip247 (Siemens S5: offsets and limits within ±99.999999 m).",
         metavar="PROFILE")] = None,
-    param_desc: ParamDesc = None,
+    *, common: Common,
 ) -> None:
     """Soft limits in the programming coordinate system, per work offset (G53..G59, G159=n) and axis."""
 
     def body() -> int:
-        project = _project(machine)
+        project = _project(common, machine)
         run = run_limits(project, all_groups, profile)
         if output_format == "svg":
             from zero.output.svg import limits_svg  # start-up: only for a picture
 
             sys.stdout.write(limits_svg(machine_of(project), run.rows))
         elif output_format == "json":
-            data: dict[str, object] = {"limits": [r.to_json() for r in run.rows]}
-            if profile:
-                data["violations"] = [{"what": v.what, "value": v.value, "where": v.where} for v in run.violations]
-            sys.stdout.write(json.dumps(data, indent=2, ensure_ascii=False) + "\n")
+            sys.stdout.write(limits_json(run, profile))
         else:
             render_limits(run.rows, run.violations)
         return exits.found(bool(run.violations))
@@ -680,6 +547,7 @@ def limits(
 
 
 @app.command(cls=ZeroCommand)
+@common_options
 def report(
     machine: Annotated[Path | None, typer.Option(
         "--machine", help="The start-up list (hochlauf.lis) [default: [tool.zero.machine] startup].",
@@ -701,7 +569,7 @@ def report(
     program: Annotated[list[str] | None, typer.Option(
         "--program", help="Also draw where this NC program takes each axis (repeatable).", metavar="PROG")] = None,
     force: Annotated[bool, typer.Option(help="Replace an existing output file.")] = False,
-    param_desc: ParamDesc = None,
+    *, common: Common,
 ) -> None:
     """Write one self-contained HTML page about a machine: its channels and axes, a picture of each
     axis's travel range with the work offsets, the effective values with their origin, every finding,
@@ -709,11 +577,13 @@ def report(
     report extra (Jinja2)."""
 
     def body() -> int:
-        from zero.output.report import build_report, render_report  # start-up: Jinja2 only for a report
+        from zero.engine.report import report_facts  # start-up: only for a report
+        from zero.output.report import build_report, check_values, render_report  # start-up: Jinja2 as above
 
         target = Path(output) if output not in (None, "-") else None
-        page = render_report(build_report(_project(machine), target, against, fleet or (), jobs, values,
-                                          program or ()))
+        check_values(values)
+        facts = report_facts(_project(common, machine), against, fleet or (), jobs, program or ())
+        page = render_report(build_report(facts, target, values))
         if target is None:
             sys.stdout.write(page)
         else:
@@ -727,25 +597,23 @@ def report(
 
 
 @app.command("format", cls=ZeroCommand)
+@common_options
 def format_cmd(
     paths: Annotated[list[Path], typer.Argument(help="List files or directories; - formats standard input.",
         metavar="PATH")],
     check: Annotated[bool, typer.Option("--check", help="Only say which files would change (exit 1).")] = False,
     diff: Annotated[bool, typer.Option("--diff", help="Show the changes as a unified diff; write nothing.")] = False,
-    config: Annotated[Path | None, typer.Option("--config", help="Use this configuration file.",
-        metavar="FILE")] = None,
-    isolated: Annotated[bool, typer.Option("--isolated", help="Ignore configuration files.")] = False,
     stdin_filename: Annotated[str | None, typer.Option(
         "--stdin-filename", help="Format standard input as this file (its configuration applies).",
         metavar="NAME")] = None,
-    param_desc: ParamDesc = None,
+    *, common: Common,
 ) -> None:
     """Rewrite lists in canonical layout (aligned values and comments); keys, values, comments
     and their order stay."""
 
     def body() -> int:
-        run = run_format(paths, REGISTRIES, echo(), check, diff, config, isolated, state.param_desc, read_stdin,
-                         stdin_filename)
+        run = run_format(paths, REGISTRIES, echo(), check, diff, common.configs, common.isolated, common.param_desc,
+                         read_stdin, stdin_filename)
         if [str(p) for p in paths] == ["-"]:
             return exits.found(bool(run.failed or (run.changed and (check or diff))))
         verb = "would be reformatted" if (check or diff) else "reformatted"
@@ -786,18 +654,17 @@ def server_cmd(
 
 
 @app.command("config", cls=ZeroCommand)
+@common_options
 def config_cmd(
     path: Annotated[Path, typer.Argument(help="A list file or directory whose configuration to show.",
         metavar="PATH")] = Path("."),
     show: Annotated[bool, typer.Option("--show", help="Print the effective configuration.")] = True,
-    config: Annotated[Path | None, typer.Option("--config", help="Use this configuration file.",
-        metavar="FILE")] = None,
-    isolated: Annotated[bool, typer.Option("--isolated", help="Ignore configuration files.")] = False,
+    *, common: Common,
 ) -> None:
     """Show the configuration that applies to PATH ([tool.zero], zero.toml, .zero.toml)."""
 
     def body() -> int:
-        cfg = _project(config=config, isolated=isolated).config(path, directory=path.is_dir())
+        cfg = _project(common).config(path, directory=path.is_dir())
         if show:
             sys.stdout.write(cfg.show())
         return exits.OK

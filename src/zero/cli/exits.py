@@ -13,10 +13,14 @@ import gc
 import os
 import sys
 from collections.abc import Callable
+from typing import TYPE_CHECKING
 
 from zero.diagnostics import Severity
 from zero.engine.lint import Totals
 from zero.errors import ZeroError
+
+if TYPE_CHECKING:  # start-up: the fleet only for zero diff --fleet
+    from zero.engine.fleet import FleetDrift
 
 OK, FINDINGS, USAGE, INTERRUPTED, BROKEN_PIPE = 0, 1, 2, 130, 141
 
@@ -39,6 +43,12 @@ def lint_exit(totals: Totals, strict: bool, exit_zero: bool) -> int:
 def found(anything: bool) -> int:
     """1 when there is something to report (differences, violations, failed inputs)."""
     return FINDINGS if anything else OK
+
+
+def fleet_exit(drift: FleetDrift) -> int:
+    """``zero diff --fleet``: 2 when a machine could not be read, else 1 when anything drifts, else 0
+    (like ``zero diff``)."""
+    return USAGE if drift.unreadable else FINDINGS if drift.differs else OK
 
 
 def of_system_exit(code: object) -> int:

@@ -48,6 +48,21 @@ PATHS_HELP = (f"Files or directories: lists ({', '.join('*' + s for s in LIST_SU
               f"and TwinCAT exports (*{XML_SUFFIX}), YAML/TOML/JSON forms named on the command line, NC programs "
               f"({', '.join('*' + s for s in PROGRAM_SUFFIXES)}); - reads standard input.")
 
+# The options of every command that reads lists (lint, format, show, explain, diff, limits, convert,
+# report, config): which configuration applies, which catalogue, which kernel release. Declared here
+# once; `zero lint` takes them from LINT_OPTIONS, the other commands from COMMON_OPTIONS, and the
+# engine receives them as one zero.engine.project.Common.
+CONFIG = Option("config", ("--config",),
+                "A configuration file for every file (zero.toml or pyproject.toml), or KEY = VALUE over the "
+                "configuration that applies, as in ruff (repeatable).", "multi", metavar="FILE|KEY=VALUE")
+ISOLATED = Option("isolated", ("--isolated",), "Ignore all configuration files.", "flag", default=False)
+KERNEL = Option("kernel", ("--kernel", "--target-version"),
+                "The kernel release the machines run (as `kernel` in the configuration), e.g. V3.1.3079.",
+                metavar="RELEASE")
+PARAM_DESC = Option("param_desc", ("--param-desc",), "Use this CncParaDesc.xml instead of the built-in table.",
+                    type=Path, metavar="FILE")
+COMMON_OPTIONS: tuple[Option, ...] = (CONFIG, ISOLATED, PARAM_DESC, KERNEL)
+
 LINT_OPTIONS: tuple[Option, ...] = (
     Option("output_format", ("--output-format",), format_help(), choices=OUTPUT_FORMATS, default="text",
            metavar="FORMAT", envvar="ZERO_OUTPUT_FORMAT"),
@@ -67,10 +82,8 @@ LINT_OPTIONS: tuple[Option, ...] = (
            default=False),
     Option("show_files", ("--show-files",), "List the files that would be checked, and exit.", "flag",
            default=False),
-    Option("config", ("--config",),
-           "A configuration file for every file (zero.toml or pyproject.toml), or KEY = VALUE over the "
-           "configuration that applies, as in ruff (repeatable).", "multi", metavar="FILE|KEY=VALUE"),
-    Option("isolated", ("--isolated",), "Ignore all configuration files.", "flag", default=False),
+    CONFIG,
+    ISOLATED,
     Option("strict", ("--strict",), "Exit 1 on warnings too.", "flag", negative="--no-strict", default=False),
     Option("select", ("--select",), "Only these codes or prefixes (repeatable, or comma-separated).", "multi",
            metavar="CODES"),
@@ -89,9 +102,7 @@ LINT_OPTIONS: tuple[Option, ...] = (
     Option("force_exclude", ("--force-exclude",),
            "Exclude files named on the command line too, as a pre-commit hook needs (the default); "
            "--no-force-exclude checks every named file.", "flag", negative="--no-force-exclude"),
-    Option("kernel", ("--kernel", "--target-version"),
-           "The kernel release the machines run (as `kernel` in the configuration), e.g. V3.1.3079.",
-           metavar="RELEASE"),
+    KERNEL,
     Option("kind", ("--kind",), "List kind instead of detecting it: zero, axis, channel, tool, startup, ...",
            metavar="KIND"),
     Option("jobs", ("--jobs", "-j"),
@@ -114,8 +125,7 @@ LINT_OPTIONS: tuple[Option, ...] = (
     Option("unsafe_fixes", ("--unsafe-fixes",), "Also apply fixes that change what the controller reads.",
            "flag", default=False),
     Option("stdin_filename", ("--stdin-filename",), "Lint standard input as this file (for editors).", metavar="NAME"),
-    Option("param_desc", ("--param-desc",), "Use this CncParaDesc.xml instead of the built-in table.",
-           type=Path, metavar="FILE"),
+    PARAM_DESC,
     Option("machine", ("--machine",),
            "Lint every list a start-up list (hochlauf.lis) names, plus the checks across them (X rules).",
            type=Path, metavar="STARTUP"),

@@ -22,7 +22,7 @@ from zero.engine.lint import LintResult, Totals, tallied
 from zero.errors import ZeroError
 from zero.files import max_file_bytes, read_stream, write_report
 from zero.output.formats import FORMATS, OUTPUT_FORMATS, STREAMED_FORMATS, emitter
-from zero.output.text import ProgressBar, printable, render_text, statistics
+from zero.output.text import ProgressBar, printable, render_text, statistics, statistics_json
 
 
 class RegistryCache:
@@ -113,11 +113,11 @@ def files_to_check(paths: Sequence[str | Path], config: str | Path | Sequence[st
                    param_desc: str | Path | None, force_exclude: bool = True) -> list[str]:
     """``--show-files``: the files ``zero lint`` would check, without checking them."""
     from zero.engine.commands import lint_files  # start-up: only for --show-files
-    from zero.engine.project import Project  # start-up: only for --show-files
+    from zero.engine.project import common_of, open_project  # start-up: only for --show-files
 
     if [str(p) for p in paths] in ([], ["-"]):
         return ["-"]
-    project = Project(REGISTRIES, config=config, isolated=isolated, param_desc=param_desc)
+    project = open_project(REGISTRIES, common_of(config, isolated, param_desc))
     return [str(f) for f in lint_files([Path(p) for p in paths], project, force_exclude)]
 
 
@@ -175,13 +175,7 @@ def command_line_config(exclude: Sequence[str], extend_exclude: Sequence[str], r
 def statistics_report(totals: Totals, output_format: str) -> str:
     """``--statistics``: the count per code, most frequent first; a JSON array with a JSON format."""
     if FORMATS[output_format].json_statistics:
-        import json  # start-up: only for --statistics with JSON
-
-        from zero.rules import RULES  # start-up: as above
-
-        rows = [{"code": c, "name": RULES[c].name if c in RULES else None, "count": n}
-                for c, n in sorted(totals.by_code.items(), key=lambda kv: (-kv[1], kv[0]))]
-        return json.dumps(rows, indent=2) + "\n"
+        return statistics_json(totals)
     return statistics(totals)
 
 

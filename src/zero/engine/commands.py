@@ -32,7 +32,7 @@ from zero.engine.lint import (
     unreadable,
 )
 from zero.engine.parallel import iter_lint_many, lint_many
-from zero.engine.project import Project, Registries
+from zero.engine.project import Project, Registries, common_of, open_project
 from zero.errors import ZeroError
 from zero.files import read_file, write_atomic
 from zero.forms import PROJECT_ROOTS, TWINCAT_ROOT, is_list, is_program, is_update, is_xml, walked_names
@@ -136,8 +136,8 @@ def run_lint(request: LintRequest, registries: Registries, echo: Echo,
     cli = LintOptions(select=parse_codes(request.select), ignore=parse_codes(request.ignore),
                       kind=parse_kind(request.kind), extend_select=parse_codes(request.extend_select),
                       ignore_noqa=request.ignore_noqa)
-    project = Project(registries, config=request.config, isolated=request.isolated, param_desc=request.param_desc,
-                      cli=cli, machine=request.machine)
+    project = open_project(registries, common_of(request.config, request.isolated, request.param_desc), cli=cli,
+                           machine=request.machine)
     if request.machine is not None:
         return LintRun(_lint_machine(request, project))
     if request.reads_stdin:
@@ -158,7 +158,7 @@ def run_lint(request: LintRequest, registries: Registries, echo: Echo,
     todo = [f for f in files if f not in kept] if kept else files
     groups: dict[Path | None, list[Path]] = {}
     for f in todo:  # files sharing a parameter description share a registry
-        groups.setdefault(project.param_desc(f), []).append(f)
+        groups.setdefault(project.settings(f).param_desc, []).append(f)
     bar = progress(len(files)) if progress is not None else None
 
     across: dict[int, dict[str, list[Diagnostic]]] = {}  # the X findings of each machine, found once
@@ -189,11 +189,11 @@ def run_lint(request: LintRequest, registries: Registries, echo: Echo,
     results = [kept[f] if f in kept else finish(f, by_file[f]) for f in files]
     run = LintRun(results, findings_to_stderr=request.show_diff)
     if request.add_noqa:
-        run.results = [_add_noqa(f, r, project.options(f), project.registry(f), echo, run)
+        run.results = [_add_noqa(f, r, project.settings(f).options, project.settings(f).registry, echo, run)
                        for f, r in zip(files, results, strict=True)]
         return run
     if request.fix or request.show_diff:
-        run.results = [_fix_one(f, r, project.options(f), project.registry(f), request, echo, run)
+        run.results = [_fix_one(f, r, project.settings(f).options, project.settings(f).registry, request, echo, run)
                        for f, r in zip(files, results, strict=True)]
     return run
 
@@ -203,21 +203,21 @@ def _lint_machine(request: LintRequest, project: Project) -> list[LintResult]:
     (selection, per-file ignores), plus the files named, checked against the machine."""
     machine = project.machine(required=True)
     assert machine is not None and project.machine_given is not None
-    results = lint_machine(machine, project.registry(project.machine_given), project.options)
+    results = lint_machine(machine, project.settings(project.machine_given).registry, project.options)
     for f in collect_files([Path(p) for p in request.paths], exclude=project.excluded,
                              respect_gitignore=project.respects_gitignore):
+        settings = project.settings(f)
         if is_program(f):
             try:
                 data = read_file(f)
             except ZeroError as exc:
-                results.append(unreadable(str(f), exc, project.options(f)))
+                results.append(unreadable(str(f), exc, settings.options))
                 continue
-            results.append(lint_program(data, project.registry(f), str(f), project.options(f), machine))
+            results.append(lint_program(data, settings.registry, str(f), settings.options, machine))
             continue
-        result = lint_file(f, project.registry(f), project.options(f))
+        result = lint_file(f, settings.registry, settings.options)
         if not is_unreadable(result) and is_update(str(f)):  # an update: checked against the machine too
-            in_machine = lint_update_in_machine(str(f), read_file(f), machine, project.registry(f),
-                                                project.options(f))
+            in_machine = lint_update_in_machine(str(f), read_file(f), machine, settings.registry, settings.options)
             result = in_machine if in_machine is not None else result
         results.append(result)
     return results
@@ -241,7 +241,8 @@ def _with_machine(path: Path, result: LintResult, project: Project, data: bytes 
         return result  # a list is checked as without a machine; `zero lint --machine` says why
     if machine is None:
         return result
-    registry, options = project.registry(path), project.options(path)
+    settings = project.settings(path)
+    registry, options = settings.registry, settings.options
     if program:
         source = read_file(path) if data is None else data
         return lint_program(source, registry, str(path), options, machine)
@@ -268,8 +269,8 @@ def _lint_stdin(request: LintRequest, project: Project, echo: Echo, data: bytes)
         if passthrough:
             echo.out_bytes(data)
         return LintRun(report=False)
-    options = project.options(Path(name))
-    registry = project.registry(Path(name))
+    settings = project.settings(Path(name))
+    options, registry = settings.options, settings.registry
     if (request.fix or request.show_diff) and is_list(name):
         from zero.engine.fixes import fix_bytes, unified_diff  # start-up: only with --fix/--diff
 
@@ -381,7 +382,7 @@ def run_format(paths: Sequence[str | Path], registries: Registries, echo: Echo, 
     report (never write). ``-`` formats standard input to standard output."""
     from zero.engine.fixes import unified_diff  # start-up: `zero lint` does not format
 
-    project = Project(registries, config=config, isolated=isolated, param_desc=param_desc)
+    project = open_project(registries, common_of(config, isolated, param_desc))
     if [str(p) for p in paths] == ["-"]:
         if read_stdin is None:
             raise ZeroError("standard input is not available here")
@@ -397,7 +398,8 @@ def run_format(paths: Sequence[str | Path], registries: Registries, echo: Echo, 
             echo.err(f"zero: {exc} (not formatted)\n")
             run.unreadable += 1
             continue
-        new = _formatted(data, str(f), project.registry(f), echo, run, project.encoding(f))
+        settings = project.settings(f)
+        new = _formatted(data, str(f), settings.registry, echo, run, settings.encoding)
         if new is None or new == data:
             continue
         run.changed += 1
@@ -431,8 +433,8 @@ def _format_stdin(data: bytes, name: str, project: Project, echo: Echo, check: b
             echo.out_bytes(data)
         return run
     new = None if name != "-" and project.excluded(Path(name)) else \
-        _formatted(data, name, project.registry(Path(name)), echo, run,
-                   project.encoding(Path(name)) if name != "-" else None)
+        _formatted(data, name, project.settings(Path(name)).registry, echo, run,
+                   project.settings(Path(name)).encoding if name != "-" else None)
     if new is not None and new != data:
         run.changed = 1
     if show_diff:

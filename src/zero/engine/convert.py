@@ -191,7 +191,7 @@ def convert_inputs(inputs: Sequence[str], registry: Registry | Callable[[str], R
                 continue
         item.element = element
         try:
-            encoding = project.encoding(Path(name)) if name != "-" else None
+            encoding = project.settings(Path(name)).encoding if name != "-" else None
             result = convert(data, src_fmt, item.fmt, catalogue, name, kind, check, encoding, element,
                              project.settings(Path(name)).options if name != "-" else None)  # its selection
         except ZeroError as exc:
@@ -213,7 +213,8 @@ def convert_inputs(inputs: Sequence[str], registry: Registry | Callable[[str], R
 
 
 def write_into(name: str, export: Path, element: str | None, registry: Registry | Callable[[str], Registry],
-               read_stdin: Callable[[], bytes], *, src: str | None = None, kind: str | None = None) -> bytes:
+               read_stdin: Callable[[], bytes], *, src: str | None = None, kind: str | None = None,
+               project: Project | None = None) -> bytes:
     """``zero convert LIST --into EXPORT [--item ELEMENT]``: the list (in any form) put back into the
     CDATA section of ``element`` in a TwinCAT export, written atomically; every other byte of the
     export kept. The element may be left out when the export holds one list. Returns the new bytes."""
@@ -225,7 +226,7 @@ def write_into(name: str, export: Path, element: str | None, registry: Registry 
     src_fmt = source_format(src, name)
     if src_fmt != "lis":
         data = convert(data, src_fmt, "lis", catalogue, name, kind, False).output
-    declared = configurations_only().encoding(Path(name)) if name != "-" else None
+    declared = (project or configurations_only()).settings(Path(name)).encoding if name != "-" else None
     text = doc_text(tokenize(data, name, declared))  # the list's own code page, read as text
     file, part = split_part(export)  # `--into X.tsproj#Y_Achse/AchsMds`: the list named with the file
     if part is not None and not export.exists():

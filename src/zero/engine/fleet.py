@@ -58,7 +58,7 @@ from zero.diff import (
     spec_for,
 )
 from zero.diff import effective as value_of
-from zero.engine.project import Project, Registries
+from zero.engine.project import Project, Registries, common_of, open_project
 from zero.errors import ZeroError
 from zero.files import read_file, within
 from zero.lists.model import Entry
@@ -172,7 +172,7 @@ MAX_DEPTH = 32  # folders of machines are a few levels deep; a deeper walk stops
 
 def _startup_in(folder: Path, top: Path) -> Path | None:
     try:  # names first: a folder of a machine's lists is not asked about each of them
-        named = [p for p in sorted(folder.iterdir()) if p.name.lower() in STARTUP_NAMES]
+        named = [folder / n for n in sorted(os.listdir(folder)) if n.lower() in STARTUP_NAMES]
         names = {p.name.lower(): p for p in named if p.is_file() and within(p, top)}
     except OSError:
         return None
@@ -308,7 +308,7 @@ def _golden(project: Project, golden: str, options: DiffOptions, keep: FleetCach
     defaults = {kind: (lf.key, entries_of(lf.values)) for kind, lf in m.defaults.items()}
     if keep is not None:
         keep.put_golden(keep.deps(m), list(scopes), [key for key, _ in defaults.values()])
-    return _Golden(project, project.registry(Path(golden)), options, scopes, defaults, keep)
+    return _Golden(project, project.settings(Path(golden)).registry, options, scopes, defaults, keep)
 
 
 def _why(machine: Machine, key: str) -> str:
@@ -536,7 +536,7 @@ def run_fleet(request: FleetRequest, registries: Registries,
     if not request.machines:
         raise ZeroError("--fleet compares machines with the golden machine: give their start-up lists or a folder "
                         "of machines after it")
-    project = Project(registries, config=request.config, isolated=request.isolated, param_desc=request.param_desc)
+    project = open_project(registries, common_of(request.config, request.isolated, request.param_desc))
     return fleet_drift(request.golden, request.machines, project, jobs=request.jobs,
                        progress=progress, cache=request.cache)
 

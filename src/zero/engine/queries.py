@@ -35,7 +35,7 @@ def load_side(name: str, fmt: str | None, kind: str | None, registry: Registry,
     data = read_stdin() if name == "-" else read_file(_file_of(name))
     encoding = None
     if name != "-" and src in ("lis", "xml"):
-        encoding = (project or configurations_only()).encoding(Path(name))
+        encoding = (project or configurations_only()).settings(Path(name)).encoding
     return read_side(data, src, name, registry, kind, encoding)
 
 
@@ -62,7 +62,7 @@ def run_diff(a: str, b: str | None, project: Project, read_stdin: Callable[[], b
     """``zero diff A B``, ``zero diff --defaults A`` or ``zero diff --machine A B`` (two start-up lists).
     Both sides are read with the catalogue of A's configuration."""
     options = options or DiffOptions()
-    registry = project.registry(_named(a))
+    registry = project.settings(_named(a)).registry
     if defaults:
         if b is not None:
             raise ZeroError("--defaults compares one file with the registry; give one file")

@@ -43,13 +43,10 @@ from collections.abc import Callable, Sequence
 from pathlib import PurePath
 from typing import Any, TextIO
 
-from zero.engine.fleet import EXTRA, MISSING, FleetDrift, FleetRequest, FleetValue, ParamDrift, run_fleet
-from zero.engine.project import Registries
+from zero.engine.fleet import EXTRA, MISSING, FleetDrift, FleetValue, ParamDrift
 from zero.errors import ZeroError
 
 FLEET_FORMATS = ("text", "json", "csv")
-# The exit codes of zero.cli.exits (which the output layer does not import): no drift, drift, a machine unread.
-OK, FOUND, UNREAD = 0, 1, 2
 
 
 def _plural(n: int, word: str, many: str | None = None) -> str:
@@ -211,22 +208,11 @@ def render_fleet(drift: FleetDrift, output_format: str, stream: TextIO) -> None:
     RENDERERS[output_format](drift, stream)
 
 
-def fleet_exit(drift: FleetDrift) -> int:
-    """2 when a machine could not be read, else 1 when anything drifts, else 0 (like ``zero diff``)."""
-    return UNREAD if drift.unreadable else FOUND if drift.differs else OK
-
-
-def run_fleet_diff(request: FleetRequest, registries: Registries, output_format: str, stream: TextIO,
-                   progress: Callable[[int, int], None] | None = None) -> int:
-    """``zero diff --fleet``: compare, write the report in ``output_format`` to ``stream``, and return
-    the exit code. :class:`~zero.errors.ZeroError` where the golden machine cannot be read."""
+def check_fleet_format(output_format: str) -> None:
+    """An output format of ``zero diff --fleet`` (said before anything is read)."""
     if output_format not in RENDERERS:
         raise ZeroError(f"unknown output format {output_format!r} for --fleet (use one of: {', '.join(RENDERERS)})")
-    drift = run_fleet(request, registries, progress)
-    render_fleet(drift, output_format, stream)
-    return fleet_exit(drift)
 
 
-__all__ = ["CSV_COLUMNS", "FLEET_FORMATS", "fleet_exit", "fleet_json", "fleet_rows", "render_fleet",
-           "render_fleet_csv", "render_fleet_json", "render_fleet_text", "run_fleet_diff", "short_names",
-           "summary_line"]
+__all__ = ["CSV_COLUMNS", "FLEET_FORMATS", "check_fleet_format", "fleet_json", "fleet_rows", "render_fleet",
+           "render_fleet_csv", "render_fleet_json", "render_fleet_text", "short_names", "summary_line"]

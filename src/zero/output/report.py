@@ -11,9 +11,9 @@ default, and the value in engineering units (searchable, filterable by list, by 
 "differs from the default"). Printed, the page is the hand-over document: everything but the
 values that equal their defaults (``values="all"``: the full table).
 
-Everything comes from the one resolver (:class:`zero.engine.project.Project`): the machine, its
-lint results and the machine compared against (a revision's lists are read from git through the
-resolver's reader). The page is rendered with Jinja2 (the ``report`` extra), autoescaped; it loads
+Everything on it comes from :func:`zero.engine.report.report_facts` (the machine, its lint results,
+the machine compared against, the programs' travel, the fleet's drift): this module only lays them
+out. The page is rendered with Jinja2 (the ``report`` extra), autoescaped; it loads
 nothing (no script, font, style or image from anywhere): CSS and a small script are inline.
 """
 
@@ -22,7 +22,7 @@ from __future__ import annotations
 import os
 import re
 import urllib.request
-from collections.abc import Callable, Sequence
+from collections.abc import Sequence
 from datetime import UTC, datetime
 from importlib import resources
 from pathlib import Path
@@ -38,16 +38,16 @@ from zero.catalog.ids import (
     SWE_NEG,
     SWE_POS,
     SWE_TOL,
+    engineering_number,
+    in_engineering,
     is_rotary,
 )
 from zero.catalog.ranges import format_number
 from zero.catalog.registry import ParamSpec, Registry
 from zero.diff import Change, default_effective
 from zero.diff import effective as value_of
-from zero.engine.git import revision_reader
-from zero.engine.lint import LintResult, lint_machine
-from zero.engine.project import Project
-from zero.engine.queries import machine_changes, program_travel_of
+from zero.engine.lint import LintResult
+from zero.engine.report import ReportFacts
 from zero.errors import ZeroError
 from zero.forms import split_part
 from zero.machine.effective import CATALOGUE, DEFAULT_LIST, LIST, Scope, effective, entries_of, scope_values
@@ -59,7 +59,6 @@ from zero.records import field, record
 from zero.rules import RULES
 from zero.rules.startup import CHECKS
 
-Reader = Callable[[Path], bytes]
 ORIGINS = (LIST, DEFAULT_LIST, CATALOGUE)  # the layers a value comes from, named as zero show --machine does
 VALUES = ("changed", "all")  # --values: the printed table holds the values that differ from their defaults, or all
 SEVERITIES = ("error", "warning", "info")  # the order of work
@@ -185,78 +184,11 @@ def link(path: str | Path | None, line: int | None, base: Path) -> Link | None:
     return Link(text, urllib.request.pathname2url(rel))
 
 
-# ------------------------------------------------------------------------- the machine compared
-
-
-def git_reader(startup: Path, revision: str) -> tuple[str, Reader]:
-    """A reader of the files of ``revision`` in the git work tree ``startup`` lies in, through the one
-    module that runs git (:func:`zero.engine.git.revision_reader`: nothing the repository configures
-    runs, nothing is fetched). The commit's short name, and the reader."""
-    return revision_reader(startup, revision)
-
-
-def machine_against(project: Project, against: str) -> tuple[Machine, str, Registry]:
-    """The machine ``--against`` names: a start-up list (with its own configuration's list overrides),
-    else the current machine's lists at a git revision (read through the resolver's reader)."""
-    if os.path.isfile(split_part(against)[0]):
-        golden = project.machine(Path(against), startup=against, required=True)
-        assert golden is not None
-        return golden, f"start-up list {against}", project.registry(Path(against))
-    start = project.startup()
-    if start is None:
-        raise ZeroError("name the start-up list with --machine (or [tool.zero.machine] startup)")
-    short, reader = git_reader(start, against)
-    shown = project.machine_shown if project.machine_given is not None else start
-    old = project.machine(startup=shown, reader=reader, reader_key=("git", short), required=True)
-    assert old is not None
-    return old, f"git revision {against} ({short})", project.registry(start)
-
-
 # ---------------------------------------------------------------------------- the report
 
 
 # ------------------------------------------------------------------------- engineering units
-
-# The catalogue's units (linear, rotary) and what an engineer reads: factor and unit for each.
-_UNIT_PAIRS: dict[tuple[str, ...], tuple[tuple[float, str], tuple[float, str]]] = {
-    ("0.1um", "0.1mdeg"): ((1e-4, "mm"), (1e-4, "°")),
-    ("um/s", "mdeg/s"): ((6e-5, "m/min"), (0.06, "°/min")),
-    ("mm/s^2", "deg/s^2"): ((1, "mm/s²"), (1, "°/s²")),
-    ("mm/s^3", "deg/s^3"): ((1, "mm/s³"), (1, "°/s³")),
-    ("m/s^3", "kdeg/min^3"): ((1, "m/s³"), (1, "k°/min³")),
-    ("um", "mdeg"): ((1, "µm"), (1e-3, "°")),
-    ("mm", "deg"): ((1, "mm"), (1, "°")),
-    ("0.1um/rev", "0.1mdeg/rev"): ((1e-4, "mm/rev"), (1e-4, "°/rev")),
-}
-_UNIT_ONE: dict[str, tuple[float, str]] = {
-    "us": (1, "µs"), "ms": (1, "ms"), "s": (1, "s"), "Hz": (1, "Hz"), "0.1%": (0.1, "%"), "%": (1, "%"),
-    "0.01/s": (0.01, "1/s"), "deg": (1, "°"), "rev/min": (1, "rpm"), "mm/min": (1, "mm/min"),
-    "um/m": (1, "µm/m"), "0.1um/m": (0.1, "µm/m"), "rev": (1, "rev"),
-}
-
-
-def _number(value: float) -> str:
-    """1040 → "1,040"; up to four decimals."""
-    text = f"{value:,.4f}".rstrip("0").rstrip(".")
-    return "0" if text in ("-0", "") else text
-
-
-def in_engineering(units: Sequence[str], number: float | int, rotary: bool | None) -> str | None:
-    """A number in the catalogue's ``units`` as an engineer reads it: 10400000 0.1 µm → "1,040 mm",
-    2000000 µm/s → "120 m/min"; ``rotary`` None (not known): both readings. None: no known unit."""
-    pair = _UNIT_PAIRS.get(tuple(units))
-    try:
-        if pair is not None:
-            if rotary is None:
-                return " or ".join(f"{_number(number * f)} {u}" for f, u in pair)
-            factor, unit = pair[1 if rotary else 0]
-        elif len(units) == 1 and units[0] in _UNIT_ONE:
-            factor, unit = _UNIT_ONE[units[0]]
-        else:
-            return None
-        return f"{_number(number * factor)} {unit}"
-    except (OverflowError, ValueError):
-        return None
+# (the catalogue's units as an engineer reads them: zero.catalog.ids, the one home of units)
 
 
 def _engineering(spec: ParamSpec | None, value: tuple[str, Any] | None, rotary: bool | None) -> str | None:
@@ -272,10 +204,10 @@ def delta_in_engineering(c: Change, rotary: bool | None) -> str:
         return ""
     if c.unit in ("mm or °", "mm", "°"):
         unit = c.unit if c.unit != "mm or °" or rotary is None else ("°" if rotary else "mm")
-        return f"{'+' if c.delta > 0 else ''}{_number(c.delta)} {unit}"
+        return f"{'+' if c.delta > 0 else ''}{engineering_number(c.delta)} {unit}"
     shown = in_engineering(c.unit.split(", "), c.delta, rotary)
     if shown is None:
-        return f"{'+' if c.delta > 0 else ''}{_number(c.delta)} {c.unit}"
+        return f"{'+' if c.delta > 0 else ''}{engineering_number(c.delta)} {c.unit}"
     return ("+" if c.delta > 0 else "") + shown
 
 
@@ -519,32 +451,28 @@ def _findings(machine: Machine, results: list[LintResult], base: Path, registry:
     return list(groups.values())
 
 
-def build_report(project: Project, output: Path | None = None, against: str | None = None,
-                 fleet: Sequence[str] = (), jobs: int | None = None, values: str = "changed",
-                 programs: Sequence[str] = ()) -> MachineReport:
-    """Everything ``zero report`` shows about the machine of ``project`` (``--machine``, else the
-    configuration's); links relative to the folder ``output`` is written to (the current folder
-    for standard output). ``fleet``: machines (start-up lists or folders) whose drift from this
-    machine, as ``zero diff --fleet`` reports it, is a section of the page. ``values``: "changed"
-    (the printed page holds the values that differ from their defaults, are corrected or have a
-    finding; the page opens with that filter) or "all". ``programs``: NC programs whose travel
-    (the lowest and highest position each reaches on each axis) is drawn in the axis pictures."""
+def check_values(values: str) -> None:
+    """``--values``: one of :data:`VALUES` (said before anything is read)."""
     if values not in VALUES:
         raise ZeroError(f"--values {values}: one of {', '.join(VALUES)}")
-    machine = project.machine(required=True)
-    assert machine is not None
-    start = project.startup()
-    assert start is not None
+
+
+def build_report(facts: ReportFacts, output: Path | None = None, values: str = "changed") -> MachineReport:
+    """The page of what ``zero report`` found (:func:`zero.engine.report.report_facts`); links
+    relative to the folder ``output`` is written to (the current folder for standard output).
+    ``values``: "changed" (the printed page holds the values that differ from their defaults, are
+    corrected or have a finding; the page opens with that filter) or "all". Nothing is read or
+    checked here: the page only lays out the facts."""
+    check_values(values)
+    machine, registry, results = facts.machine, facts.registry, facts.results
     base = Path(os.path.abspath(output)).parent if output is not None else Path.cwd()
-    registry = project.registry(start)
-    results = lint_machine(machine, registry, project.options)
     compared: Against | None = None
     old: Machine | None = None
-    if against is not None:
-        old, label, diff_registry = machine_against(project, against)
-        compared = Against(against, label, machine_changes(old, machine, diff_registry))
+    if facts.against is not None:
+        old = facts.against.machine
+        compared = Against(facts.against.given, facts.against.label, facts.against.changes)
     views = []
-    travels = [program_travel_of(Path(p), machine, registry) for p in programs]
+    travels = facts.travels
     for pic in axis_pictures(machine, pcs_limits(machine), old):
         for name, channel, travel in travels:
             span = travel.get(pic.index) if pic.channel == channel and pic.index is not None else None
@@ -584,11 +512,10 @@ def build_report(project: Project, output: Path | None = None, against: str | No
               **{s: sum(1 for g in findings for d in g.results if d["severity"] == s)
                  for s in ("error", "warning", "info")}}
     drift = None
-    if fleet:
-        from zero.engine.fleet import fleet_drift  # start-up: only a report with --fleet
-        from zero.output.fleet import fleet_json, short_names  # start-up: as above
+    if facts.drift is not None:
+        from zero.output.fleet import fleet_json, short_names  # start-up: only a report with --fleet
 
-        drift = fleet_json(fleet_drift(start, list(fleet), project, jobs=jobs))
+        drift = fleet_json(facts.drift)
         names = short_names(drift["machines"])
         for p in drift["parameters"]:
             for v in p["values"]:
@@ -627,4 +554,4 @@ def render_report(report: MachineReport) -> str:
                                         svg_style=Markup(STYLE))
 
 
-__all__ = ["MachineReport", "build_report", "git_reader", "machine_against", "render_report"]
+__all__ = ["MachineReport", "build_report", "check_values", "render_report"]

@@ -172,6 +172,15 @@ def statistics(totals: Totals) -> str:
     return "\n".join(lines) + ("\n" if lines else "")
 
 
+def statistics_json(totals: Totals) -> str:
+    """Counts per code, most frequent first, as a JSON array (``--statistics`` with a JSON format)."""
+    import json  # start-up: only for --statistics with JSON
+
+    rows = [{"code": c, "name": RULES[c].name if c in RULES else None, "count": n}
+            for c, n in sorted(totals.by_code.items(), key=lambda kv: (-kv[1], kv[0]))]
+    return json.dumps(rows, indent=2) + "\n"
+
+
 PROGRESS_MIN_FILES = 200
 
 

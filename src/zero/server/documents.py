@@ -31,7 +31,8 @@ from zero.engine.lint import (
     lint_in_machine,
     lint_program,
 )
-from zero.engine.project import Project, Registries
+from zero.engine.project import Common, Registries, open_project
+from zero.engine.project import Settings as FileSettings
 from zero.errors import ZeroError
 from zero.files import check_shape, max_file_bytes, read_file
 from zero.forms import LIST, PROGRAM, STRUCTURED, TWINCAT, form_of, is_xml, xml_form
@@ -231,7 +232,8 @@ class Projects:
                  settings: Settings | None = None) -> None:
         self.registries = registries
         self.settings = settings or Settings()
-        self.project = Project(registries, param_desc=param_desc)  # the resolver `zero lint` uses
+        # the resolver `zero lint` uses; files named absolutely (the server's current directory is nobody's)
+        self.project = open_project(registries, Common(param_desc=param_desc), shown_from=None)
         self._values: OrderedDict[tuple[str, int, str], ListValues] = OrderedDict()
 
     def forget(self) -> None:
@@ -240,7 +242,12 @@ class Projects:
 
     def config(self, path: Path | None) -> Config:
         """The configuration that applies to ``path`` (:class:`ZeroError` when it cannot be read)."""
-        return self.project.config(path) if path is not None else Config()
+        return self.project.settings(path).config if path is not None else Config()
+
+    def file_settings(self, path: Path) -> FileSettings:
+        """Everything that applies to ``path``, as ``zero lint`` resolves it (:class:`ZeroError` when
+        its configuration or parameter description cannot be read)."""
+        return self.project.settings(path)
 
     def machine(self, path: Path | None) -> Machine | None:
         """The machine the file's configuration names, as saved (:class:`ZeroError` when it cannot be read)."""
@@ -255,20 +262,19 @@ class Projects:
         path = path_of(uri)
         name = str(path) if path is not None else uri
         notes: list[Note] = []
+        settings: FileSettings | None = None
         try:
-            config = self.config(path)
+            settings = self.file_settings(path) if path is not None else None
         except ZeroError as exc:
-            config = Config()
             notes.append(Note(f"the configuration cannot be read, nothing is checked: {exc}", elsewhere=_place(exc)))
+        config = settings.config if settings is not None else Config()
         try:
-            if path is not None and not notes:
-                registry = self.project.registry(path)
-            else:  # an untitled document, or a configuration that cannot be read: no param-desc of its own
-                registry = self.registries(self.project.param_desc_given)
+            # an untitled document, or a configuration that cannot be read: no param-desc of its own
+            registry = settings.registry if settings is not None else self.registries(self.project.param_desc_given)
         except ZeroError as exc:
             registry = self.registries(None)
             notes.append(Note(f"the parameter description cannot be read, nothing is checked: {exc}"))
-        options = self.project.options(path) if path is not None and not notes else \
+        options = settings.options if settings is not None and not notes else \
             config.options_for(Path(name), LintOptions())
         data, saved = source_bytes(path, text, options.encoding)
         a = Analysis(uri, version, path, name, form_of(name), Text(text, encoding), data, saved, registry, config,
@@ -335,7 +341,7 @@ class Projects:
         key = (str(lf.path), id(lf.values.registry), text)
         hit = self._values.get(key)
         if hit is None:
-            data, _ = source_bytes(lf.path, text, self.project.encoding(lf.path))
+            data, _ = source_bytes(lf.path, text, self.project.settings(lf.path).encoding)
             hit = ListValues.of(read_document(data, str(lf.path), lf.values.registry), lf.values.registry,
                                 lf.values.kind)
             self._values[key] = hit
@@ -355,13 +361,13 @@ class Projects:
         if me in structural and a.path is not None:
             texts[me] = a.text.source
         texts = {real: t for real, t in texts.items()  # the changed ones
-                 if not source_bytes(Path(real), t, self.project.encoding(Path(real)))[1]}
+                 if not source_bytes(Path(real), t, self.project.settings(Path(real)).encoding)[1]}
         if texts:
             try:
                 def reader(path: Path) -> bytes:
                     text = texts.get(os.path.realpath(path))
                     return read_file(path) if text is None else \
-                        source_bytes(path, text, self.project.encoding(path))[0]
+                        source_bytes(path, text, self.project.settings(path).encoding)[0]
 
                 shaped = self.project.machine(a.path, reader=reader, reader_key=tuple(sorted(texts.items())))
             except ZeroError as exc:
