@@ -313,6 +313,7 @@ class Checker:
     def __init__(self, encoding: Callable[[Path], str | None]) -> None:
         self.encoding = encoding
         self._stat: dict[str, os.stat_result | None] = {}
+        self._codecs: dict[str, str | None] = {}
 
     def stat(self, path: str) -> os.stat_result | None:
         if path not in self._stat:
@@ -321,6 +322,10 @@ class Checker:
             except (OSError, ValueError):
                 self._stat[path] = None
         return self._stat[path]
+
+    def _codec(self, path: str) -> str | None:
+        codec = self._codecs[path] = self.encoding(Path(path))
+        return codec
 
     def holds(self, deps: Iterable[Dep]) -> bool:
         """Is every dependency as it was?"""
@@ -334,7 +339,7 @@ class Checker:
                 if (st is None and dep[2] != -1) or (st is not None and (st.st_size != dep[2]
                                                                          or st.st_mtime_ns != dep[3])):
                     return False
-                if self.encoding(Path(path)) != dep[4]:
+                if (self._codecs[path] if path in self._codecs else self._codec(path)) != dep[4]:
                     return False
             elif tag != "d" or st is None or st.st_mtime_ns != dep[2]:
                 return False
