@@ -168,3 +168,32 @@ def test_the_rules_values_and_the_effective_values_are_one_layering(registry: Re
             assert s.origin.path == layer.doc.path and s.origin.line == layer.doc.file_line(s.entry.line)
             compared += 1
     assert compared > 20 and any(lf.values.base is not None for _, lf in m.scopes())
+
+
+# Where a key is looked up in the catalogue by hand, and why that is no second binding.
+_OWN_LOOKUPS = {
+    "catalog/values.py": "the binding itself",
+    "catalog/registry.py": "the look-ups the binding is made of",
+    "catalog/releases.py": "the release tables the binding reads (a rename's target must be documented)",
+    "rules/registry.py": "R001/R003/R013 tell a documented key, an alias and another release's spelling apart",
+    "rules/syntax.py": "whether a key is known in any list kind (S rules)",
+    "machine/model.py": "whether a file is a parameter list at all (any kind)",
+    "markup/lists.py": "an XML element's ID for a key (the documented spelling only, by design)",
+    "structured/tree.py": "a value's native type in YAML/TOML/JSON (the documented spelling)",
+    "structured/formats.py": "a float for an integer parameter (the documented spelling)",
+    "structured/schema.py": "the schema of the documented keys",
+    "output/docs.py": "parameter pages of the documented keys",
+}
+
+
+def test_no_module_binds_a_key_by_hand_where_a_value_is_read() -> None:
+    """A reader of values (diff, effective values, explain, param, hover, completion, the fleet) binds
+    through `bind`; a hand-made `by_pattern(...) or alias(...)` drifted from it before (diff.spec_for)."""
+    from conftest import ROOT
+
+    src = ROOT / "src" / "zero"
+    for path in src.rglob("*.py"):
+        rel = path.relative_to(src).as_posix()
+        text = path.read_text(encoding="utf-8")
+        if ".by_pattern(" in text or ".alias(" in text:
+            assert rel in _OWN_LOOKUPS, f"{rel}: bind a key with zero.catalog.values.bind"
