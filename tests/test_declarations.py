@@ -141,8 +141,8 @@ def test_every_option_is_declared_with_its_parts() -> None:
     assert not re.search(r'key == "|elif key ==', (SRC / "engine" / "config.py").read_text(encoding="utf-8"))
 
 
-def test_the_schema_is_json() -> None:
-    json.loads((ROOT / "zero.schema.json").read_text(encoding="utf-8"))
+def test_the_schema_is_json_and_a_valid_schema() -> None:
+    jsonschema.Draft202012Validator.check_schema(json.loads((ROOT / "zero.schema.json").read_text(encoding="utf-8")))
 
 
 # ------------------------------------------------------------------------------ output formats
@@ -165,6 +165,15 @@ def test_one_module_per_format_and_one_registry() -> None:
     assert option.choices == OUTPUT_FORMATS == REEXPORTED == tuple(FORMATS)
     assert option.help == help_text()
     assert all(name in option.help for name in FORMATS)
+
+
+def test_every_format_is_documented_for_its_consumers() -> None:
+    """docs/ci.md says who reads each format: a format added to the registry needs its line there."""
+    from zero.output.formats import FORMATS
+
+    page = (ROOT / "docs" / "ci.md").read_text(encoding="utf-8")
+    missing = [name for name in FORMATS if f"`{name}`" not in page and f"--output-format {name}" not in page]
+    assert missing == []
 
 
 _FORMAT_NAMES = {"concise", "grouped", "json-lines", "github", "gitlab", "azure", "junit", "sarif", "rdjson",
