@@ -35,7 +35,9 @@ machine that could not be read, and anything of a run with ``--fix``, ``--diff``
 **Safe.** Entries are written through :func:`zero.files.write_disposable` (a temporary file, then
 renamed), so concurrent runs each see whole entries; each entry carries a checksum, and an entry
 that is torn, garbage or of another format is a miss. The folder is bounded (:data:`MAX_ENTRIES`,
-:data:`MAX_BYTES`): past either, the oldest entries go (:meth:`Store.prune`). ``--no-cache`` and
+:data:`MAX_BYTES`): past either, the oldest entries go (:meth:`Store.prune`; looked at by the first
+entry a run writes, at most every :data:`PRUNE_EVERY` seconds, and every quarter of the bound a
+run writes), and at most :data:`GENERATIONS` versions of zero keep entries. ``--no-cache`` and
 ``ZERO_NO_CACHE=1`` switch it off; a folder that cannot be written is the same as none.
 
 The format is :mod:`marshal` of plain tuples (measured against :mod:`json`: loading is about
@@ -76,6 +78,7 @@ FOLDER = ".zero_cache"
 FORMAT = 1  # of an entry; a new one makes every entry of the old one a miss
 MAX_ENTRIES = 50_000  # past this many entries, the oldest go (to three quarters of it)
 MAX_BYTES = 512 * 1024 * 1024  # the same for their size
+PRUNE_EVERY = 600  # seconds between two looks at the folder's size by runs that keep few entries
 GENERATIONS = 4  # versions of zero whose entries are kept side by side
 RACY_NS = 3_000_000_000  # a file modified this close to when it was checked is checked by its content
 _MAGIC = b"ZEROCACHE\n"
@@ -218,7 +221,7 @@ class Store:
             payload = marshal.dumps(value, 4)
         except ValueError:  # a value marshal does not keep: not cached
             return False
-        if self.written % max(1, MAX_ENTRIES // 4) == 0:
+        if self.written % max(1, MAX_ENTRIES // 4) == 0 and (self.written or self._due()):
             self.prune()
         try:
             write_disposable(self.entries / key, _MAGIC + digest(payload) + payload)
@@ -240,6 +243,19 @@ class Store:
             except OSError:
                 self.ready = False
         return self.ready
+
+    def _due(self) -> bool:
+        """Is the folder's size to be checked (at most every :data:`PRUNE_EVERY` seconds, so that a run
+        that keeps one entry does not list them all)? Marks it checked."""
+        marker = self.folder / ".pruned"
+        try:
+            if time.time() - os.stat(marker).st_mtime < PRUNE_EVERY:
+                return False
+        except OSError:
+            pass
+        with contextlib.suppress(OSError):
+            write_disposable(marker, b"")
+        return True
 
     def _drop_generations(self) -> None:
         """Keep the entries of at most :data:`GENERATIONS` versions of zero (the newest, by when their
