@@ -113,3 +113,12 @@ def test_the_same_fleet_again_gives_the_same_report(tmp_path: Path) -> None:
     off = zero_cli(*args, "--no-cache", cwd=tmp_path, env=CLEAN)
     assert cold.code == warm.code == off.code == 1
     assert cold.out == warm.out == off.out
+
+
+def test_standard_input_and_fixes_are_never_kept(lists: Path, tmp_path: Path) -> None:
+    data = (lists / "extra.lis").read_bytes()
+    zero_cli("lint", "--stdin-filename", str(lists / "extra.lis"), "-", stdin=data, cwd=tmp_path, env=CLEAN)
+    zero_cli("lint", "--diff", str(lists / "extra.lis"), cwd=tmp_path, env=CLEAN)
+    zero_cli("lint", "--fix", str(lists / "extra.lis"), cwd=tmp_path, env=CLEAN)
+    zero_cli("lint", "--add-noqa", str(lists / "extra.lis"), cwd=tmp_path, env=CLEAN)
+    assert not (tmp_path / ".zero_cache").exists()
