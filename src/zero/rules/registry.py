@@ -15,7 +15,7 @@ from zero.catalog.registry import BUILTIN_SOURCE, KINDS, ParamSpec, Registry
 from zero.catalog.values import Resolved, Value, default_number
 from zero.diagnostics import Diagnostic, Edit, Fix, Related, Span
 from zero.errors import ZeroError
-from zero.lists.model import Comment, Entry, ValueKind, format_key
+from zero.lists.model import HUGE_INDEX, Comment, Entry, ValueKind, format_key
 from zero.records import replace
 from zero.rules.base import INFO, Context, E, Family, W
 
@@ -128,11 +128,18 @@ def check_keys(ctx: Context) -> Iterator[Diagnostic]:
     reg = ctx.registry
     proposed: set[str] = set()  # unknown patterns a spelling was looked for (the first SUGGESTIONS)
     known: dict[str, Any] = {}  # per list: the catalogue said, the machine's release, rows by pattern
+    # per distinct pattern: its parameter, and each index slot's bounds as (first, end) (a big list has a
+    # few dozen patterns: one look-up each, and an index inside its bounds is checked without a call)
+    specs: dict[str, tuple[ParamSpec | None, tuple[tuple[int, int], ...]]] = {}
     for e in ctx.entries:
         key = e.key
         if key is None:
             continue
-        spec = reg.by_pattern(key.pattern, ctx.kind)
+        got = specs.get(key.pattern)
+        if got is None:
+            found = reg.by_pattern(key.pattern, ctx.kind)
+            got = specs[key.pattern] = (found, _bounds(found) if found is not None else ())
+        spec, bounds = got
         if spec is None:
             alias = reg.alias(key.pattern, ctx.kind)
             if alias is not None:
@@ -163,6 +170,11 @@ def check_keys(ctx: Context) -> Iterator[Diagnostic]:
             continue
         if not key.indices:
             continue
+        for (first, end), idx in zip(bounds, key.indices, strict=False):
+            if idx < first or idx >= end:
+                break
+        else:
+            continue  # every index inside its array
         outside = spec.index_outside(key.indices)
         if outside is not None:
             pos, idx = outside
@@ -177,6 +189,18 @@ def check_keys(ctx: Context) -> Iterator[Diagnostic]:
                 f"{says(ctx, 'unknown-element')}",
                 param_id=spec.id,
             )
+
+
+_LEADING_ZERO = re.compile(r"\[0[0-9]")
+
+
+def _bounds(spec: ParamSpec) -> tuple[tuple[int, int], ...]:
+    """Each index slot's first index and the index past its last, as ``index_outside`` reads them."""
+    out = []
+    for pos, size in enumerate(spec.dims):
+        first = spec.index_first(pos)
+        out.append((first, size if first == 0 and size > 0 else 1 << 128))
+    return tuple(out)
 
 
 _ANNOTATED_ID = re.compile(r"\(\s*(P-[A-Z]{4}-[0-9]{5})")
@@ -831,16 +855,21 @@ Fix: delete one of the entries (unsafe fix: removes the earlier line).
 @FAMILY.check(DUPLICATE_KEY)
 def check_duplicates(ctx: Context) -> Iterator[Diagnostic]:
     """R007: the later entry wins."""
-    seen: dict[tuple[str, tuple[int, ...]], Entry] = {}
+    seen: dict[str, Entry] = {}
     for e in ctx.entries:
-        if e.key is None:
+        key = e.key
+        if key is None:
             continue
-        slot = (e.key.pattern, e.key.indices)  # `np_grp[01]` is element 1, as `np_grp[1]` is
+        # the element's key as written without leading zeros: `np_grp[01]` is element 1, as `np_grp[1]`
+        # is, and every index beyond the arrays (clamped) one element; most keys are written so already
+        slot = key.text
+        if ("[0" in slot and _LEADING_ZERO.search(slot)) or HUGE_INDEX in key.indices:
+            slot = format_key(key.pattern, key.indices)
         first = seen.get(slot)
         if first is None:
             seen[slot] = e
             continue
-        spec = ctx.registry.by_pattern(e.key.pattern, ctx.kind)
+        spec = ctx.registry.by_pattern(key.pattern, ctx.kind)
         yield ctx.report(
             "R007",
             _key_span(e),
