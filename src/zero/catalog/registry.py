@@ -378,13 +378,18 @@ def _counts(registry: Registry) -> dict[str, tuple[tuple[str, int], ...]]:
     specs = registry.specs
     triples = list(specs.keys_by_kind()) if isinstance(specs, SpecTable) else \
         [(s.id, s.kind, s.key) for s in specs.values() if s.key]
+    of_kind: dict[str, list[tuple[str, str]]] = {}  # each count is compared with its own kind's keys only
+    for pid, kind, key in triples:
+        of_kind.setdefault(kind, []).append((pid, key))
     for count_id, count_kind, count_key in triples:
+        if not count_key.endswith("_anzahl"):
+            continue
         m = _COUNT_RE.search(count_key)
         if m is None or not specs[count_id].type.startswith("UNS"):
             continue
         stem, parent = m.group(1), count_key[: m.start(1)]
-        for pid, kind, key in triples:
-            if kind != count_kind or not key.startswith(parent):
+        for pid, key in of_kind[count_kind]:
+            if not key.startswith(parent):
                 continue
             first = key[len(parent):].split(".")[0]
             if first.endswith("[]") and first[:-2] != stem and first[0] == stem[0] and \

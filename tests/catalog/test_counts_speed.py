@@ -1,0 +1,27 @@
+"""The counts table built per kind is the one built by comparing every pair of keys (issue 40: start-up)."""
+
+from __future__ import annotations
+
+from zero.catalog.registry import _COUNT_RE, SpecTable, _counts, _letters_in_order, load_registry
+
+
+def test_counts_per_kind_are_the_counts_of_every_pair() -> None:
+    registry = load_registry()
+    specs = registry.specs
+    triples = list(specs.keys_by_kind()) if isinstance(specs, SpecTable) else \
+        [(s.id, s.kind, s.key) for s in specs.values() if s.key]
+    want: dict[str, tuple[tuple[str, int], ...]] = {"": ()}
+    for count_id, count_kind, count_key in triples:
+        m = _COUNT_RE.search(count_key)
+        if m is None or not specs[count_id].type.startswith("UNS"):
+            continue
+        stem, parent = m.group(1), count_key[: m.start(1)]
+        for pid, kind, key in triples:
+            if kind != count_kind or not key.startswith(parent):
+                continue
+            first = key[len(parent):].split(".")[0]
+            if first.endswith("[]") and first[:-2] != stem and first[0] == stem[0] and \
+                    _letters_in_order(stem, first[:-2]):
+                want[pid] = (*want.get(pid, ()), (count_id, parent.count("[]")))
+    got = _counts(registry)
+    assert got == want and len(got) > 10
