@@ -470,3 +470,9 @@ def test_a_result_of_many_files_keeps_the_line_a_finding_ends_on_too() -> None:
     slim = parallel._slim(LintResult("a.lis", doc, None, [d]))
     assert [slim.document.has_line(n) for n in (1, 2, 3, 4)] == [False, True, True, False]
     assert slim.document.line_text(3) == "ä3"
+
+
+def test_fingerprints_tell_equal_values_of_other_types_apart() -> None:
+    """1, 1.0 and True are one key of a dictionary; as settings they are three."""
+    assert len({fingerprint(v) for v in (1, 1.0, True, "True", "1", (1,), None)}) == 7
+    assert fingerprint(LintOptions(ignore_noqa=True)) != fingerprint(LintOptions(ignore_noqa=False))

@@ -140,13 +140,17 @@ def generation() -> str:
 
 def _canonical(value: object) -> object:
     """``value`` as nested tuples of plain values whose ``repr`` is the same in every run."""
-    if value is None or isinstance(value, (bool, int, float, str, bytes)):
+    if isinstance(value, (bool, float)):  # tagged: 1, 1.0 and True are equal keys of a dict
+        return (type(value).__name__, repr(value))
+    if value is None or isinstance(value, (int, str, bytes)):
         return value
     if isinstance(value, enum.Enum):
         return (type(value).__name__, value.name)
     if isinstance(value, os.PathLike):
         return ("path", os.fspath(value))
     if isinstance(value, (tuple, list)):
+        if all(type(v) is str for v in value):  # the common case (selections of codes): as it is
+            return tuple(value)
         return tuple(_canonical(v) for v in value)
     if isinstance(value, dict):
         return ("dict", tuple(sorted(((_canonical(k), _canonical(v)) for k, v in value.items()), key=repr)))
@@ -162,7 +166,16 @@ def fingerprint(value: object) -> str:
     """A deterministic fingerprint of a settings object (a record such as ``LintOptions``, with every
     field it has, nested records, tuples, dictionaries, enumerations, paths): equal settings give
     equal fingerprints in every run. :class:`TypeError` for a value it cannot fingerprint."""
-    return digest(repr(_canonical(value)).encode("utf-8", "surrogateescape")).hex()
+    canonical = _canonical(value)
+    hit = _fingerprints.get(canonical)  # the files of a run share a few settings: each hashed once
+    if hit is None:
+        if len(_fingerprints) > 4096:
+            _fingerprints.clear()
+        hit = _fingerprints[canonical] = digest(repr(canonical).encode("utf-8", "surrogateescape")).hex()
+    return hit
+
+
+_fingerprints: dict[object, str] = {}
 
 
 def catalogue_id(param_desc: Path | None) -> tuple[str, ...]:
@@ -475,10 +488,20 @@ class LintCache:
         # file → (entry name, its machine's name, (size, time, inode) before it was read)
         self._keys: dict[Path, tuple[str, str | None, tuple[int, int, int]]] = {}
         self._catalogues: dict[Path | None, tuple[str, ...]] = {}
+        self._fingerprints: dict[int, tuple[object, str]] = {}
         self._holds: dict[str, bool] = {}  # a machine's name → do its files hold
         self._deps: dict[str, tuple[Dep, ...] | None] = {}  # a machine's name → its files (None: not settled)
         self.hits = 0
         self.on = _records_known()
+
+    def _options(self, path: Path) -> str:
+        """The fingerprint of a file's options, found once per options object (the files of a folder
+        share one; the object is kept with it, so its identity is not another's)."""
+        options = self.project.options(path)
+        hit = self._fingerprints.get(id(options))
+        if hit is None or hit[0] is not options:
+            hit = self._fingerprints[id(options)] = (options, fingerprint(options))
+        return hit[1]
 
     def _catalogue(self, desc: Path | None) -> tuple[str, ...]:
         hit = self._catalogues.get(desc)
@@ -503,7 +526,7 @@ class LintCache:
         catalogue cannot be read."""
         machine = self._machine_part(path) if is_list(path) else None
         machine_key = None if machine is None else fingerprint(machine)
-        parts = (generation(), "lint", str(path), digest(data).hex(), fingerprint(self.project.options(path)),
+        parts = (generation(), "lint", str(path), digest(data).hex(), self._options(path),
                  self._catalogue(self.project.param_desc(path)), machine_key)
         return fingerprint(parts), machine_key
 
