@@ -4,7 +4,8 @@
 Builds the workloads with ``../shared/bench/workloads_real.py`` (the vendor's axis list, a tool
 list of N tools made of the vendor's tool block, a fleet of M machines of all corpus lists) in a
 temporary directory outside any git work tree, then times each command in a fresh process and
-reads its peak memory. Prints figures; it passes or fails nothing.
+reads its peak memory and CPU time (user + system: on a machine shared with other work, compare
+CPU times, and run the script twice to see its noise). Prints figures; it passes or fails nothing.
 
 usage: python benchmarks/bench_real.py [--quick] [--tools N] [--machines M] [--keep DIR] [--repeat R]
 """
@@ -27,10 +28,13 @@ ZERO = [PY, "-m", "zero"]
 _ENV = {k: v for k, v in os.environ.items() if k != "PYTHONUNBUFFERED"}
 _ENV["ZERO_NO_CACHE"] = "1"  # every row lints (issue 40's cache is timed in its own row, with its own folder)
 
-# Run a command in a child; print its wall time (s) and peak resident memory (KiB).
+# Run a command in a child; print its wall time (s), peak resident memory (KiB) and CPU time (s, user +
+# system: what a machine shared with other work inflates less than the wall time).
 _PEAK = ("import resource, subprocess, sys, time; t = time.perf_counter(); "
          "subprocess.run(sys.argv[1:], stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL); "
-         "print(time.perf_counter() - t, resource.getrusage(resource.RUSAGE_CHILDREN).ru_maxrss)")
+         "u = resource.getrusage(resource.RUSAGE_CHILDREN); "
+         "print(time.perf_counter() - t, u.ru_maxrss, u.ru_utime + u.ru_stime)")
+_CPU: dict[float, float] = {}  # a measured best wall time -> the best CPU time of the same runs
 
 
 def with_changes(data: bytes, every: int = 100) -> bytes:
@@ -52,12 +56,13 @@ def with_changes(data: bytes, every: int = 100) -> bytes:
 def measure(cmd: list[str], repeat: int = 1, cwd: Path | None = None,
             env: dict[str, str] | None = None) -> tuple[float, float]:
     """Best wall time (s) over ``repeat`` runs and the peak memory (MiB) of the last."""
-    best, peak = float("inf"), 0.0
+    best, peak, cpu = float("inf"), 0.0, float("inf")
     for _ in range(repeat):
         out = subprocess.run([PY, "-c", _PEAK, *cmd], capture_output=True, text=True, cwd=cwd, check=False,
                              env=env or _ENV)
-        seconds, kib = out.stdout.strip().splitlines()[-1].split()
-        best, peak = min(best, float(seconds)), int(kib) / 1024
+        seconds, kib, used = out.stdout.strip().splitlines()[-1].split()
+        best, peak, cpu = min(best, float(seconds)), int(kib) / 1024, min(cpu, float(used))
+    _CPU[best] = cpu
     return best, peak
 
 
@@ -67,7 +72,9 @@ def entries(path: Path) -> int:
 
 
 def row(name: str, seconds: float, peak: float, anchor: str, ratio: float, target: str) -> None:
-    print(f"{name:<44}{seconds * 1000:>10.1f} ms{peak:>9.0f} MiB   {anchor:<34}{ratio:>7.2f}×   {target}")
+    cpu = _CPU.get(seconds)
+    shown = f"{cpu * 1000:>9.0f} ms" if cpu is not None else " " * 12
+    print(f"{name:<44}{seconds * 1000:>10.1f} ms{shown}{peak:>9.0f} MiB   {anchor:<34}{ratio:>7.2f}×   {target}")
 
 
 def main() -> None:
@@ -92,7 +99,7 @@ def main() -> None:
                    stdout=subprocess.DEVNULL)
     n_tools = entries(out / "tools.lis")
     print(f"workloads in {out}: tools.lis {n_tools:,} entries, fleet {machines} machines\n")
-    print(f"{'workload':<44}{'time':>13}{'peak':>13}   {'anchor':<34}{'ratio':>8}    target")
+    print(f"{'workload':<44}{'time':>13}{'cpu':>12}{'peak':>13}   {'anchor':<34}{'ratio':>8}    target")
 
     pass_s, _ = measure([PY, "-c", "pass"], 10)
     lint_s, lint_m = measure([*ZERO, "lint", str(out / "axis.lis")], 10)
