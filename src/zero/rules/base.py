@@ -74,7 +74,6 @@ class Reporter:
     the funnel's to apply: :mod:`zero.rules.funnel`)."""
 
     __slots__ = ()
-    severities: dict[str, Severity]
     path: str
 
     def report(self, code: str, span: Span, message: str, *, param_id: str | None = None,
