@@ -629,6 +629,10 @@ def options_example() -> str:
     return "\n".join(lines)
 
 
+# The module's documentation ends with every option's example, made from OPTIONS as the docs page's is.
+__doc__ = f"{__doc__}\n```toml\n{options_example()}\n```\n"
+
+
 def options_reference() -> str:
     """The reference section of docs/configuration.md: every option at once, then each by section."""
     out = ["```toml", options_example(), "```", ""]
