@@ -189,6 +189,8 @@ def test_axes_whose_soft_limits_do_not_stop_them_are_marked(machine: dict[str, A
     text = (machine["start"].parent / "achsmds2.lis").read_text(encoding="latin-1").splitlines()
     assert text[line - 1].startswith("kenngr.swe_check")
     assert page.inner_text("#summary [data-count=unmonitored]") == "3"
+    said = page.inner_text("#axes p.monitor-off")  # two axes named Y: each told apart by channel and number
+    assert "Y (channel 0, logical axis 2: " in said and "Y (channel 1, logical axis 6: " in said
     page.close()
 
 
