@@ -87,8 +87,14 @@ def canonical_key(registry: Registry, kind: str | None, entry: Entry) -> str:
     key = entry.key
     if key is None:
         return entry.key_text
-    hit = bind(registry, key.pattern, kind)  # another release's spelling: today's key
-    pattern = hit[0].key if hit is not None and hit[0].key else key.pattern
+    # each distinct pattern bound once (a diff of two tool lists asks for 228,000 entries' keys)
+    patterns: dict[tuple[str | None, str], str] = registry.memo.setdefault("canonical_patterns", {})
+    pattern = patterns.get((kind, key.pattern))
+    if pattern is None:
+        hit = bind(registry, key.pattern, kind)  # another release's spelling: today's key
+        pattern = hit[0].key if hit is not None and hit[0].key else key.pattern
+        if len(patterns) < 100_000:
+            patterns[(kind, key.pattern)] = pattern
     if pattern == key.pattern and ("[0" not in key.text or _LEADING_ZERO.search(key.text) is None):
         return key.text  # written as documented (the usual case): as it is
     return format_key(pattern, key.indices)
