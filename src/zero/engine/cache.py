@@ -138,28 +138,43 @@ def generation() -> str:
     return _generation[0]
 
 
+_tuples: dict[int, tuple[object, object]] = {}
+
+
 def _canonical(value: object) -> object:
     """``value`` as nested tuples of plain values whose ``repr`` is the same in every run."""
-    if isinstance(value, (bool, float)):  # tagged: 1, 1.0 and True are equal keys of a dict
-        return (type(value).__name__, repr(value))
-    if value is None or isinstance(value, (int, str, bytes)):
+    kind = type(value)
+    if kind is str or kind is int or value is None or kind is bytes:
         return value
-    if isinstance(value, enum.Enum):
-        return (type(value).__name__, value.name)
-    if isinstance(value, os.PathLike):
-        return ("path", os.fspath(value))
-    if isinstance(value, (tuple, list)):
-        if all(type(v) is str for v in value):  # the common case (selections of codes): as it is
-            return tuple(value)
-        return tuple(_canonical(v) for v in value)
+    if kind is tuple:
+        seen = _tuples.get(id(value))  # a selection the files of a run share: looked at once
+        if seen is not None and seen[0] is value:
+            return seen[1]
+        items: tuple[object, ...] = value  # type: ignore[assignment]
+        out = items if all(type(v) is str for v in items) else tuple(_canonical(v) for v in items)
+        if len(_tuples) > 4096:
+            _tuples.clear()
+        _tuples[id(value)] = (value, out)  # the tuple kept with it: its identity is no other's
+        return out
+    if kind is list:
+        return _canonical(tuple(value))  # type: ignore[arg-type]
+    if kind is bool or kind is float:  # tagged: 1, 1.0 and True are equal keys of a dict
+        return (kind.__name__, repr(value))
     if isinstance(value, dict):
         return ("dict", tuple(sorted(((_canonical(k), _canonical(v)) for k, v in value.items()), key=repr)))
+    if getattr(kind, "__record_fields__", None) is not None:
+        return (kind.__qualname__, tuple((f.name, _canonical(getattr(value, f.name))) for f in fields(value)))
+    if isinstance(value, enum.Enum):
+        return (kind.__name__, value.name)
+    if isinstance(value, os.PathLike):
+        return ("path", os.fspath(value))
     if isinstance(value, (set, frozenset)):
         return ("set", tuple(sorted((_canonical(v) for v in value), key=repr)))
-    names = getattr(type(value), "__record_fields__", None)
-    if names is not None:
-        return (type(value).__qualname__, tuple((f.name, _canonical(getattr(value, f.name))) for f in fields(value)))
-    raise TypeError(f"cannot fingerprint {type(value).__name__}")
+    if isinstance(value, (tuple, list)):  # a subclass (a NamedTuple, ...): its items, tagged with its class
+        return (kind.__qualname__, tuple(_canonical(v) for v in value))
+    if isinstance(value, (str, int, float)):  # a subclass: its plain value, tagged with its class
+        return (kind.__qualname__, repr(value))
+    raise TypeError(f"cannot fingerprint {kind.__name__}")
 
 
 def fingerprint(value: object) -> str:
