@@ -394,3 +394,17 @@ def test_feedforward_delays_against_the_interpolator_cycle(tmp_path: Path) -> No
                        ("X026", "achse_y.lis", "P-AXIS-00389", "P-ERR-70349")]
     (listen / "rtconf.lis").write_text("cycle_time 1000\nthread[0].name CNC_IPO\nthread[0].cycle 4000\nEnde\n")
     assert found() == []
+
+
+def test_a_message_whose_reaction_no_page_gives_is_a_warning(registry: Registry) -> None:
+    """Issue 38: 110591 (a negative velocity in the friction compensation table) is documented as an
+    error message the kernel outputs when it takes over the list, but no page says what it then does:
+    the row's `severity = "warning"` makes its rule a warning that says so; a row with a documented
+    correction stays an error (110473)."""
+    options = LintOptions(select=("K",))
+    [friction] = lint_file(FIXTURES / "startup" / "110591" / "fail.lis", registry, options).diagnostics
+    assert friction.severity.label == "warning" and RULES[friction.code].severity.label == "warning"
+    assert "when it takes over the compensation value list" in friction.message
+    assert friction.message.endswith("the documentation does not say what the kernel then uses")
+    [jerk] = lint_file(FIXTURES / "startup" / "110473" / "fail.lis", registry, options).diagnostics
+    assert jerk.severity.label == "error" and jerk.message.endswith("the kernel sets P-AXIS-00338 to 100")

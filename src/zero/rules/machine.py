@@ -839,7 +839,7 @@ What it checks: the master axes of a plane compensation (as X023 finds them) hav
 translatory (`kenngr.achs_typ` 1, P-AXIS-00018) in their axis lists. Values from the compensation list
 and the master axes' axis lists: checked with `zero lint --machine`.
 
-Why it matters on the machine: the plane compensation manual lists error 70184 ("Axis type of a master
+Why it matters on the machine: the plane compensation manual lists error P-ERR-70184 ("Axis type of a master
 axis for plane compensation is invalid": a master axis does not have the required axis type
 translatory); errors in the configuration of plane compensation deselect the function for the axis and
 output an error message, so the axis runs uncompensated. Source:
