@@ -25,3 +25,11 @@ def test_counts_per_kind_are_the_counts_of_every_pair() -> None:
                 want[pid] = (*want.get(pid, ()), (count_id, parent.count("[]")))
     got = _counts(registry)
     assert got == want and len(got) > 10
+
+
+def test_a_spec_table_gets_as_a_mapping_gets() -> None:
+    specs = load_registry().specs
+    assert isinstance(specs, SpecTable)
+    some = next(iter(specs))
+    assert specs.get(some) is specs[some] and specs.get(some) is specs.get(some)
+    assert specs.get("P-NONE-00000") is None and specs.get("P-NONE-00000", 5) == 5

@@ -9,7 +9,7 @@ from zero.diagnostics import Severity
 from zero.lists.model import parse_key
 from zero.lists.tokenizer import tokenize_text
 from zero.rules.lists import check_document
-from zero.rules.registry import _bounds
+from zero.rules.registry import _bounds, bounds_of
 
 REGISTRY = load_registry()
 
@@ -48,6 +48,7 @@ def test_bounds_say_what_index_outside_says() -> None:
     specs = [s for s in REGISTRY.specs.values() if s.dims][:300]
     for spec in specs:
         bounds = _bounds(spec)
+        assert bounds_of(spec) == bounds
         for _ in range(20):
             idx = tuple(rnd.choice([0, 1, 2, 5, 10, 50, 99, 1000, 10**18]) for _ in spec.dims)
             inside = all(first <= i < end for (first, end), i in zip(bounds, idx, strict=False))

@@ -182,6 +182,13 @@ class SpecTable(Mapping[str, "ParamSpec"]):
             spec = self._built[param_id] = _spec_from_row(self._rows[param_id], self._index_base)
         return spec
 
+    def get(self, param_id: str, default: Any = None) -> Any:
+        """As ``Mapping.get``, without its ``try``/``KeyError`` (a fleet asks 100,000 times)."""
+        spec = self._built.get(param_id)
+        if spec is not None:
+            return spec
+        return self[param_id] if param_id in self._rows else default
+
     def __contains__(self, param_id: object) -> bool:
         return param_id in self._rows
 

@@ -138,7 +138,7 @@ def check_keys(ctx: Context) -> Iterator[Diagnostic]:
         got = specs.get(key.pattern)
         if got is None:
             found = reg.by_pattern(key.pattern, ctx.kind)
-            got = specs[key.pattern] = (found, _bounds(found) if found is not None else ())
+            got = specs[key.pattern] = (found, bounds_of(found) if found is not None else ())
         spec, bounds = got
         if spec is None:
             alias = reg.alias(key.pattern, ctx.kind)
@@ -192,6 +192,18 @@ def check_keys(ctx: Context) -> Iterator[Diagnostic]:
 
 
 _LEADING_ZERO = re.compile(r"\[0[0-9]")
+_BOUNDS: dict[tuple[tuple[int, ...], int], tuple[tuple[int, int], ...]] = {}  # by (dims, index base)
+
+
+def bounds_of(spec: ParamSpec) -> tuple[tuple[int, int], ...]:
+    """:func:`_bounds`, once per shape of arrays (the lists of a fleet ask for the same few hundred)."""
+    slot = (spec.dims, spec.index_base)
+    got = _BOUNDS.get(slot)
+    if got is None:
+        got = _bounds(spec)
+        if len(_BOUNDS) < 4096:
+            _BOUNDS[slot] = got
+    return got
 
 
 def _bounds(spec: ParamSpec) -> tuple[tuple[int, int], ...]:
