@@ -28,3 +28,16 @@ def test_canonical_keys_per_kind_are_the_keys_bound_per_entry() -> None:
         assert got == [_uncached(registry, kind, e) for e in entries], kind
     assert canonical_key(registry, "AXIS", entries[0]) == "kenngr.homing.homing_type"
     assert canonical_key(registry, "TOOL", entries[2]) == "wz[1].laenge"
+
+
+def test_bindings_kept_across_lists_bind_as_each_list_alone() -> None:
+    from zero.catalog.values import ListValues
+
+    shared = load_registry()
+    for text in (TEXT, "kenngr.homing_type 3\nkenngr.swe_neg -5\n", TEXT):
+        doc = tokenize_text(text)
+        for kind in ("AXIS", "TOOL"):
+            got = ListValues.of(doc, shared, kind)
+            alone = ListValues.of(doc, load_registry(), kind)  # a registry of its own: nothing kept
+            assert [(r.entry.line, r.spec.id, r.via_alias) for r in got.resolved] == \
+                [(r.entry.line, r.spec.id, r.via_alias) for r in alone.resolved]

@@ -280,7 +280,8 @@ class ListValues:
         by_id = out.by_id
         # A big list has few patterns and few distinct values: each pattern is bound, and each
         # (parameter, value) read, once. Values are never changed after reading, so are shared.
-        bound: dict[str, tuple[ParamSpec, bool] | None] = {}
+        # Bindings are kept per registry and kind: the lists of a fleet bind the same patterns.
+        bound: dict[str, tuple[ParamSpec, bool] | None] = registry.memo.setdefault(f"bound:{kind}", {})
         read: dict[tuple[str, str], Value] = registry.memo.setdefault("values", {})  # kind follows from text
         for e in entries:
             key = e.key
@@ -290,7 +291,9 @@ class ListValues:
             try:
                 hit = bound[pattern]
             except KeyError:
-                hit = bound[pattern] = bind(registry, pattern, kind)
+                hit = bind(registry, pattern, kind)
+                if len(bound) < 65_536:
+                    bound[pattern] = hit
             if hit is None:
                 continue
             spec = hit[0]
