@@ -141,6 +141,15 @@ def test_every_option_is_declared_with_its_parts() -> None:
     assert not re.search(r'key == "|elif key ==', (SRC / "engine" / "config.py").read_text(encoding="utf-8"))
 
 
+def test_zero_config_schema_prints_the_shipped_schema() -> None:
+    from typer.testing import CliRunner
+
+    from zero.cli.app import app
+
+    result = CliRunner().invoke(app, ["config", "--schema"])
+    assert result.exit_code == 0 and result.output == (ROOT / "zero.schema.json").read_text(encoding="utf-8")
+
+
 def test_the_schema_is_json_and_a_valid_schema() -> None:
     jsonschema.Draft202012Validator.check_schema(json.loads((ROOT / "zero.schema.json").read_text(encoding="utf-8")))
 

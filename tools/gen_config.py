@@ -9,14 +9,13 @@ Usage: python tools/gen_config.py
 
 from __future__ import annotations
 
-import json
 import sys
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT / "src"))
 
-from zero.engine.config import config_schema, options_reference  # noqa: E402
+from zero.engine.config import config_schema_text, options_reference  # noqa: E402
 
 SCHEMA = ROOT / "zero.schema.json"
 PAGE = ROOT / "docs" / "configuration.md"
@@ -25,7 +24,7 @@ END = "<!-- options: end -->"
 
 
 def schema_text() -> str:
-    return json.dumps(config_schema(), indent=2, ensure_ascii=False) + "\n"
+    return config_schema_text()
 
 
 def page_text(page: str) -> str:

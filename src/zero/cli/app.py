@@ -26,6 +26,7 @@ from zero.cli.run import REGISTRIES, check_kind, echo, kind_completions, read_st
 from zero.cli.run import lint as run_lint_command
 from zero.diff import SAME, DiffOptions, show_lines
 from zero.engine.commands import parse_kind, run_format
+from zero.engine.config import config_schema_text
 from zero.engine.convert import check_convert_options, convert_inputs, write_into, write_outputs
 from zero.engine.project import Common, Project, open_project
 from zero.engine.queries import find_param, load_side, machine_of, run_diff, run_effective, run_limits
@@ -659,11 +660,16 @@ def config_cmd(
     path: Annotated[Path, typer.Argument(help="A list file or directory whose configuration to show.",
         metavar="PATH")] = Path("."),
     show: Annotated[bool, typer.Option("--show", help="Print the effective configuration.")] = True,
+    schema: Annotated[bool, typer.Option("--schema", help="Print the JSON Schema of zero.toml and [tool.zero] "
+                                         "(zero.schema.json, for taplo and editors) instead.")] = False,
     *, common: Common,
 ) -> None:
     """Show the configuration that applies to PATH ([tool.zero], zero.toml, .zero.toml)."""
 
     def body() -> int:
+        if schema:
+            sys.stdout.write(config_schema_text())
+            return exits.OK
         cfg = _project(common).config(path, directory=path.is_dir())
         if show:
             sys.stdout.write(cfg.show())

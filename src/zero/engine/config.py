@@ -612,6 +612,13 @@ def config_schema() -> dict[str, Any]:
     }
 
 
+def config_schema_text() -> str:
+    """:func:`config_schema` as ``zero.schema.json`` holds it (``zero config --schema`` prints it)."""
+    import json  # start-up: only for the schema
+
+    return json.dumps(config_schema(), indent=2, ensure_ascii=False) + "\n"
+
+
 def _default_text(o: ConfigOption) -> str:
     if o.default_text:
         return o.default_text
