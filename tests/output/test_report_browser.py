@@ -257,6 +257,12 @@ def test_the_page_holds_its_width(width: int, machine: dict[str, Any], browser: 
         assert wide == []
         at = page.eval_on_selector("#value-table th:last-child", "t => t.getBoundingClientRect().right")
         assert at <= width
+    else:  # on a phone each value is a card within the screen (the table was 1,653 px wide in its box)
+        box = page.eval_on_selector("#value-table",
+                                    "t => [t.getBoundingClientRect().width, t.parentElement.clientWidth]")
+        assert box[0] <= box[1] <= width
+        card = page.locator("#value-table tbody tr:not([hidden])").first
+        assert card.locator("td").nth(6).evaluate("td => getComputedStyle(td, '::before').content") == '"set at "'
     shots = _shots(tmp_path)
     page.screenshot(path=str(shots / f"report-{width}.png"))
     page.locator(".axis-card.unmonitored").first.screenshot(path=str(shots / f"report-{width}-unmonitored.png"))
