@@ -11,7 +11,8 @@ from zero.lists.model import HUGE_INDEX, parse_key, scanned_key
 from zero.lists.tokenizer import _FAST_ENTRY_RE, tokenize_text
 
 KEYS = ["wz[17].laenge", "kenngr.swe_neg", "np_grp[0].achse[2].versch", "a[1][2].b[3]", "x.y[4].z",
-        "wz[0]", "tool[3].kinematic.param[12]", "ab_c", f"wz[{'9' * 25}].x", "q[007].r"]
+        "wz[0]", "tool[3].kinematic.param[12]", "unknown_key_5.member[7]",
+        "kenngr.achse[2].x[3]", "ab_c", f"wz[{'9' * 25}].x", "q[007].r"]
 
 
 @pytest.mark.parametrize("text", KEYS)

@@ -111,14 +111,14 @@ _shapes: dict[tuple[str, str], tuple[str, tuple[int, ...]]] = {}
 
 
 def scanned_key(text: str, name: str, first: str | None, tail: str) -> Key:
-    """The key the tokenizer's fast path matched as ``name[first]tail`` (``first`` ``None``: no index
-    on the first name): what ``parse_key(text, True)`` gives, from one look-up per distinct shape
-    (``wz[].laenge``) instead of a parse of each key."""
+    """The key the tokenizer's fast path matched as ``name[first]tail`` (``name`` the names up to the
+    first index, ``first`` ``None``: no index): what ``parse_key(text, True)`` gives, from one look-up per
+    distinct shape (``wz[].laenge``, ``kenngr.achse[].x``) instead of a parse of each key."""
+    if first is None:  # no index at all: parse_key's own look-up
+        return parse_key(text, True)  # type: ignore[return-value]  # trusted: never None
     got = _keys.get(text)
     if got is not None:
         return got
-    if first is None:
-        return parse_key(text, True)  # type: ignore[return-value]  # trusted: never None
     shape = _shapes.get((name, tail))
     if shape is None:
         tail_pattern, tail_indices = _part(tail)

@@ -52,10 +52,11 @@ _MAX_KEY_JOINS = 8
 # The common line, matched in one go: `KEY VALUE [COMMENT]` where nothing needs the
 # careful scanner (no quotes, flags, key continuations or `Ende`). Whatever this does
 # not match goes to scan_line, which gives the same result for what it does match.
-# Groups: 1 the key, as 2 its first name, 3 that name's index (if any) and 4 the rest (what
+# Groups: 1 the key, as 2 its names up to the first index, 3 that index (if any) and 4 the rest (what
 # model.scanned_key reads); 5 the value; 6 the comment.
 _FAST_ENTRY_RE = re.compile(
-    r"[ \t]*(([A-Za-z_][A-Za-z0-9_]*)(?:\[([0-9]+)\])?((?:\[[0-9]+\])*(?:\.[A-Za-z0-9_]+(?:\[[0-9]+\])*)*))"
+    r"[ \t]*(([A-Za-z_][A-Za-z0-9_]*(?:\.[A-Za-z0-9_]+)*)(?:\[([0-9]+)\])?"
+    r"((?:\[[0-9]+\])*(?:\.[A-Za-z0-9_]+(?:\[[0-9]+\])*)*))"
     r"[ \t]+([^\s\"|.\[\]][^\s|]*)(?:[ \t]+([^\s|].*)|[ \t]*)\Z",
     re.DOTALL)
 _KIND_RE = re.compile(
