@@ -108,6 +108,7 @@ def parse_key(text: str, trusted: bool = False) -> Key | None:
 
 
 _shapes: dict[tuple[str, str], tuple[str, tuple[int, ...]]] = {}
+_singles: dict[int, tuple[int]] = {}
 
 
 def scanned_key(text: str, name: str, first: str | None, tail: str) -> Key:
@@ -129,7 +130,12 @@ def scanned_key(text: str, name: str, first: str | None, tail: str) -> Key:
         if len(_shapes) < _CACHE_LIMIT and len(tail) < 512:
             _shapes[(name, tail)] = shape
     index = int(first) if len(first) <= MAX_INDEX_DIGITS else HUGE_INDEX
-    key = Key(text, shape[0], (index, *shape[1]) if shape[1] else (index,))
+    if shape[1]:
+        indices: tuple[int, ...] = (index, *shape[1])
+    else:  # one index: the keys of one element (a tool's 38) share its tuple, as parse_key's heads do
+        indices = _singles.get(index) or (_singles.setdefault(index, (index,)) if len(_singles) < _CACHE_LIMIT
+                                          else (index,))
+    key = Key(text, shape[0], indices)
     if len(_keys) < _KEY_CACHE_LIMIT:
         _keys[text] = key
     return key
