@@ -169,3 +169,21 @@ def test_compensation_switched_on_needs_its_table(tmp_path: Path) -> None:
     assert d.code == "X013" and "no compensation list of the machine is for axis 2" in d.message
     (on_y.parent / "kw_x.lis").unlink()
     assert [f["code"] for f in x_findings(on_y)] == ["X005"]
+
+
+def test_plane_compensation_without_table_carries_the_kernel_number(tmp_path: Path) -> None:
+    """X013 on plane compensation (`lr_param.crosscomp2`, P-AXIS-00174) carries P-ERR-70183 and says
+    the controller switches it off; on leadscrew compensation it carries no number and says the
+    vendor documents no start-up message."""
+    startup = _with_compensation(tmp_path / "a", "")
+    axis = startup.parent / "achse_x.lis"
+    axis.write_text(axis.read_text().replace("lr_param.ssfk 1", "lr_param.crosscomp2 1", 1))
+    results = lint_machine(load_machine(startup, builtin_registry()), builtin_registry())
+    [d] = [d for r in results for d in r.diagnostics]
+    assert (d.code, d.kernel_error) == ("X013", "P-ERR-70183")
+    assert "switches plane compensation off" in d.message
+    leadscrew = _with_compensation(tmp_path / "b", "")
+    results = lint_machine(load_machine(leadscrew, builtin_registry()), builtin_registry())
+    [d] = [d for r in results for d in r.diagnostics]
+    assert (d.code, d.kernel_error) == ("X013", None)
+    assert "documents no start-up message" in d.message

@@ -28,6 +28,7 @@ import math
 import re
 from collections.abc import Callable, Sequence
 
+from zero.catalog.ids import LENGTH_UNIT
 from zero.forms import PROGRAM_SUFFIX
 from zero.nc import language as lang
 from zero.nc.program import strip_comments
@@ -1286,7 +1287,7 @@ class Follower:
                 if j is None or m is None:
                     continue
                 i = j
-                v = int(m.group(2)) / 10_000
+                v = int(m.group(2)) / LENGTH_UNIT
                 neg, pos = st.limits[i]
                 st.limits[i] = (v, pos) if m.group(1) == "NEG" else (neg, v)
                 src = f"#MACHINE DATA at line {t.line}"

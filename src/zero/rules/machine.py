@@ -363,7 +363,9 @@ that is holds no entry of that compensation's table (`kw.ssfk.table[]`, `kw.cros
 
 Why it matters on the machine: the compensation values come from the axis's compensation list;
 with none, the axis is switched to a compensation that has nothing to apply, and the machine
-runs with the error it was meant to correct. The vendor documents no start-up message for this.
+runs with the error it was meant to correct. For plane compensation the vendor documents
+P-ERR-70183 at start-up: the controller switches plane compensation off for the axis; for
+leadscrew and cross compensation it documents no start-up message.
 Not claimed while a compensation list the start-up list names is not read (X005, X012).
 
 Fix: add the compensation list to the start-up list (`zahl_kw`, `achs_kw[i]`,
@@ -432,10 +434,13 @@ def check_compensation_tables(ctx: MachineContext) -> Iterator[Diagnostic]:
             why = (f"the compensation list of axis {nr} ({', '.join(f'`{lf.path}`' for lf in lists)}) has no "
                    f"`{table}` entry" if lists else
                    f"no compensation list of the machine is for axis {nr} (`achs_kw_log_ax_nr`, `kopf.achs_nr`)")
+            plane = pid == "P-AXIS-00174"  # P-ERR-70183: the one compensation the kernel reports at start-up
             yield ctx.report("X013", Span.on_line(res.entry.line, res.entry.value_start, res.entry.value_end),
                              f"`{res.entry.key_text} 1` switches {what} on, but {why}: there are no values to "
-                             "apply, and the vendor documents no start-up message for this",
-                             param_id=pid, path=layer.doc.path)
+                             "apply" + (", and the kernel reports P-ERR-70183 at start-up and switches plane "
+                                        "compensation off for the axis" if plane else
+                                        ", and the vendor documents no start-up message for this"),
+                             param_id=pid, path=layer.doc.path, kernel_error="P-ERR-70183" if plane else None)
 
 
 CHANNEL_AXIS_TWICE = FAMILY.rule(
