@@ -78,9 +78,11 @@ def _find(p: ET.Element, tag: str) -> str | None:
     return v.strip() if v is not None else None
 
 
-def read_param_desc(path: str | Path, *, with_text: bool = False) -> list[dict[str, Any]]:
-    """Parse the XML into registry rows; :class:`~zero.errors.ZeroError` on bad input."""
-    try:  # a regular file only (a FIFO or device is refused); no DTD, entities or external references
+def description_root(path: str | Path) -> ET.Element:
+    """The root element of a parameter description, read safely: a regular file only (a FIFO or
+    device is refused), no DTD, entities or external references; :class:`~zero.errors.ZeroError`
+    when it cannot be read or is no ``CncParaDesc`` file."""
+    try:
         root = defused_fromstring(read_file(path), forbid_dtd=True)
     except ZeroError as exc:
         raise ZeroError(f"cannot read parameter description {path}: {exc.message}") from None
@@ -91,6 +93,12 @@ def read_param_desc(path: str | Path, *, with_text: bool = False) -> list[dict[s
                         f"references, which a parameter description has none of ({type(exc).__name__})") from None
     if root.tag != f"{_NS}Parameters":
         raise ZeroError(f"not a CncParaDesc file (root element {root.tag!r})", str(path))
+    return root
+
+
+def read_param_desc(path: str | Path, *, with_text: bool = False) -> list[dict[str, Any]]:
+    """Parse the XML into registry rows; :class:`~zero.errors.ZeroError` on bad input."""
+    root = description_root(path)
 
     units: dict[str, str] = {}
     for u in root.findall(f"{_NS}Unit"):

@@ -6,33 +6,16 @@ way for ``--param-desc``)."""
 
 from __future__ import annotations
 
-import xml.etree.ElementTree as ET
 from pathlib import Path
 
-from defusedxml import DefusedXmlException
-from defusedxml.ElementTree import fromstring as defused_fromstring
-
-from zero.errors import ZeroError
-from zero.files import read_file
-
-_NS = "{https://www.isg-stuttgart.de/kernel/CncParaDesc}"
+from zero.catalog.paramdesc import _NS, description_root
 
 
 def short_names(path: str | Path, language: str = "de") -> dict[str, str]:
     """Parameter ID → its short description in ``language`` (``de``: ``Positiver Softwareendschalter``
     for P-AXIS-00178), for every parameter the file names in that language;
     :class:`~zero.errors.ZeroError` when the file cannot be read or is no parameter description."""
-    try:  # a regular file only; no DTD, entities or external references
-        root = defused_fromstring(read_file(path), forbid_dtd=True)
-    except ZeroError as exc:
-        raise ZeroError(f"cannot read parameter description {path}: {exc.message}") from None
-    except ET.ParseError as exc:
-        raise ZeroError(f"cannot read parameter description {path}: {exc}") from None
-    except DefusedXmlException as exc:
-        raise ZeroError(f"cannot read parameter description {path}: it declares a DTD, entities or external "
-                        f"references, which a parameter description has none of ({type(exc).__name__})") from None
-    if root.tag != f"{_NS}Parameters":
-        raise ZeroError(f"not a CncParaDesc file (root element {root.tag!r})", str(path))
+    root = description_root(path)
     out: dict[str, str] = {}
     for p in root.findall(f"{_NS}Parameter"):
         pid = (p.findtext(f"{_NS}Id") or "").strip()
