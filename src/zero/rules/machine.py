@@ -364,8 +364,9 @@ that is holds no entry of that compensation's table (`kw.ssfk.table[]`, `kw.cros
 Why it matters on the machine: the compensation values come from the axis's compensation list;
 with none, the axis is switched to a compensation that has nothing to apply, and the machine
 runs with the error it was meant to correct. For plane compensation the vendor documents
-P-ERR-70183 at start-up: the controller switches plane compensation off for the axis; for
-leadscrew and cross compensation it documents no start-up message.
+P-ERR-70183 at start-up: the controller switches plane compensation off for the axis
+(https://infosys.beckhoff.com/content/1033/tf5200_diagnosis/260228747.html); for leadscrew and
+cross compensation it documents no start-up message.
 Not claimed while a compensation list the start-up list names is not read (X005, X012).
 
 Fix: add the compensation list to the start-up list (`zahl_kw`, `achs_kw[i]`,
