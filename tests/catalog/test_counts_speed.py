@@ -33,3 +33,15 @@ def test_a_spec_table_gets_as_a_mapping_gets() -> None:
     some = next(iter(specs))
     assert specs.get(some) is specs[some] and specs.get(some) is specs.get(some)
     assert specs.get("P-NONE-00000") is None and specs.get("P-NONE-00000", 5) == 5
+
+
+def test_counted_by_answers_each_parameter_as_the_whole_table_does() -> None:
+    table = _counts(load_registry())
+    registry = load_registry()  # a fresh one: counted_by builds its own counts, one parameter at a time
+    asked = 0
+    for pid in registry.specs:
+        spec = registry.specs[pid]
+        if spec.dims:
+            asked += 1
+            assert registry.counted_by(spec) == table.get(pid, ()), pid
+    assert asked > 100 and sum(1 for v in table.values() if v) > 10

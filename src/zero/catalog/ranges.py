@@ -21,6 +21,7 @@ from __future__ import annotations
 
 import re
 from collections.abc import Callable
+from typing import Any
 
 from zero.records import record
 
@@ -382,3 +383,54 @@ def parse_range(text: str | None, own_id: str = "") -> Range | None:
     if low is None and high is None:
         return None
     return Range(low, low_strict, high, high_strict)
+
+
+# A range as constants (``tools/gen_ranges.py`` writes the built-in catalogue's ranges parsed, so that
+# they load from bytecode instead of being parsed at every run: issue 40). An expression is a number
+# (Num), or a tuple: ("L", which, type) Limit, ("R", id, index) Ref, ("B", op, left, right) BinOp,
+# ("N", operand) Neg; a range is (low, low_strict, high, high_strict, allowed), ``None`` for prose.
+Encoded = Any
+
+
+def encode_range(rng: Range | None) -> Encoded:
+    """``rng`` as nested tuples of constants (``None`` stays ``None``)."""
+    if rng is None:
+        return None
+    return (_encode(rng.low), rng.low_strict, _encode(rng.high), rng.high_strict, rng.allowed)
+
+
+def _encode(e: Expr | None) -> Encoded:
+    if e is None:
+        return None
+    if isinstance(e, Num):
+        return e.value
+    if isinstance(e, Limit):
+        return ("L", e.which, e.type)
+    if isinstance(e, Ref):
+        return ("R", e.id, e.index)
+    if isinstance(e, BinOp):
+        return ("B", e.op, _encode(e.left), _encode(e.right))
+    return ("N", _encode(e.operand))
+
+
+def decode_range(data: Encoded) -> Range | None:
+    """The range :func:`encode_range` wrote (equal to what :func:`parse_range` gives for its text)."""
+    if data is None:
+        return None
+    low, low_strict, high, high_strict, allowed = data
+    return Range(_decode(low), low_strict, _decode(high), high_strict, allowed)
+
+
+def _decode(data: Encoded) -> Expr | None:
+    if data is None:
+        return None
+    if not isinstance(data, tuple):
+        return Num(data)
+    tag = data[0]
+    if tag == "L":
+        return Limit(data[1], data[2])
+    if tag == "R":
+        return Ref(data[1], data[2])
+    if tag == "B":
+        return BinOp(data[1], _decode(data[2]), _decode(data[3]))  # type: ignore[arg-type]
+    return Neg(_decode(data[1]))  # type: ignore[arg-type]

@@ -19,7 +19,7 @@ from collections.abc import Iterable, Iterator, Mapping
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
-from zero.catalog.ranges import Range, parse_range
+from zero.catalog.ranges import Range, decode_range, parse_range
 from zero.forms import kind_hint
 from zero.records import field, record
 
@@ -272,13 +272,30 @@ class Registry:
         `spindel[i].…` by `spdl_anzahl`, `gruppe[g].achse[j].…` by `gruppe[g].achs_anzahl` (index 1).
         Found by rule from the catalogue's keys: an unsigned `STEM_anzahl` beside an array (same
         parent) whose name holds STEM's letters in order (`spdl` in `spindel`, `grp` in `gruppe`, `hr`
-        in `hr_data`); empty where none counts them."""
-        if not spec.dims:
-            return ()  # no array, nothing to count (and no table built for a list of scalars)
-        table: dict[str, tuple[tuple[str, int], ...]] = self.memo.setdefault("counted_by", {})
-        if not table:
-            table.update(_counts(self))
-        return table.get(spec.id, ())
+        in `hr_data`); empty where none counts them. Answered per parameter from the few counts of
+        its kind (found once), not from a table of every pair of keys (issue 40: start-up)."""
+        if not spec.dims or not spec.key:
+            return ()  # no array, nothing to count
+        memo: dict[str, tuple[tuple[str, int], ...]] = self.memo.setdefault("counted_by", {})
+        got = memo.get(spec.id)
+        if got is None:
+            got = memo[spec.id] = _counted(spec.key, self._counters().get(spec.kind, ()))
+        return got
+
+    def _counters(self) -> dict[str, list[tuple[str, str, str, int]]]:
+        """Kind → its counts: (ID, stem, parent, the index it counts), found once from the keys."""
+        memo: dict[str, list[tuple[str, str, str, int]]] = self.memo.setdefault("counters", {})
+        if not memo:
+            memo[""] = []  # never empty once built
+            for count_id, count_kind, count_key in _triples(self.specs):
+                if not count_key.endswith("_anzahl"):
+                    continue
+                m = _COUNT_RE.search(count_key)
+                if m is None or not self.specs[count_id].type.startswith("UNS"):
+                    continue
+                parent = count_key[: m.start(1)]
+                memo.setdefault(count_kind, []).append((count_id, m.group(1), parent, parent.count("[]")))
+        return memo
 
     def machine_data_ids(self) -> frozenset[str]:
         """The IDs ``#MACHINE DATA`` accepts as keywords (the seed's entries), computed once."""
@@ -291,11 +308,19 @@ class Registry:
         return self._kinds_of.get(pattern, [])
 
     def range_of(self, spec: ParamSpec) -> Range | None:
-        """The parsed formal range of a spec (parsed once, cached)."""
+        """The parsed formal range of a spec (parsed once, cached). The built-in catalogue's ranges
+        are parsed at build time (``tools/gen_ranges.py``); a text that differs from the one parsed
+        there (a user's catalogue, or a stale module) is parsed here."""
         try:
             return self._ranges[spec.id]
         except KeyError:
-            rng = parse_range(spec.range_text, spec.id) if spec.range_text else None
+            text = spec.range_text
+            if not text:
+                rng = None
+            else:
+                written = _compiled_ranges().get(spec.id)
+                rng = decode_range(written[1]) if written is not None and written[0] == text else \
+                    parse_range(text, spec.id)
             self._ranges[spec.id] = rng
             return rng
 
@@ -378,31 +403,50 @@ def _letters_in_order(stem: str, name: str) -> bool:
     return all(c in it for c in stem)
 
 
-def _counts(registry: Registry) -> dict[str, tuple[tuple[str, int], ...]]:
-    """Every counted parameter → its counts (ID, the index each counts); see ``counted_by``. Read from
-    the keys alone (a lazy table builds no parameter for it): only the few counts are built."""
-    out: dict[str, tuple[tuple[str, int], ...]] = {"": ()}  # never empty once built
-    specs = registry.specs
-    triples = list(specs.keys_by_kind()) if isinstance(specs, SpecTable) else \
+def _triples(specs: Mapping[str, ParamSpec]) -> Iterable[tuple[str, str, str]]:
+    """(ID, kind, key) of every parameter with a key (from a lazy table's rows: no parameter built)."""
+    return specs.keys_by_kind() if isinstance(specs, SpecTable) else \
         [(s.id, s.kind, s.key) for s in specs.values() if s.key]
-    of_kind: dict[str, list[tuple[str, str]]] = {}  # each count is compared with its own kind's keys only
-    for pid, kind, key in triples:
-        of_kind.setdefault(kind, []).append((pid, key))
-    for count_id, count_kind, count_key in triples:
-        if not count_key.endswith("_anzahl"):
+
+
+def _counted(key: str, counters: Iterable[tuple[str, str, str, int]]) -> tuple[tuple[str, int], ...]:
+    """The counts (of its kind's ``counters``) that count the arrays of the parameter keyed ``key``."""
+    out: tuple[tuple[str, int], ...] = ()
+    for count_id, stem, parent, level in counters:
+        if not key.startswith(parent):
             continue
-        m = _COUNT_RE.search(count_key)
-        if m is None or not specs[count_id].type.startswith("UNS"):
-            continue
-        stem, parent = m.group(1), count_key[: m.start(1)]
-        for pid, key in of_kind[count_kind]:
-            if not key.startswith(parent):
-                continue
-            first = key[len(parent):].split(".")[0]
-            if first.endswith("[]") and first[:-2] != stem and first[0] == stem[0] and \
-                    _letters_in_order(stem, first[:-2]):
-                out[pid] = (*out.get(pid, ()), (count_id, parent.count("[]")))
+        first = key[len(parent):].split(".")[0]
+        if first.endswith("[]") and first[:-2] != stem and first[0] == stem[0] and \
+                _letters_in_order(stem, first[:-2]):
+            out = (*out, (count_id, level))
     return out
+
+
+def _counts(registry: Registry) -> dict[str, tuple[tuple[str, int], ...]]:
+    """Every counted parameter → its counts (ID, the index each counts); see ``counted_by``, which
+    answers one parameter at a time. Read from the keys alone (a lazy table builds no parameter
+    for it): only the few counts are built."""
+    out: dict[str, tuple[tuple[str, int], ...]] = {"": ()}
+    counters = registry._counters()
+    for pid, kind, key in _triples(registry.specs):
+        got = _counted(key, counters.get(kind, ()))
+        if got:
+            out[pid] = got
+    return out
+
+
+_COMPILED_RANGES: dict[str, tuple[str, Any]] = {}
+
+
+def _compiled_ranges() -> dict[str, tuple[str, Any]]:
+    """ID → (range text, that text parsed, encoded by :func:`~zero.catalog.ranges.encode_range`) of
+    the built-in catalogue, written by ``tools/gen_ranges.py``."""
+    if not _COMPILED_RANGES:
+        from zero.catalog.data.ranges_compiled import RANGES  # start-up: written at build time, at the first range
+
+        _COMPILED_RANGES.update(RANGES)
+        _COMPILED_RANGES.setdefault("", ("", None))  # never empty once read
+    return _COMPILED_RANGES
 
 
 def _spec_from_row(row: dict[str, Any], index_base: dict[str, int]) -> ParamSpec:
@@ -446,9 +490,9 @@ def _overlay() -> dict[str, Any]:
 def build_registry(rows: list[dict[str, Any]], source: str) -> Registry:
     """Combine table rows with the seed overlay into a :class:`Registry`."""
     overlay = _overlay()
-    by_id = {r["id"]: dict(r) for r in rows}
+    by_id = {r["id"]: r for r in rows}  # the rows are shared, never changed: a row the overlay changes is copied
     for pid, extra in overlay.get("params", {}).items():
-        row = by_id.setdefault(pid, {"id": pid, "kind": pid[2:6], "type": "STRING"})
+        row = by_id[pid] = dict(by_id.get(pid) or {"id": pid, "kind": pid[2:6], "type": "STRING"})
         if "description" in extra and row.get("vendor_text"):
             row["vendor_text"] = None
         row.update(extra)

@@ -1,0 +1,46 @@
+"""The built-in catalogue's ranges parsed at build time (tools/gen_ranges.py, issue 40: start-up)."""
+
+from __future__ import annotations
+
+import importlib.util
+from pathlib import Path
+from types import ModuleType
+
+from zero.catalog.data.ranges_compiled import RANGES
+from zero.catalog.ranges import decode_range, encode_range, parse_range
+from zero.catalog.registry import ParamSpec, load_registry
+
+ROOT = Path(__file__).resolve().parents[2]
+
+
+def _generator() -> ModuleType:
+    spec = importlib.util.spec_from_file_location("gen_ranges", ROOT / "tools" / "gen_ranges.py")
+    assert spec is not None and spec.loader is not None
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+def test_the_generated_module_is_up_to_date() -> None:
+    """Run ``python tools/gen_ranges.py`` after regenerating table.py or seeds.py."""
+    written = (ROOT / "src" / "zero" / "catalog" / "data" / "ranges_compiled.py").read_text(encoding="utf-8")
+    assert written == _generator().render()  # type: ignore[attr-defined]
+
+
+def test_each_written_range_is_what_its_text_parses_to() -> None:
+    assert len(RANGES) > 500
+    for pid, (text, data) in RANGES.items():
+        parsed, written = parse_range(text, pid), decode_range(data)
+        assert written == parsed and repr(written) == repr(parsed), pid  # 1 and 1.0 are not the same here
+        assert encode_range(parsed) == data
+
+
+def test_the_registry_reads_the_written_range_and_parses_a_text_it_does_not_have() -> None:
+    registry = load_registry()
+    pid = next(p for p, (_, data) in RANGES.items() if data is not None)
+    assert registry.range_of(registry.specs[pid]) == decode_range(RANGES[pid][1])
+    # the same ID with another text (a user's catalogue, a stale module): parsed, never the written one
+    other = ParamSpec(id=pid, kind=pid[2:6], key="x", type="SGN32", range_text="0 ≤ x ≤ 7")
+    fresh = load_registry()
+    rng = fresh.range_of(other)
+    assert rng == parse_range("0 ≤ x ≤ 7", pid) and rng != decode_range(RANGES[pid][1])
