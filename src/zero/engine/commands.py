@@ -15,6 +15,7 @@ from pathlib import Path
 
 from zero.catalog.registry import KINDS, Registry, kind_from_name
 from zero.diagnostics import Diagnostic, Severity
+from zero.engine.config import one_resolution
 from zero.engine.discovery import collect_files, skipped_note
 from zero.engine.lint import (
     LintOptions,
@@ -133,6 +134,12 @@ def lint_files(named: Sequence[Path], project: Project, force_exclude: bool = Tr
 def run_lint(request: LintRequest, registries: Registries, echo: Echo,
              read_stdin: Callable[[], bytes], progress: Callable[[int], Progress | None] | None = None) -> LintRun:
     """``zero lint``: lint files, a machine or standard input; apply or show fixes."""
+    with one_resolution():  # the files of a folder resolve it once (which patterns match them, settings)
+        return _run_lint(request, registries, echo, read_stdin, progress)
+
+
+def _run_lint(request: LintRequest, registries: Registries, echo: Echo,
+              read_stdin: Callable[[], bytes], progress: Callable[[int], Progress | None] | None) -> LintRun:
     cli = LintOptions(select=parse_codes(request.select), ignore=parse_codes(request.ignore),
                       kind=parse_kind(request.kind), extend_select=parse_codes(request.extend_select),
                       ignore_noqa=request.ignore_noqa)

@@ -14,10 +14,11 @@ the reference of docs/configuration.md and ``zero.schema.json`` are made from it
 
 from __future__ import annotations
 
+import contextlib
 import functools
 import os
 import re
-from collections.abc import Callable
+from collections.abc import Callable, Iterator
 from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
@@ -90,6 +91,48 @@ def _resolved(file: Path) -> Path:
     return file.parent.resolve() / file.name
 
 
+# While a command runs (:func:`one_resolution`): a folder as named → the folder resolved, so that
+# the files of one folder resolve it once (a fleet of 630 lists: 1,350 `realpath` calls, 30% of a
+# run answered from the cache). Only for the span of a command: a link may change between two
+# requests of the language server.
+_RESOLVED: list[dict[str, str]] = []
+
+
+@contextlib.contextmanager
+def one_resolution() -> Iterator[None]:
+    """Within the block, each folder is resolved once (the first answer is kept till it ends)."""
+    _RESOLVED.append(_RESOLVED[-1] if _RESOLVED else {})
+    try:
+        yield
+    finally:
+        _RESOLVED.pop()
+
+
+def _resolved_folder(folder: Path) -> str:
+    if not _RESOLVED:
+        return str(folder.resolve())
+    memo = _RESOLVED[-1]
+    name = str(folder)
+    hit = memo.get(name)
+    if hit is None:
+        hit = memo[name] = str(folder.resolve())
+    return hit
+
+
+@functools.lru_cache(maxsize=64)
+def _suffixes(globs: tuple[str, ...]) -> tuple[str, ...] | None:
+    """The suffixes of patterns that are all ``*.suffix`` (the default ``include``), else ``None``:
+    such a pattern matches a path one of whose parts ends with the suffix (gitignore's meaning,
+    checked against pathspec), without importing pathspec (24 ms)."""
+    out = []
+    for g in globs:
+        tail = g[1:]
+        if not g.startswith("*.") or not tail or any(c in tail for c in "*?[]\\!/# \t\r\n\f\v"):
+            return None
+        out.append(tail)
+    return tuple(out)
+
+
 @record
 class Config:
     path: Path | None = None  # the file it came from; None: defaults
@@ -122,10 +165,19 @@ class Config:
         return self.path.parent if self.path is not None else Path.cwd()
 
     def relative(self, file: Path) -> str | None:
-        try:
-            return _resolved(file).relative_to(self.root.resolve()).as_posix()
-        except ValueError:
+        if os.sep != "/" or os.altsep is not None:  # pragma: no cover - Windows: its paths' own rules
+            try:
+                return _resolved(file).relative_to(self.root.resolve()).as_posix()
+            except ValueError:
+                return None
+        folder, root = _resolved_folder(file.parent), _resolved_folder(self.root)
+        name = file.name
+        if folder == root:
+            return name if name else "."
+        head = root if root.endswith("/") else root + "/"
+        if not folder.startswith(head):
             return None
+        return folder[len(head):] + "/" + name if name else folder[len(head):]
 
     def _matches(self, globs: tuple[str, ...], file: Path) -> bool:
         """gitignore's meaning: a pattern with a `/` is anchored at the configuration's
@@ -133,7 +185,11 @@ class Config:
         if not globs:
             return False
         rel = self.relative(file)
-        return patterns(globs).match_file(rel if rel is not None else file.name)
+        name = rel if rel is not None else file.name
+        suffixes = _suffixes(globs)
+        if suffixes is not None and "\n" not in name and not name.startswith("/"):
+            return any(part.endswith(suffixes) for part in name.split("/"))
+        return patterns(globs).match_file(name)
 
     def _own(self, key: str) -> bool:
         """Does this file decide ``key`` (set here, or nothing inherited)?"""

@@ -1,0 +1,84 @@
+"""The configuration's fast paths answer as the slow ones: ``*.suffix`` patterns (the default
+``include``) without pathspec, and folders resolved once per command (:func:`one_resolution`)."""
+
+from __future__ import annotations
+
+import os
+from pathlib import Path
+
+import pathspec
+import pytest
+from hypothesis import given, settings
+from hypothesis import strategies as st
+
+from zero.engine.config import Config, _resolved, _suffixes, one_resolution, patterns
+from zero.forms import DEFAULT_INCLUDE
+
+_PARTS = st.lists(st.sampled_from(["a", ".lis", "x.lis", ".nc", "nc", "*", "[", "\\", " ", "ü", ".", "..", "",
+                                   ".XML", ".xml", "lis", "#", "!"]), max_size=6)
+
+
+@given(st.lists(_PARTS, max_size=4))
+@settings(max_examples=400)
+def test_suffix_patterns_match_as_pathspec(parts: list[list[str]]) -> None:
+    name = "/".join("".join(p) for p in parts)
+    if name.startswith("/") or "\n" in name:  # left to pathspec by _matches
+        return
+    suffixes = _suffixes(DEFAULT_INCLUDE)
+    assert suffixes is not None
+    spec = pathspec.GitIgnoreSpec.from_lines(list(DEFAULT_INCLUDE))
+    assert any(part.endswith(suffixes) for part in name.split("/")) == spec.match_file(name)
+
+
+@pytest.mark.parametrize("globs", [("*.lis", "old/"), ("*.li?",), ("*.[lL]is",), ("**/*.lis",), ("*",), ("*lis",),
+                                   ("!*.lis",), ("*.lis ",)])
+def test_other_patterns_go_to_pathspec(globs: tuple[str, ...]) -> None:
+    assert _suffixes(globs) is None
+
+
+def test_default_include_is_a_suffix_pattern() -> None:
+    assert _suffixes(DEFAULT_INCLUDE) == tuple(g[1:] for g in DEFAULT_INCLUDE)
+
+
+def test_matching_is_the_same_inside_and_outside_one_resolution(tmp_path: Path, monkeypatch: pytest.MonkeyPatch
+                                                                 ) -> None:
+    (tmp_path / "proj" / "sub.lis").mkdir(parents=True)
+    (tmp_path / "proj" / "real").mkdir()
+    (tmp_path / "proj" / "link").symlink_to(tmp_path / "proj" / "real")
+    (tmp_path / "elsewhere").mkdir()
+    cfg_file = tmp_path / "proj" / "zero.toml"
+    cfg_file.write_text("")
+    monkeypatch.chdir(tmp_path / "proj")
+    files = [Path("a.lis"), Path("sub.lis/x.txt"), Path("link/m.lis"), Path("real/m.nc"), Path("real/m.txt"),
+             tmp_path / "elsewhere" / "o.lis", tmp_path / "elsewhere" / "o.txt", Path("../elsewhere/o.xml"),
+             Path(str(tmp_path / "proj") + "//real/./m.lis")]
+    for cfg in (Config(path=cfg_file), Config()):
+        expected = []
+        for f in files:
+            try:
+                rel: str | None = _resolved(f).relative_to(cfg.root.resolve()).as_posix()
+            except ValueError:
+                rel = None
+            expected.append((rel, patterns(DEFAULT_INCLUDE).match_file(rel if rel is not None else f.name)))
+        assert [(cfg.relative(f), cfg.included(f)) for f in files] == expected
+        with one_resolution():
+            assert [(cfg.relative(f), cfg.included(f)) for f in files] == expected
+            assert [(cfg.relative(f), cfg.included(f)) for f in files] == expected
+
+
+def test_one_resolution_ends_with_its_block(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """A link changed after a command is seen by the next (the language server lives long)."""
+    (tmp_path / "a").mkdir()
+    (tmp_path / "b").mkdir()
+    (tmp_path / "b" / "zero.toml").write_text("")
+    link = tmp_path / "l"
+    link.symlink_to(tmp_path / "a")
+    cfg = Config(path=tmp_path / "b" / "zero.toml")
+    with one_resolution():
+        assert cfg.relative(link / "m.lis") is None
+    link.unlink()
+    link.symlink_to(tmp_path / "b")
+    assert cfg.relative(link / "m.lis") == "m.lis"
+    with one_resolution():
+        assert cfg.relative(link / "m.lis") == "m.lis"
+    assert os.path.islink(link)
