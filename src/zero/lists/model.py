@@ -9,9 +9,12 @@ from __future__ import annotations
 
 import enum
 import re
+from array import array
+from collections.abc import Callable, Iterator
+from itertools import accumulate
 
 from zero.forms import XML_ROOTS, root_of
-from zero.records import field, record
+from zero.records import Field, record
 
 # An index with more digits than this is not converted to an int: it is clamped
 # to HUGE_INDEX, which lies beyond every array size, and reported as such.
@@ -211,6 +214,12 @@ class Invalid:
 Item = Entry | Comment | Blank | End | Invalid
 
 
+def _F(name: str) -> Field:
+    f = Field()
+    f.name = name
+    return f
+
+
 @record(frozen=True)
 class Problem:
     """A fault the tokenizer saw, named by ``kind``; :mod:`zero.rules` gives it a code."""
@@ -256,44 +265,367 @@ class Origin:
         return target, tag_col + 1 + (name_len if end else 0)
 
 
-@record(eq=False)
-class Document:
-    """A whole list file as read: its lines, items, encoding and line endings."""
+class Columns:
+    """The entries the controller reads (before ``Ende``), one row each, in line order: what
+    :attr:`Document.entries` holds, as arrays and tables of distinct values instead of one object per
+    entry (issue 40). A rule that looks at every entry loops over the arrays (or over a table: one
+    check per distinct pattern, value or comment) and builds an :class:`Entry` with
+    :meth:`Document.entry_at` only for the rows it reports.
 
-    path: str
-    encoding: str
-    lines: list[str]
-    endings: list[str]
-    items: list[Item]
-    problems: list[Problem] = field(default_factory=list)
-    bom: bool = False
-    end_line: int | None = None
-    origin: Origin | None = None  # where the lines came from, when not from a list file
+    Per row (``len(columns)`` rows): ``line`` (1-based), ``shape`` (into ``shapes``: the key without its
+    first index), ``first`` (the key's first index, ``-1`` when its shape has none), ``pattern`` (into
+    ``patterns``: the key as the registry spells it, ``wz[].laenge``), ``value`` (into ``values``,
+    ``kinds``), ``comment`` (into ``comments``, ``styles``, ``notes``, ``note_at``; ``-1``: none).
+    A key is ``shape.head + f"[{first}]" + shape.tail`` (``head + tail`` without a first index);
+    its indices ``(first, *shape.indices)`` (``shape.indices``). A snapshot: built once, not updated
+    when entries are changed afterwards.
+    """
+
+    __slots__ = ("_comment_ids", "_pattern_ids", "_shape_ids", "_value_ids", "comment", "comments", "first",
+                 "kinds", "line", "note_at", "notes", "objects", "pattern", "patterns", "shape", "shapes", "styles",
+                 "value", "values")
+
+    def __init__(self) -> None:
+        self.line = array("i")
+        self.shape = array("i")
+        self.first = array("q")
+        self.pattern = array("i")
+        self.value = array("i")
+        self.comment = array("i")
+        self.shapes: list[Shape] = []
+        self.patterns: list[str] = []
+        self.values: list[str] = []
+        self.kinds: list[ValueKind | None] = []
+        self.comments: list[str] = []
+        self.styles: list[CommentStyle] = []
+        self.notes: list[str | None] = []  # the annotation (`( P-TOOL-00005 …`) a comment holds
+        self.note_at: list[int] = []  # its column in the comment (-1: none)
+        # rows whose Entry exists (scanned the careful way, or built on demand): row -> Entry
+        self.objects: dict[int, Entry] = {}
+        self._shape_ids: dict[tuple[str, bool, str], int] = {}
+        self._pattern_ids: dict[str, int] = {}
+        self._value_ids: dict[str, int] = {}
+        self._comment_ids: dict[str, int] = {}
+
+    def __len__(self) -> int:
+        return len(self.line)
+
+    def __repr__(self) -> str:
+        return f"Columns({len(self)} rows, {len(self.shapes)} shapes, {len(self.values)} values)"
+
+    # --- reading a row
+    def key_text(self, row: int) -> str:
+        shape = self.shapes[self.shape[row]]
+        first = self.first[row]
+        return shape.head + shape.tail if first < 0 else f"{shape.head}[{first}]{shape.tail}"
+
+    def indices(self, row: int) -> tuple[int, ...]:
+        shape = self.shapes[self.shape[row]]
+        first = self.first[row]
+        return shape.indices if first < 0 else (first, *shape.indices)
+
+    def key(self, row: int) -> Key:
+        return Key(self.key_text(row), self.patterns[self.pattern[row]], self.indices(row))
+
+    def value_text(self, row: int) -> str:
+        return self.values[self.value[row]]
+
+    def value_kind(self, row: int) -> ValueKind | None:
+        return self.kinds[self.value[row]]
+
+    def comment_text(self, row: int) -> str | None:
+        at = self.comment[row]
+        return self.comments[at] if at >= 0 else None
+
+    def rows_of_pattern(self) -> dict[int, list[int]]:
+        """Pattern id -> its rows, in order (one pass)."""
+        out: dict[int, list[int]] = {}
+        for row, pid in enumerate(self.pattern):
+            got = out.get(pid)
+            if got is None:
+                out[pid] = [row]
+            else:
+                got.append(row)
+        return out
+
+    # --- building
+    def shape_id(self, head: str, indexed: bool, tail: str) -> int:
+        """The id of the shape ``head[first]tail`` (``head + tail``: ``indexed`` False), added when new.
+        ``head`` and ``tail`` must be a key's parts as :func:`parse_key` accepts it."""
+        got = self._shape_ids.get((head, indexed, tail))
+        if got is not None:
+            return got
+        tail_pattern, tail_indices = _part(tail)
+        if indexed:
+            pattern = head + "[]" + tail_pattern
+        else:  # no index after the head: the whole key (`kenngr.swe_pos`, `wz[01].x` with its zero)
+            pattern, tail_indices = _part(head + tail) if "[" in tail else (head + tail_pattern, tail_indices)
+        pid = self._pattern_ids.get(pattern)
+        if pid is None:
+            pattern = _patterns.get(pattern) or (
+                _patterns.setdefault(pattern, pattern) if len(_patterns) < _CACHE_LIMIT else pattern)
+            pid = self._pattern_ids[pattern] = len(self.patterns)
+            self.patterns.append(pattern)
+        got = self._shape_ids[(head, indexed, tail)] = len(self.shapes)
+        self.shapes.append(Shape(head, tail, pid, tail_indices, indexed))
+        return got
+
+    def value_id(self, value: str, kind: ValueKind | None) -> int:
+        got = self._value_ids.get(value)
+        if got is not None and self.kinds[got] is kind:
+            return got
+        at = len(self.values)
+        if got is None:
+            self._value_ids[value] = at
+        self.values.append(value)
+        self.kinds.append(kind)
+        return at
+
+    def comment_id(self, comment: str | None, style: CommentStyle | None = None, note: str | None = None,
+                   note_at: int = -1) -> int:
+        if comment is None:
+            return -1
+        got = self._comment_ids.get(comment)
+        if got is not None:
+            return got
+        got = self._comment_ids[comment] = len(self.comments)
+        self.comments.append(comment)
+        self.styles.append(style if style is not None else CommentStyle.TEXT)
+        self.notes.append(note)
+        self.note_at.append(note_at)
+        return got
+
+    def add_entry(self, entry: Entry) -> int:
+        """Append an entry built as an object (the careful scanner's, or a document's items): its row."""
+        row = len(self.line)
+        text = entry.key_text
+        cut = text.find("[")
+        close = text.find("]", cut) if cut >= 0 else -1
+        digits = text[cut + 1:close] if close > cut >= 0 else ""
+        if (entry.key is not None and digits.isdigit() and digits.isascii() and len(digits) <= MAX_INDEX_DIGITS
+                and (digits == "0" or digits[0] != "0")):
+            shape = self.shape_id(text[:cut], True, text[close + 1:])
+            first = int(digits)
+        else:
+            shape = self.shape_id(text, False, "") if entry.key is not None else self._keyless(text)
+            first = -1
+        self.line.append(entry.line)
+        self.shape.append(shape)
+        self.first.append(first)
+        self.pattern.append(self.shapes[shape].pattern)
+        self.value.append(self.value_id(entry.value, entry.value_kind))
+        note_at = entry.annotation_start - entry.comment_start if entry.annotation_start >= 0 else -1
+        self.comment.append(self.comment_id(entry.comment, entry.comment_style, entry.annotation, note_at))
+        self.objects[row] = entry
+        return row
+
+    def _keyless(self, text: str) -> int:
+        got = self._shape_ids.get((text, False, "\x00"))
+        if got is None:
+            pid = self._pattern_ids.setdefault(text, len(self.patterns))
+            if pid == len(self.patterns):
+                self.patterns.append(text)
+            got = self._shape_ids[(text, False, "\x00")] = len(self.shapes)
+            self.shapes.append(Shape(text, "", pid, (), False))
+        return got
+
+    @classmethod
+    def of_entries(cls, entries: list[Entry]) -> Columns:
+        cols = cls()
+        for e in entries:
+            cols.add_entry(e)
+        return cols
+
+
+@record(eq=False)
+class Shape:
+    """A key without its first index: ``head`` (``wz``, ``kenngr.swe_pos``), then the index, then
+    ``tail`` (``.kinematic.param[3]``); ``indices`` are the tail's (all of the key's when not
+    ``indexed``), ``pattern`` an id into :attr:`Columns.patterns`."""
+
+    head: str
+    tail: str
+    pattern: int
+    indices: tuple[int, ...]
+    indexed: bool
+
+
+# Rebuilds an entry of a row the tokenizer read into columns only (zero.lists.tokenizer sets it).
+RowReader = Callable[["Document", int], Entry]
+row_readers: list[RowReader] = []
+
+
+_DOC_FIELDS = ("path", "encoding", "lines", "endings", "items", "problems", "bom", "end_line", "origin")
+
+
+class Document:
+    """A whole list file as read: its lines, items, encoding and line endings.
+
+    Read by the tokenizer, a document holds the decoded text and :class:`Columns` of its entries; its
+    ``lines``, ``endings``, ``items`` and ``entries`` are built on first use (then kept: the same objects
+    each time, and :meth:`entry_at` gives the object ``items`` holds). Built from lists (the other
+    forms, tests), ``columns`` are built from ``entries`` on first use.
+    """
+
+    __slots__ = ("_columns", "_endings", "_items", "_lines", "_slow", "_starts", "_text", "bom", "encoding",
+                 "end_line", "line_count", "origin", "path", "problems")
+    __record_fields__ = tuple(_F(n) for n in _DOC_FIELDS)  # records.replace() and fields() read documents
+
+    def __init__(self, path: str, encoding: str, lines: list[str] | None, endings: list[str] | None,
+                 items: list[Item] | None, problems: list[Problem] | None = None, bom: bool = False,
+                 end_line: int | None = None, origin: Origin | None = None) -> None:
+        self.path = path
+        self.encoding = encoding
+        self._lines = lines
+        self._endings = endings
+        self._items = items
+        self.problems = problems if problems is not None else []
+        self.bom = bom
+        self.end_line = end_line
+        self.origin = origin
+        self._text: str | None = None
+        self._columns: Columns | None = None
+        self._slow: list[Item] = []
+        self._starts: array[int] | None = None
+        self.line_count = len(lines) if lines is not None else 0
+
+    @classmethod
+    def columnar(cls, path: str, encoding: str, text: str, line_count: int, columns: Columns, slow: list[Item],
+                 problems: list[Problem], bom: bool, end_line: int | None) -> Document:
+        """A document the tokenizer read: ``slow`` are the items of the lines it did not read into
+        columns (comments, blank lines, entries read the careful way, which ``columns`` holds too),
+        in line order."""
+        doc = cls(path, encoding, None, None, None, problems, bom, end_line)
+        doc._text = text
+        doc._columns = columns
+        doc._slow = slow
+        doc.line_count = line_count
+        return doc
+
+    def __repr__(self) -> str:
+        return f"{type(self).__name__}(path={self.path!r}, encoding={self.encoding!r}, lines={self.line_count})"
+
+    # --- the lazy parts
+    @property
+    def text(self) -> str | None:
+        """The decoded text the tokenizer read (``None`` for a document built from lines)."""
+        return self._text
+
+    @property
+    def lines(self) -> list[str]:
+        if self._lines is None:
+            self._lines = _split_lines(self._text or "")
+        return self._lines
+
+    @lines.setter
+    def lines(self, value: list[str]) -> None:
+        self._lines = value
+        self.line_count = len(value)
+        self._starts = None
+
+    @property
+    def endings(self) -> list[str]:
+        if self._endings is None:
+            text = self._text or ""
+            n = self.line_count
+            if "\r" not in text:
+                self._endings = ["\n"] * n
+                if n and not text.endswith("\n"):
+                    self._endings[-1] = ""
+            else:
+                self._endings = [("\r\n" if s.endswith("\r") else "\n") for s in text.split("\n")[:n]]
+                if n and not text.endswith("\n"):
+                    self._endings[-1] = ""
+        return self._endings
+
+    @endings.setter
+    def endings(self, value: list[str]) -> None:
+        self._endings = value
+
+    @property
+    def items(self) -> list[Item]:
+        if self._items is None:
+            self._items = list(self._stream())
+        return self._items
+
+    @items.setter
+    def items(self, value: list[Item]) -> None:
+        self._items = value
+        self._columns = None  # built again from these items when asked for
+
+    @property
+    def columns(self) -> Columns:
+        """The entries as columns (built from ``entries`` for a document the tokenizer did not read)."""
+        if self._columns is None:
+            self._columns = Columns.of_entries(self.entries)
+        return self._columns
+
+    def entry_at(self, row: int) -> Entry:
+        """The entry of a row of :attr:`columns`: the same object each time, and the one ``items`` holds."""
+        cols = self.columns
+        got = cols.objects.get(row)
+        if got is None:
+            got = cols.objects[row] = row_readers[0](self, row)
+        return got
+
+    def _stream(self) -> Iterator[Item]:
+        """The items in line order, each built when reached."""
+        if self._items is not None:
+            yield from self._items
+            return
+        cols = self._columns
+        slow = self._slow
+        if cols is None:
+            yield from slow
+            return
+        at = 0
+        count = len(slow)
+        for row, line in enumerate(cols.line):
+            while at < count and slow[at].line < line:
+                yield slow[at]
+                at += 1
+            if at < count and slow[at].line == line:  # an entry read the careful way
+                yield slow[at]
+                at += 1
+            else:
+                yield self.entry_at(row)
+        yield from slow[at:]
 
     @property
     def entries(self) -> list[Entry]:
         """The entries the controller reads (before ``Ende``)."""
+        if self._items is None and self._columns is not None:
+            return [self.entry_at(row) for row in range(len(self._columns))]
         return [i for i in self.items if type(i) is Entry and not i.after_end]
 
     @property
     def newline(self) -> str:
         """The dominant line ending ("\\n" when the file has none)."""
-        crlf = sum(1 for e in self.endings if e == "\r\n")
-        lf = sum(1 for e in self.endings if e == "\n")
+        if self._endings is None and self._text is not None:
+            crlf = self._text.count("\r\n")
+            lf = self._text.count("\n") - crlf
+        else:
+            crlf = sum(1 for e in self.endings if e == "\r\n")
+            lf = sum(1 for e in self.endings if e == "\n")
         return "\r\n" if crlf > lf else "\n"
 
     def line_text(self, line: int) -> str:
-        if 1 <= line <= len(self.lines):
+        if not 1 <= line <= self.line_count:
+            return ""
+        if self._lines is not None or self._text is None:
             return self.lines[line - 1]
-        return ""
+        if self._starts is None:
+            self._starts = array("q", accumulate(map((1).__add__, map(len, self._text.split("\n"))), initial=0))
+        got = self._text[self._starts[line - 1]:self._starts[line] - 1]
+        return got[:-1] if got.endswith("\r") and self._starts[line] <= len(self._text) else got
 
     def holds_xml_lines(self) -> bool:
         """Was this list text written from an XML list (do its first comment lines hold the XML lines,
         `# <?xml …`, `# <AX_MDS>`)? It is then written back as that XML, and its root says its kind."""
-        for item in self.items:
+        for item in self._stream():
             if type(item) is Blank:
                 continue
-            line = self.lines[item.line - 1]
+            line = self.line_text(item.line)
             text = line.lstrip("# \ufeff")
             return type(item) is Comment and line.startswith("# ") and text.startswith("<") and (
                 text[1:2] in ("?", "!") or text[1:2].isalpha())
@@ -308,10 +640,10 @@ class Document:
         if not self.holds_xml_lines():
             return None
         held: list[str] = []  # the XML its leading comment lines hold: its root is the first element
-        for seen, item in enumerate(i for i in self.items if type(i) is not Blank):  # outside XML comments
+        for seen, item in enumerate(i for i in self._stream() if type(i) is not Blank):  # outside XML comments
             if type(item) is not Comment or seen > 64:  # (`<AX_MDS>` inside `<!-- … -->` is none)
                 break
-            line = self.lines[item.line - 1]
+            line = self.line_text(item.line)
             held.append(line[2:] if line.startswith("# ") else line[1:])
         root = root_of("\n".join(held).encode("utf-8", "surrogateescape"))
         return XML_ROOTS.get(root) if root is not None else None
@@ -321,15 +653,35 @@ class Document:
         return self.origin.locate(line, 1)[0] if self.origin is not None else line
 
     def has_line(self, line: int) -> bool:
-        return 1 <= line <= len(self.lines)
+        return 1 <= line <= self.line_count
 
 
-@record(eq=False)
+def _split_lines(text: str) -> list[str]:
+    """The lines of a text without their endings (as :func:`zero.lists.tokenizer.split_lines`)."""
+    lines = text.split("\n")
+    if lines and lines[-1] == "":
+        lines.pop()
+        if "\r" in text:
+            return [s[:-1] if s.endswith("\r") else s for s in lines]
+        return lines
+    if "\r" in text:
+        return [s[:-1] if s.endswith("\r") else s for s in lines[:-1]] + lines[-1:]
+    return lines
+
+
 class Excerpt(Document):
     """A document reduced to the lines its findings show: what a report of many files keeps of
     each, so that memory grows with the findings, not with the files' lines."""
 
-    shown: dict[int, str] = field(default_factory=dict)
+    __slots__ = ("shown",)
+    __record_fields__ = tuple(_F(n) for n in (*_DOC_FIELDS, "shown"))
+
+    def __init__(self, path: str, encoding: str, lines: list[str] | None, endings: list[str] | None,
+                 items: list[Item] | None, problems: list[Problem] | None = None, bom: bool = False,
+                 end_line: int | None = None, origin: Origin | None = None,
+                 shown: dict[int, str] | None = None) -> None:
+        super().__init__(path, encoding, lines, endings, items, problems, bom, end_line, origin)
+        self.shown = shown if shown is not None else {}
 
     def line_text(self, line: int) -> str:
         return self.shown.get(line, "")

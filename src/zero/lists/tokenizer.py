@@ -18,6 +18,7 @@ import re
 from zero.lists.encoding import decode
 from zero.lists.model import (
     Blank,
+    Columns,
     Comment,
     CommentStyle,
     Document,
@@ -28,6 +29,7 @@ from zero.lists.model import (
     Problem,
     ValueKind,
     parse_key,
+    row_readers,
     scanned_key,
 )
 
@@ -284,9 +286,223 @@ def split_lines(text: str) -> tuple[list[str], list[str]]:
     return lines, endings
 
 
+# The common entry line over the whole text, one match per line (the lines _FAST_ENTRY_RE would match,
+# or fewer): the key as 1 its names up to the first index, 2 that index (no leading zero) and 3 the rest
+# from the index's `]` on (loose here: checked once per distinct key shape); 4 the value; 5 the comment;
+# else 6 the line.
+_ROW_RE = re.compile(
+    r"(?:[ \t]*([A-Za-z_][A-Za-z0-9_.]*)(?:\[(0|[1-9][0-9]{0,17})(\][A-Za-z0-9_.\[\]]*))?"
+    r"[ \t]+([^\s\"|.\[\]][^\s|]*)(?:[ \t]+([^\s|][^\r\n]*)|[ \t]*)(?:\r?(?=\n)|\Z)|([^\n]*))\n?")
+_NAME_RE = re.compile(r"[A-Za-z_][A-Za-z0-9_]*(?:\.[A-Za-z0-9_]+)*")
+_TAIL_RE = re.compile(r"(?:\[[0-9]+\])*(?:\.[A-Za-z0-9_]+(?:\[[0-9]+\])*)*")
+_CHUNK = 1 << 18  # characters of text read per pattern call: bounded memory for the match tuples
+
+
+def _fast_entry(m: re.Match[str], number: int, value: str, kind: ValueKind | None,
+                notes: dict[str, tuple[str, CommentStyle, str | None, int]] | None) -> Entry:
+    """The entry of a line ``_FAST_ENTRY_RE`` matched (its key is no ``Ende``)."""
+    key_text, name, first, tail, comment = m.group(1, 2, 3, 4, 6)
+    ks, ke = m.span(1)
+    vs, ve = m.span(5)
+    key = scanned_key(key_text, name, first, tail)
+    if comment is None:
+        return Entry(number, key_text, key_text, key, ks, ke, value, kind, vs, ve)
+    known = notes.get(comment) if notes is not None else None
+    if known is None:
+        am = _ANNOTATION_RE.search(comment) if "P-" in comment else None
+        known = (comment, _STYLE_OF.get(comment[0]) or comment_style(comment),
+                 am.group(1) if am is not None else None, am.start(1) if am is not None else -1)
+        if notes is not None and len(notes) < 4096:
+            notes[comment] = known
+    comment, style, note, at = known
+    cs = m.start(6)
+    return Entry(number, key_text, key_text, key, ks, ke, value, kind, vs, ve, comment, cs, style, note,
+                 cs + at if at >= 0 else -1)
+
+
+def _value_kind(value: str) -> ValueKind:
+    km = _KIND_RE.fullmatch(value)
+    return _KIND_OF[km.lastgroup] if km is not None and km.lastgroup else ValueKind.WORD
+
+
+def _read_row(doc: Document, row: int) -> Entry:
+    """The entry of a row the tokenizer read into columns only: the line read again, as it was."""
+    cols = doc.columns
+    number = cols.line[row]
+    m = _FAST_ENTRY_RE.match(doc.line_text(number))
+    assert m is not None, (doc.path, number)
+    at = cols.value[row]
+    entry = _fast_entry(m, number, cols.values[at], cols.kinds[at], None)
+    cid = cols.comment[row]
+    if cid >= 0:  # the comment the table keeps, not a copy per entry
+        entry.comment = cols.comments[cid]
+    return entry
+
+
+row_readers.append(_read_row)
+
+
+class _Reader:
+    """The state of reading a text into columns; lines the columns do not take are read as before."""
+
+    def __init__(self, text: str) -> None:
+        self.text = text
+        self.cols = Columns()
+        self.slow: list[Item] = []
+        self.problems: list[Problem] = []
+        self.end_line: int | None = None
+        self.after_end_reported = False
+        # (names, `]` and the rest of the key after the first index) -> shape id, -1: not read into columns
+        self.shapes: dict[tuple[str, str], int] = {("", ""): -1}
+        self.firsts: dict[str, int] = {"": -1}
+        self.values: dict[str, int] = {}
+        self.comments: dict[str, int] = {"": -1}
+        self.shape_pattern: list[int] = []
+
+    def _shape(self, key: tuple[str, str]) -> int:
+        name, tail = key
+        if not _NAME_RE.fullmatch(name) or not _TAIL_RE.fullmatch(tail, 1) or (name == END_KEYWORD and not tail):
+            return -1
+        got = self.cols.shape_id(name, bool(tail), tail[1:])
+        while len(self.shape_pattern) <= got:
+            self.shape_pattern.append(self.cols.shapes[len(self.shape_pattern)].pattern)
+        return got
+
+    def read(self) -> None:
+        text = self.text
+        n = len(text)
+        pos = 0
+        number = 1
+        cols = self.cols
+        shapes, firsts, values, comments = self.shapes, self.firsts, self.values, self.comments
+        while pos < n:
+            end = text.find("\n", pos + _CHUNK)
+            end = n if end < 0 else end + 1
+            rows = _ROW_RE.findall(text, pos, end)
+            rows.pop()  # the empty match where the text (or this part) ends
+            names, first_texts, tails, value_texts, comment_texts, _ = zip(*rows, strict=True)
+            for k in dict.fromkeys(zip(names, tails, strict=True)):
+                if k not in shapes:
+                    shapes[k] = self._shape(k)
+            sids = list(map(shapes.__getitem__, zip(names, tails, strict=True)))
+            for f in dict.fromkeys(first_texts):
+                if f not in firsts:
+                    firsts[f] = int(f)
+            for v in dict.fromkeys(value_texts):
+                if v not in values:
+                    values[v] = cols.value_id(v, _value_kind(v)) if v else -1
+            for c in dict.fromkeys(comment_texts):
+                if c not in comments:
+                    am = _ANNOTATION_RE.search(c) if "P-" in c else None
+                    comments[c] = cols.comment_id(c, _STYLE_OF.get(c[0]) or comment_style(c),
+                                                  am.group(1) if am is not None else None,
+                                                  am.start(1) if am is not None else -1)
+            count = len(rows)
+            if self.end_line is None and -1 not in sids:  # every line an entry of the columns
+                cols.line.extend(range(number, number + count))
+                cols.shape.extend(sids)
+                cols.pattern.extend(map(self.shape_pattern.__getitem__, sids))
+                cols.first.extend(map(firsts.__getitem__, first_texts))
+                cols.value.extend(map(values.__getitem__, value_texts))
+                cols.comment.extend(map(comments.__getitem__, comment_texts))
+            else:
+                self._mixed(rows, sids, text[pos:end].split("\n"), number)
+            number += count
+            pos = end
+        self.line_count = number - 1
+
+    def _mixed(self, rows: list[tuple[str, ...]], sids: list[int], lines: list[str], number: int) -> None:
+        cols = self.cols
+        last = len(lines) - 1
+        for i, sid in enumerate(sids):
+            line = number + i
+            if sid >= 0 and self.end_line is None:
+                first, value, comment = rows[i][1], rows[i][3], rows[i][4]
+                cols.line.append(line)
+                cols.shape.append(sid)
+                cols.pattern.append(self.shape_pattern[sid])
+                cols.first.append(self.firsts[first])
+                cols.value.append(self.values[value])
+                cols.comment.append(self.comments[comment])
+                continue
+            s = lines[i]
+            if i < last and s.endswith("\r"):
+                s = s[:-1]
+            self._line(s, line)
+
+    def _line(self, s: str, number: int) -> None:
+        """A line the columns do not take, read as the tokenizer always did."""
+        m = _FAST_ENTRY_RE.match(s)
+        item: Item
+        if m is not None and self.end_line is None and m.group(1) != END_KEYWORD:
+            value = m.group(5)
+            item = _fast_entry(m, number, value, _value_kind(value), None)
+            self.cols.add_entry(item)
+            self.slow.append(item)
+            return
+        if s[:2] in _PLAIN_COMMENT or s == "#":
+            self.slow.append(Comment(number, s))
+            return
+        if not s.strip():
+            self.slow.append(Blank(number))
+            return
+        item = scan_line(s, number, self.problems)
+        if self.end_line is not None:
+            if type(item) is Entry:
+                item.after_end = True
+            if type(item) in (Entry, Invalid, End) and not self.after_end_reported:
+                self.after_end_reported = True
+                self.problems.append(Problem("after-end", number, 0, len(s), str(self.end_line)))
+        elif type(item) is End:
+            self.end_line = number
+        elif type(item) is Entry:
+            self.cols.add_entry(item)
+        self.slow.append(item)
+
+
 def tokenize_text(text: str, path: str = "-", encoding: str = "utf-8", bom: bool = False,
                   use_fast: bool = True, declared: bool = False) -> Document:
-    """Tokenize already decoded text; ``declared``: the configuration named its encoding."""
+    """Tokenize already decoded text; ``declared``: the configuration named its encoding.
+
+    The common entry lines go into the document's columns (one pattern over the whole text, no object
+    per line); the other lines are read one at a time. ``use_fast=False``: every line the careful way,
+    as objects (what the columns must agree with)."""
+    if not use_fast or "\x00" in text:  # a NUL ends a line where it stands: read line by line
+        return _tokenize_items(text, path, encoding, bom, use_fast, declared)
+    reader = _Reader(text)
+    reader.read()
+    doc = Document.columnar(path, encoding, text, reader.line_count, reader.cols, reader.slow, reader.problems,
+                            bom, reader.end_line)
+    _text_problems(doc, text, reader.problems, encoding if declared else None)
+    return doc
+
+
+def _text_problems(doc: Document, text: str, problems: list[Problem], declared: str | None) -> None:
+    """The problems of the text as a whole: control characters (or a binary file) and mixed line endings."""
+    end_line = doc.end_line
+    crlf = text.count("\r\n") if "\r" in text else 0
+    # the \r of each CRLF ending is no control character of a line
+    controls = _control_count(text) - crlf
+    if controls >= BINARY_MIN_CONTROLS and controls > len(text) * BINARY_SHARE and _C1_RE.search(text):
+        # C1 controls in comments are letters of another code page, not signs of a binary file
+        controls -= _c1_in_comments(doc.lines, doc.items, end_line)
+    if controls:
+        if controls >= BINARY_MIN_CONTROLS and controls > len(text) * BINARY_SHARE:
+            problems.append(Problem("binary", 1, 0, len(doc.line_text(1)), str(controls)))
+        else:
+            problems.extend(_controls(doc.lines, doc.items, end_line, declared))
+    if crlf and text.count("\n") > crlf:
+        endings = doc.endings
+        if "\r\n" in endings and "\n" in endings:
+            first = endings.index("\n" if endings[0] == "\r\n" else "\r\n")
+            width = len(doc.line_text(first + 1))
+            problems.append(Problem("mixed-endings", first + 1, width, width))
+    problems.sort(key=lambda p: (p.line, p.start))
+
+
+def _tokenize_items(text: str, path: str = "-", encoding: str = "utf-8", bom: bool = False,
+                  use_fast: bool = True, declared: bool = False) -> Document:
+    """Tokenize already decoded text into objects, line by line (``tokenize_text`` without columns)."""
     lines, endings = split_lines(text)
 
     problems: list[Problem] = []
