@@ -153,3 +153,22 @@ def test_the_lint_path_imports_no_module_it_does_not_use() -> None:
             "('dataclasses', 'inspect', 'ast', 'threading', 'signal') if m in sys.modules))")
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout
     assert out.strip() == "[]"
+
+
+def test_init_is_compiled_at_the_first_instance_and_then_called_directly() -> None:
+    @record
+    class Late:
+        a: int
+        b: list[int] = field(default_factory=list)
+
+    class Sub(Late):  # a plain subclass instantiated first compiles its record's __init__
+        pass
+
+    first = Late.__init__
+    assert Sub(1).a == 1 and Late.__init__ is not first  # the compiled one took its place
+    compiled = Late.__init__
+    x, y = Late(2), Late(3, [4])
+    assert (x.a, x.b, y.b) == (2, [], [4]) and x.b is not Late(5).b
+    assert Late.__init__ is compiled and Sub.__init__ is compiled
+    with pytest.raises(TypeError, match="missing 1 required positional argument: 'a'"):
+        Late()  # type: ignore[call-arg]
