@@ -15,6 +15,7 @@ import sys
 from collections.abc import Callable
 from typing import TYPE_CHECKING
 
+from zero.cli import GC_THRESHOLDS
 from zero.diagnostics import Severity
 from zero.engine.lint import Totals
 from zero.errors import ZeroError
@@ -63,14 +64,9 @@ def _quiet_stdout() -> None:
     os.dup2(os.open(os.devnull, os.O_WRONLY), sys.stdout.fileno())
 
 
-# A command builds one object per entry and frees little before it ends: the cycle collector's
-# default (a pass every 700 allocations, whole-heap passes as the heap grows) costs a third of
-# the time of a big lint and finds nothing, since zero's data holds no reference cycles.
-GC_THRESHOLDS = (100_000, 50, 1000)
-
-
 def guard(command: Callable[[], int]) -> int:
-    """Run a command; turn what escapes it into its exit code and one line on stderr."""
+    """Run a command; turn what escapes it into its exit code and one line on stderr (with the cycle
+    collector's thresholds of :data:`zero.cli.GC_THRESHOLDS`)."""
     gc.set_threshold(*GC_THRESHOLDS)
     try:
         code = command()

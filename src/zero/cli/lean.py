@@ -10,15 +10,19 @@ plus help and error messages.
 from __future__ import annotations
 
 import contextlib
+import gc
 import os
 import sys
 from typing import NoReturn
 
-from zero.cli.exits import guard, of_system_exit
-from zero.cli.options import parse_lint_args
+from zero.cli import GC_THRESHOLDS
 
 
 def main() -> None:
+    gc.set_threshold(*GC_THRESHOLDS)  # before zero is imported (its tables and rules: some twenty passes)
+    from zero.cli.exits import guard, of_system_exit  # start-up: imported with the collector's thresholds set
+    from zero.cli.options import parse_lint_args  # start-up: as above
+
     args = sys.argv[1:]
     if args[:1] == ["lint"]:
         parsed = parse_lint_args(args[1:])

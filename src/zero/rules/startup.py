@@ -28,6 +28,7 @@ from zero.catalog.conditions import (
     supported_drive_types,
 )
 from zero.catalog.data.startup_errors import ERRORS
+from zero.catalog.data.startup_rules import DECLARED
 from zero.catalog.ranges import format_number
 from zero.catalog.registry import ParamSpec
 from zero.catalog.values import Resolved, default_number, parse_int
@@ -107,41 +108,55 @@ def _correction_said(correction: str) -> str:
     return f"the kernel sets {target.strip()} to {what}"
 
 
-def _when_reported(row: dict[str, object]) -> str:
-    reported = str(row.get("reported", "at start-up"))
-    return "" if reported == "at start-up" else f" ({reported})"
+# What a declaration reads of a row of startup_errors.toml, in StartupError's order, and its severity
+# word: (code, number, list, params, condition, when, correction, title, source, written, reported, severity).
+Facts = tuple[str, int, str, tuple[str, ...], str, str, str, str, str, bool, str, str]
+# What is declared of it: (the severity's letter, name, summary, explanation, the parameters it reads).
+Said = tuple[str, str, str, str, tuple[str, ...]]
 
 
-def _explanation(row: dict[str, object], condition: str, when: str) -> str:
-    correction = _correction_said(str(row.get("correction", "")))
+def facts(row: dict[str, object]) -> Facts:
+    """The facts of a row that its rule and its :class:`StartupError` are declared from."""
+    params = row.get("params", ()) or ()
+    return (str(row["code"]), int(str(row["number"])), str(row["list"]),
+            tuple(str(p) for p in params) if isinstance(params, (list, tuple)) else (),
+            str(row.get("condition", "")), str(row.get("when", "")), str(row.get("correction", "")),
+            str(row["title"]), str(row["source"]), bool(row.get("written", False)),
+            str(row.get("reported", "at start-up")), str(row.get("severity", "")))
+
+
+def said(f: Facts) -> Said:
+    """A row's rule as declared: a documented warning without a reaction, or a documented message whose
+    reaction no page gives, is a warning; it reads the reported parameters and the condition's."""
+    _, number, _, params, condition, when, correction, title, source, _, reported, severity = f
+    letter = "W" if correction == "none" or severity == "warning" else "E"
     guard = f" (checked where {when} holds)" if when else ""
-    return f"""
-What it checks: {row["title"]}. When it takes over the list, the kernel checks that `{condition}` holds{guard}, and
-reports error P-ERR-{row["number"]} when it does not{_when_reported(row)}.
+    said_when = "" if reported == "at start-up" else f" ({reported})"
+    explanation = f"""
+What it checks: {title}. When it takes over the list, the kernel checks that `{condition}` holds{guard}, and
+reports error P-ERR-{number} when it does not{said_when}.
 
-Why it matters on the machine: the message appears when the controller starts, and {correction}.
+Why it matters on the machine: the message appears when the controller starts, and {_correction_said(correction)}.
 
-Fix: change the values so that `{condition}` holds. Source: {row["source"]}
+Fix: change the values so that `{condition}` holds. Source: {source}
 """
+    reads = tuple(dict.fromkeys([*params, *re.findall(r"P-[A-Z]{4}-\d{5}", f"{condition} {when}")]))
+    return letter, f"kernel-{number}", f"P-ERR-{number}: {title}", explanation, reads
 
 
 def _declare() -> list[StartupError]:
+    """Each row's rule and check. What a row declares is written at build time (tools/gen_startup_rules.py:
+    its explanation and the parameters it reads, about a third of this module's import); a row whose
+    facts differ from the ones written there is declared from its own (a stale module: slower, never wrong)."""
     out = []
     for row in ERRORS:
-        condition = str(row.get("condition", ""))
-        if not condition:
+        if not row.get("condition"):
             continue  # documented, but not as a condition zero can evaluate (said in the table)
-        when = str(row.get("when", ""))
-        # a documented warning without a reaction, or a documented message whose reaction no page gives
-        severity = W if row.get("correction") == "none" or row.get("severity") == "warning" else E
-        FAMILY.rule(str(row["code"]), f"kernel-{row['number']}", severity, f"P-ERR-{row['number']}: {row['title']}",
-                    _explanation(row, condition, when),  # reads: the reported parameters and the condition's
-                    reads=tuple(dict.fromkeys([*(str(p) for p in row.get("params", ()) or ()),
-                                               *re.findall(r"P-[A-Z]{4}-\d{5}", f"{condition} {when}")])))
-        out.append(StartupError(str(row["code"]), int(str(row["number"])), str(row["list"]),
-                                tuple(str(p) for p in row.get("params", ()) or ()), condition, when,
-                                str(row.get("correction", "")), str(row["title"]), str(row["source"]),
-                                bool(row.get("written", False)), str(row.get("reported", "at start-up"))))
+        f = facts(row)
+        pre = DECLARED.get(f[0])
+        letter, name, summary, explanation, reads = pre[1] if pre is not None and pre[0] == f else said(f)
+        FAMILY.rule(f[0], name, W if letter == "W" else E, summary, explanation, reads=reads)
+        out.append(StartupError(*f[:11]))
     return out
 
 

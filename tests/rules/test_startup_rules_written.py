@@ -1,0 +1,50 @@
+"""What each K rule declares, written at build time (tools/gen_startup_rules.py, issue 40: start-up)."""
+
+from __future__ import annotations
+
+import importlib.util
+from pathlib import Path
+from types import ModuleType
+
+from zero.catalog.data.startup_errors import ERRORS
+from zero.catalog.data.startup_rules import DECLARED
+from zero.rules import startup
+
+ROOT = Path(__file__).resolve().parents[2]
+
+
+def _generator() -> ModuleType:
+    spec = importlib.util.spec_from_file_location("gen_startup_rules", ROOT / "tools" / "gen_startup_rules.py")
+    assert spec is not None and spec.loader is not None
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+def test_the_generated_module_is_up_to_date() -> None:
+    """Run ``python tools/gen_startup_rules.py`` after tools/gen_startup.py or a change to ``said``."""
+    written = (ROOT / "src" / "zero" / "catalog" / "data" / "startup_rules.py").read_text(encoding="utf-8")
+    assert written == _generator().render()  # type: ignore[attr-defined]
+
+
+def test_each_rule_is_declared_as_its_row_says() -> None:
+    rows = [r for r in ERRORS if r.get("condition")]
+    assert len(rows) == len(startup.CHECKS) == len(DECLARED) > 100
+    for row, err in zip(rows, startup.CHECKS, strict=True):
+        f = startup.facts(row)
+        letter, name, summary, explanation, reads = startup.said(f)
+        rule = startup.FAMILY.rules[err.code]
+        assert (rule.name, rule.summary, rule.explanation, rule.reads) == (name, summary, explanation, reads)
+        assert rule.severity.label.startswith({"W": "warning", "E": "error"}[letter])
+        assert (err.code, err.number, err.condition_text, err.when_text) == (f[0], f[1], f[4], f[5])
+
+
+def test_a_row_whose_facts_differ_from_the_written_ones_is_declared_from_its_own() -> None:
+    row = dict(next(r for r in ERRORS if r.get("condition") and r.get("correction") != "none"))
+    f = startup.facts(row)
+    assert DECLARED[f[0]] == (f, startup.said(f))
+    row["title"], row["correction"] = "Another title", "none"
+    changed = startup.facts(row)
+    assert changed != DECLARED[f[0]][0]  # not the written facts: declared by said(), a warning now
+    letter, _, summary, explanation, _ = startup.said(changed)
+    assert letter == "W" and "Another title" in summary and "Another title" in explanation

@@ -1,0 +1,48 @@
+#!/usr/bin/env python3
+"""Write what each K rule declares (its severity, name, summary, explanation and the parameters it reads)
+to ``src/zero/catalog/data/startup_rules.py``, each with the facts of its row of startup_errors.toml: read
+from bytecode at start-up instead of written out at each run (issue 40). A row whose facts differ from
+the ones written here is declared from its own at run time, so a stale module is slower, never wrong; a
+test fails while it is stale. Run it after tools/gen_startup.py (and after changing how
+``zero.rules.startup.said`` words a rule).
+
+Usage: python tools/gen_startup_rules.py
+"""
+
+from __future__ import annotations
+
+import sys
+from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parent.parent / "src"))
+
+DATA = Path(__file__).resolve().parent.parent / "src" / "zero" / "catalog" / "data"
+
+
+def render() -> str:
+    """The module's text, from the rows and the wording as they are now."""
+    from zero.catalog.data.startup_errors import ERRORS
+    from zero.rules.startup import facts, said
+
+    lines = []
+    for row in ERRORS:
+        if row.get("condition"):
+            f = facts(row)
+            lines.append(f"    {f[0]!r}: ({f!r},\n             {said(f)!r}),")
+    return ('"""What each K rule declares, with the facts of its row of startup_errors.toml it is declared from,\n'
+            'written by tools/gen_startup_rules.py: code -> (facts, (severity letter, name, summary, explanation,\n'
+            'the parameters it reads)).\n\n'
+            'Generated: do not edit."""\n\n'
+            "# ruff: noqa\n"
+            "from typing import Any\n\n"
+            "DECLARED: dict[str, Any] = {\n" + "\n".join(lines) + "\n}\n")
+
+
+def main() -> None:
+    target = DATA / "startup_rules.py"
+    target.write_text(render(), encoding="utf-8")
+    print(f"wrote {target}")
+
+
+if __name__ == "__main__":
+    main()
