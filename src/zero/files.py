@@ -151,6 +151,14 @@ def read_file(path: str | Path, limit: int | None = None) -> bytes:
         os.close(fd)
 
 
+def read_as_is(st: os.stat_result, limit: int | None = None) -> bool:
+    """Would :func:`read_file` read a file of this ``os.stat`` and give its bytes as they are: a
+    regular file within the size limit, of one link and of the user zero runs as (no journal of an
+    interrupted rewrite to complete)? A cache that knows the file by its stat may then skip reading it."""
+    return (stat.S_ISREG(st.st_mode) and st.st_size <= (max_file_bytes() if limit is None else limit)
+            and st.st_nlink == 1 and not _foreign(st))
+
+
 def _read_at_most(fd: int, size: int, limit: int) -> bytes | None:
     """The file's bytes, read in one allocation of its size where it does not grow; ``None`` as soon
     as more than ``limit`` bytes come (the memory held never exceeds the limit plus one chunk)."""

@@ -89,8 +89,12 @@ class Linter:
         return [d.to_json() for r in run.results for d in r.diagnostics]
 
 
-@pytest.fixture()
-def linter(monkeypatch: pytest.MonkeyPatch, tmp_path: Path) -> Linter:
+@pytest.fixture(params=["by content", "by stat"])
+def linter(request: pytest.FixtureRequest, monkeypatch: pytest.MonkeyPatch, tmp_path: Path) -> Linter:
+    """Each test twice: files known by their content (no file's stat is ever settled enough for the
+    run's index), and known by their stat from the run's index (as they are when they changed well
+    before the run: here they changed just now, but their change time counts as settled)."""
+    monkeypatch.setattr(cache_module, "INDEX_RACY_NS", -10 * 10**9 if request.param == "by stat" else 10**18)
     return Linter(monkeypatch, tmp_path / "cache")
 
 
@@ -272,11 +276,17 @@ def test_a_run_that_fixes_or_writes_noqa_neither_reads_nor_writes_it(linter: Lin
 
 
 def test_a_torn_or_garbage_entry_is_a_miss(linter: Linter, axis: Path, tmp_path: Path) -> None:
+    """An entry torn or garbage, and with it the run's index (which holds the result too) where there
+    is one (the index alone torn: test_cache_index.py)."""
     first = linter(axis)
-    (entry,) = [p for p in (tmp_path / "cache").rglob("*") if p.is_file() and p.parent.parent == tmp_path / "cache"]
+    kept = [p for p in (tmp_path / "cache").rglob("*") if p.is_file() and p.parent.parent == tmp_path / "cache"]
+    (entry,) = [p for p in kept if not p.name.startswith("run-")]
+    index = [p for p in kept if p.name.startswith("run-")]
+    assert len(index) == (1 if cache_module.INDEX_RACY_NS < 0 else 0)  # "by stat": the run's index
     data = entry.read_bytes()
     for broken in (data[: len(data) // 2], b"", b"garbage", data[:-1] + bytes([data[-1] ^ 1])):
-        entry.write_bytes(broken)
+        for p in (entry, *index):
+            p.write_bytes(broken)
         assert linter(axis) == first and linter.linted == [str(axis)]
         assert linter(axis) == first and linter.linted == []  # written whole again
 

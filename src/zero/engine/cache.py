@@ -60,7 +60,7 @@ from zero import __version__
 from zero.diagnostics import Diagnostic, Edit, Fix, Related, Severity, Span
 from zero.engine.lint import LintResult
 from zero.errors import ZeroError
-from zero.files import read_file, write_disposable
+from zero.files import read_as_is, read_file, write_disposable
 from zero.forms import CONFIG_NAMES, controller_absolute, is_list, is_program, split_part
 from zero.lists.model import Document, Excerpt
 from zero.records import fields
@@ -81,6 +81,7 @@ MAX_BYTES = 512 * 1024 * 1024  # the same for their size
 PRUNE_EVERY = 600  # seconds between two looks at the folder's size by runs that keep few entries
 GENERATIONS = 4  # versions of zero whose entries are kept side by side
 RACY_NS = 3_000_000_000  # a file modified this close to when it was checked is checked by its content
+INDEX_RACY_NS = RACY_NS  # the same for a file's record in a run's index (by its modification or change time)
 _MAGIC = b"ZEROCACHE\n"
 _DIGEST = 16
 _TAG = (b"Signature: 8a477f597d28d172789f06886806bc55\n"
@@ -491,8 +492,23 @@ def refused_or_unreadable(r: LintResult) -> bool:
                for d in r.diagnostics)
 
 
+def _stat(st: os.stat_result) -> tuple[int, int, int, int]:
+    """What a file's ``os.stat`` says of its content, as git's index keeps it: size, modification and
+    change times, inode (a rename over it, a ``touch -d`` back in time, a ``chmod``: each differs)."""
+    return (st.st_size, st.st_mtime_ns, st.st_ctime_ns, st.st_ino)
+
+
 class LintCache:
-    """``zero lint``'s results by file, for one run: :meth:`lookup` before linting, :meth:`store` after."""
+    """``zero lint``'s results by file, for one run: :meth:`lookup` before linting, :meth:`store` after,
+    :meth:`finish` (or :meth:`finishing`) once every result is made.
+
+    Besides an entry per file, a run keeps an index of its files (one entry named by the list of
+    files and the current directory): per file its stat (:func:`_stat`), the hash of its content,
+    its entry's name and its result. The same run again reads that one entry, not the files: a file
+    whose stat is the one recorded has the content whose hash was recorded (recorded only for a file
+    last changed :data:`RACY_NS` before the run that read it, as git's index does), and its result
+    is used only where the entry's name made from that hash and today's settings is the recorded one.
+    Any other file is read, hashed and looked up as without the index."""
 
     def __init__(self, store: Store, project: Project) -> None:
         self.disk = store
@@ -500,12 +516,16 @@ class LintCache:
         self.checker = Checker(project.encoding)
         self.started = time.time_ns()  # before anything is read
         self.cwd = os.getcwd()
-        # file → (entry name, its machine's name, (size, time, inode) before it was read)
-        self._keys: dict[Path, tuple[str, str | None, tuple[int, int, int]]] = {}
+        # file → (entry name, its machine's name, its stat before it was read, the hash of its content)
+        self._keys: dict[Path, tuple[str, str | None, tuple[int, int, int, int], str]] = {}
         self._catalogues: dict[Path | None, tuple[str, ...]] = {}
         self._fingerprints: dict[int, tuple[object, str]] = {}
         self._holds: dict[str, bool] = {}  # a machine's name → do its files hold
         self._deps: dict[str, tuple[Dep, ...] | None] = {}  # a machine's name → its files (None: not settled)
+        self._index_key: str | None = None  # the name of this run's index (None: none kept)
+        self._index: dict[str, tuple[Any, ...]] = {}  # as read: file → (*stat, content hash, entry name, value)
+        self._indexed: dict[str, tuple[Any, ...]] = {}  # as it is to be written
+        self._index_same = True  # is what is to be written what was read?
         self.hits = 0
         self.on = _records_known()
 
@@ -535,31 +555,51 @@ class LintCache:
                 _canonical(cfg.machine), _canonical(cfg.machine_lists), _canonical(cfg.machine_workdir),
                 _canonical(cfg.machine_roots))
 
-    def key(self, path: Path, data: bytes) -> tuple[str, str | None]:
-        """The entry name of a file as read now, and that of its machine (``None``: it has none).
-        :class:`TypeError` where the options cannot be fingerprinted, :class:`ZeroError` where the
-        catalogue cannot be read."""
+    def key(self, path: Path, data: bytes | str) -> tuple[str, str | None]:
+        """The entry name of a file as read now (``data``: its bytes, or the hex hash of them), and
+        that of its machine (``None``: it has none). :class:`TypeError` where the options cannot be
+        fingerprinted, :class:`ZeroError` where the catalogue cannot be read."""
         machine = self._machine_part(path) if is_list(path) else None
         machine_key = None if machine is None else fingerprint(machine)
-        parts = (generation(), "lint", str(path), digest(data).hex(), self._options(path),
+        content = data if isinstance(data, str) else digest(data).hex()
+        parts = (generation(), "lint", str(path), content, self._options(path),
                  self._catalogue(self.project.param_desc(path)), machine_key)
         return fingerprint(parts), machine_key
+
+    def _open_index(self, files: list[Path]) -> None:
+        self._index_key = "run-" + fingerprint((generation(), "index", self.cwd, tuple(str(f) for f in files)))
+        value = self.disk.get(self._index_key)
+        if type(value) is dict:
+            self._index = value
+        self._index_same = type(value) is dict
+
+    def _known(self, name: str, st: os.stat_result) -> tuple[Any, ...] | None:
+        """The file's record in the index, where its stat is the one recorded."""
+        rec = self._index.get(name)
+        if type(rec) is not tuple or len(rec) != 7 or rec[:4] != _stat(st) or not read_as_is(st):
+            return None
+        return rec
 
     def lookup(self, files: Iterable[Path]) -> dict[Path, LintResult]:
         """The files whose results are kept and still hold, with them."""
         out: dict[Path, LintResult] = {}
         if not self.on:
             return out
+        files = list(files)
+        self._open_index(files)
         for f in files:
             if is_program(f):
                 continue
+            name = str(f)
             try:
                 st = os.stat(f)
-                key, machine = self.key(f, read_file(f))
+                rec = self._known(name, st)
+                content = rec[4] if rec is not None else digest(read_file(f)).hex()
+                key, machine = self.key(f, content)
             except (OSError, ZeroError, TypeError):
                 continue
-            self._keys[f] = (key, machine, (st.st_size, st.st_mtime_ns, st.st_ino))
-            value = self.disk.get(key)
+            self._keys[f] = (key, machine, _stat(st), content)
+            value = rec[6] if rec is not None and rec[5] == key else self.disk.get(key)
             if value is None:
                 continue
             try:
@@ -573,8 +613,20 @@ class LintCache:
                 out[f] = unpack_result(packed)
             except (TypeError, ValueError, KeyError, IndexError):
                 continue
+            self._note(name, (*_stat(st), content, key, value), rec)
         self.hits = len(out)
         return out
+
+    def _note(self, name: str, record: tuple[Any, ...], before: tuple[Any, ...] | None) -> None:
+        """Keep a file's record for the index; not for a file changed too recently to tell by its stat:
+        by its modification time or its change time (which no one sets back: a file rewritten and
+        given its old modification time within a tick of the clock has its change time of now)."""
+        if max(record[1], record[2]) >= self.started - INDEX_RACY_NS:
+            self._index_same = False
+            return
+        self._indexed[name] = record
+        if before is None or before[5] != record[5] or before[6] is not record[6]:
+            self._index_same = False
 
     def store(self, path: Path, result: LintResult) -> None:
         """Keep a file's result (the one reported: its machine's findings included), unless it is one
@@ -582,21 +634,40 @@ class LintCache:
         recently to tell; a failure to keep it is silent (the next run lints the file again)."""
         known = self._keys.get(path)
         if known is None or not self.on or refused_or_unreadable(result):
+            self._index_same = False
             return
-        key, machine_key, before = known
+        key, machine_key, before, content = known
         try:
             st = os.stat(path)
         except OSError:
             return
-        if (st.st_size, st.st_mtime_ns, st.st_ino) != before or st.st_mtime_ns >= self.started - RACY_NS:
+        if _stat(st) != before or st.st_mtime_ns >= self.started - RACY_NS:
+            self._index_same = False
             return
         deps: tuple[Dep, ...] | None = ()
         if machine_key is not None:
             deps = self._machine_deps(path, machine_key)
             if deps is None:
+                self._index_same = False
                 return
         with contextlib.suppress(ValueError, TypeError):
-            self.disk.put(key, (pack_result(result), deps))
+            value = (pack_result(result), deps)
+            if self.disk.put(key, value):
+                self._note(str(path), (*before, content, key, value), None)
+                return
+        self._index_same = False
+
+    def finish(self) -> None:
+        """Write this run's index, where it is not the one read (every result made and kept)."""
+        if self._index_key is not None and self._indexed and not (self._index_same
+                                                                  and len(self._indexed) == len(self._index)):
+            self.disk.put(self._index_key, self._indexed)
+        self._index_key = None
+
+    def finishing(self, results: Iterator[LintResult]) -> Iterator[LintResult]:
+        """``results`` as they come, then :meth:`finish` (not when they stop half way)."""
+        yield from results
+        self.finish()
 
     def _machine_deps(self, path: Path, machine_key: str) -> tuple[Dep, ...] | None:
         if machine_key not in self._deps:

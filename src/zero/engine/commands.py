@@ -181,7 +181,9 @@ def _run_lint(request: LintRequest, registries: Registries, echo: Echo,
         desc = next(iter(groups), None)  # one group: its files are all the files to lint, in their order
         stream = iter_lint_many(todo, registries(desc), project.options, request.jobs) if todo else iter(())
         made = (finish(f, r) for f, r in zip(todo, stream, strict=True))
-        return LintRun(cache.merged(files, kept, made) if cache is not None and kept else made)
+        if cache is None:
+            return LintRun(made)
+        return LintRun(cache.finishing(cache.merged(files, kept, made) if kept else made))
     by_file: dict[Path, LintResult] = {}
     done = 0
     for desc, members in groups.items():
@@ -194,6 +196,8 @@ def _run_lint(request: LintRequest, registries: Registries, echo: Echo,
             by_file[f] = r
         done += len(members)
     results = [kept[f] if f in kept else finish(f, by_file[f]) for f in files]
+    if cache is not None:
+        cache.finish()
     run = LintRun(results, findings_to_stderr=request.show_diff)
     if request.add_noqa:
         run.results = [_add_noqa(f, r, project.settings(f).options, project.settings(f).registry, echo, run)

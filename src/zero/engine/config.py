@@ -133,6 +133,10 @@ def _suffixes(globs: tuple[str, ...]) -> tuple[str, ...] | None:
     return tuple(out)
 
 
+# (configuration, command line, per-file ignores, kind, code page) → the options they make
+_OPTIONS: dict[tuple[object, ...], tuple[Config, LintOptions, LintOptions]] = {}
+
+
 @record
 class Config:
     path: Path | None = None  # the file it came from; None: defaults
@@ -250,12 +254,24 @@ class Config:
         """The lint options for one file: the command line as the last layer over this configuration
         (and the one it extends), as ruff resolves them; the file's per-file ignores drop what they
         match whatever selected it."""
-        chosen = layered_selection((*self.layers, (cli.select, cli.extend_select, cli.ignore)), self.ignored_for(file))
+        ignored = self.ignored_for(file)
+        kind = cli.kind or self.kind_for(file)
+        encoding = cli.encoding or self.encoding_for(file)
+        # the files of a folder (of a project, without per-file patterns) share one object, made once:
+        # what a file's options depend on beyond this configuration and the command line is in the key
+        memo = (id(self), id(cli), ignored, kind, encoding)
+        hit = _OPTIONS.get(memo)
+        if hit is not None and hit[0] is self and hit[1] is cli:
+            return hit[2]
+        chosen = layered_selection((*self.layers, (cli.select, cli.extend_select, cli.ignore)), ignored)
         severity = {**self.parent.severity, **self.severity} if self.parent is not None else self.severity
-        return LintOptions(select=chosen.select, ignore=chosen.ignore, kind=cli.kind or self.kind_for(file),
-                           severity={**severity, **cli.severity},
-                           encoding=cli.encoding or self.encoding_for(file),
-                           kernel=cli.kernel or self.kernel, ignore_noqa=cli.ignore_noqa)
+        options = LintOptions(select=chosen.select, ignore=chosen.ignore, kind=kind,
+                              severity={**severity, **cli.severity}, encoding=encoding,
+                              kernel=cli.kernel or self.kernel, ignore_noqa=cli.ignore_noqa)
+        if len(_OPTIONS) > 4096:
+            _OPTIONS.clear()
+        _OPTIONS[memo] = (self, cli, options)  # both kept with it: their identities are no other's
+        return options
 
     def show(self) -> str:
         """The effective configuration as TOML (``zero config --show``), each option as it declares."""

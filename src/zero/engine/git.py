@@ -147,16 +147,29 @@ def _not_readable(path: Path) -> str | None:
     return f"{path} is {describe(st.st_mode)}, which git would wait on"
 
 
+def may_be_in_repository(folder: Path) -> bool:
+    """Could git find a repository for ``folder`` (absolute)? Not where neither it nor a folder above
+    it holds a ``.git`` (a work tree's, or a file naming one) or is itself a repository's folder (a
+    ``HEAD`` in it: a bare repository, which git also finds): git looks nowhere else, since every
+    ``GIT_*`` variable is cleared (:func:`environment`)."""
+    for d in (str(folder), *map(str, folder.parents)):
+        if os.path.lexists(os.path.join(d, ".git")) or os.path.lexists(os.path.join(d, "HEAD")):
+            return True
+    return False
+
+
 def visible_files(directory: Path) -> Visible:
     """The files below ``directory`` that git does not ignore (``ls-files --cached --others
     --exclude-standard``). No answer, with the reason, where an ignore file is no regular file (a FIFO
     would stall git), where git refuses the repository (owned by another user: git's
     ``safe.directory``), fails or takes too long; no answer and no reason outside a work tree."""
+    folder = Path(os.path.abspath(directory))
+    if not may_be_in_repository(folder):
+        return Visible(None)  # what git would say, without starting it (15 ms)
     import subprocess  # start-up: only when git is asked
 
     if not available():
         return Visible(None)
-    folder = Path(os.path.abspath(directory))
     try:
         where = run(folder, "rev-parse", "--show-toplevel", "--absolute-git-dir")
         if where.returncode != 0:
@@ -247,4 +260,4 @@ def revision_reader(startup: Path, revision: str, label: str = "--against") -> t
 
 
 __all__ = ["SAFE_CONFIG", "SAFE_ENV", "TIMEOUT", "Visible", "available", "command", "environment",
-           "revision_reader", "run", "visible_files"]
+           "may_be_in_repository", "revision_reader", "run", "visible_files"]

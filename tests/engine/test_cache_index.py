@@ -1,0 +1,156 @@
+"""A run's index (zero.engine.cache.LintCache): the same files again are known by their stat, not read;
+any change of the stat (size, modification time, change time, inode) reads the file again, and a
+change the stat cannot show (within a tick of a coarse clock) is never recorded (the racy rule)."""
+
+from __future__ import annotations
+
+import os
+import time
+from pathlib import Path
+from typing import Any
+
+import pytest
+
+import zero.engine.cache as cache_module
+import zero.engine.parallel as parallel
+from zero.catalog.registry import Registry, load_registry
+from zero.engine.commands import Echo, LintRequest, run_lint
+from zero.engine.lint import LintOptions, LintResult, lint_file
+
+LIST = b"kopf.achs_nr 1\nantr_simu.mode 1\nunknown_key 1\nkenngr.swe_pos 1e99\nEnde\n"
+SAME_SIZE = b"kopf.achs_nr 2\nantr_simu.mode 1\nunknown_kez 1\nkenngr.swe_pos 1e99\nEnde\n"
+
+
+class Run:
+    """``zero lint`` with the cache on: which files were linted, and which were read by the cache."""
+
+    def __init__(self, monkeypatch: pytest.MonkeyPatch, folder: Path) -> None:
+        self.linted: list[str] = []
+        self.read: list[str] = []
+        self.registries: dict[Path | None, Registry] = {}
+        lint, read = lint_file, cache_module.read_file
+
+        def counting_lint(path: Any, registry: Registry, options: LintOptions | None = None) -> LintResult:
+            self.linted.append(str(path))
+            return lint(path, registry, options)
+
+        def counting_read(path: Any, limit: int | None = None) -> bytes:
+            self.read.append(str(path))
+            return read(path, limit)
+
+        monkeypatch.setattr(parallel, "lint_file", counting_lint)
+        monkeypatch.setattr(cache_module, "read_file", counting_read)
+        monkeypatch.setenv("ZERO_CACHE_DIR", str(folder))
+        monkeypatch.delenv("ZERO_NO_CACHE", raising=False)
+        # the files change just before each run here: their change time counts as settled
+        monkeypatch.setattr(cache_module, "INDEX_RACY_NS", -10 * 10**9)
+
+    def registry(self, desc: Path | None) -> Registry:
+        if desc not in self.registries:
+            self.registries[desc] = load_registry(desc)
+        return self.registries[desc]
+
+    def __call__(self, *paths: Path, **request: Any) -> list[dict[str, object]]:
+        self.linted, self.read = [], []
+        echo = Echo(out=lambda _t: None, err=lambda _t: None, out_bytes=lambda _b: None)
+        run = run_lint(LintRequest([str(p) for p in paths], cache=True, **request), self.registry, echo, bytes)
+        return [d.to_json() for r in run.results for d in r.diagnostics]
+
+
+def old(path: Path, when: float | None = None) -> None:
+    t = time.time() - 60 if when is None else when
+    os.utime(path, (t, t))
+
+
+@pytest.fixture()
+def run(monkeypatch: pytest.MonkeyPatch, tmp_path: Path) -> Run:
+    return Run(monkeypatch, tmp_path / "cache")
+
+
+@pytest.fixture()
+def lists(tmp_path: Path) -> Path:
+    folder = tmp_path / "lists"
+    folder.mkdir()
+    for n in range(3):
+        (folder / f"m{n}.lis").write_bytes(LIST)
+        old(folder / f"m{n}.lis")
+    return folder
+
+
+def index_files(tmp_path: Path) -> list[Path]:
+    return [p for p in (tmp_path / "cache").rglob("run-*") if p.is_file()]
+
+
+def test_the_same_files_again_are_not_read(run: Run, lists: Path, tmp_path: Path) -> None:
+    first = run(lists)
+    assert len(run.linted) == 3 and len(index_files(tmp_path)) == 1
+    written = index_files(tmp_path)[0].stat().st_mtime_ns
+    assert run(lists) == first and run.linted == [] and run.read == []
+    assert index_files(tmp_path)[0].stat().st_mtime_ns == written  # nothing changed: not written again
+
+
+def test_a_change_the_size_and_time_hide_is_seen_by_the_change_time(run: Run, lists: Path) -> None:
+    run(lists)
+    target = lists / "m1.lis"
+    st = os.stat(target)
+    time.sleep(0.05)  # past a tick of the coarsest clock Linux keeps change times with
+    target.write_bytes(SAME_SIZE)
+    os.utime(target, ns=(st.st_atime_ns, st.st_mtime_ns))  # the same size and modification time
+    assert os.stat(target).st_size == st.st_size and os.stat(target).st_ctime_ns != st.st_ctime_ns
+    changed = run(lists)
+    assert run.read == [str(target)] and run.linted == [str(target)]
+    assert run(lists) == changed and run.read == []
+
+
+def test_a_file_replaced_by_another_is_read(run: Run, lists: Path) -> None:
+    first = run(lists)
+    target = lists / "m2.lis"
+    other = lists / "m2.new"
+    other.write_bytes(SAME_SIZE)
+    st = os.stat(target)
+    os.utime(other, ns=(st.st_atime_ns, st.st_mtime_ns))
+    os.replace(other, target)  # a new inode, of the same size and times
+    changed = run(lists)
+    assert run.read == [str(target)] and run.linted == [str(target)] and changed != first
+
+
+def test_settings_changed_miss_whatever_the_index_says(run: Run, lists: Path) -> None:
+    first = run(lists)
+    narrowed = run(lists, select=("R001",))
+    assert run.read == [] and len(run.linted) == 3 and narrowed != first  # known by stat, linted anew
+    assert run(lists) == first and run.linted == []  # the entries of the first settings are still there
+
+
+def test_a_torn_index_is_a_miss_and_the_entries_answer(run: Run, lists: Path, tmp_path: Path) -> None:
+    first = run(lists)
+    (index,) = index_files(tmp_path)
+    data = index.read_bytes()
+    for broken in (data[: len(data) // 2], b"", b"garbage", data[:-1] + bytes([data[-1] ^ 1])):
+        index.write_bytes(broken)
+        assert run(lists) == first and run.linted == [] and len(run.read) == 3
+        assert run(lists) == first and run.read == []  # written whole again
+
+
+def test_a_file_changed_too_recently_is_not_in_the_index(run: Run, lists: Path, tmp_path: Path,
+                                                         monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.setattr(cache_module, "INDEX_RACY_NS", cache_module.RACY_NS)  # the real rule: changed now
+    run(lists)
+    assert index_files(tmp_path) == []  # every file's change time is of now
+    run(lists)
+    assert len(run.read) == 3 and run.linted == []  # read, and answered by the entries
+
+
+def test_a_file_over_the_size_limit_is_read_and_refused(run: Run, lists: Path, monkeypatch: pytest.MonkeyPatch
+                                                        ) -> None:
+    run(lists)
+    monkeypatch.setenv("ZERO_MAX_FILE_SIZE", "10")
+    refused = run(lists)
+    assert {d["code"] for d in refused} == {"F001"} and len(run.read) == 3
+
+
+def test_another_file_list_has_its_own_index(run: Run, lists: Path, tmp_path: Path) -> None:
+    run(lists)
+    run(lists / "m0.lis")
+    assert len(index_files(tmp_path)) == 2
+    run(lists)
+    assert run.read == [] and run.linted == []
