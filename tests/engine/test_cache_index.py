@@ -154,3 +154,25 @@ def test_another_file_list_has_its_own_index(run: Run, lists: Path, tmp_path: Pa
     assert len(index_files(tmp_path)) == 2
     run(lists)
     assert run.read == [] and run.linted == []
+
+
+def test_the_entry_name_is_the_fingerprint_of_its_parts(lists: Path, tmp_path: Path,
+                                                        monkeypatch: pytest.MonkeyPatch) -> None:
+    """The name is made without walking its parts: the same as :func:`fingerprint` of them."""
+    from zero.engine.project import Project
+
+    monkeypatch.setenv("ZERO_CACHE_DIR", str(tmp_path / "cache"))
+    project = Project(load_registry_cached, cli=LintOptions(select=("R0",)))
+    cache = cache_module.open_lint_cache(project)
+    assert cache is not None
+    path = lists / "m0.lis"
+    key, machine = cache.key(path, "ab" * 16)
+    parts = (cache_module.generation(), "lint", str(path), "ab" * 16, cache_module.fingerprint(project.options(path)),
+             cache_module.catalogue_id(project.param_desc(path)), machine)
+    assert key == cache_module.fingerprint(parts) and machine is None
+    assert cache.key(path, LIST) == (cache_module.fingerprint((*parts[:3], cache_module.digest(LIST).hex(),
+                                                                *parts[4:])), None)
+
+
+def load_registry_cached(desc: Path | None) -> Registry:
+    return load_registry(desc)

@@ -60,7 +60,7 @@ from zero import __version__
 from zero.diagnostics import Diagnostic, Edit, Fix, Related, Severity, Span
 from zero.engine.lint import LintResult
 from zero.errors import ZeroError
-from zero.files import read_as_is, read_file, write_disposable
+from zero.files import max_file_bytes, read_as_is, read_file, write_disposable
 from zero.forms import CONFIG_NAMES, controller_absolute, is_list, is_program, split_part
 from zero.lists.model import Document, Excerpt
 from zero.records import fields
@@ -564,7 +564,9 @@ class LintCache:
         content = data if isinstance(data, str) else digest(data).hex()
         parts = (generation(), "lint", str(path), content, self._options(path),
                  self._catalogue(self.project.param_desc(path)), machine_key)
-        return fingerprint(parts), machine_key
+        # plain strings (and a tuple of them, and None) are their own canonical form: the name is
+        # fingerprint(parts), without walking them (`test_the_entry_name_is_the_fingerprint_of_its_parts`)
+        return digest(repr(parts).encode("utf-8", "surrogateescape")).hex(), machine_key
 
     def _open_index(self, files: list[Path]) -> None:
         self._index_key = "run-" + fingerprint((generation(), "index", self.cwd, tuple(str(f) for f in files)))
@@ -573,10 +575,10 @@ class LintCache:
             self._index = value
         self._index_same = type(value) is dict
 
-    def _known(self, name: str, st: os.stat_result) -> tuple[Any, ...] | None:
+    def _known(self, name: str, st: os.stat_result, limit: int) -> tuple[Any, ...] | None:
         """The file's record in the index, where its stat is the one recorded."""
         rec = self._index.get(name)
-        if type(rec) is not tuple or len(rec) != 7 or rec[:4] != _stat(st) or not read_as_is(st):
+        if type(rec) is not tuple or len(rec) != 7 or rec[:4] != _stat(st) or not read_as_is(st, limit):
             return None
         return rec
 
@@ -587,13 +589,14 @@ class LintCache:
             return out
         files = list(files)
         self._open_index(files)
+        limit = max_file_bytes()
         for f in files:
             if is_program(f):
                 continue
             name = str(f)
             try:
                 st = os.stat(f)
-                rec = self._known(name, st)
+                rec = self._known(name, st, limit)
                 content = rec[4] if rec is not None else digest(read_file(f)).hex()
                 key, machine = self.key(f, content)
             except (OSError, ZeroError, TypeError):

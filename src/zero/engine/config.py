@@ -863,6 +863,7 @@ class ConfigFinder:
             self.explicit = cfg
         self._by_dir: dict[Path, Config] = {}
         self._by_name: dict[str, Config] = {}  # the absolute directory → its configuration
+        self._by_path: dict[tuple[object, ...], Config] = {}  # a path as asked about (and the directory if relative)
         self._default = Config()
         if overrides:
             self._overlay(self._default)  # a bad override is an error before any file is read
@@ -890,11 +891,18 @@ class ConfigFinder:
             return self._overlay(self.explicit)
         if directory is None:
             directory = path.is_dir()
+        given = (path, directory) if path.is_absolute() else (path, directory, os.getcwd())
+        hit = self._by_path.get(given)  # the files of a run are asked about several times each
+        if hit is not None:
+            return hit
         key = os.path.abspath(str(path) if directory else os.path.dirname(str(path)) or ".")
         hit = self._by_name.get(key)
         if hit is None:
-            start = path.resolve() if directory else _resolved(path).parent
+            start = Path(_resolved_folder(path if directory else path.parent))
             hit = self._by_name[key] = self._overlay(self._lookup(start))
+        if len(self._by_path) > 65536:
+            self._by_path.clear()
+        self._by_path[given] = hit
         return hit
 
     def _lookup(self, start: Path) -> Config:
