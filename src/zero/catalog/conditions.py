@@ -36,10 +36,12 @@ Number = int | float
 Lookup = Callable[[str, int | None], Number | str | None]
 
 DEFAULT_LIST = "DEFAULT_LIST"  # a fact of the list, not a parameter: read by the lookup like one
-_TOKEN = re.compile(r"\s*(?:(P-[A-Z]{4}-[0-9]{5}(?:\.[0-9]+)?|DEFAULT_LIST\b)"
-                    r"|(0x[0-9A-Fa-f]+|[0-9]+(?:\.[0-9]+)?(?:e[+-]?[0-9]+)?)"
-                    r"|(\"[^\"\\\n]*\"|'[^'\\\n]*')"
-                    r"|(<=|>=|==|!=|<|>|\+|-|\*|/|%|&|\(|\)|,)|(and|or|not|in|abs|len|startswith|isname|supports|unique|elsewhere)\b)")
+# compiled at the first condition parsed (through re's own cache): the K rules' and the prose ranges'
+# are parsed at build time, so a lint seldom parses one (issue 40: start-up)
+_TOKEN = (r"\s*(?:(P-[A-Z]{4}-[0-9]{5}(?:\.[0-9]+)?|DEFAULT_LIST\b)"
+          r"|(0x[0-9A-Fa-f]+|[0-9]+(?:\.[0-9]+)?(?:e[+-]?[0-9]+)?)"
+          r"|(\"[^\"\\\n]*\"|'[^'\\\n]*')"
+          r"|(<=|>=|==|!=|<|>|\+|-|\*|/|%|&|\(|\)|,)|(and|or|not|in|abs|len|startswith|isname|supports|unique|elsewhere)\b)")
 # arguments of each function; 0: one or more IDs
 _FUNCTIONS = {"abs": 1, "len": 1, "startswith": 2, "isname": 1, "supports": 1, "unique": 0, "elsewhere": 2}
 _NAME = re.compile(r"[A-Za-z0-9_]+")  # what isname() accepts
@@ -108,8 +110,9 @@ def _tokens(text: str) -> list[str]:
     out: list[str] = []
     pos = 0
     text = text.rstrip()
+    token = re.compile(_TOKEN)
     while pos < len(text):
-        m = _TOKEN.match(text, pos)
+        m = token.match(text, pos)
         if m is None or m.end() == pos:
             raise ValueError(f"cannot read the condition at {text[pos:pos + 12]!r}")
         out.append(m.group(m.lastindex or 0))

@@ -192,23 +192,22 @@ class Range:
         return f"{left}x{right}"
 
 
-_TOKEN_RE = re.compile(
-    r"""\s*(?:
+# Compiled at the first range parsed here (through re's own cache): the built-in ranges are parsed at
+# build time (tools/gen_ranges.py), so a lint seldom parses one (issue 40: start-up).
+_TOKEN_TEXT = r"""\s*(?:
       (?P<limit>(?:MIN|MAX)\s*\(\s*[A-Z0-9]+\s*\))
     | (?P<ref>P-[A-Z]{4}-[0-9]{5}(?:\.[0-9]+)?)
     | (?P<num>0[xX][0-9A-Fa-f]+|[0-9]+(?:\.[0-9]+)?(?:[eE][+-]?[0-9]+)?)
     | (?P<ident>[A-Za-z_][A-Za-z0-9_.\[\]]*)
     | (?P<op><=|>=|≤|≥|<|>|…|\.\.\.|\*|\+|-|/|,)
-    )""",
-    re.VERBOSE,
-)
-_UNIT_RE = re.compile(r"°|%")
+    )"""
 _CMP = {"<": ("<", True), "≤": ("<", False), "<=": ("<", False),
         ">": (">", True), "≥": (">", False), ">=": (">", False)}
 
 
 def _tokenize(text: str) -> list[tuple[str, str]] | None:
-    text = _UNIT_RE.sub("", text).strip()
+    text = re.sub(r"°|%", "", text).strip()
+    token = re.compile(_TOKEN_TEXT, re.VERBOSE)
     # A note in parentheses after the formal part: `0 ... 96 (number of groups: 97)`.
     cut = re.sub(r"(?:MIN|MAX)\s*\(\s*[A-Z0-9]+\s*\)", lambda m: "#" * len(m.group()), text)
     if "(" in cut:
@@ -216,7 +215,7 @@ def _tokenize(text: str) -> list[tuple[str, str]] | None:
     tokens: list[tuple[str, str]] = []
     pos = 0
     while pos < len(text):
-        m = _TOKEN_RE.match(text, pos)
+        m = token.match(text, pos)
         if m is None or m.end() == pos:
             if text[pos:].strip() == "":
                 break

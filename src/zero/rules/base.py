@@ -55,8 +55,8 @@ class Rule:
         )
 
 
-_LONG_QUOTED = re.compile(r"`([^`]{81,})`")
-_LONG_WORD = re.compile(r"[^\s`]{81,}")
+_LONG_QUOTED = r"`([^`]{81,})`"  # compiled at the first long message (through re's cache)
+_LONG_WORD = r"[^\s`]{81,}"
 
 
 def _shorten(m: re.Match[str]) -> str:
@@ -85,7 +85,7 @@ class Reporter:
         severity is the most its findings can be. Whether it is reported, and with the severity the
         run gives its code (the user's word wins), is decided by the funnel alone."""
         if len(message) > 300:
-            message = _LONG_WORD.sub(_shorten_word, _LONG_QUOTED.sub(_shorten, message))
+            message = re.sub(_LONG_WORD, _shorten_word, re.sub(_LONG_QUOTED, _shorten, message))
         default = _defaults.get(code, Severity.ERROR)
         c = claim if isinstance(claim, Claim) else \
             evidence_claim(claim, self.list_kind) if claim is not None else rule_claim(code, self.list_kind)

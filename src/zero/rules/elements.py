@@ -23,8 +23,9 @@ from zero.rules.syntax import FAMILY
 
 __all__ = ["FAMILY", "FORM_REFUSED", "NOT_CHECKED", "UNKNOWN_ID", "XML_REFUSED", "check_elements"]
 
-_ELEMENT_RE = re.compile(r"<(P-[A-Z]{4}-[0-9]{5})((?:\.[0-9]+)*)(?=[\s/>]|$)")
-_VALUE_RE = re.compile(r"""\sValue\s*=\s*(?:"([^"]*)"|'([^']*)')""")
+# compiled at the first XML comment line checked (through re's cache): most lists have none
+_ELEMENT_RE = r"<(P-[A-Z]{4}-[0-9]{5})((?:\.[0-9]+)*)(?=[\s/>]|$)"
+_VALUE_RE = r"""\sValue\s*=\s*(?:"([^"]*)"|'([^']*)')"""
 
 XML_REFUSED = FAMILY.rule(
     "S014", "xml-not-read", E, "An XML file zero will not read",
@@ -100,8 +101,8 @@ def check_elements(ctx: Context) -> Iterator[Diagnostic]:
         text = doc.lines[item.line - 1]
         if not text.startswith("# ") or "<P-" not in text:
             continue
-        for m in _ELEMENT_RE.finditer(text):
-            value = _VALUE_RE.match(text, m.end())
+        for m in re.finditer(_ELEMENT_RE, text):
+            value = re.compile(_VALUE_RE).match(text, m.end())
             if value is not None and not (value.group(1) or value.group(2)):
                 continue  # an empty Value: nothing to check, nothing known to say
             span = Span.on_line(item.line, m.start(1), m.end(2))
