@@ -10,6 +10,7 @@ from __future__ import annotations
 import enum
 import re
 from array import array
+from bisect import bisect_left
 from collections.abc import Callable, Iterator
 from itertools import accumulate
 
@@ -568,6 +569,27 @@ class Document:
             got = cols.objects[row] = row_readers[0](self, row)
         return got
 
+    def item_at(self, line: int) -> Item | None:
+        """The item of ``line`` (1-based), without building the others."""
+        if self._items is not None or self._columns is None or self._text is None:
+            items = self.items
+            return items[line - 1] if 1 <= line <= len(items) and items[line - 1].line == line else next(
+                (i for i in items if i.line == line), None)
+        slow = self._slow
+        at = bisect_left(slow, line, key=_line_of)
+        if at < len(slow) and slow[at].line == line:
+            return slow[at]
+        rows = self._columns.line
+        row = bisect_left(rows, line)
+        return self.entry_at(row) if row < len(rows) and rows[row] == line else None
+
+    def other_items(self) -> list[Item]:
+        """The items that are no row of :attr:`columns` (full-line comments, blank lines, ``Ende``,
+        invalid lines, entries after ``Ende``), in line order, without building the rows' entries."""
+        if self._items is not None or self._text is None:
+            return [i for i in self.items if type(i) is not Entry or i.after_end]
+        return [i for i in self._slow if type(i) is not Entry or i.after_end]
+
     def _stream(self) -> Iterator[Item]:
         """The items in line order, each built when reached."""
         if self._items is not None:
@@ -654,6 +676,10 @@ class Document:
 
     def has_line(self, line: int) -> bool:
         return 1 <= line <= self.line_count
+
+
+def _line_of(item: Item) -> int:
+    return item.line
 
 
 def _split_lines(text: str) -> list[str]:

@@ -18,6 +18,7 @@ applies them to the findings of the other rules, so these rules have no check of
 from __future__ import annotations
 
 import re
+from bisect import bisect_right
 from collections.abc import Iterable
 
 from zero.diagnostics import Diagnostic, Severity, Span
@@ -125,42 +126,46 @@ def _noqa_directive(rest: str, line: int, start: int, end: int, known: set[str])
 
 
 def parse_directives(doc: Document, known: set[str]) -> tuple[list[Directive], list[Bad]]:
-    """Directives of a document, and malformed ones as (line, start, end, reason)."""
-    out: list[Directive] = []
-    bad: list[Bad] = []
-    pending_next: list[Directive] = []
-    for item in doc.items:
-        t = type(item)
-        if t is Comment:
-            assert isinstance(item, Comment)
-            text = doc.lines[item.line - 1]
-            m = _ZERO_RE.match(text)
-            if m is None:
-                continue
-            got = _zero_directive(m.group("body"), item.line, m.start("body"), len(text.rstrip()), len(text), known)
-            if isinstance(got, Directive):
-                out.append(got)
-                if got.scope == "next":
-                    pending_next.append(got)
-            else:
-                bad.append(got)
-        elif t is Entry:
-            assert isinstance(item, Entry)
-            for d in pending_next:
-                d.target = item.line
-            pending_next = []
-            if item.comment is None or "noqa" not in item.comment.lower():
-                continue
-            m = _NOQA_RE.search(item.comment)
-            if m is None:
-                continue
-            got = _noqa_directive(m.group("rest"), item.line, item.comment_start + m.start(),
-                                  item.comment_start + m.end(), known)
-            if isinstance(got, Directive):
-                out.append(got)
-            else:
-                bad.append(got)
+    """Directives of a document, and malformed ones as (line, start, end, reason).
+
+    Read from the full-line comments and the comments after a value that hold ``noqa`` (looked for
+    once per distinct comment of :attr:`Document.columns`): no entry object is built but for those."""
+    found: list[tuple[int, Directive | Bad]] = []  # (line, what it holds): one per line at most
+    cols = doc.columns
+    others = doc.other_items()
+    entry_lines: list[int] | None = None  # the lines of every entry (after `Ende` too), for `ignore[...]`
+    for item in others:
+        if type(item) is not Comment:
+            continue
+        text = doc.line_text(item.line)
+        m = _ZERO_RE.match(text)
+        if m is None:
+            continue
+        got = _zero_directive(m.group("body"), item.line, m.start("body"), len(text.rstrip()), len(text), known)
+        if isinstance(got, Directive) and got.scope == "next":
+            if entry_lines is None:
+                entry_lines = [*cols.line, *(i.line for i in others if type(i) is Entry)]
+            at = bisect_right(entry_lines, item.line)
+            got.target = entry_lines[at] if at < len(entry_lines) else None
+        found.append((item.line, got))
+    noqa = {cid for cid, c in enumerate(cols.comments) if "noqa" in c.lower()}
+    entries = [doc.entry_at(row) for row, cid in enumerate(cols.comment) if cid in noqa] if noqa else []
+    entries += [i for i in others if type(i) is Entry and i.comment is not None and "noqa" in i.comment.lower()]
+    for entry in entries:
+        assert entry.comment is not None
+        m = _NOQA_RE.search(entry.comment)
+        if m is None:
+            continue
+        found.append((entry.line, _noqa_directive(m.group("rest"), entry.line, entry.comment_start + m.start(),
+                                                  entry.comment_start + m.end(), known)))
+    found.sort(key=_first)
+    out = [got for _, got in found if isinstance(got, Directive)]
+    bad = [got for _, got in found if not isinstance(got, Directive)]
     return out, bad
+
+
+def _first(pair: tuple[int, Directive | Bad]) -> int:
+    return pair[0]
 
 
 def parse_comment_directives(comments: Iterable[tuple[int, int, str]], code_lines: Iterable[int],

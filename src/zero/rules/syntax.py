@@ -10,6 +10,8 @@ import re
 from collections.abc import Callable, Iterator
 
 from zero.catalog.evidence import claim
+from zero.catalog.registry import ParamSpec
+from zero.catalog.values import bind
 from zero.diagnostics import Diagnostic, Edit, Fix, Span
 from zero.lists.model import Comment, CommentStyle, Problem, ValueKind
 from zero.rules.base import INFO, Context, E, Family, W
@@ -265,7 +267,7 @@ _SAID = {"S001": "malformed-line", "S002": "unreadable-entry", "S003": "unreadab
 def _commented_parameter(ctx: Context, line: int) -> str | None:
     """The key of a parameter commented out on ``line``: a documented key, or one shaped like a
     key of members and indices (``a.b``, ``a[0]``); ``#Achse X neu`` is prose, not a parameter."""
-    item = ctx.doc.items[line - 1] if line <= len(ctx.doc.items) else None
+    item = ctx.doc.item_at(line)
     entry = item.commented_out if type(item) is Comment else None
     if entry is None or entry.key is None:
         return None
@@ -311,15 +313,28 @@ Fix: start the comment with `(`: `kopf.log_achs_name  X_Achse  ( main axis`.
 
 @FAMILY.check(STRING_COMMENT)
 def check_string_comments(ctx: Context) -> Iterator[Diagnostic]:
-    """S006: after a STRING value only `(` opens a comment."""
-    for res in ctx.resolved:
-        e = res.entry
-        if res.spec.type != "STRING" or e.comment is None:
+    """S006: after a STRING value only `(` opens a comment. A pass over the columns: the comments that
+    start otherwise, then the rows that hold one, then their parameters (bound once per pattern)."""
+    cols = ctx.doc.columns
+    wanted = {cid for cid, style in enumerate(cols.styles) if style is not CommentStyle.PAREN}
+    if not wanted:
+        return
+    kinds, values, patterns = cols.kinds, cols.value, cols.pattern
+    strings: dict[int, ParamSpec | None] = {}  # pattern id -> its parameter when a STRING one
+    for row, cid in enumerate(cols.comment):
+        if cid not in wanted:
             continue
-        if e.comment_style is CommentStyle.PAREN:
+        kind = kinds[values[row]]
+        if kind is None or kind is ValueKind.FLAGS:
             continue
-        if e.value_kind is ValueKind.FLAGS:
+        pid = patterns[row]
+        if pid not in strings:
+            hit = bind(ctx.registry, cols.patterns[pid], ctx.kind)
+            strings[pid] = hit[0] if hit is not None and hit[0].type == "STRING" else None
+        spec = strings[pid]
+        if spec is None:
             continue
+        e = ctx.doc.entry_at(row)
         span = Span.on_line(e.line, e.comment_start, len(ctx.doc.line_text(e.line)))
         fix = Fix(
             "Start the comment with `(`",
@@ -331,7 +346,7 @@ def check_string_comments(ctx: Context) -> Iterator[Diagnostic]:
             span,
             f"comment after the string value of `{e.key_text}` does not start with `(`: the "
             "controller may read it as part of the value",
-            param_id=res.spec.id,
+            param_id=spec.id,
             fix=fix,
             hint=fix.title,
         )
