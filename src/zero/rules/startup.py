@@ -170,11 +170,17 @@ def check_startup(ctx: Context) -> Iterator[Diagnostic]:
     own parameter (`getriebe[0].dynamik.vb_max 0`: 110079, not the checks that merely read it)."""
     by_line: dict[int, list[tuple[bool, Diagnostic]]] = {}
     by_id = ctx.by_id
-    for err in CHECKS:
-        if err.kind != ctx.kind or err.code not in ctx.severities or \
-                not any(p in by_id for p in compiled(err).read):
-            continue  # another kind, not selected, or the list sets nothing the condition reads
-        for d, own in _check(ctx, err):
+    severities = ctx.severities
+    for err in _of_kind(ctx.kind):
+        if err.code not in severities:
+            continue  # not selected
+        c = compiled(err)
+        for p in c.read:
+            if p in by_id:
+                break
+        else:
+            continue  # the list sets nothing the condition reads
+        for d, own in _check(ctx, err, c):
             by_line.setdefault(d.span.line, []).append((own, d))
     for line in sorted(by_line):
         found = by_line[line]
@@ -182,22 +188,45 @@ def check_startup(ctx: Context) -> Iterator[Diagnostic]:
         yield primary[0]
 
 
-def _elements(ctx: Context, err: StartupError) -> list[tuple[int, ...]]:
+_BY_KIND: dict[str | None, list[StartupError]] = {}
+
+
+def _of_kind(kind: str | None) -> list[StartupError]:
+    """The checks of one list kind, in order (found once: a fleet asks for each of its lists)."""
+    if not _BY_KIND:
+        for err in CHECKS:
+            _BY_KIND.setdefault(err.kind, []).append(err)
+        _BY_KIND.setdefault("", [])  # never empty once built
+    return _BY_KIND.get(kind, [])
+
+
+def _facts(ctx: Context, pid: str) -> tuple[ParamSpec | None, bool, int]:
+    """A parameter as the K checks read it: its spec, whether its value is text (:func:`_text`), and
+    how many indices its elements have; found once per registry (a fleet's K checks read a few hundred
+    parameters a hundred thousand times)."""
+    memo: dict[str, tuple[ParamSpec | None, bool, int]] = ctx.registry.memo.setdefault("startup", {})
+    got = memo.get(pid)
+    if got is None:
+        spec = ctx.registry.get(pid)
+        got = memo[pid] = (spec, _text(spec), len(spec.dims) if spec is not None else 0)
+    return got
+
+
+def _elements(ctx: Context, err: StartupError, c: _Compiled) -> list[tuple[int, ...]]:
     """The elements to check: those the list sets of the reported parameter (or of any parameter of the
     condition), so that a condition on `getriebe[g]` is checked for each gear the list writes."""
-    spec = ctx.registry.get(err.params[0]) if err.params else None
-    ids = [*err.params, *compiled(err).read]
+    n = _facts(ctx, err.params[0])[2] if err.params else 0
     seen: dict[tuple[int, ...], None] = {}
-    for pid in ids:
+    for pid in (*err.params, *c.read):
         for idx in ctx.ids_of(pid):
-            seen[idx[: len(spec.dims)] if spec is not None and spec.dims else ()] = None
+            seen[idx[:n] if n else ()] = None
     return list(seen) or [()]
 
 
-def _check(ctx: Context, err: StartupError) -> Iterator[tuple[Diagnostic, bool]]:
-    """Each failing element's finding, and whether it lies on the line of the parameter it reports."""
-    c = compiled(err)
-    for idx in _elements(ctx, err):
+def _check(ctx: Context, err: StartupError, c: _Compiled) -> Iterator[tuple[Diagnostic, bool]]:
+    """Each failing element's finding, and whether it lies on the line of the parameter it reports
+    (``c``: the error's compiled condition)."""
+    for idx in _elements(ctx, err, c):
         def lookup(pid: str, index: int | None, idx: tuple[int, ...] = idx) -> float | int | str | None:
             if pid == DEFAULT_LIST:
                 return int(ctx.default_list)
@@ -322,9 +351,8 @@ def _shown(value: float | int | str | None) -> str:
 
 def _element(ctx: Context, pid: str, idx: tuple[int, ...]) -> tuple[int, ...]:
     """The element of ``pid`` that element ``idx`` of the checked parameter pairs with."""
-    spec = ctx.registry.get(pid)
-    n = len(spec.dims) if spec is not None else 0
-    return tuple(idx[:n]) + (0,) * max(n - len(idx), 0)
+    n = _facts(ctx, pid)[2]
+    return idx if len(idx) == n else idx[:n] if len(idx) > n else idx + (0,) * (n - len(idx))
 
 
 def _own(ctx: Context, pid: str, idx: tuple[int, ...]) -> Resolved | None:
@@ -336,10 +364,11 @@ def _value(ctx: Context, pid: str, idx: tuple[int, ...]) -> float | int | str | 
     """The value as written, where the list writes a number (also one the catalogue's range refuses:
     the kernel's own check sees it), else the value the controller uses (the default where unset); a
     STRING parameter's text (the list's, else the default list's, else the catalogue default)."""
-    spec = ctx.registry.get(pid)
-    if _text(spec):
-        return ctx.text_of(pid, _element(ctx, pid, idx))
-    res = _own(ctx, pid, idx)
+    _, text, n = _facts(ctx, pid)
+    element = idx if len(idx) == n else idx[:n] if len(idx) > n else idx + (0,) * (n - len(idx))
+    if text:
+        return ctx.text_of(pid, element)
+    res = ctx.by_id.get(pid, {}).get(element)  # this list's entry (_own)
     if res is not None:
         if res.value.number is not None:
             return res.value.number
