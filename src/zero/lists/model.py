@@ -360,7 +360,7 @@ class Columns:
         if indexed:
             pattern = head + "[]" + tail_pattern
         else:  # no index after the head: the whole key (`kenngr.swe_pos`, `wz[01].x` with its zero)
-            pattern, tail_indices = _part(head + tail) if "[" in tail else (head + tail_pattern, tail_indices)
+            pattern, tail_indices = _part(head + tail)
         pid = self._pattern_ids.get(pattern)
         if pid is None:
             pattern = _patterns.get(pattern) or (

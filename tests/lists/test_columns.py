@@ -1,0 +1,155 @@
+"""The columnar document (issue 40): the columns the tokenizer writes agree with the entries the careful
+scanner builds, entries are built on demand and kept, and what reads the columns finds what it found
+on the objects."""
+
+from __future__ import annotations
+
+from typing import Any
+
+import pytest
+from hypothesis import example, given, settings
+from hypothesis import strategies as st
+
+from zero.lists import tokenizer
+from zero.lists.model import Columns, Document, Entry
+from zero.lists.tokenizer import tokenize_text
+from zero.rules.suppress import parse_directives
+
+_KEYS = ["wz[1].laenge", "wz[17].kinematic.param[3]", "kenngr.swe_pos", "a", "a[0]", "a[1][2].b[3]", "q[007].r",
+         "x[00].y", "np_grp[1].achse[2].versch", "Ende", "5abc", "a..b", "a.", "a[1]x", "a]", "k[1", f"w[{'9' * 19}].x",
+         "np_grp[0].achse[1]. inaktiv", "#kenngr.x", "# zero: ignore[R005]", "# zero: noqa: S", "# zero: ignore R5"]
+_VALUES = ["1", "-5", "0x1F", "1.5", "1e3", "P-AXIS-00212.0", "A|B", "A | B", '"q s"', '"open', "WORD", "./x.lis", ""]
+_COMMENTS = ["", "( P-TOOL-00005 : x", "# c", "/* c */", "plain words", "# noqa", "( noqa: R005 )", "# noqa: Q9",
+             "(P-AXIS-00001", "# c\r", "( a | b"]
+_GAPS = [" ", "\t", "   ", " \t "]
+
+
+@st.composite
+def _line(draw: st.DrawFn) -> str:
+    choice = draw(st.integers(0, 9))
+    if choice == 0:
+        return draw(st.sampled_from(["", "  ", "#", "# comment", "Ende", "#a 1", "*****", "\x0c", "µ ä"]))
+    lead = draw(st.sampled_from(["", "", " ", "\t"]))
+    parts = [lead + draw(st.sampled_from(_KEYS))]
+    value = draw(st.sampled_from(_VALUES))
+    if value:
+        parts += [draw(st.sampled_from(_GAPS)), value]
+        comment = draw(st.sampled_from(_COMMENTS))
+        if comment:
+            parts += [draw(st.sampled_from(_GAPS)), comment]
+    parts.append(draw(st.sampled_from(["", "", " "])))
+    return "".join(parts)
+
+
+_TEXTS = st.tuples(st.lists(_line(), max_size=25), st.sampled_from(["\n", "\r\n", "mixed"]),
+                   st.booleans()).map(
+    lambda t: "".join(s + ("\r\n" if t[1] == "\r\n" or (t[1] == "mixed" and n % 3 == 0) else "\n")
+                      for n, s in enumerate(t[0]))[: None if t[2] else -1])
+
+
+def _fields(obj: Any) -> dict[str, Any]:
+    return {k: _fields(v) if isinstance(v, Entry) else v for k in obj.__slots__ for v in [getattr(obj, k)]}
+
+
+def _check(text: str) -> None:
+    careful = tokenize_text(text, use_fast=False)
+    doc = tokenize_text(text)
+    cols = doc.columns
+    entries = careful.entries
+    assert len(cols) == len(entries)
+    # the columns, row by row, before any object is built
+    for row, e in enumerate(entries):
+        assert e.key is not None
+        assert cols.line[row] == e.line
+        assert cols.key_text(row) == e.key_text
+        assert cols.indices(row) == e.key.indices
+        assert cols.patterns[cols.pattern[row]] == e.key.pattern
+        assert cols.patterns[cols.shapes[cols.shape[row]].pattern] == e.key.pattern
+        assert cols.key(row) == e.key
+        assert cols.value_text(row) == e.value and cols.value_kind(row) is e.value_kind
+        assert cols.comment_text(row) == e.comment
+        cid = cols.comment[row]
+        if cid >= 0:
+            assert cols.styles[cid] is e.comment_style and cols.notes[cid] == e.annotation
+            assert cols.note_at[cid] == (e.annotation_start - e.comment_start if e.annotation_start >= 0 else -1)
+    # the text, without building lines or items
+    fresh = tokenize_text(text)
+    assert fresh.line_count == len(careful.lines)
+    assert [fresh.line_text(n) for n in range(0, len(careful.lines) + 2)] == ["", *careful.lines, ""]
+    assert fresh.newline == careful.newline and fresh.declared_kind() == careful.declared_kind()
+    assert [fresh.item_at(n) is not None for n in range(1, len(careful.lines) + 1)] == [True] * len(careful.lines)
+    # nothing above built the items (control characters do: where they are is told line by line)
+    assert fresh._items is None or tokenizer._control_count(text) > text.count("\r\n")
+    assert doc.problems == careful.problems
+    # an entry of a row is the careful scanner's, field by field
+    built = [doc.entry_at(row) for row in range(len(cols))]
+    assert [_fields(e) for e in built] == [_fields(e) for e in entries]
+    # then lines, endings and items as the careful scanner's, holding the same entry objects
+    assert doc.lines == careful.lines and doc.endings == careful.endings
+    assert [(type(i), _fields(i)) for i in doc.items] == [(type(i), _fields(i)) for i in careful.items]
+    assert all(a is b for a, b in zip(doc.entries, built, strict=True))
+    assert [doc.item_at(n) for n in range(1, len(careful.lines) + 1)] == doc.items
+    # columns built from objects (a document of another form) agree as well
+    other = Columns.of_entries(entries)
+    assert [other.key_text(r) for r in range(len(other))] == [cols.key_text(r) for r in range(len(cols))]
+    assert [other.patterns[p] for p in other.pattern] == [cols.patterns[p] for p in cols.pattern]
+    assert [other.indices(r) for r in range(len(other))] == [cols.indices(r) for r in range(len(cols))]
+
+
+def _directives(doc: Document) -> tuple[list[Any], list[Any]]:
+    found, bad = parse_directives(doc, {"R005", "S001", "S005", "M003"})
+    return [(d.line, d.start, d.end, d.codes, d.scope, d.target) for d in found], bad
+
+
+@settings(max_examples=400, deadline=None)
+@given(_TEXTS)
+@example("wz[1].x 1\nwz[2].x 2 ( P-TOOL-00005 : a\n")
+@example("a 1\r\nb[01] 2\r\nEnde\r\nc 3 # noqa\r\n# zero: ignore[R005]\r\nd 4")
+@example("k 1\r")
+@example("")
+def test_columns_agree_with_the_careful_scanner(text: str) -> None:
+    _check(text)
+
+
+@settings(max_examples=200, deadline=None)
+@given(_TEXTS)
+@example("# zero: ignore[R005]\n# zero: noqa: S\na 1 # noqa\nEnde\nb 2 ( noqa: R005 )\n# zero: ignore[S001]\n")
+def test_directives_are_found_as_on_the_objects(text: str) -> None:
+    careful = tokenize_text(text, use_fast=False)
+    objects = Document("-", "utf-8", careful.lines, careful.endings, careful.items, careful.problems)
+    doc = tokenize_text(text)
+    assert _directives(doc) == _directives(objects)
+    assert doc._items is None or tokenizer._control_count(text) > text.count("\r\n")  # without the items
+
+
+def test_many_parts_of_a_big_text_read_as_one(monkeypatch: pytest.MonkeyPatch) -> None:
+    """The pattern reads the text in parts: lines across part boundaries, and parts with lines the
+    columns do not take (a comment, `Ende`), read as in one."""
+    lines = [f"wz[{n}].x{n % 3} {n} ( P-TOOL-00005 : c{n % 2}" for n in range(300)]
+    lines[37] = "# a comment"
+    lines[120] = "a b c | d"
+    lines[250] = "Ende"
+    text = "\r\n".join(lines)
+    monkeypatch.setattr(tokenizer, "_CHUNK", 40)
+    _check(text)
+    doc = tokenize_text(text)
+    assert len(doc.columns) == 249 and doc.end_line == 251  # a comment and `Ende` are no rows
+
+
+def test_an_entry_is_built_once_and_kept() -> None:
+    doc = tokenize_text("a 1\nb[2].c 3 # x\n# c\nd 4\n")
+    first = doc.entry_at(1)
+    assert doc.entry_at(1) is first and doc._items is None
+    first.value = "changed"  # code that changes an entry sees its change in items and entries
+    assert doc.items[1] is first and doc.entries[1] is first and doc.item_at(2) is first
+    assert isinstance(doc.items[2], type(doc.other_items()[0]))
+    assert [e.line for e in doc.entries] == list(doc.columns.line) == [1, 2, 4]
+
+
+def test_a_document_built_from_items_has_columns() -> None:
+    careful = tokenize_text("a 1\n# c\nb[3] x # noqa\n", use_fast=False)
+    doc = Document("-", "utf-8", careful.lines, careful.endings, careful.items)
+    assert len(doc.columns) == 2 and doc.entry_at(1) is careful.items[2]
+    assert isinstance(doc.entry_at(0), Entry) and doc.columns.key_text(1) == "b[3]"
+    doc.items = careful.items[:1]  # new items: the columns follow
+    assert len(doc.columns) == 1
