@@ -171,15 +171,20 @@ class SpecTable(Mapping[str, "ParamSpec"]):
     those keeps start-up short. Iterating builds them all.
     """
 
-    def __init__(self, rows: dict[str, dict[str, Any]], index_base: dict[str, int]) -> None:
-        self._rows = rows
+    def __init__(self, rows: Mapping[str, dict[str, Any] | tuple[Any, ...]], index_base: dict[str, int],
+                 columns: tuple[str, ...] = ()) -> None:
+        self._rows = rows  # a row: a dictionary, or a tuple of the built-in table (fields in ``columns``' order)
         self._index_base = index_base
+        self._columns = columns
         self._built: dict[str, ParamSpec] = {}
 
     def __getitem__(self, param_id: str) -> ParamSpec:
         spec = self._built.get(param_id)
         if spec is None:
-            spec = self._built[param_id] = _spec_from_row(self._rows[param_id], self._index_base)
+            row = self._rows[param_id]
+            if isinstance(row, tuple):
+                row = {c: v for c, v in zip(self._columns, row, strict=True) if v is not None}
+            spec = self._built[param_id] = _spec_from_row(row, self._index_base)
         return spec
 
     def get(self, param_id: str, default: Any = None) -> Any:
@@ -201,7 +206,10 @@ class SpecTable(Mapping[str, "ParamSpec"]):
     def keys_by_kind(self) -> Iterator[tuple[str, str, str]]:
         """(id, kind, key) of every parameter that has a key, without building specs."""
         for pid, row in self._rows.items():
-            if row.get("key"):
+            if isinstance(row, tuple):  # the built-in table's (id, kind, key, …)
+                if row[2]:
+                    yield pid, row[1], row[2]
+            elif row.get("key"):
                 yield pid, row["kind"], row["key"]
 
 
@@ -489,16 +497,25 @@ def _overlay() -> dict[str, Any]:
 
 def build_registry(rows: list[dict[str, Any]], source: str) -> Registry:
     """Combine table rows with the seed overlay into a :class:`Registry`."""
+    by_id: dict[str, dict[str, Any] | tuple[Any, ...]] = {r["id"]: r for r in rows}
+    return _built(by_id, source)
+
+
+def _built(by_id: dict[str, dict[str, Any] | tuple[Any, ...]], source: str, columns: tuple[str, ...] = ()) -> Registry:
+    """The registry of rows by ID (dictionaries, or the built-in table's tuples in ``columns``' order)
+    with the seed overlay. The rows are shared, never changed: a row the overlay changes is copied."""
     overlay = _overlay()
-    by_id = {r["id"]: r for r in rows}  # the rows are shared, never changed: a row the overlay changes is copied
     for pid, extra in overlay.get("params", {}).items():
-        row = by_id[pid] = dict(by_id.get(pid) or {"id": pid, "kind": pid[2:6], "type": "STRING"})
+        old = by_id.get(pid)
+        if isinstance(old, tuple):
+            old = {c: v for c, v in zip(columns, old, strict=True) if v is not None}
+        row = by_id[pid] = dict(old or {"id": pid, "kind": pid[2:6], "type": "STRING"})
         if "description" in extra and row.get("vendor_text"):
             row["vendor_text"] = None
         row.update(extra)
         row.pop("range_note", None) if "range" in extra else None
     index_base = overlay.get("index_base", {})
-    specs = SpecTable(by_id, index_base)
+    specs = SpecTable(by_id, index_base, columns)
     aliases = {}
     for name, target in overlay.get("aliases", {}).items():
         kind, _, pattern = name.partition(":")
@@ -521,7 +538,10 @@ def load_registry(param_desc: str | Path | None = None) -> Registry:
     """A new registry: the built-in table, or one built from a user's ``CncParaDesc.xml``
     (:class:`~zero.errors.ZeroError` when that file cannot be read)."""
     if param_desc is None:
-        return build_registry(load_table(), BUILTIN_SOURCE)
+        from zero.catalog.data.table import COLUMNS, DATA  # start-up: the 1766 rows only for the built-in registry
+
+        assert COLUMNS[:3] == ("id", "kind", "key")  # what keys_by_kind reads of a tuple
+        return _built({row[0]: row for row in DATA}, BUILTIN_SOURCE, COLUMNS)
     from zero.catalog.paramdesc import read_param_desc  # start-up: XML parsing only when asked
 
     rows = read_param_desc(param_desc, with_text=True)
