@@ -11,8 +11,9 @@ import enum
 import re
 from array import array
 from bisect import bisect_left
-from collections.abc import Callable, Iterator
+from collections.abc import Iterator
 from itertools import accumulate
+from typing import Any
 
 from zero.forms import XML_ROOTS, root_of
 from zero.records import Field, record
@@ -451,9 +452,9 @@ class Shape:
     indexed: bool
 
 
-# Rebuilds an entry of a row the tokenizer read into columns only (zero.lists.tokenizer sets it).
-RowReader = Callable[["Document", int], Entry]
-row_readers: list[RowReader] = []
+# What builds the entry of a row the tokenizer read into columns only, and every row's (zero.lists.tokenizer
+# sets them: it reads the line again).
+row_readers: list[Any] = []
 
 
 _DOC_FIELDS = ("path", "encoding", "lines", "endings", "items", "problems", "bom", "end_line", "origin")
@@ -546,7 +547,7 @@ class Document:
     @property
     def items(self) -> list[Item]:
         if self._items is None:
-            self._items = list(self._stream())
+            self._items = list(self._stream(True))
         return self._items
 
     @items.setter
@@ -569,6 +570,13 @@ class Document:
             got = cols.objects[row] = row_readers[0](self, row)
         return got
 
+    def _all_rows(self) -> dict[int, Entry]:
+        """Every row's entry, built in one pass (what forcing ``items`` or ``entries`` does)."""
+        cols = self.columns
+        if len(cols.objects) < len(cols):
+            row_readers[1](self)
+        return cols.objects
+
     def item_at(self, line: int) -> Item | None:
         """The item of ``line`` (1-based), without building the others."""
         if self._items is not None or self._columns is None or self._text is None:
@@ -590,8 +598,8 @@ class Document:
             return [i for i in self.items if type(i) is not Entry or i.after_end]
         return [i for i in self._slow if type(i) is not Entry or i.after_end]
 
-    def _stream(self) -> Iterator[Item]:
-        """The items in line order, each built when reached."""
+    def _stream(self, build: bool = False) -> Iterator[Item]:
+        """The items in line order, each built when reached (``build``: all at once, first)."""
         if self._items is not None:
             yield from self._items
             return
@@ -602,6 +610,7 @@ class Document:
             return
         at = 0
         count = len(slow)
+        objects = self._all_rows() if build else cols.objects
         for row, line in enumerate(cols.line):
             while at < count and slow[at].line < line:
                 yield slow[at]
@@ -610,14 +619,15 @@ class Document:
                 yield slow[at]
                 at += 1
             else:
-                yield self.entry_at(row)
+                yield objects.get(row) or self.entry_at(row)
         yield from slow[at:]
 
     @property
     def entries(self) -> list[Entry]:
         """The entries the controller reads (before ``Ende``)."""
         if self._items is None and self._columns is not None:
-            return [self.entry_at(row) for row in range(len(self._columns))]
+            objects = self._all_rows()
+            return list(map(objects.__getitem__, range(len(self._columns))))
         return [i for i in self.items if type(i) is Entry and not i.after_end]
 
     @property

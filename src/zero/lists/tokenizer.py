@@ -14,6 +14,7 @@ with its location, which :mod:`zero.rules.syntax` turns into a finding.
 from __future__ import annotations
 
 import re
+from collections.abc import Sequence
 
 from zero.lists.encoding import decode
 from zero.lists.model import (
@@ -26,8 +27,10 @@ from zero.lists.model import (
     Entry,
     Invalid,
     Item,
+    Key,
     Problem,
     ValueKind,
+    _singles,
     parse_key,
     row_readers,
     scanned_key,
@@ -326,20 +329,55 @@ def _value_kind(value: str) -> ValueKind:
 
 
 def _read_row(doc: Document, row: int) -> Entry:
-    """The entry of a row the tokenizer read into columns only: the line read again, as it was."""
+    """The entry of a row the tokenizer read into columns only: its line read again, as it was."""
+    return _read(doc, (row,), [doc.line_text(doc.columns.line[row])], True)[row]
+
+
+def _read_rows(doc: Document) -> None:
+    """Every row's entry (those not built yet), as :func:`_read_row` builds one, in one pass."""
+    _read(doc, range(len(doc.columns)), doc.lines, False)
+
+
+def _read(doc: Document, rows: Sequence[int], lines: list[str], one: bool) -> dict[int, Entry]:
+    """Build the entries of ``rows`` (from ``lines``: the document's, or ``one`` row's line) into
+    ``doc.columns.objects``: positions from the line, the rest from the columns."""
     cols = doc.columns
-    number = cols.line[row]
-    m = _FAST_ENTRY_RE.match(doc.line_text(number))
-    assert m is not None, (doc.path, number)
-    at = cols.value[row]
-    entry = _fast_entry(m, number, cols.values[at], cols.kinds[at], None)
-    cid = cols.comment[row]
-    if cid >= 0:  # the comment the table keeps, not a copy per entry
-        entry.comment = cols.comments[cid]
-    return entry
+    objects = cols.objects
+    match = _FAST_ENTRY_RE.match
+    line, shape, first, value, comment = cols.line, cols.shape, cols.first, cols.value, cols.comment
+    shapes, patterns, values, kinds = cols.shapes, cols.patterns, cols.values, cols.kinds
+    comments, styles, notes, note_at = cols.comments, cols.styles, cols.notes, cols.note_at
+    for row in rows:
+        if row in objects:
+            continue
+        number = line[row]
+        m = match(lines[0 if one else number - 1])
+        assert m is not None, (doc.path, number)
+        ks, ke = m.span(1)
+        vs, ve = m.span(5)
+        sh = shapes[shape[row]]
+        index = first[row]
+        if index < 0:
+            indices = sh.indices
+        elif sh.indices:
+            indices = (index, *sh.indices)
+        else:  # the keys of one element (a tool's 38) share their tuple
+            indices = _singles.get(index) or _singles.setdefault(index, (index,))
+        key_text = m.group(1)
+        key = Key(key_text, patterns[sh.pattern], indices)
+        at = value[row]
+        cid = comment[row]
+        if cid < 0:
+            objects[row] = Entry(number, key_text, key_text, key, ks, ke, values[at], kinds[at], vs, ve)
+            continue
+        cs = m.start(6)
+        at_note = note_at[cid]
+        objects[row] = Entry(number, key_text, key_text, key, ks, ke, values[at], kinds[at], vs, ve,
+                             comments[cid], cs, styles[cid], notes[cid], cs + at_note if at_note >= 0 else -1)
+    return objects
 
 
-row_readers.append(_read_row)
+row_readers.extend((_read_row, _read_rows))
 
 
 class _Reader:
