@@ -108,14 +108,15 @@ def one_resolution() -> Iterator[None]:
         _RESOLVED.pop()
 
 
-def _resolved_folder(folder: Path) -> str:
+def _resolved_folder(folder: str | Path) -> str:
+    """``str(Path(folder).resolve())``, once per folder within :func:`one_resolution`."""
+    name = os.fspath(folder)
     if not _RESOLVED:
-        return str(folder.resolve())
+        return str(Path(name).resolve())
     memo = _RESOLVED[-1]
-    name = str(folder)
     hit = memo.get(name)
     if hit is None:
-        hit = memo[name] = str(folder.resolve())
+        hit = memo[name] = str(Path(name).resolve())
     return hit
 
 
@@ -174,8 +175,10 @@ class Config:
                 return _resolved(file).relative_to(self.root.resolve()).as_posix()
             except ValueError:
                 return None
-        folder, root = _resolved_folder(file.parent), _resolved_folder(self.root)
-        name = file.name
+        parent, name = os.path.split(os.fspath(file))  # a Path's text: file.parent and file.name
+        own = os.fspath(self.path) if self.path is not None else None
+        folder = _resolved_folder(parent or ".")
+        root = _resolved_folder((os.path.dirname(own) or ".") if own is not None else os.getcwd())
         if folder == root:
             return name if name else "."
         head = root if root.endswith("/") else root + "/"

@@ -100,7 +100,7 @@ def collect_files(paths: Iterable[str | Path], include: Callable[[Path], bool] |
                         tally[EXCLUDE] = tally.get(EXCLUDE, 0) + _walkable(Path(root) / d, include)
                 rel_root = os.path.relpath(root, p)
                 for f in files:
-                    path = Path(root) / f
+                    path = Path(os.path.join(root, f))  # one parse (`Path(root) / f` parses twice)
                     wanted = include(path) if include else f.lower().endswith(_WALKED)
                     if visible is not None and os.path.normpath(os.path.join(rel_root, f)) not in visible:
                         if wanted:
