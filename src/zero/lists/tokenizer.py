@@ -264,8 +264,9 @@ def _controls(lines: list[str], items: list[Item], end_line: int | None, declare
 
 def _control_count(text: str) -> int:
     """How many characters of the text ``_CONTROL_RE`` matches (each CRLF's \\r among them)."""
-    if text.isascii():  # one pass in C, ten times faster than the regex over a big list
-        return len(text.encode("ascii").translate(None, _NOT_CONTROL))
+    if text.isascii():  # in C, ten times faster than the regex over a big list; in parts: no copy of the text
+        return sum(len(text[at:at + _CHUNK].encode("ascii").translate(None, _NOT_CONTROL))
+                   for at in range(0, len(text), _CHUNK))
     return len(_CONTROL_RE.findall(text))
 
 
