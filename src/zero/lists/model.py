@@ -423,10 +423,9 @@ class Columns:
 
     def _keyless(self, text: str) -> int:
         got = self._shape_ids.get((text, False, "\x00"))
-        if got is None:
-            pid = self._pattern_ids.setdefault(text, len(self.patterns))
-            if pid == len(self.patterns):
-                self.patterns.append(text)
+        if got is None:  # a pattern of its own: no key pattern shares it
+            pid = len(self.patterns)
+            self.patterns.append(text)
             got = self._shape_ids[(text, False, "\x00")] = len(self.shapes)
             self.shapes.append(Shape(text, "", pid, (), False))
         return got
@@ -646,10 +645,18 @@ class Document:
             return ""
         if self._lines is not None or self._text is None:
             return self.lines[line - 1]
+        text = self._text
         if self._starts is None:
-            self._starts = array("q", accumulate(map((1).__add__, map(len, self._text.split("\n"))), initial=0))
-        got = self._text[self._starts[line - 1]:self._starts[line] - 1]
-        return got[:-1] if got.endswith("\r") and self._starts[line] <= len(self._text) else got
+            if line <= 64:  # a line near the top (the kind an XML list's comments declare): no index of all
+                at = 0
+                for _ in range(line - 1):
+                    at = text.find("\n", at) + 1
+                end = text.find("\n", at)
+                got = text[at:] if end < 0 else text[at:end]
+                return got[:-1] if end >= 0 and got.endswith("\r") else got
+            self._starts = array("q", accumulate(map((1).__add__, map(len, text.split("\n"))), initial=0))
+        got = text[self._starts[line - 1]:self._starts[line] - 1]
+        return got[:-1] if got.endswith("\r") and self._starts[line] <= len(text) else got
 
     def holds_xml_lines(self) -> bool:
         """Was this list text written from an XML list (do its first comment lines hold the XML lines,
