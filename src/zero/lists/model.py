@@ -113,6 +113,8 @@ def parse_key(text: str, trusted: bool = False) -> Key | None:
 
 
 _shapes: dict[tuple[str, str], tuple[str, tuple[int, ...]]] = {}
+# (head, indexed, tail) -> (pattern, the tail's indices): Columns.shape_id's parse, shared by documents
+_shape_parts: dict[tuple[str, bool, str], tuple[str, tuple[int, ...]]] = {}
 _singles: dict[int, tuple[int]] = {}
 
 
@@ -354,18 +356,25 @@ class Columns:
     def shape_id(self, head: str, indexed: bool, tail: str) -> int:
         """The id of the shape ``head[first]tail`` (``head + tail``: ``indexed`` False), added when new.
         ``head`` and ``tail`` must be a key's parts as :func:`parse_key` accepts it."""
-        got = self._shape_ids.get((head, indexed, tail))
+        key = (head, indexed, tail)
+        got = self._shape_ids.get(key)
         if got is not None:
             return got
-        tail_pattern, tail_indices = _part(tail)
-        if indexed:
-            pattern = head + "[]" + tail_pattern
-        else:  # no index after the head: the whole key (`kenngr.swe_pos`, `wz[01].x` with its zero)
-            pattern, tail_indices = _part(head + tail)
-        pid = self._pattern_ids.get(pattern)
-        if pid is None:
+        parts = _shape_parts.get(key)
+        if parts is None:
+            tail_pattern, tail_indices = _part(tail)
+            if indexed:
+                pattern = head + "[]" + tail_pattern
+            else:  # no index after the head: the whole key (`kenngr.swe_pos`, `wz[01].x` with its zero)
+                pattern, tail_indices = _part(head + tail)
             pattern = _patterns.get(pattern) or (
                 _patterns.setdefault(pattern, pattern) if len(_patterns) < _CACHE_LIMIT else pattern)
+            parts = (pattern, tail_indices)
+            if len(_shape_parts) < _CACHE_LIMIT and len(head) + len(tail) < 512:
+                _shape_parts[key] = parts
+        pattern, tail_indices = parts
+        pid = self._pattern_ids.get(pattern)
+        if pid is None:
             pid = self._pattern_ids[pattern] = len(self.patterns)
             self.patterns.append(pattern)
         got = self._shape_ids[(head, indexed, tail)] = len(self.shapes)
@@ -564,9 +573,12 @@ class Document:
     def entry_at(self, row: int) -> Entry:
         """The entry of a row of :attr:`columns`: the same object each time, and the one ``items`` holds."""
         cols = self.columns
-        got = cols.objects.get(row)
+        objects = cols.objects
+        got = objects.get(row)
         if got is None:
-            got = cols.objects[row] = row_readers[0](self, row)
+            if len(objects) >= 32 and 4 * len(objects) >= len(cols):  # asked for most rows: all in one pass
+                return self._all_rows()[row]
+            got = objects[row] = row_readers[0](self, row)
         return got
 
     def _all_rows(self) -> dict[int, Entry]:

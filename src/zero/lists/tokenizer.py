@@ -324,9 +324,34 @@ def _fast_entry(m: re.Match[str], number: int, value: str, kind: ValueKind | Non
                  cs + at if at >= 0 else -1)
 
 
+# What each distinct key shape, value and comment is, kept across the documents of a run (a fleet's lists
+# repeat each other's keys, values and comments).
+_TABLE_LIMIT = 65_536
+_valid_shapes: dict[tuple[str, str], bool] = {}
+_kinds: dict[str, ValueKind] = {}
+_comment_table: dict[str, tuple[CommentStyle, str | None, int]] = {}
+
+
 def _value_kind(value: str) -> ValueKind:
-    km = _KIND_RE.fullmatch(value)
-    return _KIND_OF[km.lastgroup] if km is not None and km.lastgroup else ValueKind.WORD
+    got = _kinds.get(value)
+    if got is None:
+        km = _KIND_RE.fullmatch(value)
+        got = _KIND_OF[km.lastgroup] if km is not None and km.lastgroup else ValueKind.WORD
+        if len(_kinds) < _TABLE_LIMIT and len(value) < 256:
+            _kinds[value] = got
+    return got
+
+
+def _comment_parts(comment: str) -> tuple[CommentStyle, str | None, int]:
+    """A comment's style, the annotation it holds (`( P-TOOL-00005 …`) and where in it."""
+    got = _comment_table.get(comment)
+    if got is None:
+        am = _ANNOTATION_RE.search(comment) if "P-" in comment else None
+        got = (_STYLE_OF.get(comment[0]) or comment_style(comment), am.group(1) if am is not None else None,
+               am.start(1) if am is not None else -1)
+        if len(_comment_table) < _TABLE_LIMIT and len(comment) < 512:
+            _comment_table[comment] = got
+    return got
 
 
 def _read_row(doc: Document, row: int) -> Entry:
@@ -400,7 +425,13 @@ class _Reader:
 
     def _shape(self, key: tuple[str, str]) -> int:
         name, tail = key
-        if not _NAME_RE.fullmatch(name) or not _TAIL_RE.fullmatch(tail, 1) or (name == END_KEYWORD and not tail):
+        valid = _valid_shapes.get(key)
+        if valid is None:
+            valid = bool(_NAME_RE.fullmatch(name) and _TAIL_RE.fullmatch(tail, 1)
+                         and not (name == END_KEYWORD and not tail))
+            if len(_valid_shapes) < _TABLE_LIMIT:
+                _valid_shapes[key] = valid
+        if not valid:
             return -1
         got = self.cols.shape_id(name, bool(tail), tail[1:])
         while len(self.shape_pattern) <= got:
@@ -432,10 +463,7 @@ class _Reader:
                     values[v] = cols.value_id(v, _value_kind(v)) if v else -1
             for c in dict.fromkeys(comment_texts):
                 if c not in comments:
-                    am = _ANNOTATION_RE.search(c) if "P-" in c else None
-                    comments[c] = cols.comment_id(c, _STYLE_OF.get(c[0]) or comment_style(c),
-                                                  am.group(1) if am is not None else None,
-                                                  am.start(1) if am is not None else -1)
+                    comments[c] = cols.comment_id(c, *_comment_parts(c))
             count = len(rows)
             if self.end_line is None and -1 not in sids:  # every line an entry of the columns
                 cols.line.extend(range(number, number + count))
