@@ -18,7 +18,8 @@ def each(results: Iterable[LintResult]) -> Iterator[Diagnostic]:
         yield from r.diagnostics
 
 
-_ESCAPE = json.encoder.encode_basestring_ascii  # the C function json.dumps writes a string with (ensure_ascii)
+ESCAPE = json.encoder.encode_basestring_ascii  # the C function json.dumps writes a string with (ensure_ascii)
+_ESCAPE = ESCAPE
 _PADS = ["\n" + "  " * n for n in range(33)]
 
 

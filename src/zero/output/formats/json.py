@@ -5,8 +5,9 @@ from __future__ import annotations
 from collections.abc import Iterable
 from typing import TextIO
 
+from zero.diagnostics import Diagnostic
 from zero.engine.lint import LintResult
-from zero.output.formats.common import each, indented_json
+from zero.output.formats.common import ESCAPE, each, indented_json
 
 
 def render_json(results: Iterable[LintResult], stream: TextIO) -> None:
@@ -17,7 +18,53 @@ def render_json(results: Iterable[LintResult], stream: TextIO) -> None:
     try:
         for d in each(results):
             stream.write(",\n  " if opened else "[\n  ")
-            stream.write(indented_json(d.to_json(), 1))
+            stream.write(_object(d))
             opened = True
     finally:  # results made as they are read may stop with an error (exit 2): the JSON stays whole
         stream.write("\n]\n" if opened else "[]\n")
+
+
+# The first finding of each form (with a fix or without) is written both ways, :meth:`Diagnostic.to_json`
+# through indented_json and the template below: where they differ (the contract gained a key), the
+# template is never used again in the process. Held to json.dumps by tests/output/test_output_formats.py.
+_checked: set[bool] = set()
+_template_differs: list[bool] = []
+
+
+def _object(d: Diagnostic) -> str:
+    if _template_differs:
+        return indented_json(d.to_json(), 1)
+    text = _template(d)
+    form = d.fix is None
+    if form not in _checked:
+        if text != indented_json(d.to_json(), 1):
+            _template_differs.append(True)
+            return indented_json(d.to_json(), 1)
+        _checked.add(form)
+    return text
+
+
+def _text(value: str | None) -> str:
+    return "null" if value is None else ESCAPE(value)
+
+
+def _template(d: Diagnostic) -> str:
+    """A finding's object as :func:`indented_json` writes ``d.to_json()`` at level 1, without the dictionary."""
+    s = d.span
+    fix = d.fix
+    if fix is None:
+        fixed = "null"
+    else:
+        edits = ",\n        ".join(
+            f'{{\n          "line": {e.span.line},\n          "column": {e.span.column},\n'
+            f'          "end_line": {e.span.end_line},\n          "end_column": {e.span.end_column},\n'
+            f'          "replacement": {ESCAPE(e.replacement)}\n        }}' for e in fix.edits)
+        listed = "[\n        " + edits + "\n      ]" if edits else "[]"
+        fixed = (f'{{\n      "title": {ESCAPE(fix.title)},\n      "safe": {"true" if fix.safe else "false"},\n'
+                 f'      "edits": {listed}\n    }}')
+    return (f'{{\n    "path": {_text(d.path)},\n    "line": {s.line},\n    "column": {s.column},\n'
+            f'    "end_line": {s.end_line},\n    "end_column": {s.end_column},\n    "code": {ESCAPE(d.code)},\n'
+            f'    "severity": {ESCAPE(d.severity.label)},\n    "message": {ESCAPE(d.message)},\n'
+            f'    "param_id": {_text(d.param_id)},\n    "kernel_error": {_text(d.kernel_error)},\n'
+            f'    "consequence": {_text(d.consequence)},\n    "source": {_text(d.source)},\n'
+            f'    "fix": {fixed}\n  }}')
