@@ -21,8 +21,9 @@ from zero.diagnostics import Diagnostic, Severity, Span
 from zero.errors import ZeroError
 from zero.files import read_file
 from zero.forms import is_program, is_update, is_xml, structured_format
+from zero.lists.encoding import decode
 from zero.lists.model import Document
-from zero.lists.tokenizer import tokenize
+from zero.lists.tokenizer import tokenize, tokenize_text
 from zero.records import field, record, replace
 from zero.rules import (
     MACHINE_CHECKS,
@@ -410,7 +411,14 @@ def lint_file(path: str | Path, registry: Registry, options: LintOptions | None 
         data = read_file(path)
     except ZeroError as exc:
         return unreadable(str(path), exc, options)
-    return lint_data(data, str(path), registry, options)
+    name = str(path)
+    if is_program(name) or structured_format(name) is not None or is_xml(data):
+        return lint_data(data, name, registry, options)
+    # a list file (lint_bytes): its bytes let go once decoded, so a big list is held once, as its text
+    declared = options.encoding if options else None
+    text, codec, bom = decode(data, declared)
+    del data
+    return lint_document(tokenize_text(text, name, codec, bom, declared=declared is not None), registry, options)
 
 
 def lint_update_in_machine(path: str, data: bytes, machine: Machine, registry: Registry,
