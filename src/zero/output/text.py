@@ -14,7 +14,6 @@ from typing import Any, TextIO
 from zero.diagnostics import Diagnostic, Severity
 from zero.engine.lint import LintResult, Totals, tallied
 from zero.rules import RULES
-from zero.rules.program import NOT_EVALUATED
 
 Segment = tuple[str, str]  # (text, rich style)
 MAX_SHOWN_PER_CODE = 50  # the text report shows this many findings of one code per file, then a count
@@ -102,7 +101,11 @@ def summary_line(totals: Totals) -> str:
 
     counts = totals.by_severity
     # a program zero did not (fully) follow is never clean: N010 says so, once per program
-    unevaluated = sum(totals.by_code.get(code, 0) for code in NOT_EVALUATED)
+    unevaluated = 0
+    if any(code.startswith("N") for code in totals.by_code):  # findings on a program: its rules are loaded
+        from zero.rules.program import NOT_EVALUATED  # start-up: a list's lint does not load the program rules
+
+        unevaluated = sum(totals.by_code.get(code, 0) for code in NOT_EVALUATED)
     clean = f"{totals.clean} clean" + (f", {unevaluated} not fully evaluated" if unevaluated else "")
     return (
         f"{n(totals.files, 'file')} checked ({clean}): {n(counts.get(Severity.ERROR, 0), 'error')}, "

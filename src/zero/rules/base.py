@@ -17,7 +17,7 @@ an NC program (:class:`ProgramContext`).
 from __future__ import annotations
 
 import re
-from collections.abc import Callable, Iterator
+from collections.abc import Callable, Iterator, Sequence
 from typing import TYPE_CHECKING, Generic, Literal, TypeVar
 
 from zero.catalog.evidence import Claim, rule_claim
@@ -206,7 +206,7 @@ class Family(Generic[C]):
 MAX_PER_CODE = 10_000  # findings of one code in one file; the rest are counted in one more finding
 
 
-def run_checks(checks: list[Check[C]], context: C) -> list[Diagnostic]:
+def run_checks(checks: Sequence[Check[C]], context: C) -> list[Diagnostic]:
     """The findings of the checks that report any selected rule (``context.severities``: a pre-filter
     for speed; what is reported is the funnel's decision, :mod:`zero.rules.funnel`): at most
     ``MAX_PER_CODE`` of one code, and then one that counts the rest (a file of five million

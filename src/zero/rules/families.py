@@ -11,25 +11,95 @@ table, the HTML report and the language server.
 The S family is declared in two modules: :mod:`~zero.rules.syntax` (the lines of a list) and
 :mod:`~zero.rules.elements` (XML parameter elements that did not become entries, S014–S016), which
 adds its rules and checks to the syntax family; both are listed in :data:`MODULES`.
+
+The X (a machine's lists) and N (NC programs) families are loaded on demand (:data:`ON_DEMAND`): a
+list's lint imports neither module (nor the machine and program models they read). Their rules are
+in the registry all the same, as their modules declare them, written by ``tools/gen_rules.py``
+(:mod:`zero.catalog.data.rules_declared`); their checks (:data:`MACHINE_CHECKS`, :data:`PROGRAM_CHECKS`) import
+the module at their first use.
 """
 
 from __future__ import annotations
 
-from zero.diagnostics import Severity
-from zero.rules import elements, files, machine, meaning, program, registry, startup, suppress, syntax, update
-from zero.rules.base import Check, Context, Family, MachineContext, ProgramContext, Rule, declare
+import importlib
+import os
+from collections.abc import Iterator, Sequence
+from types import ModuleType
+from typing import Any, overload
 
-# the family modules, each once (elements: the S family's rules on XML elements)
-MODULES = (syntax, elements, registry, meaning, update, startup, suppress, machine, program, files)
+from zero.catalog.data.rules_declared import DECLARED
+from zero.diagnostics import Severity
+from zero.rules import elements, files, meaning, registry, startup, suppress, syntax, update
+from zero.rules.base import C, Check, Context, Family, MachineContext, ProgramContext, Rule, declare
+
+# the families loaded on demand, by module name (zero.rules.<name>)
+ON_DEMAND = ("machine", "program")
+
+
+def _written(name: str) -> Family[MachineContext] | Family[ProgramContext] | None:
+    """The family of module ``name`` as tools/gen_rules.py wrote it (its rules, no checks); ``None``
+    where its source is not the one written from (or not there to tell): then the module is imported."""
+    written = DECLARED.get(name)
+    if written is None:
+        return None
+    letter, title, scope, size, rules = written
+    try:
+        if os.stat(os.path.join(os.path.dirname(__file__), f"{name}.py")).st_size != size:
+            return None
+    except OSError:
+        return None
+    family: Family[Any] = Family(letter, title, scope)
+    for code, rule_name, severity, summary, explanation, opt_in, reads in rules:
+        family.rule(code, rule_name, Severity[severity], summary, explanation, opt_in, tuple(reads))
+    return family
+
+
+def module(name: str) -> ModuleType:
+    """The family module ``zero.rules.<name>`` (imported at the first use of one loaded on demand)."""
+    return importlib.import_module(f"zero.rules.{name}")
+
+
+_machine = _written("machine") or module("machine").FAMILY
+_program = _written("program") or module("program").FAMILY
+
+
+class OnDemand(Sequence[Check[C]]):
+    """The checks of a family loaded on demand: its module is imported at their first use."""
+
+    def __init__(self, name: str) -> None:
+        self.name = name
+        self._checks: list[Check[C]] | None = None
+
+    def _loaded(self) -> list[Check[C]]:
+        if self._checks is None:
+            self._checks = module(self.name).FAMILY.checks
+        return self._checks
+
+    @overload
+    def __getitem__(self, index: int) -> Check[C]: ...
+    @overload
+    def __getitem__(self, index: slice) -> Sequence[Check[C]]: ...
+    def __getitem__(self, index: int | slice) -> Check[C] | Sequence[Check[C]]:
+        return self._loaded()[index]
+
+    def __len__(self) -> int:
+        return len(self._loaded())
+
+    def __iter__(self) -> Iterator[Check[C]]:
+        return iter(self._loaded())
+
+
+# the family modules loaded with this one, each once (elements: the S family's rules on XML elements)
+MODULES = (syntax, elements, registry, meaning, update, startup, suppress, files)
 # the families checked on one list, in the order they run (zero.rules.lists)
 LIST_FAMILIES: tuple[Family[Context], ...] = (syntax.FAMILY, registry.FAMILY, meaning.FAMILY, update.FAMILY,
                                               startup.FAMILY)
 FAMILIES: tuple[Family[Context] | Family[MachineContext] | Family[ProgramContext], ...] = (
-    *LIST_FAMILIES, suppress.FAMILY, machine.FAMILY, program.FAMILY, files.FAMILY)
+    *LIST_FAMILIES, suppress.FAMILY, _machine, _program, files.FAMILY)
 
 LIST_CHECKS: list[Check[Context]] = [c for family in LIST_FAMILIES for c in family.checks]
-MACHINE_CHECKS: list[Check[MachineContext]] = machine.FAMILY.checks
-PROGRAM_CHECKS: list[Check[ProgramContext]] = program.FAMILY.checks
+MACHINE_CHECKS: Sequence[Check[MachineContext]] = OnDemand("machine")
+PROGRAM_CHECKS: Sequence[Check[ProgramContext]] = OnDemand("program")
 
 
 def _rules() -> dict[str, Rule]:
@@ -53,5 +123,5 @@ def severity_of(code: str) -> Severity | None:
     return r.severity if r is not None else None
 
 
-__all__ = ["FAMILIES", "LIST_CHECKS", "LIST_FAMILIES", "MACHINE_CHECKS", "MODULES", "PROGRAM_CHECKS", "RULES", "TITLES",
-           "severity_of"]
+__all__ = ["FAMILIES", "LIST_CHECKS", "LIST_FAMILIES", "MACHINE_CHECKS", "MODULES", "ON_DEMAND", "PROGRAM_CHECKS",
+           "RULES", "TITLES", "severity_of"]

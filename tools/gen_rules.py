@@ -1,0 +1,55 @@
+#!/usr/bin/env python3
+"""Write the rules of the families loaded on demand (X: a machine's lists, N: NC programs) to
+``src/zero/catalog/data/rules_declared.py``, as their modules declare them: the registry (``zero.rules.RULES``: codes,
+names, severities, texts) stays complete while a list's lint imports neither module nor what they import
+(issue 40: start-up). Each family is written with the size of its module's source; a module whose size
+differs is imported (a stale module: slower, never wrong in that case), and a test fails while the written
+rules differ from the declared ones. Run it after changing a rule of rules/machine.py or rules/program.py.
+
+Usage: python tools/gen_rules.py
+"""
+
+from __future__ import annotations
+
+import sys
+from pathlib import Path
+
+sys.path.insert(0, str(Path(__file__).resolve().parent.parent / "src"))
+
+RULES_DIR = Path(__file__).resolve().parent.parent / "src" / "zero" / "rules"
+
+
+def render() -> str:
+    """The module's text, from the family modules as they are now."""
+    import importlib
+
+    from zero.rules.families import ON_DEMAND
+
+    out = []
+    for name in ON_DEMAND:
+        family = importlib.import_module(f"zero.rules.{name}").FAMILY
+        size = (RULES_DIR / f"{name}.py").stat().st_size
+        rules = "".join(f"\n        ({r.code!r}, {r.name!r}, {r.severity.name!r}, {r.summary!r},\n"
+                        f"         {r.explanation!r},\n         {r.opt_in!r}, {r.reads!r}),"
+                        for r in family.rules.values())
+        out.append(f"    {name!r}: ({family.letter!r}, {family.title!r}, {family.scope!r}, {size!r}, ({rules}\n    )),")
+    return ('"""The rules of the families zero loads on demand, as their modules declare them, written by\n'
+            'tools/gen_rules.py: module -> (letter, title, scope, the size of its source, its rules: (code, name,\n'
+            'severity, summary, explanation, opt_in, reads) in the order declared).\n\n'
+            'Generated: do not edit."""\n\n'
+            "# ruff: noqa\n"
+            "from __future__ import annotations\n\n"
+            "TYPE_CHECKING = False\n"
+            "if TYPE_CHECKING:\n"
+            "    from typing import Any\n\n"
+            "DECLARED: dict[str, Any] = {\n" + "\n".join(out) + "\n}\n")
+
+
+def main() -> None:
+    target = RULES_DIR.parent / "catalog" / "data" / "rules_declared.py"
+    target.write_text(render(), encoding="utf-8")
+    print(f"wrote {target}")
+
+
+if __name__ == "__main__":
+    main()
