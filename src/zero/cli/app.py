@@ -12,7 +12,7 @@ import sys
 import typing
 from collections.abc import Callable, Sequence
 from pathlib import Path
-from typing import TYPE_CHECKING, Annotated, Any, TextIO
+from typing import TYPE_CHECKING, Annotated, Any
 
 import typer
 import typer.core
@@ -22,7 +22,16 @@ from zero.catalog.registry import KINDS, ParamSpec, Registry
 from zero.cli import exits
 from zero.cli.help import ZeroCommand, ZeroGroup
 from zero.cli.options import COMMON_OPTIONS, LINT_OPTIONS, PATHS_HELP, Option, close_matches
-from zero.cli.run import REGISTRIES, check_kind, echo, kind_completions, read_stdin, render_lint, rule_completions
+from zero.cli.run import (
+    REGISTRIES,
+    check_kind,
+    echo,
+    kind_completions,
+    read_stdin,
+    render_lint,
+    rule_completions,
+    run_fleet_diff,
+)
 from zero.cli.run import lint as run_lint_command
 from zero.diff import SAME, DiffOptions, show_lines
 from zero.engine.commands import parse_kind, run_format
@@ -40,8 +49,7 @@ from zero.rules import RULES
 from zero.structured.schema import build_schema
 
 if TYPE_CHECKING:  # start-up: the fleet only with --fleet
-    from zero.engine.fleet import FleetRequest
-    from zero.engine.project import Registries
+    pass
 
 # ---------------------------------------------------------------- values, completion
 # Values are checked here, not by typer: typer 0.29 checks them with pydantic and says
@@ -401,19 +409,6 @@ def _fleet_diff(golden: str, machines: list[str], output_format: str, jobs: int 
 
     return run_fleet_diff(FleetRequest(golden, machines, jobs=jobs, param_desc=common.param_desc, config=common.configs,
                                        isolated=common.isolated, cache=cache), REGISTRIES, output_format, sys.stdout)
-
-
-def run_fleet_diff(request: FleetRequest, registries: Registries, output_format: str, stream: TextIO) -> int:
-    """``zero diff --fleet``: the engine compares (:func:`zero.engine.fleet.run_fleet`), the output
-    layer writes the report in ``output_format`` to ``stream``; the exit code (:func:`exits.fleet_exit`).
-    :class:`~zero.errors.ZeroError` where the golden machine cannot be read."""
-    from zero.engine.fleet import run_fleet  # start-up: only with --fleet
-    from zero.output.fleet import check_fleet_format, render_fleet  # start-up: as above
-
-    check_fleet_format(output_format)
-    drift = run_fleet(request, registries)
-    render_fleet(drift, output_format, stream)
-    return exits.fleet_exit(drift)
 
 
 @app.command(cls=ZeroCommand)

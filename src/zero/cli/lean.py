@@ -1,6 +1,6 @@
 """The ``zero`` console script: a lean path for ``zero lint``, typer for the rest.
 
-A pre-commit hook starts ``zero lint`` on every commit, so that path imports neither
+A pre-commit hook starts ``zero lint`` on every commit, so that path (and ``zero diff --fleet``) imports neither
 typer (with pydantic) nor rich: its options are parsed from the one option table
 (:mod:`zero.cli.options`), and anything that parser does not accept exactly
 (``--help`` included) goes to the typer command line, which gives the same result
@@ -21,7 +21,7 @@ from zero.cli import GC_THRESHOLDS
 def main() -> None:
     gc.set_threshold(*GC_THRESHOLDS)  # before zero is imported (its tables and rules: some twenty passes)
     from zero.cli.exits import guard, of_system_exit  # start-up: imported with the collector's thresholds set
-    from zero.cli.options import parse_lint_args  # start-up: as above
+    from zero.cli.options import parse_fleet_args, parse_lint_args  # start-up: as above
 
     args = sys.argv[1:]
     if args[:1] == ["lint"]:
@@ -31,6 +31,13 @@ def main() -> None:
 
             parsed["param_desc"] = parsed.get("param_desc") or os.environ.get("ZERO_PARAM_DESC") or None
             end(guard(lambda: lint(**parsed)))  # type: ignore[arg-type]
+    if args[:1] == ["diff"] and "--fleet" in args:
+        fleet = parse_fleet_args(args[1:])
+        if fleet is not None:
+            from zero.cli.run import fleet_diff  # start-up: the engine only once the arguments are known
+
+            fleet["param_desc"] = fleet["param_desc"] or os.environ.get("ZERO_PARAM_DESC") or None
+            end(guard(lambda: fleet_diff(**fleet)))  # type: ignore[arg-type]
     from zero.cli.app import main as typer_main  # start-up: typer only off the lean path
 
     try:

@@ -161,6 +161,56 @@ def _value(option: Option, text: str) -> object | None:
     return Path(text) if option.type is Path else text
 
 
+FLEET_FORMATS = ("text", "json", "csv")
+
+
+def parse_fleet_args(args: list[str]) -> dict[str, object] | None:
+    """``zero diff --fleet GOLDEN MACHINE...`` arguments (after ``diff``) as keyword arguments of
+    :func:`zero.cli.run.fleet_diff`; ``None`` when typer must decide (any other option or form, ``--help``
+    included: typer gives the same result, or its message). Read: ``--fleet GOLDEN``, ``--output-format
+    text|json|csv``, ``-j``/``--jobs N``, ``--no-cache``, ``--config X`` (repeatable), ``--isolated``,
+    ``--param-desc P``, and the machines."""
+    out: dict[str, object] = {"golden": None, "machines": [], "output_format": "text", "jobs": None,
+                              "no_cache": False, "config": [], "isolated": False, "param_desc": None}
+    machines: list[str] = []
+    config: list[str] = []
+    i = 0
+    while i < len(args):
+        a = args[i]
+        i += 1
+        if not a.startswith("-"):
+            machines.append(a)
+        elif a in ("--no-cache", "--isolated"):
+            out[a[2:].replace("-", "_")] = True
+        elif a in ("--fleet", "--output-format", "-j", "--jobs", "--config", "--param-desc"):
+            if i >= len(args) or args[i].startswith("-") or not args[i]:
+                return None
+            value = args[i]
+            i += 1
+            if a == "--fleet":
+                if out["golden"] is not None:
+                    return None
+                out["golden"] = value
+            elif a == "--output-format":
+                if value not in FLEET_FORMATS:
+                    return None
+                out["output_format"] = value
+            elif a in ("-j", "--jobs"):
+                if not value.isascii() or not value.isdigit():
+                    return None
+                out["jobs"] = int(value)
+            elif a == "--config":
+                config.append(value)
+            else:
+                out["param_desc"] = value
+        else:
+            return None
+    if out["golden"] is None or not machines:
+        return None
+    out["machines"], out["config"] = machines, config
+    return out
+
+
 def parse_lint_args(args: list[str], environ: Mapping[str, str] | None = None) -> dict[str, object] | None:
     """``zero lint`` arguments as keyword arguments; ``None`` when typer must decide.
 

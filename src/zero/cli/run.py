@@ -12,7 +12,7 @@ import io
 import sys
 from collections.abc import Callable, Iterable, Iterator, Sequence
 from pathlib import Path
-from typing import TextIO
+from typing import TYPE_CHECKING, TextIO
 
 from zero.catalog.registry import KINDS, Registry, load_registry
 from zero.cli import exits
@@ -23,6 +23,35 @@ from zero.errors import ZeroError
 from zero.files import max_file_bytes, read_stream, write_report
 from zero.output.formats import FORMATS, OUTPUT_FORMATS, STREAMED_FORMATS, emitter
 from zero.output.text import ProgressBar, printable, render_text, statistics, statistics_json
+
+if TYPE_CHECKING:  # start-up: the fleet only for zero diff --fleet
+    from zero.engine.fleet import FleetRequest
+    from zero.engine.project import Registries
+
+
+def run_fleet_diff(request: FleetRequest, registries: Registries, output_format: str, stream: TextIO) -> int:
+    """``zero diff --fleet``: the engine compares (:func:`zero.engine.fleet.run_fleet`), the output
+    layer writes the report in ``output_format`` to ``stream``; the exit code (:func:`exits.fleet_exit`)."""
+    from zero.engine.fleet import run_fleet  # start-up: only with --fleet
+    from zero.output.fleet import check_fleet_format, render_fleet  # start-up: as above
+
+    check_fleet_format(output_format)
+    drift = run_fleet(request, registries)
+    render_fleet(drift, output_format, stream)
+    return exits.fleet_exit(drift)
+
+
+def fleet_diff(golden: str, machines: Sequence[str], output_format: str = "text", jobs: int | None = None,
+               no_cache: bool = False, config: Sequence[str] = (), isolated: bool = False,
+               param_desc: str | None = None) -> int:
+    """``zero diff --fleet GOLDEN MACHINE...`` as the lean path parses it (:func:`zero.cli.options.parse_fleet_args`):
+    the report on standard output, and its exit code."""
+    from zero.engine.fleet import FleetRequest  # start-up: only with --fleet
+
+    desc = Path(param_desc) if param_desc else None  # as typer gives it
+    request = FleetRequest(golden, list(machines), jobs=jobs, param_desc=desc, config=tuple(config), isolated=isolated,
+                           cache=not no_cache)
+    return run_fleet_diff(request, REGISTRIES, output_format, sys.stdout)
 
 
 class RegistryCache:
