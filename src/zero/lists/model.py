@@ -10,7 +10,6 @@ from __future__ import annotations
 import enum
 import re
 from array import array
-from bisect import bisect_left
 from collections.abc import Iterator
 from itertools import accumulate
 from typing import Any
@@ -594,6 +593,8 @@ class Document:
             items = self.items
             return items[line - 1] if 1 <= line <= len(items) and items[line - 1].line == line else next(
                 (i for i in items if i.line == line), None)
+        from bisect import bisect_left  # start-up: only for a finding on a commented-out entry
+
         slow = self._slow
         at = bisect_left(slow, line, key=_line_of)
         if at < len(slow) and slow[at].line == line:

@@ -18,7 +18,6 @@ applies them to the findings of the other rules, so these rules have no check of
 from __future__ import annotations
 
 import re
-from bisect import bisect_right
 from collections.abc import Iterable
 
 from zero.diagnostics import Diagnostic, Severity, Span
@@ -143,6 +142,8 @@ def parse_directives(doc: Document, known: set[str]) -> tuple[list[Directive], l
             continue
         got = _zero_directive(m.group("body"), item.line, m.start("body"), len(text.rstrip()), len(text), known)
         if isinstance(got, Directive) and got.scope == "next":
+            from bisect import bisect_right  # start-up: only for a list with `zero: ignore[...]`
+
             if entry_lines is None:
                 entry_lines = [*cols.line, *(i.line for i in others if type(i) is Entry)]
             at = bisect_right(entry_lines, item.line)
