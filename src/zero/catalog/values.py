@@ -13,16 +13,18 @@ from __future__ import annotations
 import math
 import re
 import sys
-from typing import TypeVar
+from collections.abc import Iterator, Mapping, Sequence
+from itertools import chain, repeat
+from typing import Any, TypeVar, overload
 
 from zero.catalog.ids import AXIS_TYPE, is_rotary
 from zero.catalog.ranges import TYPE_LIMITS, Number
 from zero.catalog.registry import INTEGER_TYPES, NO_DEFAULT, ParamSpec, Registry
-from zero.lists.model import HUGE_INDEX, MAX_INDEX_DIGITS, Document, Entry, ValueKind, format_key, parse_key
+from zero.lists.model import HUGE_INDEX, MAX_INDEX_DIGITS, Document, Entry, Key, ValueKind, format_key, parse_key
 from zero.records import field, record
 
 __all__ = ["NO_DEFAULT", "ListValues", "Resolved", "Slot", "Value", "bind", "canonical_key", "default_number",
-           "parse_int", "read_value", "slot_of", "spec_of"]
+           "parse_int", "read_text", "read_value", "slot_of", "spec_of"]
 
 # One element of a parameter: its ID and indices (``("P-AXIS-00178", ())``); an entry whose key the
 # catalogue does not know is its key pattern behind a `?` (``("?a.b[]", (1,))``). `[01]` and `[1]`
@@ -111,14 +113,47 @@ class Value:
     detail: str = ""
 
 
-@record
 class Resolved:
-    """An entry bound to its parameter."""
+    """An entry bound to its parameter. Bound from a row of a document's columns, its entry is built when
+    first read (the value model reads ``value``; a finding reads ``entry``)."""
 
-    entry: Entry
-    spec: ParamSpec
-    value: Value
-    via_alias: bool = False
+    __slots__ = ("_doc", "_entry", "_row", "spec", "value", "via_alias")
+
+    def __init__(self, entry: Entry, spec: ParamSpec, value: Value, via_alias: bool = False) -> None:
+        self._entry: Entry | None = entry
+        self._doc: Document | None = None
+        self._row = -1
+        self.spec = spec
+        self.value = value
+        self.via_alias = via_alias
+
+    @classmethod
+    def at(cls, doc: Document, row: int, spec: ParamSpec, value: Value, via_alias: bool) -> Resolved:
+        """The entry of ``row`` of ``doc``'s columns bound to ``spec``, the entry not built yet."""
+        out = cls.__new__(cls)
+        out._entry, out._doc, out._row = None, doc, row
+        out.spec, out.value, out.via_alias = spec, value, via_alias
+        return out
+
+    @property
+    def entry(self) -> Entry:
+        got = self._entry
+        if got is None:
+            assert self._doc is not None
+            got = self._entry = self._doc.entry_at(self._row)
+        return got
+
+    def __eq__(self, other: object) -> bool:
+        if other.__class__ is not self.__class__:
+            return NotImplemented
+        assert isinstance(other, Resolved)
+        return (self.entry is other.entry and self.spec == other.spec and self.value == other.value
+                and self.via_alias == other.via_alias)
+
+    __hash__ = None  # type: ignore[assignment]  # mutable, compared by value: as the record it was
+
+    def __repr__(self) -> str:
+        return f"Resolved(entry={self.entry!r}, spec={self.spec!r}, value={self.value!r}, via_alias={self.via_alias!r})"
 
 
 REAL64_MAX = sys.float_info.max
@@ -189,8 +224,11 @@ def _symbols(spec: ParamSpec, parts: list[str], boolean: bool) -> Value | int | 
 
 def read_value(spec: ParamSpec, entry: Entry) -> Value:
     """Interpret an entry's value for its parameter's type, symbols and length."""
-    kind = entry.value_kind
-    raw = entry.value
+    return read_text(spec, entry.value, entry.value_kind)
+
+
+def read_text(spec: ParamSpec, raw: str, kind: ValueKind | None) -> Value:
+    """:func:`read_value` of a value's text and kind (a row of a document's columns)."""
     t = spec.type
     if kind is ValueKind.REF:
         rid, _, ridx = raw.partition(".")  # an index beyond every array is never converted (Python's int limit)
@@ -256,60 +294,189 @@ _V = TypeVar("_V", bound="ListValues")
 
 @record
 class ListValues:
-    """The entries of one list bound to their parameters, and the values the controller uses."""
+    """The entries of one list bound to their parameters, and the values the controller uses.
+
+    Bound per distinct key pattern, over the document's columns (:attr:`Document.columns`): the rows
+    are grouped by the shape of their key once (``shape_rows``), each pattern is bound once
+    (``bound``), and the checks run over the groups (a value once per distinct value of a pattern).
+    ``resolved`` and ``by_id`` are built on first use, ``by_id`` one parameter at a time, and an
+    :class:`Entry` only for a row that is asked for: a clean list builds no per-entry object here."""
 
     doc: Document
     registry: Registry
     kind: str | None
-    entries: list[Entry] = field(default_factory=list)
-    resolved: list[Resolved] = field(default_factory=list)
-    # param ID -> indices -> the entry that wins (the last one)
-    by_id: dict[str, dict[tuple[int, ...], Resolved]] = field(default_factory=dict)
     # the default list under this one (default_achs_mds under an axis list): its values apply
     # where this list sets none
     base: ListValues | None = None
+    # shape id (``doc.columns.shapes``) -> its rows, in order; none for a shape of rows without a key
+    shape_rows: list[list[int]] = field(default_factory=list, repr=False, compare=False)
+    # shape id -> its key pattern, indices (after the first index where ``indexed``, else all) and indexed
+    shape_keys: list[tuple[str, tuple[int, ...], bool]] = field(default_factory=list, repr=False, compare=False)
+    # key pattern -> the shapes of its rows (first seen first)
+    pattern_shapes: dict[str, list[int]] = field(default_factory=dict, repr=False, compare=False)
+    # key pattern -> its binding (:func:`bind`): the parameter, and whether by an alias; ``None``: none
+    bound: dict[str, tuple[ParamSpec, bool] | None] = field(default_factory=dict, repr=False, compare=False)
+    # the value ids (``doc.columns.values``) of values the controller does not read (``value_kind`` None)
+    valueless: frozenset[int] = field(default=frozenset(), repr=False, compare=False)
+    _groups: dict[str, list[int]] | None = field(default=None, repr=False, compare=False)
+    _entries: list[Entry] | None = field(default=None, repr=False, compare=False)
+    _resolved: _Resolved | None = field(default=None, repr=False, compare=False)
+    _by_id: Mapping[str, dict[tuple[int, ...], Resolved]] | None = field(default=None, repr=False, compare=False)
 
     @classmethod
     def of(cls: type[_V], doc: Document, registry: Registry, kind: str | None = None) -> _V:
         """Bind a document's entries (before ``Ende``); ``kind`` detected when ``None``."""
-        entries = doc.entries
-        if kind is None:
-            kind = registry.kind_of(doc, entries)
-        out = cls(doc, registry, kind, entries)
-        append = out.resolved.append
-        by_id = out.by_id
-        # A big list has few patterns and few distinct values: each pattern is bound, and each
-        # (parameter, value) read, once. Values are never changed after reading, so are shared.
-        # Bindings are kept per registry and kind: the lists of a fleet bind the same patterns.
-        bound: dict[str, tuple[ParamSpec, bool] | None] = registry.memo.setdefault(f"bound:{kind}", {})
-        read: dict[tuple[str, str], Value] = registry.memo.setdefault("values", {})  # kind follows from text
-        for e in entries:
-            key = e.key
-            if key is None or e.value_kind is None:
+        cols = doc.columns
+        shape_rows: list[list[int]] = [[] for _ in cols.shapes]
+        for row, shape in enumerate(cols.shape):  # the one pass over the rows
+            shape_rows[shape].append(row)
+        pattern_shapes: dict[str, list[int]] = {}
+        counts: dict[str, int] = {}
+        shape_keys: list[tuple[str, tuple[int, ...], bool]] = []
+        for shape, rows in enumerate(shape_rows):
+            sh = cols.shapes[shape]
+            if sh.indexed:
+                pattern, indices = cols.patterns[sh.pattern], sh.indices
+            else:  # a key without a first index, or written so that it is read the careful way (`[01]`)
+                key = parse_key(sh.head + sh.tail)
+                pattern, indices = (key.pattern, key.indices) if key is not None else ("", ())
+                if key is None:  # rows without a key
+                    rows.clear()
+            shape_keys.append((pattern, indices, sh.indexed))
+            if not rows:
                 continue
-            pattern = key.pattern
+            pattern_shapes.setdefault(pattern, []).append(shape)
+            counts[pattern] = counts.get(pattern, 0) + len(rows)
+        if kind is None:  # from each pattern's count: an entry of it (what kind_of reads: its key) as many times
+            kind = registry.kind_of(doc, chain.from_iterable(
+                repeat(Entry(0, p, p, Key(p, p, ()), 0, 0, "", None, 0, 0), n) for p, n in counts.items()))
+        valueless = frozenset(v for v, k in enumerate(cols.kinds) if k is None)
+        out = cls(doc, registry, kind, shape_rows=shape_rows, shape_keys=shape_keys, pattern_shapes=pattern_shapes,
+                  valueless=valueless)
+        # Bindings are kept per registry and kind: the lists of a fleet bind the same patterns.
+        memo: dict[str, tuple[ParamSpec, bool] | None] = registry.memo.setdefault(f"bound:{kind}", {})
+        bound = out.bound
+        for pattern in pattern_shapes:
             try:
-                hit = bound[pattern]
+                hit = memo[pattern]
             except KeyError:
                 hit = bind(registry, pattern, kind)
-                if len(bound) < 65_536:
-                    bound[pattern] = hit
-            if hit is None:
-                continue
-            spec = hit[0]
-            slot = (spec.id, e.value)
-            value = read.get(slot)
-            if value is None:
-                value = read_value(spec, e)
-                if len(read) < 65_536:
-                    read[slot] = value
-            res = Resolved(e, spec, value, hit[1])
-            append(res)
-            ids = by_id.get(spec.id)
-            if ids is None:
-                ids = by_id[spec.id] = {}
-            ids[key.indices] = res
+                if len(memo) < 65_536:
+                    memo[pattern] = hit
+            bound[pattern] = hit
         return out
+
+    @property
+    def entries(self) -> list[Entry]:
+        """The document's entries (before ``Ende``); a row is a position in it. Built on first use:
+        a check that can work on rows does not ask for it."""
+        got = self._entries
+        if got is None:
+            got = self._entries = self.doc.entries
+        return got
+
+    def entry_at(self, row: int) -> Entry:
+        """The entry of ``row`` (built when first asked for)."""
+        return self.doc.entry_at(row)
+
+    @property
+    def groups(self) -> dict[str, list[int]]:
+        """Key pattern -> the rows of its entries, in order (the patterns first seen first)."""
+        got = self._groups
+        if got is None:
+            rows = self.shape_rows
+            got = self._groups = {p: rows[ids[0]] if len(ids) == 1 else sorted(chain.from_iterable(map(
+                rows.__getitem__, ids))) for p, ids in self.pattern_shapes.items()}
+        return got
+
+    def value_rows(self, pattern: str) -> list[int]:
+        """The rows of ``pattern`` whose entries have a value the controller reads (what ``resolved``
+        holds of it), in order."""
+        rows = self.groups[pattern]
+        if self.valueless:
+            valueless, value = self.valueless, self.doc.columns.value
+            rows = [r for r in rows if value[r] not in valueless]
+        return rows
+
+    def value_ids_at(self, rows: list[int]) -> list[int]:
+        """The value ids (``doc.columns.values``, ``kinds``) of ``rows``, in order."""
+        return list(map(self.doc.columns.value.__getitem__, rows))
+
+    def indices_at(self, rows: list[int]) -> list[tuple[int, ...]]:
+        """The key indices of ``rows`` (rows of a key), in order."""
+        cols, keys = self.doc.columns, self.shape_keys
+        out = []
+        for row in rows:
+            _, indices, indexed = keys[cols.shape[row]]
+            out.append((cols.first[row], *indices) if indexed else indices)
+        return out
+
+    def annotations_at(self, rows: list[int]) -> list[str | None]:
+        """The `( P-XXXX-nnnnn` annotations of ``rows`` (``None``: none), in order."""
+        cols = self.doc.columns
+        notes = [*cols.notes, None]  # comment id -1: no comment
+        return list(map(notes.__getitem__, map(cols.comment.__getitem__, rows)))
+
+    def value(self, spec: ParamSpec, e: Entry) -> Value:
+        """``read_value(spec, e)``, once per (parameter, value text) and registry: a value is never
+        changed after reading, so entries share it (the value kind follows from the text)."""
+        return self.value_of_text(spec, e.value, e.value_kind)
+
+    def value_of_text(self, spec: ParamSpec, text: str, kind: ValueKind | None) -> Value:
+        """``read_text(spec, text, kind)``, once per (parameter, value text) and registry."""
+        read: dict[tuple[str, str], Value] = self.registry.memo.setdefault("values", {})
+        slot = (spec.id, text)
+        got = read.get(slot)
+        if got is None:
+            got = read_text(spec, text, kind)
+            if len(read) < 65_536:
+                read[slot] = got
+        return got
+
+    def resolved_at(self, row: int) -> Resolved:
+        """The entry of ``row`` (a row of a bound pattern, with a value) bound to its parameter; the entry
+        itself built when first read."""
+        cols = self.doc.columns
+        hit = self.bound.get(self.shape_keys[cols.shape[row]][0])
+        vid = cols.value[row]
+        kind = cols.kinds[vid]
+        if hit is None or kind is None:
+            raise ValueError(f"row {row} is no entry bound to a parameter")
+        return Resolved.at(self.doc, row, hit[0], self.value_of_text(hit[0], cols.values[vid], kind), hit[1])
+
+    def sketch_at(self, row: int) -> Resolved:
+        """``resolved_at(row)`` for a verdict: its entry the row's own where one is built already, else a
+        stand-in from the columns with the row's line, key, value and kind but no positions (nothing
+        reported may be made from it; building the real entry reads its line again)."""
+        cols = self.doc.columns
+        e = cols.objects.get(row)
+        if e is None:
+            text = cols.key_text(row)
+            vid = cols.value[row]
+            e = Entry(cols.line[row], text, text, cols.key(row), 0, 0, cols.values[vid], cols.kinds[vid], 0, 0)
+        hit = self.bound.get(e.key.pattern) if e.key is not None else None
+        if hit is None or e.value_kind is None:
+            raise ValueError(f"row {row} is no entry bound to a parameter")
+        return Resolved(e, hit[0], self.value(hit[0], e), hit[1])
+
+    @property
+    def resolved(self) -> Sequence[Resolved]:
+        """Every entry with a value bound to its parameter, in order (built on first use)."""
+        got = self._resolved
+        if got is None:
+            got = self._resolved = _Resolved(self)
+        return got
+
+    @property
+    def by_id(self) -> Mapping[str, dict[tuple[int, ...], Resolved]]:
+        """Parameter ID -> indices -> the entry that wins (the last one); each parameter's elements
+        built on first use."""
+        got = self._by_id
+        if got is None:
+            lazy = _ById(self)
+            # a small list: every parameter's elements at once, in a plain dict (the value model reads it often)
+            got = self._by_id = {pid: lazy[pid] for pid in lazy} if len(self.doc.columns) < 4096 else lazy
+        return got
 
     def value_of(self, param_id: str, indices: tuple[int, ...] = ()) -> Resolved | None:
         """The entry that sets ``param_id[indices]`` (the later one wins; this list before the
@@ -366,3 +533,102 @@ class ListValues:
     def entry_of(self, param_id: str, indices: tuple[int, ...] = ()) -> Entry | None:
         res = self.value_of(param_id, indices)
         return res.entry if res is not None else None
+
+
+class _Resolved(Sequence[Resolved]):
+    """``ListValues.resolved``: built on first use; whether it is empty answered without building it."""
+
+    __slots__ = ("_all", "_values")
+
+    def __init__(self, values: ListValues) -> None:
+        self._values = values
+        self._all: list[Resolved] | None = None
+
+    def _built(self) -> list[Resolved]:
+        got = self._all
+        if got is None:
+            values = self._values
+            rows = sorted(chain.from_iterable(values.value_rows(p) for p, hit in values.bound.items()
+                                              if hit is not None))
+            got = self._all = [values.resolved_at(r) for r in rows]
+        return got
+
+    def __bool__(self) -> bool:
+        if self._all is not None:
+            return bool(self._all)
+        values = self._values
+        if not values.valueless:
+            return any(hit is not None for hit in values.bound.values())
+        return any(hit is not None and values.value_rows(p) for p, hit in values.bound.items())
+
+    def __len__(self) -> int:
+        return len(self._built())
+
+    def __iter__(self) -> Iterator[Resolved]:
+        return iter(self._built())
+
+    @overload
+    def __getitem__(self, i: int) -> Resolved: ...
+    @overload
+    def __getitem__(self, i: slice) -> Sequence[Resolved]: ...
+    def __getitem__(self, i: int | slice) -> Resolved | Sequence[Resolved]:
+        return self._built()[i]
+
+    def __repr__(self) -> str:
+        return repr(self._built())
+
+
+class _ById(Mapping[str, dict[tuple[int, ...], Resolved]]):
+    """``ListValues.by_id``: a parameter's elements bound on first use (the last entry of each wins,
+    the elements in the order the list first sets them)."""
+
+    __slots__ = ("_built", "_patterns", "_values")
+
+    def __init__(self, values: ListValues) -> None:
+        self._values = values
+        self._built: dict[str, dict[tuple[int, ...], Resolved]] = {}
+        patterns: dict[str, list[str]] = {}  # parameter ID -> the patterns bound to it
+        for pattern, hit in values.bound.items():
+            if hit is not None:
+                patterns.setdefault(hit[0].id, []).append(pattern)
+        self._patterns = patterns
+
+    def _rows(self, pid: str) -> list[int]:
+        values = self._values
+        patterns = self._patterns.get(pid, ())
+        if len(patterns) == 1:
+            return values.value_rows(patterns[0])
+        return sorted(chain.from_iterable(values.value_rows(p) for p in patterns))  # an alias and its key
+
+    def get(self, pid: str, default: Any = None) -> Any:
+        got = self._built.get(pid)
+        if got is None:
+            if pid not in self._patterns:
+                return default
+            values = self._values
+            rows = self._rows(pid)
+            last = dict(zip(values.indices_at(rows), rows, strict=True))  # the later entry wins
+            got = self._built[pid] = {idx: values.resolved_at(r) for idx, r in last.items()}
+        return got if got else default
+
+    def __getitem__(self, pid: str) -> dict[tuple[int, ...], Resolved]:
+        got: dict[tuple[int, ...], Resolved] | None = self.get(pid)
+        if got is None:
+            raise KeyError(pid)
+        return got
+
+    def __contains__(self, pid: object) -> bool:
+        if not isinstance(pid, str) or pid not in self._patterns:
+            return False
+        built = self._built.get(pid)
+        return bool(built) if built is not None else bool(self._rows(pid))
+
+    def _ids(self) -> list[str]:
+        firsts = {pid: rows[0] for pid in self._patterns if (rows := self._rows(pid))}
+        return sorted(firsts, key=firsts.__getitem__)  # in the order the list first sets them
+
+    def __iter__(self) -> Iterator[str]:
+        return iter(self._ids())
+
+    def __len__(self) -> int:
+        return len(self._ids())

@@ -128,19 +128,51 @@ def check_keys(ctx: Context) -> Iterator[Diagnostic]:
     reg = ctx.registry
     proposed: set[str] = set()  # unknown patterns a spelling was looked for (the first SUGGESTIONS)
     known: dict[str, Any] = {}  # per list: the catalogue said, the machine's release, rows by pattern
-    # per distinct pattern: its parameter, and each index slot's bounds as (first, end) (a big list has a
-    # few dozen patterns: one look-up each, and an index inside its bounds is checked without a call)
-    specs: dict[str, tuple[ParamSpec | None, tuple[tuple[int, int], ...]]] = {}
-    for e in ctx.entries:
-        key = e.key
-        if key is None:
-            continue
-        got = specs.get(key.pattern)
-        if got is None:
-            found = reg.by_pattern(key.pattern, ctx.kind)
-            got = specs[key.pattern] = (found, bounds_of(found) if found is not None else ())
-        spec, bounds = got
+    # Per distinct pattern its parameter; per shape of key (`wz[].kinematic.param[3]`) the indices after
+    # the first checked once, the first indices by their least and greatest. Only the entries of an
+    # unknown pattern, or with an index outside its array, are visited (in order) for a finding.
+    cols = ctx.doc.columns
+    rows: list[int] = []  # rows to visit
+    specs: dict[str, ParamSpec] = {}
+    known_specs: dict[str, ParamSpec | None] = reg.memo.setdefault(f"key_specs:{ctx.kind}", {})
+    for pattern, shapes in ctx.pattern_shapes.items():
+        try:
+            spec = known_specs[pattern]
+        except KeyError:
+            spec = reg.by_pattern(pattern, ctx.kind)
+            if len(known_specs) < 65_536:
+                known_specs[pattern] = spec
         if spec is None:
+            for shape in shapes:
+                rows.extend(ctx.shape_rows[shape])
+            continue
+        specs[pattern] = spec
+        bounds = bounds_of(spec)
+        if not bounds or "[" not in pattern:
+            continue
+        for shape in shapes:
+            _, indices, indexed = ctx.shape_keys[shape]
+            group = ctx.shape_rows[shape]
+            if indices and not _inside(bounds[1:] if indexed else bounds, indices):
+                rows.extend(group)  # the indices after the first (a key without a first: all) outside
+                continue
+            if not indexed:
+                continue
+            low, end = bounds[0]
+            if len(group) == 1:
+                if not low <= cols.first[group[0]] < end:
+                    rows.append(group[0])
+                continue
+            firsts = list(map(cols.first.__getitem__, group))
+            if min(firsts) < low or max(firsts) >= end:
+                rows.extend(r for r, first in zip(group, firsts, strict=True) if not low <= first < end)
+    rows.sort()
+    for row in rows:
+        e = ctx.entry_at(row)
+        key = e.key
+        assert key is not None  # a row of a group
+        found = specs.get(key.pattern)
+        if found is None:
             alias = reg.alias(key.pattern, ctx.kind)
             if alias is not None:
                 yield ctx.report(
@@ -168,16 +200,9 @@ def check_keys(ctx: Context) -> Iterator[Diagnostic]:
             release = _other_release(ctx, e, known, propose)
             yield release if release is not None else _unknown_key(ctx, e, propose, known)
             continue
-        if not key.indices:
-            continue
-        for (first, end), idx in zip(bounds, key.indices, strict=False):
-            if idx < first or idx >= end:
-                break
-        else:
-            continue  # every index inside its array
-        outside = spec.index_outside(key.indices)
-        if outside is not None:
-            pos, idx = outside
+        where = found.index_outside(key.indices)
+        if where is not None:
+            pos, idx = where
             members = key.members
             member = members[pos] if pos < len(members) else "?"
             name = key.pattern.split("[]")[pos].rsplit(".", 1)[-1] or member
@@ -185,10 +210,15 @@ def check_keys(ctx: Context) -> Iterator[Diagnostic]:
             yield ctx.report(
                 "R003",
                 _key_span(e),
-                f"index {shown} of `{name}` is outside {spec.valid_indices(pos)}: the element does not exist; "
+                f"index {shown} of `{name}` is outside {found.valid_indices(pos)}: the element does not exist; "
                 f"{says(ctx, 'unknown-element')}",
-                param_id=spec.id,
+                param_id=found.id,
             )
+
+
+def _inside(bounds: tuple[tuple[int, int], ...], indices: tuple[int, ...]) -> bool:
+    """Every index inside its array's bounds (as ``index_outside`` reads them; none outside: no call)."""
+    return all(first <= idx < end for (first, end), idx in zip(bounds, indices, strict=False))
 
 
 _LEADING_ZERO = re.compile(r"\[0[0-9]")
@@ -534,21 +564,79 @@ def _default_contradicts(spec: ParamSpec, registry: Registry) -> bool:
 def check_values(ctx: Context) -> Iterator[Diagnostic]:
     """R004, R005, R006, R009, R011, R012: type, range, references."""
     # Whether a value passes depends only on (parameter, value text) unless its range refers to
-    # other parameters (then on the entry's indices too): a value that passed once passes again.
+    # other parameters (then on the entry's indices too) or the catalogue writes it in prose: such a
+    # value is checked once per distinct value of a pattern, and where it passes (kept across lists),
+    # none of its entries is visited; where it does not, each entry is, in order, for its own finding.
     registry = ctx.registry
     passed: dict[tuple[str, str], bool] = registry.memo.setdefault("passed", {})  # kept across lists
-    for res in ctx.resolved:
-        slot = (res.spec.id, res.entry.value)
-        if slot in passed or not_configured(ctx, res):
+    verdicts: dict[tuple[str, str], bool] = {}  # this list's: (parameter, value) -> passes
+    cols = ctx.doc.columns
+    texts = cols.values
+    rows: list[int] = []  # rows to visit
+    for pattern, hit in ctx.bound.items():
+        if hit is None:
             continue
-        clean = True
-        for found in _check_value(ctx, res):
-            clean = False
-            yield found
-        if clean and len(passed) < 65_536 and res.spec.id not in _prose_rows():  # a prose range reads others too
-            rng = registry.range_of(res.spec) if res.spec.range_text else None
-            if rng is None or not rng.refs:
-                passed[slot] = True
+        spec = hit[0]
+        if not _by_value(registry, spec):  # each entry's own verdict, its entry built where it fails
+            rows.extend(r for r in ctx.value_rows(pattern) if not _passes(ctx, ctx.sketch_at(r), True))
+            continue
+        for shape in ctx.pattern_shapes[pattern]:
+            group = ctx.shape_rows[shape]
+            if len(group) == 1:  # one entry (most patterns of a small list)
+                vid = cols.value[group[0]]
+                if vid in ctx.valueless:
+                    continue
+                slot = (spec.id, texts[vid])
+                verdict = passed.get(slot) or verdicts.get(slot)
+                if verdict is None:
+                    verdict = verdicts[slot] = _passes(ctx, ctx.sketch_at(group[0]))
+                    if verdict and len(passed) < 65_536:
+                        passed[slot] = True
+                if not verdict:
+                    rows.append(group[0])
+                continue
+            ids = ctx.value_ids_at(group)
+            first: dict[int, int] | None = None
+            failed: set[int] = set()  # the value ids whose entries are visited
+            for vid in dict.fromkeys(ids):
+                if vid in ctx.valueless:
+                    continue
+                slot = (spec.id, texts[vid])
+                verdict = passed.get(slot) or verdicts.get(slot)
+                if verdict is None:
+                    if first is None:
+                        first = dict(zip(reversed(ids), reversed(group), strict=True))  # each value's first row
+                    verdict = verdicts[slot] = _passes(ctx, ctx.sketch_at(first[vid]))
+                    if verdict and len(passed) < 65_536:
+                        passed[slot] = True
+                if not verdict:
+                    failed.add(vid)
+            if failed:
+                rows.extend(r for r, v in zip(group, ids, strict=True) if v in failed)
+    rows.sort()
+    for row in rows:
+        res = ctx.resolved_at(row)
+        if not not_configured(ctx, res):
+            yield from _check_value(ctx, res)
+
+
+def _by_value(registry: Registry, spec: ParamSpec) -> bool:
+    """Whether the findings on a value of ``spec`` depend on the value alone (not on the entry's
+    indices or the list's other values): then a value is checked once. Kept per registry."""
+    memo: dict[str, bool] = registry.memo.setdefault("by_value", {})
+    got = memo.get(spec.id)
+    if got is None:
+        rng = registry.range_of(spec) if spec.range_text else None
+        got = memo[spec.id] = spec.id not in _prose_rows() and (rng is None or not rng.refs)  # prose reads others
+    return got
+
+
+def _passes(ctx: Context, res: Resolved, configured: bool = False) -> bool:
+    """Whether ``res``'s value passes (no finding; ``configured``: or its element is not configured);
+    for a parameter of :func:`_by_value`, every entry of that value then passes."""
+    if configured and not_configured(ctx, res):
+        return True
+    return next(iter(_check_value(ctx, res)), None) is None
 
 
 def not_configured(ctx: Context, res: Resolved) -> bool:
@@ -867,13 +955,32 @@ Fix: delete one of the entries (unsafe fix: removes the earlier line).
 @FAMILY.check(DUPLICATE_KEY)
 def check_duplicates(ctx: Context) -> Iterator[Diagnostic]:
     """R007: the later entry wins."""
-    seen: dict[str, Entry] = {}
-    for e in ctx.entries:
-        key = e.key
-        if key is None:
+    # An element is its pattern and indices (`np_grp[01]` is element 1, as `np_grp[1]` is, and every
+    # index beyond the arrays one element): only a pattern whose entries write fewer distinct elements
+    # than entries has a duplicate, and only its entries are visited. A pattern whose keys have one
+    # shape each (`wz[].laenge`; `wz[].param[0]`, `wz[].param[1]`) is counted by its first indices.
+    cols = ctx.doc.columns
+    rows: list[int] = []
+    for pattern, shapes in ctx.pattern_shapes.items():
+        if len(shapes) == 1 and len(ctx.shape_rows[shapes[0]]) == 1:
+            continue  # one entry (most patterns of a small list)
+        kinds = [ctx.shape_keys[s] for s in shapes]
+        if all(indexed for _, _, indexed in kinds) and len({indices for _, indices, _ in kinds}) == len(kinds):
+            for shape in shapes:
+                group = ctx.shape_rows[shape]
+                if len(group) > 1 and len(set(map(cols.first.__getitem__, group))) < len(group):
+                    rows.extend(group)
             continue
-        # the element's key as written without leading zeros: `np_grp[01]` is element 1, as `np_grp[1]`
-        # is, and every index beyond the arrays (clamped) one element; most keys are written so already
+        group = ctx.groups[pattern]
+        if len(group) > 1 and len(set(ctx.indices_at(group))) < len(group):
+            rows.extend(group)
+    rows.sort()
+    seen: dict[str, Entry] = {}
+    for row in rows:
+        e = ctx.entry_at(row)
+        key = e.key
+        assert key is not None  # a row of a group
+        # the element's key as written without leading zeros; most keys are written so already
         slot = key.text
         if ("[0" in slot and _LEADING_ZERO.search(slot)) or HUGE_INDEX in key.indices:
             slot = format_key(key.pattern, key.indices)
@@ -915,11 +1022,36 @@ Fix: correct the ID in the comment (safe fix).
 @FAMILY.check(ANNOTATION_MISMATCH)
 def check_annotations(ctx: Context) -> Iterator[Diagnostic]:
     """R008: `( P-XXXX-nnnnn` comment naming another parameter than the key."""
-    for res in ctx.resolved:
+    cols = ctx.doc.columns
+    if not any(cols.notes):
+        return  # no comment of the list names a parameter
+    notes = [*cols.notes, None]  # by comment id (-1: no comment)
+    comment = cols.comment
+    rows: list[int] = []  # the entries whose annotation names another parameter, visited in order
+    for pattern, hit in ctx.bound.items():
+        if hit is None or hit[1]:
+            continue  # not bound, or by an alias (its annotation names the documented parameter)
+        pid = hit[0].id
+        for shape in ctx.pattern_shapes[pattern]:
+            group = ctx.shape_rows[shape]
+            if len(group) == 1:
+                note = notes[comment[group[0]]]
+                if note is not None and note != pid:
+                    rows.append(group[0])
+                continue
+            found = list(map(notes.__getitem__, map(comment.__getitem__, group)))
+            named = set(found)
+            named.discard(None)
+            named.discard(pid)
+            if named:
+                rows.extend(r for r, note in zip(group, found, strict=True) if note in named)
+    if ctx.valueless:  # what `resolved` holds: entries with a value
+        rows = [r for r in rows if cols.value[r] not in ctx.valueless]
+    rows.sort()
+    for row in rows:
+        res = ctx.resolved_at(row)
         e = res.entry
-        if e.annotation is None or e.annotation == res.spec.id or res.via_alias:
-            continue
-        other = ctx.registry.get(e.annotation)
+        other = ctx.registry.get(e.annotation or "")
         what = f" (that is `{other.key}`)" if other and other.key else ""
         span = Span.on_line(e.line, e.annotation_start, e.annotation_start + 12)
         fix = Fix(f"Write {res.spec.id} in the comment", (Edit(span, res.spec.id),))

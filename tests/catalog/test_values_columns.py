@@ -1,0 +1,80 @@
+"""ListValues binds per distinct key pattern over the document's columns (issue 40) and answers as a
+binding of every entry did: ``resolved`` in order, ``by_id`` with the later entry winning, each element
+in the order the list first sets it, an alias and its documented key as one parameter."""
+
+from __future__ import annotations
+
+from hypothesis import given, settings
+
+from conftest import builtin_registry, generated_lists
+from zero.catalog.values import ListValues, Resolved, bind, read_value
+from zero.lists.tokenizer import tokenize
+
+
+def _values(text: str, kind: str | None = None) -> ListValues:
+    return ListValues.of(tokenize(text.encode("utf-8"), "t.lis"), builtin_registry(), kind)
+
+
+def _reference(values: ListValues) -> tuple[list[Resolved], dict[str, dict[tuple[int, ...], Resolved]]]:
+    """Every entry bound on its own, as ListValues.of did before it worked per pattern."""
+    resolved, by_id = [], {}
+    for e in values.doc.entries:
+        if e.key is None or e.value_kind is None:
+            continue
+        hit = bind(values.registry, e.key.pattern, values.kind)
+        if hit is None:
+            continue
+        res = Resolved(e, hit[0], read_value(hit[0], e), hit[1])
+        resolved.append(res)
+        by_id.setdefault(hit[0].id, {})[e.key.indices] = res
+    return resolved, by_id
+
+
+def _same(values: ListValues) -> None:
+    resolved, by_id = _reference(values)
+    assert bool(values.resolved) == bool(resolved)  # answered before it is built
+    assert list(values.resolved) == resolved
+    assert list(values.by_id) == list(by_id)  # the parameters in the order the list first sets them
+    for pid, elements in by_id.items():
+        assert pid in values.by_id
+        got = values.by_id.get(pid)
+        assert got == elements and list(got) == list(elements)
+    assert "P-NONE-00000" not in values.by_id and values.by_id.get("P-NONE-00000", {}) == {}
+    assert len(values.by_id) == len(by_id)
+
+
+def test_an_alias_and_its_key_are_one_parameter_and_the_later_entry_wins() -> None:
+    values = _values("kenngr.homing.homing_type CNC_CONTROLLED\nkopf.achs_nr 1\n"
+                     "kenngr.homing_type DRIVE_CONTROLLED\n", "AXIS")
+    _same(values)
+    (res,) = values.by_id["P-AXIS-00299"].values()
+    assert res.entry.line == 3 and res.via_alias
+
+
+def test_leading_zeros_and_keys_of_several_shapes_are_one_element() -> None:
+    values = _values("np_grp[1].achse[2].versch 1\nnp_grp[01].achse[2].versch 2\nnp_grp[1].achse[02].versch 3\n"
+                     "np_grp[2].achse[2].versch 4\nnp_grp[1].achse[2].inaktiv 1\n", "ZERO")
+    _same(values)
+    offsets = values.by_id["P-ZERO-00003"]
+    assert list(offsets) == [(1, 2), (2, 2)] and offsets[(1, 2)].entry.line == 3
+    assert values.number_of("P-ZERO-00003", (1, 2)) == 3
+
+
+def test_a_list_without_a_bound_key_has_no_values() -> None:
+    values = _values("a.b 1\nunknown_key 2\n")
+    assert not values.resolved and list(values.resolved) == [] and len(values.by_id) == 0
+
+
+def test_groups_hold_every_keyed_row_by_pattern_in_order() -> None:
+    values = _values("wz[1].laenge 5\nwz[1].radius 2\nwz[2].laenge 6\nbad key here\nwz[3].laenge 7\n", "TOOL")
+    assert values.groups == {"wz[].laenge": [0, 2, 4], "wz[].radius": [1], "bad": [3]}
+    assert list(values.groups) == ["wz[].laenge", "wz[].radius", "bad"]  # first written first
+    assert [values.entry_at(r).line for r in values.groups["wz[].laenge"]] == [1, 3, 5]
+
+
+@settings(max_examples=150, deadline=None)
+@given(generated_lists())
+def test_generated_lists_bind_as_entry_by_entry(data: bytes) -> None:
+    doc = tokenize(data, "t.lis")
+    _same(ListValues.of(doc, builtin_registry()))
+    _same(ListValues.of(tokenize(data, "t.lis"), builtin_registry(), "ZERO"))
