@@ -598,7 +598,7 @@ def check_values(ctx: Context) -> Iterator[Diagnostic]:
             ids = ctx.value_ids_at(group)
             first: dict[int, int] | None = None
             failed: set[int] = set()  # the value ids whose entries are visited
-            for vid in dict.fromkeys(ids):
+            for vid in set(ids):  # each distinct value once (which first: no matter, a verdict is the value's)
                 if vid in ctx.valueless:
                     continue
                 slot = (spec.id, texts[vid])
