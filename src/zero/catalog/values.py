@@ -290,6 +290,17 @@ def read_text(spec: ParamSpec, raw: str, kind: ValueKind | None) -> Value:
 
 
 _V = TypeVar("_V", bound="ListValues")
+_STAND_INS: dict[str, Entry] = {}
+
+
+def _stand_in(pattern: str) -> Entry:
+    """An entry of ``pattern`` for kind detection (which reads an entry's key pattern alone), one per pattern."""
+    got = _STAND_INS.get(pattern)
+    if got is None:
+        got = Entry(0, pattern, pattern, Key(pattern, pattern, ()), 0, 0, "", None, 0, 0)
+        if len(_STAND_INS) < 65_536:
+            _STAND_INS[pattern] = got
+    return got
 
 
 @record
@@ -348,8 +359,7 @@ class ListValues:
             pattern_shapes.setdefault(pattern, []).append(shape)
             counts[pattern] = counts.get(pattern, 0) + len(rows)
         if kind is None:  # from each pattern's count: an entry of it (what kind_of reads: its key) as many times
-            kind = registry.kind_of(doc, chain.from_iterable(
-                repeat(Entry(0, p, p, Key(p, p, ()), 0, 0, "", None, 0, 0), n) for p, n in counts.items()))
+            kind = registry.kind_of(doc, chain.from_iterable(repeat(_stand_in(p), n) for p, n in counts.items()))
         valueless = frozenset(v for v, k in enumerate(cols.kinds) if k is None)
         out = cls(doc, registry, kind, shape_rows=shape_rows, shape_keys=shape_keys, pattern_shapes=pattern_shapes,
                   valueless=valueless)
@@ -473,10 +483,29 @@ class ListValues:
         built on first use."""
         got = self._by_id
         if got is None:
-            lazy = _ById(self)
             # a small list: every parameter's elements at once, in a plain dict (the value model reads it often)
-            got = self._by_id = {pid: lazy[pid] for pid in lazy} if len(self.doc.columns) < 4096 else lazy
+            got = self._by_id = self._every_id() if len(self.doc.columns) < 4096 else _ById(self)
         return got
+
+    def _every_id(self) -> dict[str, dict[tuple[int, ...], Resolved]]:
+        """``by_id`` built in one pass over the rows."""
+        cols, doc, bound, keys = self.doc.columns, self.doc, self.bound, self.shape_keys
+        first, kinds, texts, value = cols.first, cols.kinds, cols.values, cols.value
+        out: dict[str, dict[tuple[int, ...], Resolved]] = {}
+        for row, shape in enumerate(cols.shape):
+            pattern, indices, indexed = keys[shape]
+            hit = bound.get(pattern)
+            vid = value[row]
+            kind = kinds[vid]
+            if hit is None or kind is None:
+                continue
+            spec = hit[0]
+            elements = out.get(spec.id)
+            if elements is None:
+                elements = out[spec.id] = {}
+            elements[(first[row], *indices) if indexed else indices] = Resolved.at(
+                doc, row, spec, self.value_of_text(spec, texts[vid], kind), hit[1])
+        return out
 
     def value_of(self, param_id: str, indices: tuple[int, ...] = ()) -> Resolved | None:
         """The entry that sets ``param_id[indices]`` (the later one wins; this list before the

@@ -573,11 +573,12 @@ def check_values(ctx: Context) -> Iterator[Diagnostic]:
     cols = ctx.doc.columns
     texts = cols.values
     rows: list[int] = []  # rows to visit
+    by_value: dict[str, bool] = registry.memo.get("by_value", {})
     for pattern, hit in ctx.bound.items():
         if hit is None:
             continue
         spec = hit[0]
-        if not _by_value(registry, spec):  # each entry's own verdict, its entry built where it fails
+        if not (by_value.get(spec.id) or _by_value(registry, spec)):  # each entry's own verdict (entry built if fails)
             rows.extend(r for r in ctx.value_rows(pattern) if not _passes(ctx, ctx.sketch_at(r), True))
             continue
         for shape in ctx.pattern_shapes[pattern]:
