@@ -268,6 +268,31 @@ class Origin:
         return target, tag_col + 1 + (name_len if end else 0)
 
 
+def shape_parts(head: str, indexed: bool, tail: str) -> tuple[str, tuple[int, ...]]:
+    """The pattern (interned) and the tail's indices of the shape ``head[first]tail`` (see
+    :meth:`Columns.shape_id`), kept across documents."""
+    key = (head, indexed, tail)
+    parts = _shape_parts.get(key)
+    if parts is None:
+        tail_pattern, tail_indices = _part(tail)
+        if indexed:
+            pattern = head + "[]" + tail_pattern
+        else:  # no index after the head: the whole key (`kenngr.swe_pos`, `wz[01].x` with its zero)
+            pattern, tail_indices = _part(head + tail)
+        pattern = _patterns.get(pattern) or (
+            _patterns.setdefault(pattern, pattern) if len(_patterns) < _CACHE_LIMIT else pattern)
+        parts = (pattern, tail_indices)
+        if len(_shape_parts) < _CACHE_LIMIT and len(head) + len(tail) < 512:
+            _shape_parts[key] = parts
+    return parts
+
+
+# What Columns.tables gives: its tables and their indexes, as copies.
+ColumnTables = tuple[list["Shape"], list[str], dict[tuple[str, bool, str], int], dict[str, int], list[str],
+                     list[ValueKind | None], dict[str, int], list[str], list[CommentStyle], list[str | None],
+                     list[int], dict[str, int]]
+
+
 class Columns:
     """The entries the controller reads (before ``Ende``), one row each, in line order: what
     :attr:`Document.entries` holds, as arrays and tables of distinct values instead of one object per
@@ -355,30 +380,45 @@ class Columns:
     def shape_id(self, head: str, indexed: bool, tail: str) -> int:
         """The id of the shape ``head[first]tail`` (``head + tail``: ``indexed`` False), added when new.
         ``head`` and ``tail`` must be a key's parts as :func:`parse_key` accepts it."""
+        got = self._shape_ids.get((head, indexed, tail))
+        if got is not None:
+            return got
+        return self.add_shape(head, indexed, tail, *shape_parts(head, indexed, tail))
+
+    def add_shape(self, head: str, indexed: bool, tail: str, pattern: str, tail_indices: tuple[int, ...]) -> int:
+        """:meth:`shape_id` with the shape's :func:`shape_parts` known (a reader keeps them across documents)."""
         key = (head, indexed, tail)
         got = self._shape_ids.get(key)
         if got is not None:
             return got
-        parts = _shape_parts.get(key)
-        if parts is None:
-            tail_pattern, tail_indices = _part(tail)
-            if indexed:
-                pattern = head + "[]" + tail_pattern
-            else:  # no index after the head: the whole key (`kenngr.swe_pos`, `wz[01].x` with its zero)
-                pattern, tail_indices = _part(head + tail)
-            pattern = _patterns.get(pattern) or (
-                _patterns.setdefault(pattern, pattern) if len(_patterns) < _CACHE_LIMIT else pattern)
-            parts = (pattern, tail_indices)
-            if len(_shape_parts) < _CACHE_LIMIT and len(head) + len(tail) < 512:
-                _shape_parts[key] = parts
-        pattern, tail_indices = parts
         pid = self._pattern_ids.get(pattern)
         if pid is None:
             pid = self._pattern_ids[pattern] = len(self.patterns)
             self.patterns.append(pattern)
-        got = self._shape_ids[(head, indexed, tail)] = len(self.shapes)
+        got = self._shape_ids[key] = len(self.shapes)
         self.shapes.append(Shape(head, tail, pid, tail_indices, indexed))
         return got
+
+    def add_shapes(self, infos: list[tuple[str, bool, str, str, tuple[int, ...]] | None]) -> list[int]:
+        """:meth:`add_shape` of each ``(head, indexed, tail, pattern, tail_indices)`` in one call; ``None``: -1."""
+        shape_ids, pattern_ids, patterns, shapes = self._shape_ids, self._pattern_ids, self.patterns, self.shapes
+        out: list[int] = []
+        for info in infos:
+            if info is None:
+                out.append(-1)
+                continue
+            head, indexed, tail, pattern, tail_indices = info
+            key = (head, indexed, tail)
+            got = shape_ids.get(key)
+            if got is None:
+                pid = pattern_ids.get(pattern)
+                if pid is None:
+                    pid = pattern_ids[pattern] = len(patterns)
+                    patterns.append(pattern)
+                got = shape_ids[key] = len(shapes)
+                shapes.append(Shape(head, tail, pid, tail_indices, indexed))
+            out.append(got)
+        return out
 
     def value_id(self, value: str, kind: ValueKind | None) -> int:
         got = self._value_ids.get(value)
@@ -404,6 +444,38 @@ class Columns:
         self.notes.append(note)
         self.note_at.append(note_at)
         return got
+
+    def add_comments(self, comments: list[str], parts: list[tuple[CommentStyle, str | None, int]]) -> list[int]:
+        """:meth:`comment_id` of each of ``comments`` (distinct) with its ``(style, note, note_at)``, in bulk."""
+        ids = self._comment_ids
+        if not ids.keys().isdisjoint(comments):
+            return [self.comment_id(c, *p) for c, p in zip(comments, parts, strict=True)]
+        start = len(self.comments)
+        stop = start + len(comments)
+        self.comments.extend(comments)
+        for style, note, note_at in parts:
+            self.styles.append(style)
+            self.notes.append(note)
+            self.note_at.append(note_at)
+        ids.update(zip(comments, range(start, stop), strict=True))
+        return list(range(start, stop))
+
+    def tables(self) -> ColumnTables:
+        """A copy of the tables (shapes, patterns, values, comments), for :meth:`load_tables`. The
+        :class:`Shape` objects are shared: nothing changes a shape once made."""
+        return (list(self.shapes), list(self.patterns), dict(self._shape_ids), dict(self._pattern_ids),
+                list(self.values), list(self.kinds), dict(self._value_ids), list(self.comments), list(self.styles),
+                list(self.notes), list(self.note_at), dict(self._comment_ids))
+
+    def load_tables(self, tables: ColumnTables) -> None:
+        """Take a copy of :meth:`tables` of other columns (a reader's, for a list like one read before)."""
+        (shapes, patterns, shape_ids, pattern_ids, values, kinds, value_ids, comments, styles, notes, note_at,
+         comment_ids) = tables
+        self.shapes, self.patterns = list(shapes), list(patterns)
+        self._shape_ids, self._pattern_ids = dict(shape_ids), dict(pattern_ids)
+        self.values, self.kinds, self._value_ids = list(values), list(kinds), dict(value_ids)
+        self.comments, self.styles, self.notes, self.note_at = list(comments), list(styles), list(notes), list(note_at)
+        self._comment_ids = dict(comment_ids)
 
     def add_entry(self, entry: Entry) -> int:
         """Append an entry built as an object (the careful scanner's, or a document's items): its row."""

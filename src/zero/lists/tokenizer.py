@@ -15,11 +15,13 @@ from __future__ import annotations
 
 import re
 from collections.abc import Sequence
+from itertools import compress
 
 from zero.lists.encoding import decode
 from zero.lists.model import (
     Blank,
     Columns,
+    ColumnTables,
     Comment,
     CommentStyle,
     Document,
@@ -34,6 +36,7 @@ from zero.lists.model import (
     parse_key,
     row_readers,
     scanned_key,
+    shape_parts,
 )
 
 END_KEYWORD = "Ende"
@@ -327,7 +330,6 @@ def _fast_entry(m: re.Match[str], number: int, value: str, kind: ValueKind | Non
 # What each distinct key shape, value and comment is, kept across the documents of a run (a fleet's lists
 # repeat each other's keys, values and comments).
 _TABLE_LIMIT = 65_536
-_valid_shapes: dict[tuple[str, str], bool] = {}
 _kinds: dict[str, ValueKind] = {}
 _comment_table: dict[str, tuple[CommentStyle, str | None, int]] = {}
 
@@ -406,6 +408,32 @@ def _read(doc: Document, rows: Sequence[int], lines: list[str], one: bool) -> di
 row_readers.extend((_read_row, _read_rows))
 
 
+# A key shape as the row pattern splits it (names, `]` and the rest) -> what Columns.add_shape takes,
+# None: not a key the columns take; kept across the documents of a run.
+_ShapeInfo = tuple[str, bool, str, str, tuple[int, ...]]
+_shape_info: dict[tuple[str, str], _ShapeInfo | None] = {}
+_UNKNOWN: _ShapeInfo = ("", False, "", "", ())
+
+
+def _shape_of(key: tuple[str, str]) -> _ShapeInfo | None:
+    name, tail = key
+    info: _ShapeInfo | None = None
+    if (_NAME_RE.fullmatch(name) and _TAIL_RE.fullmatch(tail, 1)
+            and not (name == END_KEYWORD and not tail)):
+        info = (name, bool(tail), tail[1:], *shape_parts(name, bool(tail), tail[1:]))
+    if len(_shape_info) < _TABLE_LIMIT:
+        _shape_info[key] = info
+    return info
+
+
+# The tables of the small lists read in this run, by the distinct key shapes, values and comments they
+# hold (in order): a fleet's lists of one kind repeat each other's, so another one copies the tables.
+_SMALL_LIST = 8192  # lines
+_SMALL_TABLES = 256
+_small_tables: dict[tuple[tuple[tuple[str, str], ...], tuple[str, ...], tuple[str, ...]],
+                    tuple[ColumnTables, dict[tuple[str, str], int], dict[str, int], dict[str, int], list[int]]] = {}
+
+
 class _Reader:
     """The state of reading a text into columns; lines the columns do not take are read as before."""
 
@@ -423,21 +451,6 @@ class _Reader:
         self.comments: dict[str, int] = {"": -1}
         self.shape_pattern: list[int] = []
 
-    def _shape(self, key: tuple[str, str]) -> int:
-        name, tail = key
-        valid = _valid_shapes.get(key)
-        if valid is None:
-            valid = bool(_NAME_RE.fullmatch(name) and _TAIL_RE.fullmatch(tail, 1)
-                         and not (name == END_KEYWORD and not tail))
-            if len(_valid_shapes) < _TABLE_LIMIT:
-                _valid_shapes[key] = valid
-        if not valid:
-            return -1
-        got = self.cols.shape_id(name, bool(tail), tail[1:])
-        while len(self.shape_pattern) <= got:
-            self.shape_pattern.append(self.cols.shapes[len(self.shape_pattern)].pattern)
-        return got
-
     def read(self) -> None:
         text = self.text
         n = len(text)
@@ -445,60 +458,144 @@ class _Reader:
         number = 1
         cols = self.cols
         shapes, firsts, values, comments = self.shapes, self.firsts, self.values, self.comments
+        add_shapes, add_comments, value_id = cols.add_shapes, cols.add_comments, cols.value_id
+        info_of, comment_table, kinds = _shape_info.get, _comment_table.get, _kinds.get
+        shape_pattern = self.shape_pattern
         while pos < n:
             end = text.find("\n", pos + _CHUNK)
             end = n if end < 0 else end + 1
             rows = _ROW_RE.findall(text, pos, end)
             rows.pop()  # the empty match where the text (or this part) ends
             names, first_texts, tails, value_texts, comment_texts, _ = zip(*rows, strict=True)
-            for k in dict.fromkeys(zip(names, tails, strict=True)):
-                if k not in shapes:
-                    shapes[k] = self._shape(k)
-            sids = list(map(shapes.__getitem__, zip(names, tails, strict=True)))
+            keys = list(zip(names, tails, strict=True))
+            new_shapes = [k for k in dict.fromkeys(keys) if k not in shapes]
+            new_values = [v for v in dict.fromkeys(value_texts) if v not in values]
+            new_comments = [c for c in dict.fromkeys(comment_texts) if c not in comments]
+            known = None
+            if pos == 0 and end == n and len(rows) <= _SMALL_LIST:  # a small list: like one read before?
+                signature = (tuple(new_shapes), tuple(new_values), tuple(new_comments))
+                known = _small_tables.get(signature)
+                if known is not None:
+                    tables, shape_map, value_map, comment_map, pattern_of = known
+                    cols.load_tables(tables)
+                    shapes, values, comments = dict(shape_map), dict(value_map), dict(comment_map)
+                    self.shapes, self.values, self.comments = shapes, values, comments
+                    shape_pattern.extend(pattern_of)
+            if known is None:
+                if new_shapes:
+                    shapes.update(zip(new_shapes, add_shapes(
+                        [_shape_of(k) if (info := info_of(k, _UNKNOWN)) is _UNKNOWN else info for k in new_shapes]),
+                        strict=True))
+                    if len(shape_pattern) < len(cols.shapes):
+                        shape_pattern.extend([sh.pattern for sh in cols.shapes[len(shape_pattern):]])
+                for v in new_values:
+                    values[v] = value_id(v, kinds(v) or _value_kind(v)) if v else -1
+                if new_comments:
+                    comments.update(zip(new_comments, add_comments(
+                        new_comments, [comment_table(c) or _comment_parts(c) for c in new_comments]), strict=True))
+                if pos == 0 and end == n and len(rows) <= _SMALL_LIST and len(_small_tables) < _SMALL_TABLES:
+                    _small_tables[signature] = (cols.tables(), dict(shapes), dict(values), dict(comments),
+                                                list(shape_pattern))
             for f in dict.fromkeys(first_texts):
                 if f not in firsts:
                     firsts[f] = int(f)
-            for v in dict.fromkeys(value_texts):
-                if v not in values:
-                    values[v] = cols.value_id(v, _value_kind(v)) if v else -1
-            for c in dict.fromkeys(comment_texts):
-                if c not in comments:
-                    comments[c] = cols.comment_id(c, *_comment_parts(c))
+            sids = list(map(shapes.__getitem__, keys))
             count = len(rows)
             if self.end_line is None and -1 not in sids:  # every line an entry of the columns
                 cols.line.extend(range(number, number + count))
                 cols.shape.extend(sids)
-                cols.pattern.extend(map(self.shape_pattern.__getitem__, sids))
+                cols.pattern.extend(map(shape_pattern.__getitem__, sids))
                 cols.first.extend(map(firsts.__getitem__, first_texts))
                 cols.value.extend(map(values.__getitem__, value_texts))
                 cols.comment.extend(map(comments.__getitem__, comment_texts))
             else:
-                self._mixed(rows, sids, text[pos:end].split("\n"), number)
+                self._mixed(rows, sids, number, text, pos, end, first_texts, value_texts, comment_texts)
             number += count
             pos = end
         self.line_count = number - 1
 
-    def _mixed(self, rows: list[tuple[str, ...]], sids: list[int], lines: list[str], number: int) -> None:
+    def _mixed(self, rows: list[tuple[str, ...]], sids: list[int], number: int, text: str, pos: int, end: int,
+               first_texts: tuple[str, ...], value_texts: tuple[str, ...], comment_texts: tuple[str, ...]) -> None:
+        """A part where some lines are no row of the columns: plain comments and blank lines become their
+        items here; the rows between the other lines go into the columns in bulk, those lines to _line."""
+        slow = self.slow
+        last = len(rows) - 1
+        ends_nl = text.endswith("\n", pos, end)
+        lines: list[str] | None = None
+        if self.end_line is not None:  # after `Ende`: every line the careful way
+            self._lines(text[pos:end].split("\n"), 0, last, ends_nl, number)
+            return
+        mask = [sid >= 0 for sid in sids]
+        start = 0
+        for i in [i for i, sid in enumerate(sids) if sid < 0]:
+            row = rows[i]
+            if not row[0]:  # the line as a whole
+                s = row[5]
+                if s[-1:] == "\r" and (i < last or ends_nl):
+                    s = s[:-1]
+                # A plain comment or a blank line never matches _FAST_ENTRY_RE (a key starts with a letter or `_`).
+                if s[:2] in _PLAIN_COMMENT or s == "#":
+                    slow.append(Comment(number + i, s))
+                    continue
+                if not s.strip():
+                    slow.append(Blank(number + i))
+                    continue
+            else:
+                if lines is None:
+                    lines = text[pos:end].split("\n")
+                s = lines[i]
+                if s[-1:] == "\r" and (i < last or ends_nl):
+                    s = s[:-1]
+            self._take(start, i, mask, sids, number, first_texts, value_texts, comment_texts)
+            start = i + 1
+            self._line(s, number + i)
+            if self.end_line is not None:  # the rest of the part after `Ende`
+                self._lines(lines or text[pos:end].split("\n"), i + 1, last, ends_nl, number)
+                return
+        self._take(start, last + 1, mask, sids, number, first_texts, value_texts, comment_texts)
+
+    def _lines(self, lines: list[str], start: int, last: int, ends_nl: bool, number: int) -> None:
+        """Lines ``start`` to ``last`` of a part (``lines``: its text split), each to _line."""
+        for i in range(start, last + 1):
+            s = lines[i]
+            if s[-1:] == "\r" and (i < last or ends_nl):
+                s = s[:-1]
+            self._line(s, number + i)
+
+    def _take(self, start: int, stop: int, mask: list[bool], sids: list[int], number: int,
+              first_texts: tuple[str, ...], value_texts: tuple[str, ...], comment_texts: tuple[str, ...]) -> None:
+        """The rows of the columns among a part's lines ``start`` to ``stop`` (exclusive), in bulk."""
+        if start >= stop:
+            return
         cols = self.cols
-        last = len(lines) - 1
-        for i, sid in enumerate(sids):
-            line = number + i
-            if sid >= 0 and self.end_line is None:
-                first, value, comment = rows[i][1], rows[i][3], rows[i][4]
-                cols.line.append(line)
+        if stop - start == 1:
+            if mask[start]:
+                sid = sids[start]
+                cols.line.append(number + start)
                 cols.shape.append(sid)
                 cols.pattern.append(self.shape_pattern[sid])
-                cols.first.append(self.firsts[first])
-                cols.value.append(self.values[value])
-                cols.comment.append(self.comments[comment])
-                continue
-            s = lines[i]
-            if i < last and s.endswith("\r"):
-                s = s[:-1]
-            self._line(s, line)
+                cols.first.append(self.firsts[first_texts[start]])
+                cols.value.append(self.values[value_texts[start]])
+                cols.comment.append(self.comments[comment_texts[start]])
+            return
+        keep = mask[start:stop]
+        cols.line.extend(compress(range(number + start, number + stop), keep))
+        taken = list(compress(sids[start:stop], keep))
+        cols.shape.extend(taken)
+        cols.pattern.extend(map(self.shape_pattern.__getitem__, taken))
+        cols.first.extend(map(self.firsts.__getitem__, compress(first_texts[start:stop], keep)))
+        cols.value.extend(map(self.values.__getitem__, compress(value_texts[start:stop], keep)))
+        cols.comment.extend(map(self.comments.__getitem__, compress(comment_texts[start:stop], keep)))
 
     def _line(self, s: str, number: int) -> None:
         """A line the columns do not take, read as the tokenizer always did."""
+        # A plain comment or a blank line never matches _FAST_ENTRY_RE (its key starts with a letter or `_`).
+        if s[:2] in _PLAIN_COMMENT or s == "#":
+            self.slow.append(Comment(number, s))
+            return
+        if not s.strip():
+            self.slow.append(Blank(number))
+            return
         m = _FAST_ENTRY_RE.match(s)
         item: Item
         if m is not None and self.end_line is None and m.group(1) != END_KEYWORD:
@@ -506,12 +603,6 @@ class _Reader:
             item = _fast_entry(m, number, value, _value_kind(value), None)
             self.cols.add_entry(item)
             self.slow.append(item)
-            return
-        if s[:2] in _PLAIN_COMMENT or s == "#":
-            self.slow.append(Comment(number, s))
-            return
-        if not s.strip():
-            self.slow.append(Blank(number))
             return
         item = scan_line(s, number, self.problems)
         if self.end_line is not None:
