@@ -153,3 +153,35 @@ def test_a_document_built_from_items_has_columns() -> None:
     assert isinstance(doc.entry_at(0), Entry) and doc.columns.key_text(1) == "b[3]"
     doc.items = careful.items[:1]  # new items: the columns follow
     assert len(doc.columns) == 1
+
+
+# A small list like one read before copies its tables: the rows must still be this list's.
+_SMALL_A = "# head\na 1 # x\nwz[1].l 2\n\nb P-AXIS-00001 ( P-TOOL-00005 n\n"
+_SMALL_B = "#\na 1 # x\nwz[7].l 2\n\n  \nwz[3].l 2\nb P-AXIS-00001 ( P-TOOL-00005 n\na 1 # x\n"
+
+
+def test_a_small_list_like_one_read_before_has_its_own_rows() -> None:
+    _check(_SMALL_A)
+    _check(_SMALL_B)  # the same distinct shapes, values and comments in the same order: the tables copied
+    _check(_SMALL_A)
+    a, b = tokenize_text(_SMALL_A).columns, tokenize_text(_SMALL_B).columns
+    assert b.shapes[0] is a.shapes[0]  # copied, not made again
+    assert b.shapes == a.shapes and b.comments == a.comments and b.values == a.values
+    assert list(b.line) == [2, 3, 6, 7, 8] and list(b.first) == [-1, 7, 3, -1, -1]
+    b.values.append("changed")  # a document's tables are its own
+    assert "changed" not in tokenize_text(_SMALL_A).columns.values
+
+
+@pytest.mark.parametrize("text", [
+    # comments and blank lines between rows, lines read the careful way, `Ende` in the middle, CRLF
+    "# c\r\na 1\r\n\r\nx \"q\"\r\nb 2\r\n#\tt\r\nEnde\r\nc 3\r\n# after\r\n\r\nd ./p\r\n",
+    "a 1\n# c\nv ./listen/x\nb 2\n\nc 3\nEnde\n# c\ne 5\n  \n#\r",  # last line without newline, its \r kept
+    "a 1\n\nb 2\n   \t\nc 3\n\x0b\n#x\n# y\n" + "".join(f"w[{n}] {n}\n" for n in range(40)),
+])
+def test_parts_with_other_lines_read_like_the_careful_scanner(text: str) -> None:
+    _check(text)
+
+
+@pytest.mark.parametrize("text", ["a 1\n", "ä\x85 \x01\x9f\n", "€ \x02\udc85\x7f", "\x80" * 10, ""])
+def test_control_count_as_the_pattern(text: str) -> None:
+    assert tokenizer._control_count(text) == len(tokenizer._CONTROL_RE.findall(text))

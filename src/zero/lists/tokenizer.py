@@ -80,6 +80,7 @@ _C1_RE = re.compile(r"[\x80-\x9f]")
 _MARKED_COMMENTS = (CommentStyle.HASH, CommentStyle.PAREN, CommentStyle.BLOCK)
 # Every ASCII byte _CONTROL_RE does not match: deleting them leaves the control characters.
 _NOT_CONTROL = bytes(b for b in range(128) if not (b <= 0x08 or 0x0B <= b <= 0x1F or b == 0x7F))
+_NOT_CONTROL_LATIN1 = bytes(b for b in range(256) if not (b <= 0x08 or 0x0B <= b <= 0x1F or 0x7F <= b <= 0x9F))
 
 
 def classify_value(value: str) -> ValueKind:
@@ -270,6 +271,11 @@ def _control_count(text: str) -> int:
     if text.isascii():  # in C, ten times faster than the regex over a big list; in parts: no copy of the text
         return sum(len(text[at:at + _CHUNK].encode("ascii").translate(None, _NOT_CONTROL))
                    for at in range(0, len(text), _CHUNK))
+    if len(text) <= _CHUNK:  # a small list with letters of a code page: in C as bytes, when Latin-1 holds it
+        try:
+            return len(text.encode("latin-1").translate(None, _NOT_CONTROL_LATIN1))
+        except UnicodeEncodeError:
+            pass
     return len(_CONTROL_RE.findall(text))
 
 
