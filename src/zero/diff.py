@@ -79,7 +79,7 @@ def read_side(data: bytes, fmt: str, path: str, registry: Registry, kind: str | 
     ``encoding`` when its configuration declares one."""
     update = False
     if fmt in ("lis", "xml"):
-        doc = read_document(data, path, registry, encoding)  # an ASCII or an XML list (by its content)
+        doc = read_document(data, path, registry, encoding, objects=True)  # an ASCII or an XML list (by its content)
         if doc.origin is not None:
             kind, update = kind or doc.origin.kind, doc.origin.update
         if any(p.kind == "binary" for p in doc.problems):

@@ -4,6 +4,7 @@ on the objects."""
 
 from __future__ import annotations
 
+from pathlib import Path
 from typing import Any
 
 import pytest
@@ -12,7 +13,7 @@ from hypothesis import strategies as st
 
 from zero.lists import tokenizer
 from zero.lists.model import Columns, Document, Entry
-from zero.lists.tokenizer import tokenize_text
+from zero.lists.tokenizer import tokenize, tokenize_text
 from zero.rules.suppress import parse_directives
 
 _KEYS = ["wz[1].laenge", "wz[17].kinematic.param[3]", "kenngr.swe_pos", "a", "a[0]", "a[1][2].b[3]", "q[007].r",
@@ -185,3 +186,32 @@ def test_parts_with_other_lines_read_like_the_careful_scanner(text: str) -> None
 @pytest.mark.parametrize("text", ["a 1\n", "ä\x85 \x01\x9f\n", "€ \x02\udc85\x7f", "\x80" * 10, ""])
 def test_control_count_as_the_pattern(text: str) -> None:
     assert tokenizer._control_count(text) == len(tokenizer._CONTROL_RE.findall(text))
+
+
+def _same_objects(text: str) -> None:
+    """``objects=True`` (what a diff or a conversion asks for: every item, built while reading) gives the
+    objects and problems the columns give."""
+    columnar = tokenize_text(text)
+    objects = tokenize_text(text, objects=True)
+    assert objects.lines == columnar.lines and objects.endings == columnar.endings
+    assert objects.problems == columnar.problems and objects.end_line == columnar.end_line
+    assert [(type(i), _fields(i)) for i in objects.items] == [(type(i), _fields(i)) for i in columnar.items]
+    cols, other = columnar.columns, objects.columns
+    assert [other.key_text(r) for r in range(len(other))] == [cols.key_text(r) for r in range(len(cols))]
+    assert [other.value_text(r) for r in range(len(other))] == [cols.value_text(r) for r in range(len(cols))]
+
+
+@settings(max_examples=150, deadline=None)
+@given(_TEXTS)
+def test_objects_read_as_the_columns_give_them(text: str) -> None:
+    _same_objects(text)
+
+
+def test_objects_of_vendor_lists_as_the_columns_give_them(corpus: Path) -> None:
+    paths = sorted(corpus.rglob("*.lis"))
+    assert paths
+    for path in paths:
+        data = path.read_bytes()
+        a, b = tokenize(data, str(path)), tokenize(data, str(path), objects=True)
+        assert [(type(i), _fields(i)) for i in a.items] == [(type(i), _fields(i)) for i in b.items], path
+        assert a.problems == b.problems and a.encoding == b.encoding, path

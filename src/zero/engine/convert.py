@@ -81,7 +81,7 @@ def convert(data: bytes, src: str, dst: str, registry: Registry, path: str = "-"
         data, encoding, own = xml_source(data, path, registry, item)
         kind, src = kind or own, "lis"
     if src == "lis":
-        doc = tokenize(data, path, encoding)
+        doc = tokenize(data, path, encoding, objects=True)  # every item is read
         undeclared_code_page(doc, "YAML, TOML and JSON text cannot carry it")
         tree = from_document(doc, registry, kind)
         del doc  # the tokens are not needed to write: a big list's peak is 25 MiB lower without them

@@ -625,13 +625,14 @@ class _Reader:
 
 
 def tokenize_text(text: str, path: str = "-", encoding: str = "utf-8", bom: bool = False,
-                  use_fast: bool = True, declared: bool = False) -> Document:
+                  use_fast: bool = True, declared: bool = False, objects: bool = False) -> Document:
     """Tokenize already decoded text; ``declared``: the configuration named its encoding.
 
     The common entry lines go into the document's columns (one pattern over the whole text, no object
     per line); the other lines are read one at a time. ``use_fast=False``: every line the careful way,
-    as objects (what the columns must agree with)."""
-    if not use_fast or "\x00" in text:  # a NUL ends a line where it stands: read line by line
+    as objects (what the columns must agree with). ``objects``: the caller reads every item (a diff, a
+    conversion): they are built as the lines are read, which costs less than columns built out afterwards."""
+    if objects or not use_fast or "\x00" in text:  # a NUL ends a line where it stands: read line by line
         return _tokenize_items(text, path, encoding, bom, use_fast, declared)
     reader = _Reader(text)
     reader.read()
@@ -752,10 +753,11 @@ def _tokenize_items(text: str, path: str = "-", encoding: str = "utf-8", bom: bo
     return Document(path, encoding, lines, endings, items, problems, bom, end_line)
 
 
-def tokenize(data: bytes, path: str = "-", encoding: str | None = None) -> Document:
+def tokenize(data: bytes, path: str = "-", encoding: str | None = None, objects: bool = False) -> Document:
     """Tokenize the bytes of a list file. Never raises (but for an ``encoding`` that
     :func:`~zero.lists.encoding.declarable` refuses: :class:`ValueError`).
 
-    ``encoding``: the codec the configuration declares for the file, which wins over detection."""
+    ``encoding``: the codec the configuration declares for the file, which wins over detection;
+    ``objects``: as :func:`tokenize_text`'s."""
     text, codec, bom = decode(data, encoding)
-    return tokenize_text(text, path, codec, bom, declared=encoding is not None)
+    return tokenize_text(text, path, codec, bom, declared=encoding is not None, objects=objects)

@@ -19,12 +19,14 @@ if TYPE_CHECKING:
     from zero.catalog.registry import Registry
 
 
-def read_document(data: bytes, path: str, registry: Registry, encoding: str | None = None) -> Document:
+def read_document(data: bytes, path: str, registry: Registry, encoding: str | None = None,
+                  objects: bool = False) -> Document:
     """A list file's bytes as the document model, whatever its form: an ASCII list tokenized as it is
     (in ``encoding``, the code page declared for it), XML read by :mod:`zero.markup.documents` — which,
-    with the hardened parser, loads only when the bytes are XML (an ASCII list's start-up pays nothing)."""
+    with the hardened parser, loads only when the bytes are XML (an ASCII list's start-up pays nothing).
+    ``objects``: the caller reads every item (see :func:`~zero.lists.tokenizer.tokenize_text`)."""
     if not is_xml(data):
-        return tokenize(data, path, encoding)
+        return tokenize(data, path, encoding, objects)
     from zero.markup.documents import read_xml  # start-up: only for XML
 
     return read_xml(data, path, registry)
