@@ -9,6 +9,7 @@ basenames are unique across the tree and ``from conftest import ...`` works ever
 from __future__ import annotations
 
 import functools
+import importlib.util
 import json
 import os
 import resource
@@ -18,6 +19,7 @@ import sys
 import time
 from dataclasses import dataclass
 from pathlib import Path
+from types import ModuleType
 
 import pytest
 from hypothesis import strategies as st
@@ -56,6 +58,16 @@ def corpus() -> Path:
             pytest.fail(f"CI must run the corpus tests: {reason}")
         pytest.skip(reason)
     return path
+
+
+def script_module(path: Path) -> ModuleType:
+    """A script of the repository (a generator in ``tools/``, ``docs/gen_pages.py``) imported as a module,
+    to test what it writes against what is committed."""
+    spec = importlib.util.spec_from_file_location(path.stem, path)
+    assert spec is not None and spec.loader is not None
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
 
 
 def lint_text(text: str | bytes, path: str = "t.lis", **options: object) -> LintResult:

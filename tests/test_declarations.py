@@ -16,7 +16,7 @@ from typing import Any
 import jsonschema  # type: ignore[import-untyped]
 import pytest
 
-from conftest import ROOT
+from conftest import ROOT, script_module
 from zero.engine.config import BY_KEY, OPTIONS, config_schema, options_example, parse_config
 from zero.errors import ZeroError
 
@@ -24,13 +24,7 @@ SRC = ROOT / "src" / "zero"
 
 
 def _gen_config() -> Any:
-    import importlib.util
-
-    spec = importlib.util.spec_from_file_location("gen_config", ROOT / "tools" / "gen_config.py")
-    assert spec is not None and spec.loader is not None
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
+    return script_module(ROOT / "tools" / "gen_config.py")
 
 
 # ------------------------------------------------------------------------------ configuration

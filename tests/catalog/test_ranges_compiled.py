@@ -2,10 +2,10 @@
 
 from __future__ import annotations
 
-import importlib.util
 from pathlib import Path
 from types import ModuleType
 
+from conftest import script_module
 from zero.catalog.data.ranges_compiled import RANGES
 from zero.catalog.ranges import decode_range, encode_range, parse_range
 from zero.catalog.registry import ParamSpec, load_registry
@@ -14,11 +14,7 @@ ROOT = Path(__file__).resolve().parents[2]
 
 
 def _generator() -> ModuleType:
-    spec = importlib.util.spec_from_file_location("gen_ranges", ROOT / "tools" / "gen_ranges.py")
-    assert spec is not None and spec.loader is not None
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
+    return script_module(ROOT / "tools" / "gen_ranges.py")
 
 
 def test_the_generated_module_is_up_to_date() -> None:

@@ -20,7 +20,7 @@ from types import ModuleType
 
 import pytest
 
-from conftest import ROOT, corpus_dir
+from conftest import ROOT, corpus_dir, script_module
 from zero.catalog.registry import Registry
 from zero.output import docs
 from zero.rules import RULES
@@ -33,11 +33,7 @@ QUIET = {"NO_MKDOCS_2_WARNING": "1", "DISABLE_MKDOCS_2_WARNING": "true"}  # the 
 @functools.cache
 def generator() -> ModuleType:
     """docs/gen_pages.py, imported as a module (mkdocs-gen-files runs it as a script)."""
-    spec = importlib.util.spec_from_file_location("gen_pages", ROOT / "docs" / "gen_pages.py")
-    assert spec is not None and spec.loader is not None
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
+    return script_module(ROOT / "docs" / "gen_pages.py")
 
 
 @functools.cache

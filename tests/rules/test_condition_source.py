@@ -2,7 +2,6 @@
 
 from __future__ import annotations
 
-import importlib.util
 import itertools
 import random
 import sys
@@ -10,6 +9,7 @@ from pathlib import Path
 
 import pytest
 
+from conftest import script_module
 from zero.catalog.condition_source import source
 from zero.catalog.conditions import compile_condition, parse, ref_elements, refs
 from zero.catalog.data.startup_compiled import COMPILED
@@ -20,11 +20,7 @@ CHOICES: list[object] = [None, 0, 1, -1, 2, 3, 0.5, 7, 64, 100, 10**30, 1e300, "
 
 
 def _generator() -> object:
-    spec = importlib.util.spec_from_file_location("gen_conditions", ROOT / "tools" / "gen_conditions.py")
-    assert spec is not None and spec.loader is not None
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
+    return script_module(ROOT / "tools" / "gen_conditions.py")
 
 
 def test_the_generated_module_is_up_to_date() -> None:

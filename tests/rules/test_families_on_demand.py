@@ -3,12 +3,12 @@ their modules declare them (written by tools/gen_rules.py), their checks import 
 
 from __future__ import annotations
 
-import importlib.util
 import subprocess
 import sys
 from pathlib import Path
 from types import ModuleType
 
+from conftest import script_module
 from zero.rules import MACHINE_CHECKS, PROGRAM_CHECKS, RULES
 from zero.rules import families as registry_of_families
 
@@ -16,11 +16,7 @@ ROOT = Path(__file__).resolve().parents[2]
 
 
 def _generator() -> ModuleType:
-    spec = importlib.util.spec_from_file_location("gen_rules", ROOT / "tools" / "gen_rules.py")
-    assert spec is not None and spec.loader is not None
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
+    return script_module(ROOT / "tools" / "gen_rules.py")
 
 
 def test_the_generated_module_is_up_to_date() -> None:
