@@ -7,6 +7,7 @@ so a :class:`~zero.errors.ZeroError` is one line on stderr and exit 2, never a t
 
 from __future__ import annotations
 
+import gc
 import inspect
 import sys
 import typing
@@ -19,7 +20,7 @@ import typer.core
 
 from zero import __version__
 from zero.catalog.registry import KINDS, ParamSpec, Registry
-from zero.cli import exits
+from zero.cli import PYTHON_GC_THRESHOLDS, exits
 from zero.cli.help import ZeroCommand, ZeroGroup
 from zero.cli.options import COMMON_OPTIONS, LINT_OPTIONS, PATHS_HELP, Option, close_matches
 from zero.cli.run import (
@@ -640,6 +641,7 @@ def server_cmd(
     def body() -> int:
         from zero.server.lsp import serve  # start-up: pygls only for the server
 
+        gc.set_threshold(*PYTHON_GC_THRESHOLDS)  # a long run: cycles must be collected (see zero.cli)
         serve(REGISTRIES, state.param_desc)
         return exits.OK
 
