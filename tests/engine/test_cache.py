@@ -32,7 +32,7 @@ from zero.engine.cache import (
 )
 from zero.engine.commands import Echo, LintRequest, run_lint
 from zero.engine.fleet import fleet_drift
-from zero.engine.lint import LintOptions, LintResult, lint_file
+from zero.engine.lint import LintOptions, LintResult, lint_data, lint_file
 from zero.engine.project import Project
 from zero.lists.model import Document
 from zero.output.fleet import fleet_json
@@ -66,13 +66,19 @@ class Linter:
     def __init__(self, monkeypatch: pytest.MonkeyPatch, folder: Path) -> None:
         self.linted: list[str] = []
         self.registries: dict[Path | None, Registry] = {}
-        real = lint_file
+        real, real_bytes = lint_file, lint_data
 
         def counting(path: Any, registry: Registry, options: LintOptions | None = None) -> LintResult:
             self.linted.append(str(path))
             return real(path, registry, options)
 
+        def counting_bytes(data: bytes, path: str, registry: Registry,
+                           options: LintOptions | None = None) -> LintResult:
+            self.linted.append(path)  # a list of many files is linted from the bytes read to tell its twins
+            return real_bytes(data, path, registry, options)
+
         monkeypatch.setattr(parallel, "lint_file", counting)
+        monkeypatch.setattr(parallel, "lint_data", counting_bytes)
         monkeypatch.setenv("ZERO_CACHE_DIR", str(folder))
         monkeypatch.delenv("ZERO_NO_CACHE", raising=False)
 
