@@ -78,7 +78,7 @@ def lists(tmp_path: Path) -> Path:
     folder = tmp_path / "lists"
     folder.mkdir()
     for n in range(3):
-        (folder / f"m{n}.lis").write_bytes(f"; machine {n}\n".encode() + LIST)  # not twins: each is linted
+        (folder / f"m{n}.lis").write_bytes(f"# machine {n}\n".encode() + LIST)  # not twins: each is linted
         old(folder / f"m{n}.lis")
     return folder
 
@@ -100,7 +100,7 @@ def test_a_change_the_size_and_time_hide_is_seen_by_the_change_time(run: Run, li
     target = lists / "m1.lis"
     st = os.stat(target)
     time.sleep(0.05)  # past a tick of the coarsest clock Linux keeps change times with
-    target.write_bytes(b"; machine 1\n" + SAME_SIZE)
+    target.write_bytes(b"# machine 1\n" + SAME_SIZE)
     os.utime(target, ns=(st.st_atime_ns, st.st_mtime_ns))  # the same size and modification time
     assert os.stat(target).st_size == st.st_size and os.stat(target).st_ctime_ns != st.st_ctime_ns
     changed = run(lists)

@@ -86,7 +86,7 @@ def test_twins_are_linted_once_and_found_as_if_each_were_linted(tmp_path: Path, 
 
 def test_many_distinct_files_are_linted_across_processes_and_their_twins_shared(tmp_path: Path,
                                                                                registry: Registry) -> None:
-    lists = {f"achse_{n}.lis": f"; axis {n}\n".encode() + (AXIS if n % 2 else OTHER) for n in range(70)}
+    lists = {f"achse_{n}.lis": f"# axis {n}\n".encode() + (AXIS if n % 2 else OTHER) for n in range(70)}
     files = fleet(tmp_path, 2, lists)  # 70 contents, each twice: the 70 firsts are linted by two workers
     assert together(files, registry, jobs=2) == alone(files, registry)
 
