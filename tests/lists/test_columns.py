@@ -53,9 +53,19 @@ def _fields(obj: Any) -> dict[str, Any]:
 
 
 def _check(text: str) -> None:
+    for widths in (False, True):
+        _check_read(text, widths)
+
+
+def _check_read(text: str, widths: bool) -> None:
+    """The columns, the entries built of them (``widths``: from the widths the columns keep, else by
+    reading each line again), lines and items agree with the careful scanner's objects."""
     careful = tokenize_text(text, use_fast=False)
-    doc = tokenize_text(text)
+    doc = tokenize_text(text, widths=widths)
     cols = doc.columns
+    assert (cols.widths is not None) is widths
+    if cols.widths is not None:
+        assert [len(w) for w in cols.widths] == [len(cols)] * 3
     entries = careful.entries
     assert len(cols) == len(entries)
     # the columns, row by row, before any object is built
@@ -82,9 +92,10 @@ def _check(text: str) -> None:
     # nothing above built the items (control characters do: where they are is told line by line)
     assert fresh._items is None or tokenizer._control_count(text) > text.count("\r\n")
     assert doc.problems == careful.problems
-    # an entry of a row is the careful scanner's, field by field
+    # an entry of a row is the careful scanner's, field by field (asked for one by one, and all at once)
     built = [doc.entry_at(row) for row in range(len(cols))]
     assert [_fields(e) for e in built] == [_fields(e) for e in entries]
+    assert [_fields(e) for e in tokenize_text(text, widths=widths).entries] == [_fields(e) for e in entries]
     # then lines, endings and items as the careful scanner's, holding the same entry objects
     assert doc.lines == careful.lines and doc.endings == careful.endings
     assert [(type(i), _fields(i)) for i in doc.items] == [(type(i), _fields(i)) for i in careful.items]
@@ -135,6 +146,19 @@ def test_many_parts_of_a_big_text_read_as_one(monkeypatch: pytest.MonkeyPatch) -
     _check(text)
     doc = tokenize_text(text)
     assert len(doc.columns) == 249 and doc.end_line == 251  # a comment and `Ende` are no rows
+
+
+def test_an_entry_is_built_from_the_widths_without_its_line() -> None:
+    """With widths kept, an entry's positions come from the columns: its line is not read again."""
+    text = "  wz[3].x\t\t12   ( P-TOOL-00005 : c\nb 2\n"
+    doc = tokenize_text(text, widths=True)
+    assert doc.columns.widths is not None
+    assert [list(w) for w in doc.columns.widths] == [[2, 0], [2, 1], [3, 0]]
+    doc._text = None  # the text gone: a line read again would be empty, and match no entry
+    e = doc.entry_at(0)
+    assert (e.key_text, e.key_start, e.key_end, e.value, e.value_start, e.value_end) == ("wz[3].x", 2, 9, "12", 11, 13)
+    assert (e.comment_start, e.annotation, e.annotation_start) == (16, "P-TOOL-00005", 18)
+    assert [(x.key_text, x.value_start) for x in doc.entries] == [("wz[3].x", 11), ("b", 2)]
 
 
 def test_an_entry_is_built_once_and_kept() -> None:

@@ -311,7 +311,7 @@ class Columns:
 
     __slots__ = ("_comment_ids", "_pattern_ids", "_shape_ids", "_value_ids", "comment", "comments", "first",
                  "kinds", "line", "note_at", "notes", "objects", "pattern", "patterns", "shape", "shapes", "styles",
-                 "value", "values")
+                 "value", "values", "widths")
 
     def __init__(self) -> None:
         self.line = array("i")
@@ -330,6 +330,10 @@ class Columns:
         self.note_at: list[int] = []  # its column in the comment (-1: none)
         # rows whose Entry exists (scanned the careful way, or built on demand): row -> Entry
         self.objects: dict[int, Entry] = {}
+        # Per row, when the tokenizer kept them: the widths of the whitespace before the key (its start), between
+        # key and value and between value and comment, from which an entry's positions follow (0 for a row whose
+        # object exists). None: an entry is built by reading its line again.
+        self.widths: tuple[array[int], array[int], array[int]] | None = None
         self._shape_ids: dict[tuple[str, bool, str], int] = {}
         self._pattern_ids: dict[str, int] = {}
         self._value_ids: dict[str, int] = {}
