@@ -17,7 +17,7 @@ from typing import TYPE_CHECKING
 
 from zero.cli import GC_THRESHOLDS
 from zero.diagnostics import Severity
-from zero.engine.lint import Totals
+from zero.engine.results import Totals
 from zero.errors import ZeroError
 
 if TYPE_CHECKING:  # start-up: the fleet only for zero diff --fleet

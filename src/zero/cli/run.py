@@ -18,7 +18,7 @@ from zero.catalog.registry import KINDS, Registry, load_registry
 from zero.cli import exits
 from zero.diagnostics import Severity
 from zero.engine.commands import Echo, LintRequest, parse_kind, run_lint
-from zero.engine.lint import LintResult, Totals, tallied
+from zero.engine.results import LintResult, Totals, tallied
 from zero.errors import ZeroError
 from zero.files import max_file_bytes, read_stream, write_report
 from zero.output.formats import FORMATS, OUTPUT_FORMATS, STREAMED_FORMATS, emitter

@@ -58,7 +58,7 @@ from typing import TYPE_CHECKING, Any
 
 from zero import __version__
 from zero.diagnostics import Diagnostic, Edit, Fix, Related, Severity, Span
-from zero.engine.lint import LintResult
+from zero.engine.results import LintResult
 from zero.errors import ZeroError
 from zero.files import max_file_bytes, read_as_is, read_file, write_disposable
 from zero.forms import CONFIG_NAMES, controller_absolute, is_list, is_program, split_part

@@ -13,32 +13,20 @@ from collections import Counter
 from collections.abc import Callable, Iterable, Sequence
 from pathlib import Path
 
-from zero.catalog.registry import KINDS, Registry, kind_from_name
 from zero.diagnostics import Diagnostic, Severity
 from zero.engine.config import one_resolution
 from zero.engine.discovery import collect_files, skipped_note
-from zero.engine.lint import (
-    LintOptions,
-    LintResult,
-    is_unreadable,
-    lint_bytes,
-    lint_data,
-    lint_document,
-    lint_file,
-    lint_in_machine,
-    lint_machine,
-    lint_program,
-    lint_update_in_machine,
-    machine_findings,
-    unreadable,
-)
-from zero.engine.parallel import iter_lint_many, lint_many
 from zero.engine.project import Project, Registries, common_of, open_project
+from zero.engine.results import LintOptions, LintResult, is_unreadable
+from zero.engine.selection import known_code, rule_table
 from zero.errors import ZeroError
 from zero.files import read_file, write_atomic
 from zero.forms import PROJECT_ROOTS, TWINCAT_ROOT, is_list, is_program, is_update, is_xml, walked_names
 from zero.records import field, record, replace
-from zero.rules import RULES
+
+TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (mypy and ruff read it alike)
+if TYPE_CHECKING:
+    from zero.catalog.registry import Registry
 
 Progress = Callable[[int, int], None]
 
@@ -56,7 +44,7 @@ def parse_codes(values: Sequence[str] | None) -> tuple[str, ...]:
     """Rule codes or prefixes, repeatable or comma-separated; each must match a rule."""
     out = tuple(c.strip().upper() for v in values or () for c in v.split(",") if c.strip())
     for c in out:
-        if c != "ALL" and not any(code.startswith(c) for code in RULES):  # ALL: every rule, as in ruff
+        if not known_code(c):  # ALL: every rule, as in ruff
             raise ZeroError(f"{c!r} matches no rule code (see `zero rule --all`)")
     return out
 
@@ -65,6 +53,8 @@ def parse_kind(kind: str | None) -> str | None:
     """A list kind by name or letters (``zero``, ``ZERO``); ``None`` detects it."""
     if kind is None:
         return None
+    from zero.catalog.registry import KINDS, kind_from_name  # start-up: the catalogue only for --kind
+
     forced = kind_from_name(kind)
     if forced is None:
         import difflib  # start-up: only for a kind that is not known
@@ -179,6 +169,8 @@ def _run_lint(request: LintRequest, registries: Registries, echo: Echo,
     if (request.stream and bar is None and len(groups) <= 1
             and not (request.fix or request.show_diff or request.add_noqa)):
         desc = next(iter(groups), None)  # one group: its files are all the files to lint, in their order
+        if todo:
+            from zero.engine.parallel import iter_lint_many  # start-up: not for a cached run
         stream = iter_lint_many(todo, registries(desc), project.options, request.jobs) if todo else iter(())
         made = (finish(f, r) for f, r in zip(todo, stream, strict=True))
         if cache is None:
@@ -187,6 +179,8 @@ def _run_lint(request: LintRequest, registries: Registries, echo: Echo,
     by_file: dict[Path, LintResult] = {}
     done = 0
     for desc, members in groups.items():
+        from zero.engine.parallel import lint_many  # start-up: not for a cached run
+
         def step(n: int, total: int, base: int = done) -> None:
             if bar is not None:
                 bar(base + n, len(files))
@@ -212,6 +206,14 @@ def _run_lint(request: LintRequest, registries: Registries, echo: Echo,
 def _lint_machine(request: LintRequest, project: Project) -> list[LintResult]:
     """``--machine``: every list of the machine and the X rules, each list with its own configuration
     (selection, per-file ignores), plus the files named, checked against the machine."""
+    from zero.engine.lint import (  # start-up: not for a cached run
+        lint_file,
+        lint_machine,
+        lint_program,
+        lint_update_in_machine,
+        unreadable,
+    )
+
     machine = project.machine(required=True)
     assert machine is not None and project.machine_given is not None
     results = lint_machine(machine, project.settings(project.machine_given).registry, project.options)
@@ -252,6 +254,8 @@ def _with_machine(path: Path, result: LintResult, project: Project, data: bytes 
         return result  # a list is checked as without a machine; `zero lint --machine` says why
     if machine is None:
         return result
+    from zero.engine.lint import lint_in_machine, lint_program, machine_findings  # start-up: not for a cached run
+
     settings = project.settings(path)
     registry, options = settings.registry, settings.options
     if program:
@@ -267,13 +271,15 @@ def _with_machine(path: Path, result: LintResult, project: Project, data: bytes 
 
 
 def _every_code() -> dict[str, Severity]:
-    return {code: rule.severity for code, rule in RULES.items()}
+    return {code: severity for code, (severity, _) in rule_table().items()}
 
 
 def _lint_stdin(request: LintRequest, project: Project, echo: Echo, data: bytes) -> LintRun:
     """Standard input as the file ``--stdin-filename`` names: read as that file would be (a list,
     an NC program, YAML/TOML/JSON), its configuration applied. With ``--fix`` the fixed text goes
     to standard output, with ``--diff`` the patch; the findings then go to standard error."""
+    from zero.engine.lint import lint_data  # start-up: not for a cached run
+
     name = request.stdin_filename or "-"
     passthrough = request.fix and not request.show_diff
     if name != "-" and project.excluded(Path(name)):
@@ -329,6 +335,7 @@ def _add_noqa(path: Path, result: LintResult, options: LintOptions, registry: Re
     if not is_list(str(path)) or is_unreadable(result) or not result.diagnostics:
         return result
     from zero.engine.baseline import add_noqa  # start-up: only with --add-noqa
+    from zero.engine.lint import lint_bytes  # start-up: as above
 
     data = read_file(path)
     if is_xml(data):
@@ -349,6 +356,7 @@ def _add_noqa_xml(path: Path, data: bytes, result: LintResult, options: LintOpti
     """``--add-noqa`` on XML: the lists of a TwinCAT export get their directives inside their CDATA
     sections (every other byte kept); an XML list has no list comments to hold them and is left as it is."""
     from zero.engine.baseline import add_noqa  # start-up: only with --add-noqa
+    from zero.engine.lint import lint_data, lint_document  # start-up: as above
     from zero.markup.documents import embedded_documents, splice  # start-up: only for XML
     from zero.markup.safe import scan  # start-up: as above
 

@@ -24,14 +24,13 @@ from typing import TYPE_CHECKING, Any
 
 from zero.catalog.registry import KINDS, kind_from_name
 from zero.diagnostics import Severity
-from zero.engine.lint import LintOptions, layered_selection
+from zero.engine.results import LintOptions
+from zero.engine.selection import known_code, layered_selection, rule_table
 from zero.errors import ZeroError
 from zero.files import nearest_holding, read_file, within
 from zero.forms import CONFIG_NAMES, DEFAULT_INCLUDE, controller_absolute
-from zero.lists.encoding import declarable
 from zero.lists.model import parse_key
 from zero.records import field, record, replace
-from zero.rules import RULES
 
 if TYPE_CHECKING:
     from pathspec import GitIgnoreSpec
@@ -354,7 +353,7 @@ class _Reading:
             raise self.fail(key, "expected a list of rule codes, e.g. [\"R005\", \"M\"]", sub)
         out = tuple(v.strip().upper() for v in value)
         for c in out:
-            if c != "ALL" and not any(code.startswith(c) for code in RULES):
+            if not known_code(c):
                 raise self.fail(key, f"{c!r} matches no rule code (see `zero rule`)", sub)
         return out
 
@@ -483,13 +482,13 @@ def _read_severity(r: _Reading, value: Any) -> None:
     given: dict[str, Severity] = {}
     for code, sev in table.items():
         prefix = code.strip().upper()
-        if not any(c.startswith(prefix) for c in RULES):
+        if not any(c.startswith(prefix) for c in rule_table()):
             raise r.fail(code, f"{code!r} matches no rule code (see `zero rule`)", ("severity",))
         try:
             given[prefix] = Severity.parse(sev if isinstance(sev, str) else "")
         except ValueError:
             raise r.fail(code, f"{sev!r} is not a severity (error, warning or info)", ("severity",)) from None
-    for c in RULES:  # a prefix sets every code it matches; the longest prefix wins
+    for c in rule_table():  # a prefix sets every code it matches; the longest prefix wins
         best = max((p for p in given if c.startswith(p)), key=len, default=None)
         if best is not None:
             r.cfg.severity[c] = given[best]
@@ -507,6 +506,8 @@ def _read_kind(r: _Reading, value: Any) -> None:
 
 
 def _read_encoding(r: _Reading, value: Any) -> None:
+    from zero.lists.encoding import declarable  # start-up: only a configuration that names a codec
+
     declared = []
     for glob, name in r.table_of("encoding", value, 'glob = codec, e.g. {"old/**/*.lis" = "cp850"}').items():
         r.globs(glob, [glob], ("encoding",))

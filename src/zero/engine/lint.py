@@ -12,19 +12,21 @@ from __future__ import annotations
 
 import os
 import re
-from collections.abc import Callable, Iterable, Iterator, Sequence
+from collections.abc import Callable, Sequence
 from pathlib import Path
-from typing import TYPE_CHECKING
 
 from zero.catalog.registry import Registry, kind_from_name
 from zero.diagnostics import Diagnostic, Severity, Span
+from zero.engine.results import LintOptions, LintResult, Totals, is_unreadable, tallied
+from zero.engine.selection import ALL, Layer, layered_selection, selected_rules
+from zero.engine.selection import _selected_rules as _selected_rules  # the reference tests/engine/ hold to
 from zero.errors import ZeroError
 from zero.files import read_file
 from zero.forms import is_program, is_update, is_xml, structured_format
 from zero.lists.encoding import decode
 from zero.lists.model import Document
 from zero.lists.tokenizer import tokenize, tokenize_text
-from zero.records import field, record, replace
+from zero.records import replace
 from zero.rules import (
     MACHINE_CHECKS,
     PROGRAM_CHECKS,
@@ -38,165 +40,12 @@ from zero.rules.base import declared_codes
 from zero.rules.funnel import funnel
 from zero.rules.suppress import parse_comment_directives
 
+TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (mypy and ruff read it alike)
 if TYPE_CHECKING:  # start-up: linting a list loads neither the machine model nor the structured forms
     from zero.catalog.values import ListValues
     from zero.machine.model import ListFile, Machine
     from zero.structured.common import Found
     from zero.structured.tree import Tree
-
-
-
-@record
-class LintOptions:
-    select: tuple[str, ...] = ()  # code prefixes; empty = all
-    ignore: tuple[str, ...] = ()
-    kind: str | None = None  # force the list kind
-    severity: dict[str, Severity] = field(default_factory=dict)  # per-code overrides
-    extend_select: tuple[str, ...] = ()  # codes or prefixes added to the selection
-    encoding: str | None = None  # the codec the configuration declares for the list; None: detected
-    kernel: str | None = None  # the kernel release the machine runs (`kernel` in [tool.zero]); None: not said
-    ignore_noqa: bool = False  # report what `noqa` and the other suppression directives hide (--ignore-noqa)
-
-
-@record
-class LintResult:
-    path: str
-    document: Document
-    kind: str | None
-    diagnostics: list[Diagnostic] = field(default_factory=list)
-    note: str | None = None  # why the file was skipped, unchecked (not a list form): said, not a finding
-
-    @property
-    def worst(self) -> Severity | None:
-        return max((d.severity for d in self.diagnostics), default=None)
-
-
-@record
-class Totals:
-    """What a report says at its end (the summary line, ``--statistics``, the exit code), counted
-    as the results pass: a report of many files need not keep them to say it."""
-
-    files: int = 0
-    clean: int = 0
-    unreadable: int = 0
-    by_severity: dict[Severity, int] = field(default_factory=dict)
-    by_code: dict[str, int] = field(default_factory=dict)
-    worst: Severity | None = None
-
-    def add(self, result: LintResult) -> None:
-        if result.note is not None and not result.diagnostics:  # skipped: neither checked nor clean
-            return
-        self.files += 1
-        if not result.diagnostics:
-            self.clean += 1
-            return
-        for d in result.diagnostics:
-            self.by_severity[d.severity] = self.by_severity.get(d.severity, 0) + 1
-            self.by_code[d.code] = self.by_code.get(d.code, 0) + 1
-            if self.worst is None or d.severity > self.worst:
-                self.worst = d.severity
-        if is_unreadable(result):
-            self.unreadable += 1
-
-
-def tallied(results: Iterable[LintResult], totals: Totals) -> Iterator[LintResult]:
-    """``results``, each added to ``totals`` as it passes."""
-    for r in results:
-        totals.add(r)
-        yield r
-
-
-_selected: dict[tuple[object, ...], dict[str, Severity]] = {}
-
-
-def selected_rules(options: LintOptions) -> dict[str, Severity]:
-    """Code → severity of every rule the options enable (longest prefix wins); memoised."""
-    key = (options.select, options.ignore, options.extend_select, tuple(sorted(options.severity.items())))
-    hit = _selected.get(key)
-    if hit is None:
-        hit = _selected[key] = _selected_rules(options)
-    return hit
-
-
-ALL = "ALL"  # as in ruff: every rule, opt-in ones included, the least specific selector
-
-
-def _match(prefixes: Sequence[str], code: str, names: frozenset[str] = frozenset()) -> int:
-    """How specific the longest of ``prefixes`` that matches ``code`` is (``ALL``: 0); -1: none.
-    ``names``: ``prefixes`` as a set, for a selection of full codes (one look-up, not one per prefix)."""
-    if code in names:  # as long as a prefix of it can be
-        return len(code)
-    return max((0 if p == ALL else len(p) for p in prefixes if p == ALL or code.startswith(p)), default=-1)
-
-
-def _named(code: str, *selectors: Sequence[str]) -> bool:
-    """Is an opt-in rule enabled by ``selectors``: by its full code, or by ``ALL``?"""
-    return any(code in s or ALL in s for s in selectors)
-
-
-def _selected_rules(options: LintOptions) -> dict[str, Severity]:
-    """All rules (or those ``select`` names), plus ``extend_select``, less ``ignore``; the longest
-    matching prefix decides, and at equal length ``ignore`` wins. An opt-in rule runs only when
-    named by its full code (or by ``ALL``)."""
-    out: dict[str, Severity] = {}
-    # sets, where a selector names full codes: a configuration's layered selection names every rule
-    # (199 codes), and 199 prefixes tried on each code were the slowest part of start-up
-    select, extend, ignore = (frozenset(options.select), frozenset(options.extend_select),
-                              frozenset(options.ignore))
-    for code, r in RULES.items():
-        sel = _match(options.select, code, select)
-        ext = _match(options.extend_select, code, extend)
-        ign = _match(options.ignore, code, ignore)
-        if r.opt_in and not _named(code, options.select, options.extend_select):
-            continue
-        if options.select and sel < 0 and ext < 0:
-            continue
-        if ign >= 0 and ign >= max(sel, ext):  # at equal specificity, ignore wins (as in ruff)
-            continue
-        out[code] = options.severity.get(code, r.severity)
-    return out
-
-
-Layer = tuple[tuple[str, ...], tuple[str, ...], tuple[str, ...]]  # select, extend-select, ignore
-
-
-_layered: dict[tuple[tuple[Layer, ...], tuple[str, ...]], LintOptions] = {}
-
-
-def layered_selection(layers: Sequence[Layer], dropped: Sequence[str] = ()) -> LintOptions:
-    """:func:`_layered_selection`, memoised: every file of a run asks with the same few layers."""
-    key = (tuple(layers), tuple(dropped))
-    hit = _layered.get(key)
-    if hit is None:
-        hit = _layered[key] = _layered_selection(key[0], key[1])
-    return hit
-
-
-def _layered_selection(layers: Sequence[Layer], dropped: Sequence[str] = ()) -> LintOptions:
-    """Rule selection as ruff resolves it, as options for one file. Each layer (an inherited
-    configuration, the configuration, the command line) changes the rules the one below enabled:
-    a layer with ``select`` starts anew (what the layers below enabled or ignored no longer
-    counts), one without adds its ``extend-select`` and removes its ``ignore``. Within a layer the
-    longest matching prefix decides and, at equal length, ``ignore`` wins; a rule no selector of a
-    layer matches keeps its state. An opt-in rule is enabled only by its full code. ``dropped``
-    (the file's per-file ignores) removes every code it matches, whatever selected it."""
-    enabled = {code for code, r in RULES.items() if not r.opt_in}
-    for select, extend, ignore in layers:
-        if not (select or extend or ignore):
-            continue
-        for code, r in RULES.items():
-            on = _match((*select, *extend), code)
-            off = _match(ignore, code)
-            if r.opt_in and not _named(code, select, extend):
-                on = -1
-            if not select and on < 0 and off < 0:
-                continue
-            if on > off:
-                enabled.add(code)
-            else:
-                enabled.discard(code)
-    kept = tuple(sorted(c for c in enabled if not any(c.startswith(p) for p in dropped)))
-    return LintOptions(select=kept) if kept else LintOptions(ignore=("",))  # "" matches every code
 
 
 def lint_document(doc: Document, registry: Registry, options: LintOptions | None = None,
@@ -401,10 +250,6 @@ def unreadable(path: str, error: ZeroError, options: LintOptions | None = None) 
     return LintResult(path, Document(path, "utf-8", [], [], []), None, found)
 
 
-def is_unreadable(result: LintResult) -> bool:
-    return any(d.code == "F001" for d in result.diagnostics)
-
-
 def lint_file(path: str | Path, registry: Registry, options: LintOptions | None = None) -> LintResult:
     """Lint a file by its suffix; a file that cannot be read is one F001 finding."""
     try:
@@ -572,6 +417,7 @@ def lint_in_machine(path: str, machine: Machine, registry: Registry, options: Li
 
 
 __all__ = [
+    "ALL",
     "Layer",
     "LintOptions",
     "LintResult",

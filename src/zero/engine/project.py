@@ -39,7 +39,7 @@ from typing import TYPE_CHECKING
 
 from zero.catalog.registry import KINDS, Registry
 from zero.engine.config import Config, ConfigFinder, is_inline
-from zero.engine.lint import LintOptions
+from zero.engine.results import LintOptions
 from zero.errors import ZeroError
 from zero.files import read_file, resolve
 from zero.records import field, record

@@ -16,7 +16,7 @@ from zero.records import record, replace
 from zero.rules import RULES
 
 if TYPE_CHECKING:
-    from zero.engine.lint import LintResult
+    from zero.engine.results import LintResult
     from zero.lists.model import Document
     from zero.machine.model import Machine
     from zero.rules.startup import StartupError

@@ -46,8 +46,8 @@ from zero.catalog.ranges import format_number
 from zero.catalog.registry import ParamSpec, Registry
 from zero.diff import Change, default_effective
 from zero.diff import effective as value_of
-from zero.engine.lint import LintResult
 from zero.engine.report import ReportFacts
+from zero.engine.results import LintResult
 from zero.errors import ZeroError
 from zero.forms import split_part
 from zero.machine.effective import CATALOGUE, DEFAULT_LIST, LIST, Scope, effective, entries_of, scope_values

@@ -12,8 +12,7 @@ from collections.abc import Iterable
 from typing import Any, TextIO
 
 from zero.diagnostics import Diagnostic, Severity
-from zero.engine.lint import LintResult, Totals, tallied
-from zero.rules import RULES
+from zero.engine.results import LintResult, Totals, tallied
 
 Segment = tuple[str, str]  # (text, rich style)
 MAX_SHOWN_PER_CODE = 50  # the text report shows this many findings of one code per file, then a count
@@ -169,6 +168,8 @@ def render_text(results: Iterable[LintResult], stream: TextIO | None = None,
 
 def statistics(totals: Totals) -> str:
     """Counts per code, most frequent first (``--statistics``)."""
+    from zero.rules import RULES  # start-up: the rules' names only for --statistics (a cached run imports no rule)
+
     counts = totals.by_code
     lines = [f"{n:>7}  {code}  {RULES[code].name if code in RULES else ''}"
              for code, n in sorted(counts.items(), key=lambda kv: (-kv[1], kv[0]))]
@@ -178,6 +179,8 @@ def statistics(totals: Totals) -> str:
 def statistics_json(totals: Totals) -> str:
     """Counts per code, most frequent first, as a JSON array (``--statistics`` with a JSON format)."""
     import json  # start-up: only for --statistics with JSON
+
+    from zero.rules import RULES  # start-up: as in statistics()
 
     rows = [{"code": c, "name": RULES[c].name if c in RULES else None, "count": n}
             for c, n in sorted(totals.by_code.items(), key=lambda kv: (-kv[1], kv[0]))]

@@ -9,7 +9,7 @@ from collections.abc import Iterable, Iterator
 from typing import Any
 
 from zero.diagnostics import Diagnostic
-from zero.engine.lint import LintResult
+from zero.engine.results import LintResult
 
 
 def each(results: Iterable[LintResult]) -> Iterator[Diagnostic]:

@@ -6,7 +6,7 @@ from collections.abc import Iterable
 from typing import TextIO
 
 from zero.diagnostics import Diagnostic
-from zero.engine.lint import LintResult
+from zero.engine.results import LintResult
 from zero.output.formats.common import ESCAPE, each, indented_json
 
 

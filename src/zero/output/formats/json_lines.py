@@ -6,7 +6,7 @@ import json
 from collections.abc import Iterable
 from typing import TextIO
 
-from zero.engine.lint import LintResult
+from zero.engine.results import LintResult
 from zero.output.formats.common import each
 
 

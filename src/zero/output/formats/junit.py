@@ -6,7 +6,7 @@ from collections.abc import Sequence
 from typing import TextIO
 
 from zero.diagnostics import Severity
-from zero.engine.lint import LintResult
+from zero.engine.results import LintResult
 from zero.output.text import printable
 
 

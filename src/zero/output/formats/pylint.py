@@ -5,7 +5,7 @@ from __future__ import annotations
 from collections.abc import Iterable
 from typing import TextIO
 
-from zero.engine.lint import LintResult
+from zero.engine.results import LintResult
 from zero.output.formats.common import each
 from zero.output.text import printable
 

@@ -8,7 +8,7 @@ from collections.abc import Sequence
 from typing import TextIO
 
 from zero.diagnostics import Severity, Span
-from zero.engine.lint import LintResult
+from zero.engine.results import LintResult
 from zero.output.formats import rule_docs_template
 from zero.output.formats.common import repo_path
 from zero.output.text import printable

@@ -11,7 +11,7 @@ from typing import TextIO
 
 from zero import __version__
 from zero.diagnostics import Severity, Span
-from zero.engine.lint import LintResult, is_unreadable
+from zero.engine.results import LintResult, is_unreadable
 from zero.output.formats import information_uri, rule_docs_template
 from zero.output.formats.common import each, fingerprints, repo_path
 from zero.output.text import printable
