@@ -313,6 +313,11 @@ _ROW_RE = re.compile(
 _ROW_AT_RE = re.compile(
     r"(?:([ \t]*)([A-Za-z_][A-Za-z0-9_.]*)(?:\[(0|[1-9][0-9]{0,17})(\][A-Za-z0-9_.\[\]]*))?"
     r"([ \t]+)([^\s\"|.\[\]][^\s|]*)(?:([ \t]+)([^\s|][^\r\n]*)|[ \t]*)(?:\r?(?=\n)|\Z)|([^\n]*))\n?")
+# The two for a text without a \r: the comment runs to the line's end (in C, a scan for the \n: a quarter
+# fewer instructions over a big list), the same lines and groups.
+_ROW_LF_RE = re.compile(_ROW_RE.pattern.replace(r"[^\r\n]*", r"[^\n]*").replace(r"(?:\r?(?=\n)|\Z)", r"(?=\n|\Z)"))
+_ROW_AT_LF_RE = re.compile(
+    _ROW_AT_RE.pattern.replace(r"[^\r\n]*", r"[^\n]*").replace(r"(?:\r?(?=\n)|\Z)", r"(?=\n|\Z)"))
 _NAME_RE = re.compile(r"[A-Za-z_][A-Za-z0-9_]*(?:\.[A-Za-z0-9_]+)*")
 _TAIL_RE = re.compile(r"(?:\[[0-9]+\])*(?:\.[A-Za-z0-9_]+(?:\[[0-9]+\])*)*")
 _CHUNK = 1 << 18  # characters of text read per pattern call: bounded memory for the match tuples
@@ -524,17 +529,18 @@ class _Reader:
         add_shapes, add_comments, value_id = cols.add_shapes, cols.add_comments, cols.value_id
         info_of, comment_table, kinds = _shape_info.get, _comment_table.get, _kinds.get
         shape_pattern = self.shape_pattern
+        row_re, row_at_re = (_ROW_RE, _ROW_AT_RE) if "\r" in text else (_ROW_LF_RE, _ROW_AT_LF_RE)
         while pos < n:
             end = text.find("\n", pos + _CHUNK)
             end = n if end < 0 else end + 1
             widths = cols.widths
             if widths is None:
-                rows = _ROW_RE.findall(text, pos, end)
+                rows = row_re.findall(text, pos, end)
                 rows.pop()  # the empty match where the text (or this part) ends
                 names, first_texts, tails, value_texts, comment_texts, wholes = zip(*rows, strict=True)
                 leads = key_gaps = comment_gaps = ()
             else:
-                rows = _ROW_AT_RE.findall(text, pos, end)
+                rows = row_at_re.findall(text, pos, end)
                 rows.pop()
                 (leads, names, first_texts, tails, key_gaps, value_texts, comment_gaps, comment_texts,
                  wholes) = zip(*rows, strict=True)
