@@ -342,12 +342,25 @@ class Registry:
         return self.detect_kind((e.key.pattern for e in (doc.entries if entries is None else entries) if e.key),
                                 doc.path)
 
+    def kind_of_counts(self, doc: Document, counts: Mapping[str, int]) -> str | None:
+        """:meth:`kind_of` of a document whose entries' key patterns are counted already (pattern ->
+        how many entries have it): the same answer, without an entry."""
+        declared = doc.declared_kind()
+        if declared is not None:
+            return declared
+        return self.detect_kind_counts(counts, doc.path)
+
     def detect_kind(self, patterns: Iterable[str], path: str = "") -> str | None:
         """The list kind whose keys match most of ``patterns``; file name breaks ties."""
-        votes: Counter[str] = Counter()
-        for p, n in Counter(patterns).items():  # counted in C: a big list has few patterns
-            for k in self._kinds_of.get(p, ()):
-                votes[k] += n
+        return self.detect_kind_counts(Counter(patterns), path)  # counted in C: a big list has few patterns
+
+    def detect_kind_counts(self, counts: Mapping[str, int], path: str = "") -> str | None:
+        """:meth:`detect_kind` of patterns counted already (pattern -> how many times)."""
+        votes: dict[str, int] = {}
+        kinds_of = self._kinds_of
+        for p, n in counts.items():
+            for k in kinds_of.get(p, ()):
+                votes[k] = votes.get(k, 0) + n
         hint = kind_hint(path)
         if not votes:
             return hint

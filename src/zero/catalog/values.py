@@ -14,13 +14,13 @@ import math
 import re
 import sys
 from collections.abc import Iterator, Mapping, Sequence
-from itertools import chain, repeat
+from itertools import chain
 from typing import Any, TypeVar, overload
 
 from zero.catalog.ids import AXIS_TYPE, is_rotary
 from zero.catalog.ranges import TYPE_LIMITS, Number
 from zero.catalog.registry import INTEGER_TYPES, NO_DEFAULT, ParamSpec, Registry
-from zero.lists.model import HUGE_INDEX, MAX_INDEX_DIGITS, Document, Entry, Key, ValueKind, format_key, parse_key
+from zero.lists.model import HUGE_INDEX, MAX_INDEX_DIGITS, Document, Entry, ValueKind, format_key, parse_key
 from zero.records import field, record
 
 __all__ = ["NO_DEFAULT", "ListValues", "Resolved", "Slot", "Value", "bind", "canonical_key", "default_number",
@@ -290,17 +290,22 @@ def read_text(spec: ParamSpec, raw: str, kind: ValueKind | None) -> Value:
 
 
 _V = TypeVar("_V", bound="ListValues")
-_STAND_INS: dict[str, Entry] = {}
+_NO_KEY: tuple[str, tuple[int, ...], bool] = ("", (), False)
+# a key without a first index (`kenngr.swe_pos`) -> its shape key (pattern, indices, False), or None where
+# it is no key: parsed once per run (a fleet's lists repeat their keys)
+_UNINDEXED: dict[str, tuple[str, tuple[int, ...], bool] | None] = {}
 
 
-def _stand_in(pattern: str) -> Entry:
-    """An entry of ``pattern`` for kind detection (which reads an entry's key pattern alone), one per pattern."""
-    got = _STAND_INS.get(pattern)
-    if got is None:
-        got = Entry(0, pattern, pattern, Key(pattern, pattern, ()), 0, 0, "", None, 0, 0)
-        if len(_STAND_INS) < 65_536:
-            _STAND_INS[pattern] = got
-    return got
+def _unindexed(text: str) -> tuple[str, tuple[int, ...], bool] | None:
+    """``ListValues.shape_keys``'s entry of a shape without a first index, from its key text."""
+    try:
+        return _UNINDEXED[text]
+    except KeyError:
+        key = parse_key(text)
+        got = (key.pattern, key.indices, False) if key is not None else None
+        if len(_UNINDEXED) < 65_536:
+            _UNINDEXED[text] = got
+        return got
 
 
 @record
@@ -338,28 +343,36 @@ class ListValues:
     def of(cls: type[_V], doc: Document, registry: Registry, kind: str | None = None) -> _V:
         """Bind a document's entries (before ``Ende``); ``kind`` detected when ``None``."""
         cols = doc.columns
-        shape_rows: list[list[int]] = [[] for _ in cols.shapes]
+        shapes = cols.shapes
+        shape_rows: list[list[int]] = [[] for _ in shapes]
         for row, shape in enumerate(cols.shape):  # the one pass over the rows
             shape_rows[shape].append(row)
         pattern_shapes: dict[str, list[int]] = {}
         counts: dict[str, int] = {}
         shape_keys: list[tuple[str, tuple[int, ...], bool]] = []
-        for shape, rows in enumerate(shape_rows):
-            sh = cols.shapes[shape]
+        patterns = cols.patterns
+        for sh, rows in zip(shapes, shape_rows, strict=True):
+            got: tuple[str, tuple[int, ...], bool] | None
             if sh.indexed:
-                pattern, indices = cols.patterns[sh.pattern], sh.indices
+                got = (patterns[sh.pattern], sh.indices, True)
             else:  # a key without a first index, or written so that it is read the careful way (`[01]`)
-                key = parse_key(sh.head + sh.tail)
-                pattern, indices = (key.pattern, key.indices) if key is not None else ("", ())
-                if key is None:  # rows without a key
+                got = _unindexed(sh.head + sh.tail)
+                if got is None:  # rows without a key
+                    got = _NO_KEY
                     rows.clear()
-            shape_keys.append((pattern, indices, sh.indexed))
+            shape_keys.append(got)
             if not rows:
                 continue
-            pattern_shapes.setdefault(pattern, []).append(shape)
-            counts[pattern] = counts.get(pattern, 0) + len(rows)
-        if kind is None:  # from each pattern's count: an entry of it (what kind_of reads: its key) as many times
-            kind = registry.kind_of(doc, chain.from_iterable(repeat(_stand_in(p), n) for p, n in counts.items()))
+            pattern = got[0]
+            got_shapes = pattern_shapes.get(pattern)
+            if got_shapes is None:
+                pattern_shapes[pattern] = [len(shape_keys) - 1]
+                counts[pattern] = len(rows)
+            else:
+                got_shapes.append(len(shape_keys) - 1)
+                counts[pattern] += len(rows)
+        if kind is None:  # from each pattern's count (what kind_of reads: the entries' key patterns)
+            kind = registry.kind_of_counts(doc, counts)
         valueless = frozenset(v for v, k in enumerate(cols.kinds) if k is None)
         out = cls(doc, registry, kind, shape_rows=shape_rows, shape_keys=shape_keys, pattern_shapes=pattern_shapes,
                   valueless=valueless)
@@ -488,23 +501,38 @@ class ListValues:
         return got
 
     def _every_id(self) -> dict[str, dict[tuple[int, ...], Resolved]]:
-        """``by_id`` built in one pass over the rows."""
-        cols, doc, bound, keys = self.doc.columns, self.doc, self.bound, self.shape_keys
+        """``by_id`` built in one pass over the rows (what :meth:`resolved_at` makes of each, inline)."""
+        cols, doc, bound = self.doc.columns, self.doc, self.bound
         first, kinds, texts, value = cols.first, cols.kinds, cols.values, cols.value
-        out: dict[str, dict[tuple[int, ...], Resolved]] = {}
-        for row, shape in enumerate(cols.shape):
-            pattern, indices, indexed = keys[shape]
+        read: dict[tuple[str, str], Value] = self.registry.memo.setdefault("values", {})
+        # per shape: its parameter, whether by an alias, the parameter's ID, indices and indexed; None: unbound
+        per_shape: list[tuple[ParamSpec, bool, str, tuple[int, ...], bool] | None] = []
+        for pattern, indices, indexed in self.shape_keys:
             hit = bound.get(pattern)
+            per_shape.append(None if hit is None else (hit[0], hit[1], hit[0].id, indices, indexed))
+        out: dict[str, dict[tuple[int, ...], Resolved]] = {}
+        new = Resolved.__new__
+        for row, shape in enumerate(cols.shape):
+            bound_shape = per_shape[shape]
+            if bound_shape is None:
+                continue
             vid = value[row]
             kind = kinds[vid]
-            if hit is None or kind is None:
+            if kind is None:
                 continue
-            spec = hit[0]
-            elements = out.get(spec.id)
+            spec, via_alias, pid, indices, indexed = bound_shape
+            slot = (pid, texts[vid])
+            got = read.get(slot)
+            if got is None:
+                got = read_text(spec, slot[1], kind)
+                if len(read) < 65_536:
+                    read[slot] = got
+            res = new(Resolved)
+            res._entry, res._doc, res._row, res.spec, res.value, res.via_alias = None, doc, row, spec, got, via_alias
+            elements = out.get(pid)
             if elements is None:
-                elements = out[spec.id] = {}
-            elements[(first[row], *indices) if indexed else indices] = Resolved.at(
-                doc, row, spec, self.value_of_text(spec, texts[vid], kind), hit[1])
+                elements = out[pid] = {}
+            elements[(first[row], *indices) if indexed else indices] = res
         return out
 
     def value_of(self, param_id: str, indices: tuple[int, ...] = ()) -> Resolved | None:

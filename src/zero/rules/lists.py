@@ -51,7 +51,10 @@ def _kernel_first(ctx: Context, kept: list[Diagnostic]) -> list[Diagnostic]:
     kernel = [d for d in kept if d.code in rules]
     if not kernel:
         return kept
-    indices = {e.line: e.key.indices for e in ctx.entries if e.key is not None}
+    # the key indices of the lines the findings are on, read from the columns (no entry built)
+    wanted = {d.span.line for d in kept}
+    rows = [row for row, line in enumerate(ctx.doc.columns.line) if line in wanted]
+    indices = dict(zip(map(ctx.doc.columns.line.__getitem__, rows), ctx.indices_at(rows), strict=True))
     covers = [(rules[d.code][0], indices.get(d.span.line, ())) for d in kernel]
 
     def superseded(d: Diagnostic) -> bool:

@@ -579,7 +579,11 @@ def check_values(ctx: Context) -> Iterator[Diagnostic]:
             continue
         spec = hit[0]
         if not (by_value.get(spec.id) or _by_value(registry, spec)):  # each entry's own verdict (entry built if fails)
-            rows.extend(r for r in ctx.value_rows(pattern) if not _passes(ctx, ctx.sketch_at(r), True))
+            plan = _ref_plan(registry, spec)
+            if plan is None:
+                rows.extend(r for r in ctx.value_rows(pattern) if not _passes(ctx, ctx.sketch_at(r), True))
+            else:  # once per value and values referred to
+                rows.extend(_ref_failures(ctx, spec, pattern, plan))
             continue
         for shape in ctx.pattern_shapes[pattern]:
             group = ctx.shape_rows[shape]
@@ -590,7 +594,7 @@ def check_values(ctx: Context) -> Iterator[Diagnostic]:
                 slot = (spec.id, texts[vid])
                 verdict = passed.get(slot) or verdicts.get(slot)
                 if verdict is None:
-                    verdict = verdicts[slot] = _passes(ctx, ctx.sketch_at(group[0]))
+                    verdict = verdicts[slot] = _value_passes(ctx, spec, vid, group[0])
                     if verdict and len(passed) < 65_536:
                         passed[slot] = True
                 if not verdict:
@@ -607,7 +611,7 @@ def check_values(ctx: Context) -> Iterator[Diagnostic]:
                 if verdict is None:
                     if first is None:
                         first = dict(zip(reversed(ids), reversed(group), strict=True))  # each value's first row
-                    verdict = verdicts[slot] = _passes(ctx, ctx.sketch_at(first[vid]))
+                    verdict = verdicts[slot] = _value_passes(ctx, spec, vid, first[vid])
                     if verdict and len(passed) < 65_536:
                         passed[slot] = True
                 if not verdict:
@@ -630,6 +634,92 @@ def _by_value(registry: Registry, spec: ParamSpec) -> bool:
         rng = registry.range_of(spec) if spec.range_text else None
         got = memo[spec.id] = spec.id not in _prose_rows() and (rng is None or not rng.refs)  # prose reads others
     return got
+
+
+def _ref_plan(registry: Registry, spec: ParamSpec) -> tuple[tuple[str, int | None], ...] | None:
+    """The parameters (and fixed indices) a range refers to, left to right, where a value's verdict
+    depends on nothing but the value and their values at the entry's element: a formal range (no
+    prose, no listed values) whose every reference pairs with the entry's indices or names its
+    element. ``None``: each entry is judged on its own. Kept per registry."""
+    memo: dict[str, tuple[tuple[str, int | None], ...] | None] = registry.memo.setdefault("ref_plan", {})
+    try:
+        return memo[spec.id]
+    except KeyError:
+        pass
+    plan = None
+    if spec.id not in _prose_rows() and spec.range_text and not spec.enum:
+        rng = registry.range_of(spec)
+        if rng is not None and rng.allowed is None and rng.refs and all(
+                r.index is not None or _same_indices(registry, spec, r.id) for r in rng.refs):
+            plan = tuple((r.id, r.index) for r in rng.refs)
+    memo[spec.id] = plan
+    return plan
+
+
+def _ref_failures(ctx: Context, spec: ParamSpec, pattern: str, plan: tuple[tuple[str, int | None], ...]) -> list[int]:
+    """The rows of ``pattern`` whose value fails a range that refers to other parameters (``plan``):
+    judged once per (value, the values the range reads at the row's element, whether M001 explains
+    the soft limits), what :func:`_check_range` reads and nothing else; the verdicts kept across lists."""
+    verdicts: dict[tuple[str, str, bool, tuple[Number | None, ...]], bool] = \
+        ctx.registry.memo.setdefault("ref_verdicts", {})
+    skip = "M001" in ctx.severities and spec.id in SOFT_LIMITS  # the references not read (_check_range)
+    cols = ctx.doc.columns
+    texts, value, kinds, indices_of, number_of = cols.values, cols.value, cols.kinds, cols.indices, ctx.number_of
+    pid = spec.id
+    out = []
+    for row in ctx.value_rows(pattern):
+        if skip:
+            refs: tuple[Number | None, ...] = ()
+        else:
+            indices = indices_of(row)
+            refs = tuple(number_of(rid, (ridx,) if ridx is not None else indices) for rid, ridx in plan)
+        text = texts[value[row]]
+        slot = (pid, text, skip, refs)
+        verdict = verdicts.get(slot)
+        if verdict is None:
+            got = _range_verdict(ctx.registry, spec, ctx.value_of_text(spec, text, kinds[value[row]]),
+                                 dict(zip(plan, refs, strict=True)) if not skip else {})
+            verdict = _passes(ctx, ctx.sketch_at(row)) if got is None else got
+            if len(verdicts) < 65_536:
+                verdicts[slot] = verdict
+        if not verdict:
+            out.append(row)
+    return out
+
+
+def _value_passes(ctx: Context, spec: ParamSpec, vid: int, row: int) -> bool:
+    """Whether value ``vid`` (at ``row``, the first of it) of a parameter of :func:`_by_value` passes:
+    :func:`_range_verdict` where it tells, else the entry's own verdict."""
+    cols = ctx.doc.columns
+    got = _range_verdict(ctx.registry, spec, ctx.value_of_text(spec, cols.values[vid], cols.kinds[vid]), {})
+    return _passes(ctx, ctx.sketch_at(row)) if got is None else got
+
+
+def _range_verdict(registry: Registry, spec: ParamSpec, v: Value,
+                   read: dict[tuple[str, int | None], Number | None]) -> bool | None:
+    """What :func:`_check_range` says of value ``v`` of ``spec`` (a range not written in prose, whose
+    references pair with the entry's element): ``True`` no finding, ``False`` one; ``read``: the values
+    of its references at the entry's element (missing: not known). ``None`` for a value that is no
+    number to range-check (a problem, a reference): :func:`_check_value` decides from the entry."""
+    if v.problem is not None or v.ref is not None:
+        return None
+    number = v.number
+    if number is None or (spec.range_text is None and not spec.enum):
+        return True
+    dflt = _default_of(spec)
+    if dflt is not None and number == dflt:
+        return True
+    if spec.enum:
+        return isinstance(number, int) and spec.enum_allows(number)
+    rng = registry.range_of(spec)
+    if rng is None:
+        return True
+    if rng.allowed is not None:
+        return number in rng.allowed
+    const = _constant_bounds(rng)
+    if const is not None:  # no references
+        return const.contains(number)
+    return rng.evaluate(lambda rid, ridx: read.get((rid, ridx))).contains(number)
 
 
 def _passes(ctx: Context, res: Resolved, configured: bool = False) -> bool:
@@ -733,6 +823,17 @@ def _default_of(spec: ParamSpec) -> Number | None:
     return hit[1]
 
 
+def _constant_bounds(rng: Range) -> Bounds | None:
+    """The bounds of a range without references or listed values, evaluated once per range; ``None``
+    for any other range."""
+    hit = _constant.get(id(rng))
+    if hit is None or hit[0] is not rng:
+        const = rng.allowed is None and not rng.refs
+        hit = (rng, rng.evaluate(lambda *_: None) if const else None)
+        _constant[id(rng)] = hit
+    return hit[1]
+
+
 def _check_range(ctx: Context, e: Entry, spec: ParamSpec, v: Value) -> Iterator[Diagnostic]:
     if v.number is not None and spec.id in _prose_rows():
         yield from _check_prose(ctx, e, spec, v.number)
@@ -747,12 +848,8 @@ def _check_range(ctx: Context, e: Entry, spec: ParamSpec, v: Value) -> Iterator[
     rng = ctx.registry.range_of(spec)
     if rng is None:
         return
-    hit = _constant.get(id(rng))
-    if hit is None or hit[0] is not rng:  # constant bounds are evaluated once per range
-        const = rng.allowed is None and not rng.refs
-        hit = (rng, rng.evaluate(lambda *_: None) if const else None)
-        _constant[id(rng)] = hit
-    if hit[1] is not None and hit[1].contains(v.number):
+    const = _constant_bounds(rng)
+    if const is not None and const.contains(v.number):
         return
     span = _value_span(e)
     if rng.allowed is not None:
