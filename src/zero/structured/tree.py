@@ -23,15 +23,16 @@ from __future__ import annotations
 import re
 from collections import Counter
 from collections.abc import Iterator
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
-from zero.catalog.registry import Registry
 from zero.diagnostics import Span
 from zero.errors import ZeroError
 from zero.lists.encoding import declarable
 from zero.lists.model import Blank, Comment, Document, End, Entry, Invalid
-from zero.lists.tokenizer import scan_line
 from zero.records import field, record
+
+if TYPE_CHECKING:  # start-up: a configuration file's TOML is read without the catalogue
+    from zero.catalog.registry import Registry
 
 Scalar = int | float | str
 
@@ -590,6 +591,8 @@ def _verify(line: str, leaf: Leaf, value: str, path: str) -> None:
     for x in leaf.before:
         if x and not x.startswith("#"):
             raise ZeroError(f"{where}: comment line {x!r} does not start with `#`", path, leaf.line)
+    from zero.lists.tokenizer import scan_line  # start-up: only where a value must be read back
+
     got = scan_line(line, 1, [])
     ok = (type(got) is Entry and got.key_text == leaf.key and got.value == value
           and (got.comment.rstrip(" \t") if got.comment is not None else None) == leaf.after)
