@@ -26,7 +26,8 @@ KEYS = st.sampled_from([
     "wz[{i}].vb_min", "wz[{i}].vb_max", "wz[{i}].laenge", "getriebe[{i}].dynamik.vb_max",
     "getriebe[{i}].dynamik.a_max", "getriebe[{i}].dynamik.vb_min", "kenngr.swe_pos", "kenngr.swe_neg",
     "kenngr.achs_typ", "kenngr.vb_refmax", "handbetrieb.tipp.geschw[{i}]", "spindel[{i}].name",
-    "np_grp[{i}].achse[{j}].versch", "np_grp[0{i}].achse[{j}].inaktiv", "kenngr.homing_type",
+    "np_grp[{i}].achse[{j}].versch", "np_grp[0{i}].achse[{j}].inaktiv", "kenngr.homing_type", "kenngr.vb_messen",
+    "handbetrieb.jog.geschw[{i}]", "handbetrieb.hb.vb_max", "getriebe[{i}].pos_refpkt",
 ])
 VALUES = st.sampled_from(["0", "1", "5", "-7", "1.5", "100", "400000", "99999999999", "P-AXIS-00212.0",
                           "P-AXIS-99999", "0x10", "WARN", "TRUE", '"x"', "-2000000"])
@@ -141,3 +142,17 @@ def test_k_findings_supersede_what_they_did_with_every_entry_read() -> None:
         assert got == _reference_kernel_first(ctx, list(found)), name
         dropped += len(found) - len(got)
     assert dropped > 0  # some generic finding was superseded: the comparison saw both ways act
+
+
+def test_a_range_against_an_array_of_another_meaning_tries_each_of_its_elements() -> None:
+    """`kenngr.vb_messen ≤ P-AXIS-00212` (the six gears' `vb_max`, default 200000): allowed by gear 1 when
+    gear 0 refuses it, refused when no gear allows it; the same value with other gears judged again."""
+    registry = builtin_registry()
+    found = []
+    for gears, value in [((100, 1000), 500), ((100, 200), 500), ((100, 1000), 500), ((600, 50), 500)]:
+        text = "".join(f"getriebe[{g}].dynamik.vb_max {gears[min(g, 1)] if g < 2 else 100}\n" for g in range(6))
+        text += f"kenngr.vb_messen {value}\n"
+        got = list(R.check_values(_context(text, registry, "AXIS", True)))
+        assert got == _reference_values(_context(text, registry, "AXIS", True))
+        found.append([d.span.line for d in got])
+    assert found == [[], [7], [], []]

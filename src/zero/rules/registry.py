@@ -636,12 +636,18 @@ def _by_value(registry: Registry, spec: ParamSpec) -> bool:
     return got
 
 
-def _ref_plan(registry: Registry, spec: ParamSpec) -> tuple[tuple[str, int | None], ...] | None:
-    """The parameters (and fixed indices) a range refers to, left to right, where a value's verdict
-    depends on nothing but the value and their values at the entry's element: a formal range (no
-    prose, no listed values) whose every reference pairs with the entry's indices or names its
-    element. ``None``: each entry is judged on its own. Kept per registry."""
-    memo: dict[str, tuple[tuple[str, int | None], ...] | None] = registry.memo.setdefault("ref_plan", {})
+# A range's references as check_values reads them: those read at the entry's element (or at the element
+# they name), and those whose index means something else (`_check_range`'s unpaired: element 0 first).
+RefPlan = tuple[tuple[tuple[str, int | None], ...], tuple[str, ...]]
+
+
+def _ref_plan(registry: Registry, spec: ParamSpec) -> RefPlan | None:
+    """How a value's verdict depends on other parameters, where it depends on nothing else than the
+    value and their values (a formal range, no prose, no listed values): the references read at the
+    entry's element, left to right, and the unpaired ones (:func:`_check_range` reads their element 0,
+    then, where that refuses the value, their other elements). ``None``: each entry is judged on its
+    own. Kept per registry."""
+    memo: dict[str, RefPlan | None] = registry.memo.setdefault("ref_plan", {})
     try:
         return memo[spec.id]
     except KeyError:
@@ -649,36 +655,42 @@ def _ref_plan(registry: Registry, spec: ParamSpec) -> tuple[tuple[str, int | Non
     plan = None
     if spec.id not in _prose_rows() and spec.range_text and not spec.enum:
         rng = registry.range_of(spec)
-        if rng is not None and rng.allowed is None and rng.refs and all(
-                r.index is not None or _same_indices(registry, spec, r.id) for r in rng.refs):
-            plan = tuple((r.id, r.index) for r in rng.refs)
+        if rng is not None and rng.allowed is None and rng.refs:
+            unpaired = {r.id for r in rng.refs if r.index is None and not _same_indices(registry, spec, r.id)}
+            if not any(r.id in unpaired and r.index is not None for r in rng.refs):  # else: as each entry
+                plan = (tuple((r.id, r.index) for r in rng.refs if r.id not in unpaired), tuple(sorted(unpaired)))
     memo[spec.id] = plan
     return plan
 
 
-def _ref_failures(ctx: Context, spec: ParamSpec, pattern: str, plan: tuple[tuple[str, int | None], ...]) -> list[int]:
+def _ref_failures(ctx: Context, spec: ParamSpec, pattern: str, plan: RefPlan) -> list[int]:
     """The rows of ``pattern`` whose value fails a range that refers to other parameters (``plan``):
-    judged once per (value, the values the range reads at the row's element, whether M001 explains
-    the soft limits), what :func:`_check_range` reads and nothing else; the verdicts kept across lists."""
-    verdicts: dict[tuple[str, str, bool, tuple[Number | None, ...]], bool] = \
+    judged once per (value, the values the range reads at the row's element and at element 0 of the
+    unpaired references, whether M001 explains the soft limits), what :func:`_check_range` reads first
+    and nothing else; the verdicts kept across lists. A value element 0 refuses is a row to visit: the
+    entry's own check tries the other elements (and may find nothing)."""
+    verdicts: dict[tuple[str, str, bool, tuple[Number | None, ...], tuple[Number | None, ...]], bool] = \
         ctx.registry.memo.setdefault("ref_verdicts", {})
     skip = "M001" in ctx.severities and spec.id in SOFT_LIMITS  # the references not read (_check_range)
+    paired, unpaired = plan
     cols = ctx.doc.columns
     texts, value, kinds, indices_of, number_of = cols.values, cols.value, cols.kinds, cols.indices, ctx.number_of
+    ups = tuple(None if skip else number_of(rid, (0,)) for rid in unpaired)  # the same for every row
     pid = spec.id
     out = []
     for row in ctx.value_rows(pattern):
-        if skip:
+        if skip or not paired:
             refs: tuple[Number | None, ...] = ()
         else:
             indices = indices_of(row)
-            refs = tuple(number_of(rid, (ridx,) if ridx is not None else indices) for rid, ridx in plan)
+            refs = tuple(number_of(rid, (ridx,) if ridx is not None else indices) for rid, ridx in paired)
         text = texts[value[row]]
-        slot = (pid, text, skip, refs)
+        slot = (pid, text, skip, refs, ups)
         verdict = verdicts.get(slot)
         if verdict is None:
             got = _range_verdict(ctx.registry, spec, ctx.value_of_text(spec, text, kinds[value[row]]),
-                                 dict(zip(plan, refs, strict=True)) if not skip else {})
+                                 dict(zip(paired, refs, strict=True)) if refs else {},
+                                 dict(zip(unpaired, ups, strict=True)))
             verdict = _passes(ctx, ctx.sketch_at(row)) if got is None else got
             if len(verdicts) < 65_536:
                 verdicts[slot] = verdict
@@ -696,11 +708,14 @@ def _value_passes(ctx: Context, spec: ParamSpec, vid: int, row: int) -> bool:
 
 
 def _range_verdict(registry: Registry, spec: ParamSpec, v: Value,
-                   read: dict[tuple[str, int | None], Number | None]) -> bool | None:
+                   read: dict[tuple[str, int | None], Number | None],
+                   unpaired: dict[str, Number | None] | None = None) -> bool | None:
     """What :func:`_check_range` says of value ``v`` of ``spec`` (a range not written in prose, whose
     references pair with the entry's element): ``True`` no finding, ``False`` one; ``read``: the values
-    of its references at the entry's element (missing: not known). ``None`` for a value that is no
-    number to range-check (a problem, a reference): :func:`_check_value` decides from the entry."""
+    of its references at the entry's element (missing: not known); ``unpaired``: the values of the
+    references whose index means something else at their element 0 (``False`` there: their other
+    elements are the entry's check to try). ``None`` for a value that is no number to range-check (a
+    problem, a reference): :func:`_check_value` decides from the entry."""
     if v.problem is not None or v.ref is not None:
         return None
     number = v.number
@@ -719,7 +734,9 @@ def _range_verdict(registry: Registry, spec: ParamSpec, v: Value,
     const = _constant_bounds(rng)
     if const is not None:  # no references
         return const.contains(number)
-    return rng.evaluate(lambda rid, ridx: read.get((rid, ridx))).contains(number)
+    if not unpaired:
+        return rng.evaluate(lambda rid, ridx: read.get((rid, ridx))).contains(number)
+    return rng.evaluate(lambda rid, ridx: unpaired[rid] if rid in unpaired else read.get((rid, ridx))).contains(number)
 
 
 def _passes(ctx: Context, res: Resolved, configured: bool = False) -> bool:
