@@ -11,6 +11,7 @@ from __future__ import annotations
 
 import math
 import re
+from collections.abc import Mapping
 from pathlib import Path
 from typing import Any
 
@@ -34,7 +35,7 @@ class Side:
 
     path: str
     kind: str | None
-    entries: dict[str, Entry]
+    entries: Mapping[str, Entry]  # a dict, or the machine model's rows (zero.machine.effective.Rows)
     comments: dict[str, tuple[str, ...]] = field(default_factory=dict)  # key → comments near it
     update: bool = False  # an update or revert file: what it changes on a running controller
 
@@ -419,13 +420,24 @@ def diff_sides(a: Side, b: Side, registry: Registry, options: DiffOptions | None
     catalogue's) is what an absent entry means."""
     options = options or DiffOptions()
     kind = b.kind or a.kind
-    unit_a, unit_b = side_unit(a, registry), side_unit(b, registry)
-    length_unit = unit_b or unit_a
     out: list[Change] = []
     # Keys in plain order here (the changes are put in key order at the end): most keys of two
     # versions of a list are the same, with the same text, and cost nothing more.
     same_comments = not options.comments
-    for key in sorted(set(a.entries) | set(b.entries)):
+    ta, tb = _value_texts(a.entries), _value_texts(b.entries)
+    if ta is not None and tb is not None and same_comments:
+        # the machine model's rows: only the keys whose text differs (or that one side lacks) are
+        # looked at, and only their entries built (a fleet's lists are mostly the golden's)
+        if ta == tb:
+            return out
+        keys = sorted({key for key, _ in ta.items() ^ tb.items()})
+    else:
+        keys = sorted(set(a.entries) | set(b.entries))
+    if not keys:
+        return out
+    unit_a, unit_b = side_unit(a, registry), side_unit(b, registry)
+    length_unit = unit_b or unit_a
+    for key in keys:
         ea, eb = a.entries.get(key), b.entries.get(key)
         if (ea is not None and eb is not None and ea.value == eb.value
                 and (same_comments or a.comments.get(key) == b.comments.get(key))):
@@ -473,6 +485,13 @@ def diff_sides(a: Side, b: Side, registry: Registry, options: DiffOptions | None
                                        note=f"now {shown}" if dflt and shown else ""),
                                 spec, va, dflt, ea.value, base.value if base else None))
     return _grouped(out)
+
+
+def _value_texts(entries: Mapping[str, Entry]) -> dict[str, str] | None:
+    """Key → value text, where the entries are the machine model's rows that hold them
+    (:class:`zero.machine.effective.Rows`, which this layer does not import); ``None`` otherwise."""
+    texts = getattr(entries, "texts", None)
+    return texts if isinstance(texts, dict) else None
 
 
 def _grouped(changes: list[Change]) -> list[Change]:

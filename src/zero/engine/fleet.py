@@ -61,8 +61,7 @@ from zero.diff import effective as value_of
 from zero.engine.project import Project, Registries, common_of, open_project
 from zero.errors import ZeroError
 from zero.files import read_file, within
-from zero.lists.model import Entry
-from zero.machine.effective import entries_of, own_entries
+from zero.machine.effective import Rows, entries_of, own_entries
 from zero.machine.model import Machine
 from zero.records import field, record
 
@@ -263,7 +262,7 @@ class _Scope:
     key: str  # the start-up key that names the list (achs_mds[0]); the scope name for the start-up list
     kind: str | None
     side: Side
-    own: dict[str, Entry]  # the entries of the list itself (without its default list's)
+    own: Rows  # the entries of the list itself (without its default list's), read from its rows
     based: bool  # a default list lies under it
 
 
@@ -275,7 +274,7 @@ class _Golden:
     registry: Registry
     options: DiffOptions
     scopes: dict[str, _Scope]
-    defaults: dict[str, tuple[str, dict[str, Entry]]]  # kind → (start-up key, the default list's entries)
+    defaults: dict[str, tuple[str, Rows]]  # kind → (start-up key, the default list's entries)
     keep: FleetCache | None = None  # the cache: each comparison then says what its machine was read from
 
 
@@ -291,13 +290,13 @@ def _scopes(project: Project, startup: str, fleet: bool) -> tuple[dict[str, _Sco
         m = project.machine(Path(startup), startup=startup, required=True)
     assert m is not None
     out: dict[str, _Scope] = {}
-    bases: dict[int, dict[str, Entry]] = {}  # a default list's entries, found once for all the lists over it
+    bases: dict[int, Rows] = {}  # a default list's entries, found once for all the lists over it
     for name, lf in m.scopes():
         hit = _KEY_IN_NAME.search(name)
         key = hit.group(1) if hit else (lf.key if name != "start-up" else name)
         values = lf.values
         own = own_entries(values)  # the one value model (zero.machine.effective): bound once, layered once
-        entries = {**entries_of(values.base, bases), **own} if values.base is not None else own
+        entries = own.over(entries_of(values.base, bases)) if values.base is not None else own
         out[name] = _Scope(name, key, values.kind, Side(str(lf.path), values.kind, entries), own,
                            values.base is not None)
     return out, m
@@ -339,7 +338,7 @@ def compare_machine(golden: _Golden, startup: str) -> _MachineDrift:
     if golden.keep is not None:
         out.deps = golden.keep.deps(m)
     registry = golden.registry
-    missing_defaults: dict[str, dict[str, Entry]] = {}
+    missing_defaults: dict[str, Rows] = {}
     for kind, (key, entries) in golden.defaults.items():
         if kind not in m.defaults:
             out.lists.append((key, MISSING, _why(m, key)))
@@ -359,7 +358,7 @@ def compare_machine(golden: _Golden, startup: str) -> _MachineDrift:
         paired.add(s.name)
         side = s.side
         if not s.based and s.kind in missing_defaults:  # compared as if the golden's default list lay under it
-            side = Side(side.path, side.kind, {**missing_defaults[s.kind], **s.own})
+            side = Side(side.path, side.kind, s.own.over(missing_defaults[s.kind]))
         for c in diff_sides(g.side, side, registry, golden.options):
             if c.kind not in (ADDED, CHANGED, REMOVED):
                 continue  # equal values written differently, comments: no drift

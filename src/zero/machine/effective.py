@@ -11,15 +11,17 @@ else from the default list under it (``default_achs_mds`` under each axis list,
 from __future__ import annotations
 
 import fnmatch
-from collections.abc import Sequence
+import re
+from collections.abc import Iterator, Mapping, Sequence
 
 from zero.catalog.registry import NO_DEFAULT, ParamSpec
 from zero.catalog.values import ListValues, Slot, bind, canonical_key, slot_of
-from zero.lists.model import Entry, format_key, parse_key
+from zero.lists.model import Document, Entry, format_key, parse_key
 from zero.machine.model import ListFile, Machine
 from zero.records import field, record, replace
 
 LIST, DEFAULT_LIST, CATALOGUE, NOT_SET = "list", "default list", "catalogue default", "not set"
+_LEADING_ZERO = re.compile(r"\[0[0-9]")  # `[01]`: an index written with a leading zero (canonical_key's test)
 
 
 @record(frozen=True)
@@ -213,12 +215,91 @@ def summary(machine: Machine) -> dict[str, object]:
     return out
 
 
-def own_entries(values: ListValues) -> dict[str, Entry]:
-    """The entries of a list itself by documented key (the later one wins, as on the controller)."""
-    return {canonical_key(values.registry, values.kind, e): e for e in values.doc.entries}
+class Rows(Mapping[str, Entry]):
+    """Documented key → the entry the controller uses, read from the rows of a list's columns (issue 40):
+    each key's value text at hand (``texts``, in the order the keys are first set), the :class:`Entry`
+    built only when one is asked for (a difference shown, a page's value). ``layers``: (document, key →
+    its row), the default list's first; a key's entry is the last layer's that sets it."""
+
+    __slots__ = ("layers", "texts")
+
+    def __init__(self, texts: dict[str, str], layers: tuple[tuple[Document, dict[str, int]], ...]) -> None:
+        self.texts = texts
+        self.layers = layers
+
+    def __getitem__(self, key: str) -> Entry:
+        for doc, rows in reversed(self.layers):
+            row = rows.get(key)
+            if row is not None:
+                return doc.entry_at(row)
+        raise KeyError(key)
+
+    def get(self, key: str, default: Entry | None = None) -> Entry | None:  # type: ignore[override]
+        if key not in self.texts:
+            return default
+        return self[key]
+
+    def __contains__(self, key: object) -> bool:
+        return key in self.texts
+
+    def __iter__(self) -> Iterator[str]:
+        return iter(self.texts)
+
+    def __len__(self) -> int:
+        return len(self.texts)
+
+    def __repr__(self) -> str:
+        return f"Rows({len(self.texts)} keys, {len(self.layers)} layers)"
+
+    def over(self, base: Rows) -> Rows:
+        """These entries over ``base`` (the list's over its default list's): this one's win."""
+        return Rows({**base.texts, **self.texts}, base.layers + self.layers)
 
 
-def entries_of(values: ListValues, found: dict[int, dict[str, Entry]] | None = None) -> dict[str, Entry]:
+def row_keys(values: ListValues) -> list[str]:
+    """The documented key of each row of a list (:func:`canonical_key` of its entry, without building
+    it): an alias as the key it stands for, `[01]` as `[1]`; worked out once per key shape."""
+    cols = values.doc.columns
+    bound = values.bound
+    # per shape: the key of each of its rows (no first index), or (before, after) the first index
+    # (written as documented), or (documented pattern, the indices after the first) to fill
+    forms: list[str | tuple[str, str] | tuple[str, tuple[int, ...], None]] = []
+    for shape, (pattern, indices, indexed) in zip(cols.shapes, values.shape_keys, strict=True):
+        text = shape.head + shape.tail
+        if not pattern:  # a key zero cannot read: as written
+            forms.append(text)
+            continue
+        hit = bound.get(pattern)
+        canon = hit[0].key if hit is not None and hit[0].key else pattern
+        plain = canon == pattern and ("[0" not in text or _LEADING_ZERO.search(text) is None)
+        if not indexed:
+            forms.append(text if plain else format_key(canon, indices))
+        elif plain:
+            forms.append((shape.head + "[", "]" + shape.tail))
+        else:
+            forms.append((canon, indices, None))
+    out: list[str] = []
+    append = out.append
+    for form, first in zip(map(forms.__getitem__, cols.shape), cols.first, strict=True):
+        if type(form) is str:
+            append(form)
+        elif len(form) == 2:
+            append(f"{form[0]}{first}{form[1]}")
+        else:
+            append(format_key(form[0], (first, *form[1])))
+    return out
+
+
+def own_entries(values: ListValues) -> Rows:
+    """The entries of a list itself by documented key (the later one wins, as on the controller), read
+    from its rows: no entry is built until one is asked for."""
+    keys = row_keys(values)
+    cols = values.doc.columns
+    texts = dict(zip(keys, map(cols.values.__getitem__, cols.value), strict=True))
+    return Rows(texts, ((values.doc, dict(zip(keys, range(len(keys)), strict=True))),))
+
+
+def entries_of(values: ListValues, found: dict[int, Rows] | None = None) -> Rows:
     """Documented key → the entry the controller uses: this list's over the default list's (the
     layering of :func:`settings`, by key, without the origins). ``found``: the default lists already
     layered (a fleet's machines share them), by identity."""
@@ -227,7 +308,7 @@ def entries_of(values: ListValues, found: dict[int, dict[str, Entry]] | None = N
         if hit is not None:
             return hit
     own = own_entries(values)
-    out = {**entries_of(values.base, found), **own} if values.base is not None else own
+    out = own.over(entries_of(values.base, found)) if values.base is not None else own
     if found is not None:
         found[id(values)] = out
     return out

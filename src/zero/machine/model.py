@@ -49,6 +49,7 @@ from zero.forms import (
     XML_SUFFIX,
     controller_absolute,
     is_project,
+    is_xml,
     kernel_rooted,
     split_part,
     xml_form,
@@ -336,19 +337,85 @@ def _detected(_path: Path) -> str | None:
     return None
 
 
+# A run's lists by content (issue 40): the machines of a fleet are mostly copies of each other
+# (the vendor's lists, a few values changed), so a list whose bytes, declared codec, kind and
+# registry equal those of one read before in the process takes that one's reading and binding: its
+# own document (the same rows and entries under its own path), no tokenizing, no binding again.
+# Plain lists only (not XML, not a list inside a TwinCAT export); bounded in count and size.
+SHARED_LISTS = 64  # distinct contents kept
+SHARED_MAX_CHARS = 1 << 20  # a longer list is read on its own (a tool list of 100,000 entries)
+SHARED_TOTAL_CHARS = 1 << 23  # the text all of them hold together (8 M characters)
+ContentKey = tuple[bytes, str | None, str, int]  # the bytes' hash, the declared codec, the kind, the registry
+
+
+class _Shared:
+    """The lists read in this process by content: the first reading and binding of each (oldest out first)."""
+
+    def __init__(self) -> None:
+        self.kept: dict[ContentKey, tuple[Registry, ListValues]] = {}
+        self.chars = 0
+
+    @staticmethod
+    def key(data: bytes, codec: str | None, kind: str, registry: Registry) -> ContentKey:
+        from hashlib import blake2b  # start-up: only when a machine is read
+
+        return blake2b(data, digest_size=16).digest(), codec, kind, id(registry)
+
+    def twin(self, key: ContentKey, registry: Registry) -> ListValues | None:
+        hit = self.kept.get(key)
+        return hit[1] if hit is not None and hit[0] is registry else None
+
+    def keep(self, key: ContentKey, registry: Registry, values: ListValues) -> None:
+        text = values.doc.text
+        if text is None or len(text) > SHARED_MAX_CHARS or values.doc.origin is not None or key in self.kept:
+            return
+        while self.kept and (len(self.kept) >= SHARED_LISTS or self.chars + len(text) > SHARED_TOTAL_CHARS):
+            oldest = self.kept.pop(next(iter(self.kept)))[1].doc.text
+            self.chars -= len(oldest or "")
+        self.kept[key] = (registry, values)
+        self.chars += len(text)
+
+    def clear(self) -> None:
+        self.kept.clear()
+        self.chars = 0
+
+
+SHARED = _Shared()
+
+
+def _moved(doc: Document, path: str) -> Document:
+    """``doc`` under another path: the same text, rows and entries (nothing read again)."""
+    moved = getattr(doc, "moved", None)
+    if moved is not None:
+        return moved(path)  # type: ignore[no-any-return]
+    return Document.columnar(path, doc.encoding, doc.text or "", doc.line_count, doc.columns,
+                             doc._slow, doc.problems, doc.bom, doc.end_line)  # stand-in until lists has it
+
+
 def _read(key: str, path: Path, line: int, registry: Registry, kind: str,
           base: ListValues | None = None, reader: Callable[[Path], bytes] = read_file,
           docs: dict[str, Document] | None = None, encoding: Encodings = _detected,
           built: dict[tuple[str, str, str, int], ListValues] | None = None) -> ListFile:
     """One list of the machine; ``docs`` keeps each file read once (a start-up list may name one
     file many times: each reference costs its binding, never another read). ``encoding`` gives
-    the codec the configuration declares for a list (``None``: detected)."""
+    the codec the configuration declares for a list (``None``: detected). A list with the bytes of
+    one read before (:data:`SHARED`) takes its reading and binding, under its own path."""
     real = os.path.realpath(path)
     doc = docs.get(real) if docs is not None else None
     file, part = split_part(path)  # `channel_1.xml#NullpD`: a list inside a TwinCAT export
-    if doc is None or (doc.path != str(path) and part is None):
-        doc = read_document(reader(Path(file)), str(path), registry, encoding(path)) if doc is None else \
-            replace(doc, path=str(path))
+    twin: ListValues | None = None
+    shared: ContentKey | None = None
+    if doc is None:
+        data = reader(Path(file))
+        codec = encoding(path)
+        if part is None and not is_xml(data):
+            shared = SHARED.key(data, codec, kind, registry)
+            twin = SHARED.twin(shared, registry)
+        doc = _moved(twin.doc, str(path)) if twin is not None else read_document(data, str(path), registry, codec)
+        if docs is not None:
+            docs.setdefault(real, doc)
+    elif doc.path != str(path) and part is None:
+        doc = replace(doc, path=str(path))
         if docs is not None:
             docs.setdefault(real, doc)
     # ``built`` keeps each file's values once per kind and default list: 64 references to one list
@@ -356,8 +423,13 @@ def _read(key: str, path: Path, line: int, registry: Registry, kind: str,
     cache_key = (real, str(doc.path), kind, id(base))
     values = built.get(cache_key) if built is not None else None
     if values is None:
-        values = ListValues.of(doc, registry, kind)
-        values.base = base
+        if twin is not None:  # the twin's binding (and what it found since), over this machine's default list
+            values = replace(twin, doc=doc, base=base)
+        else:
+            values = ListValues.of(doc, registry, kind)
+            values.base = base
+            if shared is not None:
+                SHARED.keep(shared, registry, values)
         if built is not None:
             built[cache_key] = values
     return ListFile(key, path, values, line)
@@ -537,7 +609,7 @@ def load_machine(startup_path: Path, registry: Registry, forced_kind: str | None
     docs: dict[str, Document] = {}
     built: dict[tuple[str, str, str, int], ListValues] = {}
     loaded: dict[str, ListFile] = {}
-    entries = len(startup.values.doc.entries)  # of every list as often as it is named: the work to come
+    entries = len(startup.values.doc.columns)  # of every list as often as it is named: the work to come
 
     def load(n: Named, base: ListValues | None = None) -> ListFile | None:
         if n.index is not None and n.index >= sizes.get(n.reference.param_id, n.index + 1):
@@ -560,7 +632,7 @@ def load_machine(startup_path: Path, registry: Registry, forced_kind: str | None
             n.status, n.reason = "unreadable", foreign
             return None
         nonlocal entries
-        entries += len(lf.values.doc.entries)
+        entries += len(lf.values.doc.columns)  # its entries (before `Ende`), none built
         if entries > MAX_MACHINE_ENTRIES:  # refused before any rule, table or page is built from them
             raise ZeroError(f"`{n.key}` brings the machine's lists to more than {MAX_MACHINE_ENTRIES:,} entries "
                             f"(each list counted as often as the start-up list names it): zero does not "
