@@ -19,7 +19,7 @@ from zero.rules.suppress import parse_directives
 _KEYS = ["wz[1].laenge", "wz[17].kinematic.param[3]", "kenngr.swe_pos", "a", "a[0]", "a[1][2].b[3]", "q[007].r",
          "x[00].y", "np_grp[1].achse[2].versch", "Ende", "5abc", "a..b", "a.", "a[1]x", "a]", "k[1", f"w[{'9' * 19}].x",
          "np_grp[0].achse[1]. inaktiv", "#kenngr.x", "# zero: ignore[R005]", "# zero: noqa: S", "# zero: ignore R5"]
-_VALUES = ["1", "-5", "0x1F", "1.5", "1e3", "P-AXIS-00212.0", "A|B", "A | B", '"q s"', '"open', "WORD", "./x.lis", ""]
+_VALUES = ["1", "-5", "2\x1f", "0x1F", "1.5", "1e3", "P-AXIS-00212.0", "A|B", "A | B", '"q s"', '"open', "WORD", "./x.lis", ""]
 _COMMENTS = ["", "( P-TOOL-00005 : x", "# c", "/* c */", "plain words", "# noqa", "( noqa: R005 )", "# noqa: Q9",
              "(P-AXIS-00001", "# c\r", "( a | b"]
 _GAPS = [" ", "\t", "   ", " \t "]
@@ -55,13 +55,31 @@ def _fields(obj: Any) -> dict[str, Any]:
 def _check(text: str) -> None:
     for widths in (False, True):
         _check_read(text, widths)
+    if text.isascii() and "\x00" not in text:  # a big ASCII list: read as its bytes
+        bytes_from = tokenizer._BYTES_FROM
+        tokenizer._BYTES_FROM = -1
+        try:
+            for widths in (False, True):
+                _check_read(text, widths, True)
+        finally:
+            tokenizer._BYTES_FROM = bytes_from
 
 
-def _check_read(text: str, widths: bool) -> None:
+def _read(text: str, widths: bool, binary: bool) -> Document:
+    if not binary:
+        return tokenize_text(text, widths=widths)
+    doc = tokenize(text.encode("ascii"), widths=widths)
+    assert isinstance(doc._text, bytes) and doc.encoding == "utf-8" and doc.text == text
+    assert doc.text_size == len(text)
+    return doc
+
+
+def _check_read(text: str, widths: bool, binary: bool = False) -> None:
     """The columns, the entries built of them (``widths``: from the widths the columns keep, else by
-    reading each line again), lines and items agree with the careful scanner's objects."""
+    reading each line again), lines and items agree with the careful scanner's objects; ``binary``: of
+    a document read from the bytes of an ASCII text (never decoded as a whole)."""
     careful = tokenize_text(text, use_fast=False)
-    doc = tokenize_text(text, widths=widths)
+    doc = _read(text, widths, binary)
     cols = doc.columns
     assert (cols.widths is not None) is widths
     if cols.widths is not None:
@@ -84,7 +102,7 @@ def _check_read(text: str, widths: bool) -> None:
             assert cols.styles[cid] is e.comment_style and cols.notes[cid] == e.annotation
             assert cols.note_at[cid] == (e.annotation_start - e.comment_start if e.annotation_start >= 0 else -1)
     # the text, without building lines or items
-    fresh = tokenize_text(text)
+    fresh = _read(text, widths, binary)
     assert fresh.line_count == len(careful.lines)
     assert [fresh.line_text(n) for n in range(0, len(careful.lines) + 2)] == ["", *careful.lines, ""]
     assert fresh.newline == careful.newline and fresh.declared_kind() == careful.declared_kind()
@@ -95,7 +113,9 @@ def _check_read(text: str, widths: bool) -> None:
     # an entry of a row is the careful scanner's, field by field (asked for one by one, and all at once)
     built = [doc.entry_at(row) for row in range(len(cols))]
     assert [_fields(e) for e in built] == [_fields(e) for e in entries]
-    assert [_fields(e) for e in tokenize_text(text, widths=widths).entries] == [_fields(e) for e in entries]
+    assert [_fields(e) for e in _read(text, widths, binary).entries] == [_fields(e) for e in entries]
+    moved = _read(text, widths, binary).moved("elsewhere")
+    assert moved.path == "elsewhere" and moved.problems == careful.problems and moved.lines == careful.lines
     # then lines, endings and items as the careful scanner's, holding the same entry objects
     assert doc.lines == careful.lines and doc.endings == careful.endings
     assert [(type(i), _fields(i)) for i in doc.items] == [(type(i), _fields(i)) for i in careful.items]
@@ -146,6 +166,16 @@ def test_many_parts_of_a_big_text_read_as_one(monkeypatch: pytest.MonkeyPatch) -
     _check(text)
     doc = tokenize_text(text)
     assert len(doc.columns) == 249 and doc.end_line == 251  # a comment and `Ende` are no rows
+
+
+@pytest.mark.parametrize("other", [None, 700])
+def test_a_big_part_read_as_the_careful_scanner(other: int | None) -> None:
+    """Many rows in one part go into the columns packed in C (the rows of a part in one go, or between a
+    comment and the part's ends)."""
+    lines = [f"wz[{n}].x{n % 3}  {n * 7}\t( P-TOOL-00005 : c{n % 2}" for n in range(1200)]
+    if other is not None:
+        lines[other] = "# a comment"
+    _check("\n".join(lines) + "\n")
 
 
 def test_an_entry_is_built_from_the_widths_without_its_line() -> None:

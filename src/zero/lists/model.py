@@ -568,18 +568,20 @@ class Document:
         self.bom = bom
         self.end_line = end_line
         self.origin = origin
-        self._text: str | None = None
+        # the text the tokenizer read: a str, or the file's own bytes when they are ASCII (a big list: never
+        # decoded as a whole; a line is decoded when asked for)
+        self._text: str | bytes | None = None
         self._columns: Columns | None = None
         self._slow: list[Item] = []
         self._starts: array[int] | None = None
         self.line_count = len(lines) if lines is not None else 0
 
     @classmethod
-    def columnar(cls, path: str, encoding: str, text: str, line_count: int, columns: Columns, slow: list[Item],
-                 problems: list[Problem], bom: bool, end_line: int | None) -> Document:
+    def columnar(cls, path: str, encoding: str, text: str | bytes, line_count: int, columns: Columns,
+                 slow: list[Item], problems: list[Problem], bom: bool, end_line: int | None) -> Document:
         """A document the tokenizer read: ``slow`` are the items of the lines it did not read into
         columns (comments, blank lines, entries read the careful way, which ``columns`` holds too),
-        in line order."""
+        in line order; ``text`` the decoded text, or the bytes of an ASCII text (the same characters)."""
         doc = cls(path, encoding, None, None, None, problems, bom, end_line)
         doc._text = text
         doc._columns = columns
@@ -593,13 +595,31 @@ class Document:
     # --- the lazy parts
     @property
     def text(self) -> str | None:
-        """The decoded text the tokenizer read (``None`` for a document built from lines)."""
-        return self._text
+        """The decoded text the tokenizer read (``None`` for a document built from lines). Of a document
+        that holds the bytes of an ASCII text, a new copy each time: ask for :attr:`text_size` or
+        :meth:`line_text` where they do."""
+        text = self._text
+        return text.decode("ascii") if isinstance(text, bytes) else text
+
+    @property
+    def text_size(self) -> int:
+        """The characters of :attr:`text` (0 for a document built from lines), without a copy."""
+        return len(self._text) if self._text is not None else 0
+
+    def moved(self, path: str) -> Document:
+        """This document under another path: the same text, rows, entries and problems (nothing read again)."""
+        if self._text is None or self._columns is None:
+            return Document(path, self.encoding, self.lines, self.endings, self.items, self.problems, self.bom,
+                            self.end_line, self.origin)
+        doc = Document.columnar(path, self.encoding, self._text, self.line_count, self._columns, self._slow,
+                                self.problems, self.bom, self.end_line)
+        doc.origin = self.origin
+        return doc
 
     @property
     def lines(self) -> list[str]:
         if self._lines is None:
-            self._lines = _split_lines(self._text or "")
+            self._lines = _split_lines(self.text or "")
         return self._lines
 
     @lines.setter
@@ -612,6 +632,8 @@ class Document:
     def endings(self) -> list[str]:
         if self._endings is None:
             text = self._text or ""
+            if isinstance(text, bytes):  # the last character, or the whole text when it has a \r
+                text = text.decode("ascii") if b"\r" in text else text[-1:].decode("ascii")
             n = self.line_count
             if "\r" not in text:
                 self._endings = ["\n"] * n
@@ -721,9 +743,14 @@ class Document:
     @property
     def newline(self) -> str:
         """The dominant line ending ("\\n" when the file has none)."""
-        if self._endings is None and self._text is not None:
-            crlf = self._text.count("\r\n")
-            lf = self._text.count("\n") - crlf
+        text = self._text
+        if self._endings is None and text is not None:
+            if isinstance(text, bytes):
+                crlf = text.count(b"\r\n")
+                lf = text.count(b"\n") - crlf
+            else:
+                crlf = text.count("\r\n")
+                lf = text.count("\n") - crlf
         else:
             crlf = sum(1 for e in self.endings if e == "\r\n")
             lf = sum(1 for e in self.endings if e == "\n")
@@ -735,6 +762,8 @@ class Document:
         if self._lines is not None or self._text is None:
             return self.lines[line - 1]
         text = self._text
+        if isinstance(text, bytes):
+            return self._byte_line(text, line)
         if self._starts is None:
             if line <= 64:  # a line near the top (the kind an XML list's comments declare): no index of all
                 at = 0
@@ -746,6 +775,20 @@ class Document:
             self._starts = array("q", accumulate(map((1).__add__, map(len, text.split("\n"))), initial=0))
         got = text[self._starts[line - 1]:self._starts[line] - 1]
         return got[:-1] if got.endswith("\r") and self._starts[line] <= len(text) else got
+
+    def _byte_line(self, data: bytes, line: int) -> str:
+        """:meth:`line_text` of a document holding the bytes of an ASCII text."""
+        if self._starts is None:
+            if line <= 64:
+                at = 0
+                for _ in range(line - 1):
+                    at = data.find(b"\n", at) + 1
+                end = data.find(b"\n", at)
+                got = data[at:] if end < 0 else data[at:end]
+                return (got[:-1] if end >= 0 and got.endswith(b"\r") else got).decode("ascii")
+            self._starts = array("q", accumulate(map((1).__add__, map(len, data.split(b"\n"))), initial=0))
+        got = data[self._starts[line - 1]:self._starts[line] - 1]
+        return (got[:-1] if got.endswith(b"\r") and self._starts[line] <= len(data) else got).decode("ascii")
 
     def holds_xml_lines(self) -> bool:
         """Was this list text written from an XML list (do its first comment lines hold the XML lines,

@@ -15,10 +15,11 @@ from __future__ import annotations
 
 import re
 from array import array
-from collections.abc import Sequence
+from collections.abc import Iterable, Sequence
 from itertools import compress
+from typing import Any
 
-from zero.lists.encoding import decode
+from zero.lists.encoding import declarable, decode
 from zero.lists.model import (
     Blank,
     Columns,
@@ -313,14 +314,31 @@ _ROW_RE = re.compile(
 _ROW_AT_RE = re.compile(
     r"(?:([ \t]*)([A-Za-z_][A-Za-z0-9_.]*)(?:\[(0|[1-9][0-9]{0,17})(\][A-Za-z0-9_.\[\]]*))?"
     r"([ \t]+)([^\s\"|.\[\]][^\s|]*)(?:([ \t]+)([^\s|][^\r\n]*)|[ \t]*)(?:\r?(?=\n)|\Z)|([^\n]*))\n?")
-# The two for a text without a \r: the comment runs to the line's end (in C, a scan for the \n: a quarter
-# fewer instructions over a big list), the same lines and groups.
-_ROW_LF_RE = re.compile(_ROW_RE.pattern.replace(r"[^\r\n]*", r"[^\n]*").replace(r"(?:\r?(?=\n)|\Z)", r"(?=\n|\Z)"))
-_ROW_AT_LF_RE = re.compile(
-    _ROW_AT_RE.pattern.replace(r"[^\r\n]*", r"[^\n]*").replace(r"(?:\r?(?=\n)|\Z)", r"(?=\n|\Z)"))
+# The patterns a text is read with, by (bytes, a \r in the text): made on first use (start-up).
+_ROW_PATTERNS: dict[tuple[bool, bool], tuple[re.Pattern[Any], re.Pattern[Any]]] = {(False, True): (_ROW_RE, _ROW_AT_RE)}
+
+
+def _row_patterns(binary: bool, crlf: bool) -> tuple[re.Pattern[Any], re.Pattern[Any]]:
+    """_ROW_RE and _ROW_AT_RE for a text, or for the bytes of an ASCII text (``binary``): the same lines and
+    groups. Without a \r in the text (not ``crlf``) the comment runs to the line's end: in C, a scan for the
+    \n, a quarter fewer instructions over a big list than a test of each character against a set. In a bytes
+    pattern ``\\s`` does not match the separators \\x1c-\\x1f, which that of a str pattern does: spelt out."""
+    got = _ROW_PATTERNS.get((binary, crlf))
+    if got is None:
+        sources = [_ROW_RE.pattern, _ROW_AT_RE.pattern]
+        if not crlf:
+            sources = [p.replace(r"[^\r\n]*", r"[^\n]*").replace(r"(?:\r?(?=\n)|\Z)", r"(?=\n|\Z)") for p in sources]
+        compiled: list[re.Pattern[Any]] = (
+            [re.compile(p.replace(r"\s", r" \t\n\r\f\v\x1c-\x1f").encode("ascii")) for p in sources] if binary
+            else [re.compile(p) for p in sources])
+        got = _ROW_PATTERNS[binary, crlf] = (compiled[0], compiled[1])
+    return got
+
+
 _NAME_RE = re.compile(r"[A-Za-z_][A-Za-z0-9_]*(?:\.[A-Za-z0-9_]+)*")
 _TAIL_RE = re.compile(r"(?:\[[0-9]+\])*(?:\.[A-Za-z0-9_]+(?:\[[0-9]+\])*)*")
 _CHUNK = 1 << 18  # characters of text read per pattern call: bounded memory for the match tuples
+_BYTES_FROM = 1 << 18  # an ASCII list of more bytes is read as the bytes, never decoded as a whole
 
 
 def _fast_entry(m: re.Match[str], number: int, value: str, kind: ValueKind | None,
@@ -500,11 +518,25 @@ _small_tables: dict[tuple[tuple[tuple[str, str], ...], tuple[str, ...], tuple[st
                     tuple[ColumnTables, dict[tuple[str, str], int], dict[str, int], dict[str, int], list[int]]] = {}
 
 
+def _extend(column: array[int], count: int, values: Iterable[int]) -> None:
+    """``column.extend(values)``, ``count`` of them: many are packed in C first (an array's extend parses each
+    int as the argument of a call: a seventh of the instructions of reading a big list)."""
+    if count < 256:
+        column.extend(values)
+        return
+    from struct import pack  # start-up: only for a big part of a list
+
+    column.frombytes(pack(f"{count}{column.typecode}", *values))
+
+
 class _Reader:
     """The state of reading a text into columns; lines the columns do not take are read as before."""
 
-    def __init__(self, text: str, widths: bool) -> None:
-        self.text = text
+    def __init__(self, text: str | bytes, widths: bool) -> None:
+        # an ASCII text's bytes are read as they are: the texts a part's pattern gives are bytes (keys of the
+        # dictionaries below), each distinct one decoded once
+        self.binary = isinstance(text, bytes)
+        self.text: Any = text
         self.cols = Columns()
         if widths:
             self.cols.widths = (array("i"), array("i"), array("i"))
@@ -513,11 +545,17 @@ class _Reader:
         self.end_line: int | None = None
         self.after_end_reported = False
         # (names, `]` and the rest of the key after the first index) -> shape id, -1: not read into columns
-        self.shapes: dict[tuple[str, str], int] = {("", ""): -1}
-        self.firsts: dict[str, int] = {"": -1}
-        self.values: dict[str, int] = {}
-        self.comments: dict[str, int] = {"": -1}
+        empty: Any = b"" if self.binary else ""
+        self.shapes: dict[tuple[Any, Any], int] = {(empty, empty): -1}
+        self.firsts: dict[Any, int] = {empty: -1}
+        self.values: dict[Any, int] = {}
+        self.comments: dict[Any, int] = {empty: -1}
         self.shape_pattern: list[int] = []
+
+    def part(self, pos: int, end: int) -> str:
+        """The text of a part, as a str."""
+        got = self.text[pos:end]
+        return got.decode("ascii") if self.binary else got  # type: ignore[no-any-return]
 
     def read(self) -> None:
         text = self.text
@@ -529,9 +567,11 @@ class _Reader:
         add_shapes, add_comments, value_id = cols.add_shapes, cols.add_comments, cols.value_id
         info_of, comment_table, kinds = _shape_info.get, _comment_table.get, _kinds.get
         shape_pattern = self.shape_pattern
-        row_re, row_at_re = (_ROW_RE, _ROW_AT_RE) if "\r" in text else (_ROW_LF_RE, _ROW_AT_LF_RE)
+        binary = self.binary
+        nl: Any = b"\n" if binary else "\n"
+        row_re, row_at_re = _row_patterns(binary, (b"\r" if binary else "\r") in text)
         while pos < n:
-            end = text.find("\n", pos + _CHUNK)
+            end = text.find(nl, pos + _CHUNK)
             end = n if end < 0 else end + 1
             widths = cols.widths
             if widths is None:
@@ -549,7 +589,8 @@ class _Reader:
             new_values = [v for v in dict.fromkeys(value_texts) if v not in values]
             new_comments = [c for c in dict.fromkeys(comment_texts) if c not in comments]
             known = None
-            if pos == 0 and end == n and len(rows) <= _SMALL_LIST:  # a small list: like one read before?
+            small = not binary and pos == 0 and end == n and len(rows) <= _SMALL_LIST
+            if small:  # a small list: like one read before?
                 signature = (tuple(new_shapes), tuple(new_values), tuple(new_comments))
                 known = _small_tables.get(signature)
                 if known is not None:
@@ -560,17 +601,20 @@ class _Reader:
                     shape_pattern.extend(pattern_of)
             if known is None:
                 if new_shapes:
+                    named = [(a.decode("ascii"), b.decode("ascii")) for a, b in new_shapes] if binary else new_shapes
                     shapes.update(zip(new_shapes, add_shapes(
-                        [_shape_of(k) if (info := info_of(k, _UNKNOWN)) is _UNKNOWN else info for k in new_shapes]),
+                        [_shape_of(k) if (info := info_of(k, _UNKNOWN)) is _UNKNOWN else info for k in named]),
                         strict=True))
                     if len(shape_pattern) < len(cols.shapes):
                         shape_pattern.extend([sh.pattern for sh in cols.shapes[len(shape_pattern):]])
                 for v in new_values:
-                    values[v] = value_id(v, kinds(v) or _value_kind(v)) if v else -1
+                    t = v.decode("ascii") if binary else v
+                    values[v] = value_id(t, kinds(t) or _value_kind(t)) if v else -1
                 if new_comments:
+                    said = [c.decode("ascii") for c in new_comments] if binary else new_comments
                     comments.update(zip(new_comments, add_comments(
-                        new_comments, [comment_table(c) or _comment_parts(c) for c in new_comments]), strict=True))
-                if pos == 0 and end == n and len(rows) <= _SMALL_LIST and len(_small_tables) < _SMALL_TABLES:
+                        said, [comment_table(c) or _comment_parts(c) for c in said]), strict=True))
+                if small and len(_small_tables) < _SMALL_TABLES:
                     _small_tables[signature] = (cols.tables(), dict(shapes), dict(values), dict(comments),
                                                 list(shape_pattern))
             for f in dict.fromkeys(first_texts):
@@ -579,16 +623,16 @@ class _Reader:
             sids = list(map(shapes.__getitem__, keys))
             count = len(rows)
             if self.end_line is None and -1 not in sids:  # every line an entry of the columns
-                cols.line.extend(range(number, number + count))
-                cols.shape.extend(sids)
-                cols.pattern.extend(map(shape_pattern.__getitem__, sids))
-                cols.first.extend(map(firsts.__getitem__, first_texts))
-                cols.value.extend(map(values.__getitem__, value_texts))
-                cols.comment.extend(map(comments.__getitem__, comment_texts))
+                _extend(cols.line, count, range(number, number + count))
+                _extend(cols.shape, count, sids)
+                _extend(cols.pattern, count, map(shape_pattern.__getitem__, sids))
+                _extend(cols.first, count, map(firsts.__getitem__, first_texts))
+                _extend(cols.value, count, map(values.__getitem__, value_texts))
+                _extend(cols.comment, count, map(comments.__getitem__, comment_texts))
                 if widths is not None:
-                    widths[0].extend(map(len, leads))
-                    widths[1].extend(map(len, key_gaps))
-                    widths[2].extend(map(len, comment_gaps))
+                    _extend(widths[0], count, map(len, leads))
+                    _extend(widths[1], count, map(len, key_gaps))
+                    _extend(widths[2], count, map(len, comment_gaps))
             else:
                 self._mixed(names, wholes, sids, number, text, pos, end, first_texts, value_texts, comment_texts,
                             (leads, key_gaps, comment_gaps))
@@ -596,9 +640,9 @@ class _Reader:
             pos = end
         self.line_count = number - 1
 
-    def _mixed(self, names: tuple[str, ...], wholes: tuple[str, ...], sids: list[int], number: int, text: str,
-               pos: int, end: int, first_texts: tuple[str, ...], value_texts: tuple[str, ...],
-               comment_texts: tuple[str, ...], gaps: tuple[tuple[str, ...], ...]) -> None:
+    def _mixed(self, names: tuple[Any, ...], wholes: tuple[Any, ...], sids: list[int], number: int, text: Any,
+               pos: int, end: int, first_texts: tuple[Any, ...], value_texts: tuple[Any, ...],
+               comment_texts: tuple[Any, ...], gaps: tuple[tuple[Any, ...], ...]) -> None:
         """A part where some lines are no row of the columns: plain comments and blank lines become their
         items here; the rows between the other lines go into the columns in bulk, those lines to _line.
         ``names``, ``wholes``: each line's key names (empty: no row) and the line as a whole; ``gaps``: the
@@ -609,23 +653,23 @@ class _Reader:
         if widths is not None:  # of the rows this part added, in bulk (a row read the careful way: never read)
             at = [n - number for n in self.cols.line[first_row:]]
             for width, gap in zip(widths, gaps, strict=True):
-                width.extend(map(len, map(gap.__getitem__, at)))
+                _extend(width, len(at), map(len, map(gap.__getitem__, at)))
 
-    def _mixed_lines(self, names: tuple[str, ...], wholes: tuple[str, ...], sids: list[int], number: int,
-                     text: str, pos: int, end: int, first_texts: tuple[str, ...], value_texts: tuple[str, ...],
-                     comment_texts: tuple[str, ...]) -> None:
+    def _mixed_lines(self, names: tuple[Any, ...], wholes: tuple[Any, ...], sids: list[int], number: int,
+                     text: Any, pos: int, end: int, first_texts: tuple[Any, ...], value_texts: tuple[Any, ...],
+                     comment_texts: tuple[Any, ...]) -> None:
         slow = self.slow
         last = len(names) - 1
-        ends_nl = text.endswith("\n", pos, end)
+        ends_nl = text.endswith(b"\n" if self.binary else "\n", pos, end)
         lines: list[str] | None = None
         if self.end_line is not None:  # after `Ende`: every line the careful way
-            self._lines(text[pos:end].split("\n"), 0, last, ends_nl, number)
+            self._lines(self.part(pos, end).split("\n"), 0, last, ends_nl, number)
             return
         mask = [sid >= 0 for sid in sids]
         start = 0
         for i in [i for i, sid in enumerate(sids) if sid < 0]:
             if not names[i]:  # the line as a whole
-                s = wholes[i]
+                s = wholes[i].decode("ascii") if self.binary else wholes[i]
                 if s[-1:] == "\r" and (i < last or ends_nl):
                     s = s[:-1]
                 # A plain comment or a blank line never matches _FAST_ENTRY_RE (a key starts with a letter or `_`).
@@ -637,7 +681,7 @@ class _Reader:
                     continue
             else:
                 if lines is None:
-                    lines = text[pos:end].split("\n")
+                    lines = self.part(pos, end).split("\n")
                 s = lines[i]
                 if s[-1:] == "\r" and (i < last or ends_nl):
                     s = s[:-1]
@@ -645,7 +689,7 @@ class _Reader:
             start = i + 1
             self._line(s, number + i)
             if self.end_line is not None:  # the rest of the part after `Ende`
-                self._lines(lines or text[pos:end].split("\n"), i + 1, last, ends_nl, number)
+                self._lines(lines or self.part(pos, end).split("\n"), i + 1, last, ends_nl, number)
                 return
         self._take(start, last + 1, mask, sids, number, first_texts, value_texts, comment_texts)
 
@@ -658,7 +702,7 @@ class _Reader:
             self._line(s, number + i)
 
     def _take(self, start: int, stop: int, mask: list[bool], sids: list[int], number: int,
-              first_texts: tuple[str, ...], value_texts: tuple[str, ...], comment_texts: tuple[str, ...]) -> None:
+              first_texts: tuple[Any, ...], value_texts: tuple[Any, ...], comment_texts: tuple[Any, ...]) -> None:
         """The rows of the columns among a part's lines ``start`` to ``stop`` (exclusive), in bulk."""
         if start >= stop:
             return
@@ -674,13 +718,14 @@ class _Reader:
                 cols.comment.append(self.comments[comment_texts[start]])
             return
         keep = mask[start:stop]
-        cols.line.extend(compress(range(number + start, number + stop), keep))
         taken = list(compress(sids[start:stop], keep))
-        cols.shape.extend(taken)
-        cols.pattern.extend(map(self.shape_pattern.__getitem__, taken))
-        cols.first.extend(map(self.firsts.__getitem__, compress(first_texts[start:stop], keep)))
-        cols.value.extend(map(self.values.__getitem__, compress(value_texts[start:stop], keep)))
-        cols.comment.extend(map(self.comments.__getitem__, compress(comment_texts[start:stop], keep)))
+        count = len(taken)
+        _extend(cols.line, count, compress(range(number + start, number + stop), keep))
+        _extend(cols.shape, count, taken)
+        _extend(cols.pattern, count, map(self.shape_pattern.__getitem__, taken))
+        _extend(cols.first, count, map(self.firsts.__getitem__, compress(first_texts[start:stop], keep)))
+        _extend(cols.value, count, map(self.values.__getitem__, compress(value_texts[start:stop], keep)))
+        _extend(cols.comment, count, map(self.comments.__getitem__, compress(comment_texts[start:stop], keep)))
 
     def _line(self, s: str, number: int) -> None:
         """A line the columns do not take, read as the tokenizer always did."""
@@ -727,6 +772,11 @@ def tokenize_text(text: str, path: str = "-", encoding: str = "utf-8", bom: bool
     reading a seventh more; a lint builds the entries of its findings only)."""
     if objects or not use_fast or "\x00" in text:  # a NUL ends a line where it stands: read line by line
         return _tokenize_items(text, path, encoding, bom, use_fast, declared)
+    return _columnar(text, path, encoding, bom, declared, widths)
+
+
+def _columnar(text: str | bytes, path: str, encoding: str, bom: bool, declared: bool, widths: bool) -> Document:
+    """:func:`tokenize_text` into columns, of a text or of the bytes of an ASCII text without a NUL."""
     reader = _Reader(text, widths)
     reader.read()
     doc = Document.columnar(path, encoding, text, reader.line_count, reader.cols, reader.slow, reader.problems,
@@ -735,13 +785,21 @@ def tokenize_text(text: str, path: str = "-", encoding: str = "utf-8", bom: bool
     return doc
 
 
-def _text_problems(doc: Document, text: str, problems: list[Problem], declared: str | None) -> None:
+def _text_problems(doc: Document, text: str | bytes, problems: list[Problem], declared: str | None) -> None:
     """The problems of the text as a whole: control characters (or a binary file) and mixed line endings."""
     end_line = doc.end_line
-    crlf = text.count("\r\n") if "\r" in text else 0
-    # the \r of each CRLF ending is no control character of a line
-    controls = _control_count(text) - crlf
-    if controls >= BINARY_MIN_CONTROLS and controls > len(text) * BINARY_SHARE and _C1_RE.search(text):
+    if isinstance(text, bytes):  # an ASCII text: no C1 control
+        crlf = text.count(b"\r\n") if b"\r" in text else 0
+        controls = sum(len(text[at:at + _CHUNK].translate(None, _NOT_CONTROL))
+                       for at in range(0, len(text), _CHUNK)) - crlf
+        lf = text.count(b"\n") if crlf else 0
+    else:
+        crlf = text.count("\r\n") if "\r" in text else 0
+        # the \r of each CRLF ending is no control character of a line
+        controls = _control_count(text) - crlf
+        lf = text.count("\n") if crlf else 0
+    if (controls >= BINARY_MIN_CONTROLS and controls > len(text) * BINARY_SHARE and isinstance(text, str)
+            and _C1_RE.search(text)):
         # C1 controls in comments are letters of another code page, not signs of a binary file
         controls -= _c1_in_comments(doc.lines, doc.items, end_line)
     if controls:
@@ -749,7 +807,7 @@ def _text_problems(doc: Document, text: str, problems: list[Problem], declared: 
             problems.append(Problem("binary", 1, 0, len(doc.line_text(1)), str(controls)))
         else:
             problems.extend(_controls(doc.lines, doc.items, end_line, declared))
-    if crlf and text.count("\n") > crlf:
+    if crlf and lf > crlf:
         endings = doc.endings
         if "\r\n" in endings and "\n" in endings:
             first = endings.index("\n" if endings[0] == "\r\n" else "\r\n")
@@ -852,6 +910,10 @@ def tokenize(data: bytes, path: str = "-", encoding: str | None = None, objects:
     :func:`~zero.lists.encoding.declarable` refuses: :class:`ValueError`).
 
     ``encoding``: the codec the configuration declares for the file, which wins over detection;
-    ``objects``, ``widths``: as :func:`tokenize_text`'s."""
+    ``objects``, ``widths``: as :func:`tokenize_text`'s. A big list of ASCII bytes is read as the bytes (the
+    same characters in any code page a list may declare): never decoded as a whole, the document holds them."""
+    if not objects and len(data) > _BYTES_FROM and data.isascii() and b"\x00" not in data:
+        return _columnar(data, path, declarable(encoding) if encoding is not None else "utf-8", False,
+                         encoding is not None, widths)
     text, codec, bom = decode(data, encoding)
     return tokenize_text(text, path, codec, bom, declared=encoding is not None, objects=objects, widths=widths)
