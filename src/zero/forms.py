@@ -53,8 +53,17 @@ _NAME_START = re.compile(rb"[A-Za-z_]")
 _NAME_END = re.compile(rb"[\s/>]")
 
 
+_SUFFIXES: dict[str, str] = {}  # a name → its suffix: a run asks a dozen questions of each file's name
+
+
 def _suffix(name: str | os.PathLike[str]) -> str:
-    return os.path.splitext(os.fspath(name))[1].lower()
+    text = os.fspath(name)
+    hit = _SUFFIXES.get(text)
+    if hit is None:
+        if len(_SUFFIXES) > 8192:
+            _SUFFIXES.clear()
+        hit = _SUFFIXES[text] = os.path.splitext(text)[1].lower()
+    return hit
 
 
 def form_of(name: str | os.PathLike[str]) -> str:

@@ -58,7 +58,7 @@ from typing import TYPE_CHECKING, Any
 
 from zero import __version__
 from zero.diagnostics import Diagnostic, Edit, Fix, Related, Severity, Span
-from zero.engine.results import LintResult
+from zero.engine.results import LintOptions, LintResult
 from zero.errors import ZeroError
 from zero.files import max_file_bytes, read_as_is, read_file, write_disposable
 from zero.forms import CONFIG_NAMES, controller_absolute, is_list, is_program, split_part
@@ -468,13 +468,18 @@ def pack_result(r: LintResult) -> tuple[Any, ...]:
     return (r.path, r.kind, r.note, shown, tuple(diagnostics))
 
 
+_SEVERITIES = {int(s): s for s in Severity}  # a stored severity → its member (a look-up, not an enum call)
+
+
 def unpack_result(packed: tuple[Any, ...]) -> LintResult:
     path, kind, note, (doc_path, encoding, bom, end_line, lines), found = packed
     doc: Document = Excerpt(doc_path, encoding, [], [], [], [], bom, end_line, shown=dict(lines))
+    severities = _SEVERITIES
     diagnostics = [
-        Diagnostic(code, Severity(severity), message, Span(*span), where, param_id,
+        Diagnostic(code, severities.get(severity) or Severity(severity), message, Span(*span), where, param_id,
                    None if fix is None else Fix(fix[0], tuple(Edit(Span(*e[:4]), e[4]) for e in fix[2]), fix[1]),
-                   hint, tuple(Related(Span(*s), m, p) for s, m, p in related), kernel_error, consequence, source)
+                   hint, tuple([Related(Span(*s), m, p) for s, m, p in related]) if related else (), kernel_error,
+                   consequence, source)
         for (code, severity, message, span, where, param_id, fix, hint, related, kernel_error, consequence,
              source) in found]
     return LintResult(path, doc, kind, diagnostics, note)
@@ -529,10 +534,12 @@ class LintCache:
         self.hits = 0
         self.on = _records_known()
 
-    def _options(self, path: Path) -> str:
-        """The fingerprint of a file's options, found once per options object (the files of a folder
-        share one; the object is kept with it, so its identity is not another's)."""
-        options = self.project.options(path)
+    def _options(self, path: Path, options: LintOptions | None = None) -> str:
+        """The fingerprint of a file's options (``options``: as its settings give them), found once per
+        options object (the files of a folder share one; the object is kept with it, so its identity is
+        not another's)."""
+        if options is None:
+            options = self.project.options(path)
         hit = self._fingerprints.get(id(options))
         if hit is None or hit[0] is not options:
             hit = self._fingerprints[id(options)] = (options, fingerprint(options))
@@ -559,11 +566,14 @@ class LintCache:
         """The entry name of a file as read now (``data``: its bytes, or the hex hash of them), and
         that of its machine (``None``: it has none). :class:`TypeError` where the options cannot be
         fingerprinted, :class:`ZeroError` where the catalogue cannot be read."""
-        machine = self._machine_part(path) if is_list(path) else None
+        settings = self.project.settings(path)  # one look-up for the options, the catalogue and the machine
+        # no machine where neither --machine nor the configuration names a start-up list (Project.startup)
+        named = self.project.machine_given is not None or settings.config.machine is not None
+        machine = self._machine_part(path) if named and is_list(path) else None
         machine_key = None if machine is None else fingerprint(machine)
         content = data if isinstance(data, str) else digest(data).hex()
-        parts = (generation(), "lint", str(path), content, self._options(path),
-                 self._catalogue(self.project.param_desc(path)), machine_key)
+        parts = (generation(), "lint", str(path), content, self._options(path, settings.options),
+                 self._catalogue(settings.param_desc), machine_key)
         # plain strings (and a tuple of them, and None) are their own canonical form: the name is
         # fingerprint(parts), without walking them (`test_the_entry_name_is_the_fingerprint_of_its_parts`)
         return digest(repr(parts).encode("utf-8", "surrogateescape")).hex(), machine_key

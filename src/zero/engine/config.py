@@ -107,6 +107,20 @@ def one_resolution() -> Iterator[None]:
         _RESOLVED.pop()
 
 
+_CWD = "\0cwd"  # the current directory's key in the memo (no folder's name holds a NUL)
+
+
+def _cwd() -> str:
+    """``os.getcwd()``, asked once within :func:`one_resolution` (whose folders as named assume it stays)."""
+    if not _RESOLVED:
+        return os.getcwd()
+    memo = _RESOLVED[-1]
+    hit = memo.get(_CWD)
+    if hit is None:
+        hit = memo[_CWD] = os.getcwd()
+    return hit
+
+
 def _resolved_folder(folder: str | Path) -> str:
     """``str(Path(folder).resolve())``, once per folder within :func:`one_resolution`."""
     name = os.fspath(folder)
@@ -177,7 +191,7 @@ class Config:
         parent, name = os.path.split(os.fspath(file))  # a Path's text: file.parent and file.name
         own = os.fspath(self.path) if self.path is not None else None
         folder = _resolved_folder(parent or ".")
-        root = _resolved_folder((os.path.dirname(own) or ".") if own is not None else os.getcwd())
+        root = _resolved_folder((os.path.dirname(own) or ".") if own is not None else _cwd())
         if folder == root:
             return name if name else "."
         head = root if root.endswith("/") else root + "/"
@@ -867,7 +881,7 @@ class ConfigFinder:
             self.explicit = cfg
         self._by_dir: dict[Path, Config] = {}
         self._by_name: dict[str, Config] = {}  # the absolute directory → its configuration
-        self._by_path: dict[tuple[object, ...], Config] = {}  # a path as asked about (and the directory if relative)
+        self._by_path: dict[tuple[object, ...], Config] = {}  # a path's text (and the directory if relative)
         self._default = Config()
         if overrides:
             self._overlay(self._default)  # a bad override is an error before any file is read
@@ -893,13 +907,14 @@ class ConfigFinder:
             return self._overlay(self._default)
         if self.explicit is not None:
             return self._overlay(self.explicit)
+        name = os.fspath(path)  # a Path's text is made once; hashing the text is cheaper than the Path
         if directory is None:
-            directory = path.is_dir()
-        given = (path, directory) if path.is_absolute() else (path, directory, os.getcwd())
+            directory = os.path.isdir(name)
+        given = (name, directory) if os.path.isabs(name) else (name, directory, _cwd())
         hit = self._by_path.get(given)  # the files of a run are asked about several times each
         if hit is not None:
             return hit
-        key = os.path.abspath(str(path) if directory else os.path.dirname(str(path)) or ".")
+        key = os.path.abspath(name if directory else os.path.dirname(name) or ".")
         hit = self._by_name.get(key)
         if hit is None:
             start = Path(_resolved_folder(path if directory else path.parent))
