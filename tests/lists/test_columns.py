@@ -115,8 +115,14 @@ def _check_read(text: str, widths: bool, binary: bool = False) -> None:
     built = [doc.entry_at(row) for row in range(len(cols))]
     assert [_fields(e) for e in built] == [_fields(e) for e in entries]
     assert [_fields(e) for e in _read(text, widths, binary).entries] == [_fields(e) for e in entries]
-    moved = _read(text, widths, binary).moved("elsewhere")
-    assert moved.path == "elsewhere" and moved.problems == careful.problems and moved.lines == careful.lines
+    first = _read(text, widths, binary)
+    moved = first.moved("elsewhere")
+    assert moved.path == "elsewhere" and first.path == "-" and moved.problems is first.problems
+    assert moved.columns is first.columns and moved.lines == careful.lines
+    assert [e.key_text for e in moved.entries] == [e.key_text for e in entries]
+    assert first.items is not None and first.lines is not None
+    again = first.moved("third")  # built parts shared too
+    assert again.items is first.items and again.lines is first.lines
     # then lines, endings and items as the careful scanner's, holding the same entry objects
     assert doc.lines == careful.lines and doc.endings == careful.endings
     assert [(type(i), _fields(i)) for i in doc.items] == [(type(i), _fields(i)) for i in careful.items]

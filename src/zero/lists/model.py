@@ -607,13 +607,14 @@ class Document:
         return len(self._text) if self._text is not None else 0
 
     def moved(self, path: str) -> Document:
-        """This document under another path: the same text, rows, entries and problems (nothing read again)."""
-        if self._text is None or self._columns is None:
-            return Document(path, self.encoding, self.lines, self.endings, self.items, self.problems, self.bom,
-                            self.end_line, self.origin)
-        doc = Document.columnar(path, self.encoding, self._text, self.line_count, self._columns, self._slow,
-                                self.problems, self.bom, self.end_line)
-        doc.origin = self.origin
+        """This document under another path, sharing everything else as it is (the text, the columns with their
+        tables and entry objects, the other items, problems, and lines, endings and items when built): nothing
+        copied, nothing read again."""
+        doc = object.__new__(type(self))
+        for cls in type(self).__mro__:
+            for name in getattr(cls, "__slots__", ()):
+                setattr(doc, name, getattr(self, name))
+        doc.path = path
         return doc
 
     @property
