@@ -14,9 +14,9 @@ import fnmatch
 import re
 from collections.abc import Iterator, Mapping, Sequence
 
-from zero.catalog.registry import NO_DEFAULT, ParamSpec
+from zero.catalog.registry import NO_DEFAULT, ParamSpec, Registry
 from zero.catalog.values import ListValues, Slot, bind, canonical_key, slot_of
-from zero.lists.model import Document, Entry, format_key, parse_key
+from zero.lists.model import Columns, Document, Entry, format_key, parse_key
 from zero.machine.model import ListFile, Machine
 from zero.records import field, record, replace
 
@@ -290,13 +290,28 @@ def row_keys(values: ListValues) -> list[str]:
     return out
 
 
+# The keys of the rows of the last few columns read, per kind and registry: the lists a run shares by
+# content (zero.machine.model.SHARED: a fleet's copies) share their columns, and so these. The dicts
+# are never changed once made (Rows.over makes new ones).
+_KEYED_MAX = 64
+_keyed: dict[tuple[int, str | None, int], tuple[Columns, Registry, dict[str, str], dict[str, int]]] = {}
+
+
 def own_entries(values: ListValues) -> Rows:
     """The entries of a list itself by documented key (the later one wins, as on the controller), read
     from its rows: no entry is built until one is asked for."""
-    keys = row_keys(values)
     cols = values.doc.columns
+    slot = (id(cols), values.kind, id(values.registry))
+    hit = _keyed.get(slot)
+    if hit is not None and hit[0] is cols and hit[1] is values.registry:
+        return Rows(hit[2], ((values.doc, hit[3]),))
+    keys = row_keys(values)
     texts = dict(zip(keys, map(cols.values.__getitem__, cols.value), strict=True))
-    return Rows(texts, ((values.doc, dict(zip(keys, range(len(keys)), strict=True))),))
+    rows = dict(zip(keys, range(len(keys)), strict=True))
+    if len(_keyed) >= _KEYED_MAX:
+        del _keyed[next(iter(_keyed))]
+    _keyed[slot] = (cols, values.registry, texts, rows)
+    return Rows(texts, ((values.doc, rows),))
 
 
 def entries_of(values: ListValues, found: dict[int, Rows] | None = None) -> Rows:

@@ -279,7 +279,8 @@ def _candidates(base: Path, ceiling: Path | None) -> list[Path]:
     return out or [base]
 
 
-def working_directory(startup: Path, raws: list[str], ceiling: Path | None = None) -> Path:
+def working_directory(startup: Path, raws: list[str], ceiling: Path | None = None, *,
+                      realpath: Callable[[str], str] = os.path.realpath) -> Path:
     """The controller's working directory: the start-up list's directory or the nearest
     ancestor in which the most of ``raws`` exist (the directory itself when none does), never
     above ``ceiling`` (:func:`machine_ceiling`) and never the file system's root.
@@ -292,18 +293,46 @@ def working_directory(startup: Path, raws: list[str], ceiling: Path | None = Non
     Without a ceiling (no project marker above), an ancestor counts only the references that lead
     back down the start-up list's way (:func:`layout_bound`; the vendor's layout: ``./listen/…`` named
     from inside ``listen/`` or ``listen/SoE/``): a file beside an ancestor (``../.bashrc`` as
-    ``./.bashrc``) never makes it the working directory."""
+    ``./.bashrc``) never makes it the working directory. ``realpath``: ``os.path.realpath``, or a
+    machine's reading's (:class:`_Realpaths`)."""
     absolute = Path(os.path.abspath(startup))
     base = absolute.parent
     candidates = _candidates(base, ceiling)
     relative = [Path(_clean(r)) for r in raws if _clean(r) and not controller_absolute(_clean(r))]
     best, hits = base, 0
     for d in candidates:
-        n = sum(1 for r in relative
-                if (d / r).is_file() and (ceiling is not None or within(d / r, layout_bound(d, base))))
+        inside = None if ceiling is not None else _inside(layout_bound(d, base), realpath)
+        n = sum(1 for f in (d / r for r in relative) if f.is_file() and (inside is None or inside(f)))
         if n > hits:
             best, hits = d, n
     return shown(best, relative_to_cwd=not startup.is_absolute())
+
+
+def _inside(root: Path, realpath: Callable[[str], str] = os.path.realpath) -> Callable[[Path], bool]:
+    """:func:`zero.files.within` of many paths in one ``root`` (the root resolved once; each path as
+    :func:`zero.files.resolve` resolves it, by ``realpath``)."""
+    top = realpath(os.fspath(root))
+    below = top.rstrip(os.sep) + os.sep
+
+    def test(path: Path) -> bool:
+        real = realpath(split_part(path)[0])
+        return real == top or real.startswith(below)
+
+    return test
+
+
+class _Realpaths:
+    """``os.path.realpath`` of the paths one reading of a machine asks about, each asked once: a list's
+    path is tested by the working directory's search, by the containment test and by its reading."""
+
+    def __init__(self) -> None:
+        self.seen: dict[str, str] = {}
+
+    def __call__(self, path: str) -> str:
+        got = self.seen.get(path)
+        if got is None:
+            got = self.seen[path] = os.path.realpath(path)
+        return got
 
 
 def layout_bound(workdir: Path, folder: Path) -> Path:
@@ -395,12 +424,13 @@ def _moved(doc: Document, path: str) -> Document:
 def _read(key: str, path: Path, line: int, registry: Registry, kind: str,
           base: ListValues | None = None, reader: Callable[[Path], bytes] = read_file,
           docs: dict[str, Document] | None = None, encoding: Encodings = _detected,
-          built: dict[tuple[str, str, str, int], ListValues] | None = None) -> ListFile:
+          built: dict[tuple[str, str, str, int], ListValues] | None = None,
+          realpath: Callable[[str], str] = os.path.realpath) -> ListFile:
     """One list of the machine; ``docs`` keeps each file read once (a start-up list may name one
     file many times: each reference costs its binding, never another read). ``encoding`` gives
     the codec the configuration declares for a list (``None``: detected). A list with the bytes of
     one read before (:data:`SHARED`) takes its reading and binding, under its own path."""
-    real = os.path.realpath(path)
+    real = realpath(os.fspath(path))
     doc = docs.get(real) if docs is not None else None
     file, part = split_part(path)  # `channel_1.xml#NullpD`: a list inside a TwinCAT export
     twin: ListValues | None = None
@@ -480,7 +510,7 @@ def _mapped(text: str, roots: Roots) -> Path | None:
 
 def named_lists(startup_path: Path, doc: Document, overrides: dict[str, Path] | None = None,
                 workdir: Path | None = None, ceiling: Path | None = None,
-                roots: Roots = ()) -> tuple[Path, list[Named]]:
+                roots: Roots = (), *, realpath: Callable[[str], str] = os.path.realpath) -> tuple[Path, list[Named]]:
     """The working directory and every list reference of a start-up list, each with the path the
     controller opens (``path``; status ``overridden`` where ``[tool.zero.machine]`` names it,
     ``missing`` for an empty one, ``not-checked`` for an absolute path or one outside the
@@ -494,7 +524,8 @@ def named_lists(startup_path: Path, doc: Document, overrides: dict[str, Path] | 
         if ref is None or len(e.key.indices) != ref.key.count("[]"):
             continue
         named.append(Named(e.key_text, ref, e.key.indices[0] if e.key.indices else None, e.value, e.line))
-    root = workdir if workdir is not None else working_directory(startup_path, [n.raw for n in named], ceiling)
+    root = workdir if workdir is not None else working_directory(startup_path, [n.raw for n in named], ceiling,
+                                                                 realpath=realpath)
     # A relative path may climb out of the working directory (TwinCAT's `..\listen\nullp_d1.lis`), never
     # out of the project (its git work tree or configuration folder), nor, without one, the start-up list's
     # folder (the vendor's `./listen/…` named from inside `listen/` stays in it).
@@ -502,6 +533,7 @@ def named_lists(startup_path: Path, doc: Document, overrides: dict[str, Path] | 
     folder = Path(os.path.abspath(split_part(startup_path)[0])).parent
     bound, what = (ceiling, "project") if inside and ceiling is not None else (
         (root, "machine's folder") if workdir is not None else (layout_bound(root, folder), "machine's folder"))
+    inside_bound = _inside(bound, realpath)
     for n in named:
         override = (overrides or {}).get(n.key)
         text = _clean(n.raw)
@@ -520,7 +552,7 @@ def named_lists(startup_path: Path, doc: Document, overrides: dict[str, Path] | 
             n.status, n.reason = "not-checked", f"{where} (`[tool.zero.machine] roots` can map its folder)"
         else:
             n.path = Path(os.path.normpath(root / text))  # `startup/../listen/x.lis` shown as `listen/x.lis`
-            if not within(n.path, bound):
+            if not inside_bound(n.path):
                 n.status, n.reason = "not-checked", f"lies outside the {what} {bound}"
                 n.path = None
     return root, named
@@ -591,9 +623,10 @@ def load_machine(startup_path: Path, registry: Registry, forced_kind: str | None
     a list's bytes (an editor passes its unsaved text; :class:`ZeroError` when it cannot);
     ``encoding`` the codec the configuration declares for a list (``None``: detected).
     """
+    realpath = _Realpaths()
     startup = _read("start-up list", startup_path, 0, registry, forced_kind or "STUP", None, reader,
-                    encoding=encoding)
-    root, named = named_lists(startup_path, startup.values.doc, overrides, workdir, ceiling, roots)
+                    encoding=encoding, realpath=realpath)
+    root, named = named_lists(startup_path, startup.values.doc, overrides, workdir, ceiling, roots, realpath=realpath)
     origin = startup.values.doc.origin
     if is_project(startup_path):  # a TwinCAT project: `tc_virtual_N\` names its own Offset blocks
         from zero.machine.tsproj import resolve_virtual  # start-up: only for a TwinCAT project
@@ -622,7 +655,7 @@ def load_machine(startup_path: Path, registry: Registry, forced_kind: str | None
             return None  # empty, absolute or outside the machine's folder: said by named_lists
         try:
             lf = _read(n.key, n.path, n.line, registry, forced_kind or n.reference.kind, base, reader, docs,
-                       encoding, built)
+                       encoding, built, realpath)
         except ZeroError as exc:
             n.status = "missing" if exc.message == "no such file" else "unreadable"
             n.reason = "does not exist" if n.status == "missing" else f"cannot be read: {exc.message}"
