@@ -134,7 +134,7 @@ def parse_directives(doc: Document, known: set[str]) -> tuple[list[Directive], l
     others = doc.other_items()
     entry_lines: list[int] | None = None  # the lines of every entry (after `Ende` too), for `ignore[...]`
     for item in others:
-        if type(item) is not Comment:
+        if type(item) is not Comment or _ZERO_RE.match(item.text) is None:  # the item holds its line's text
             continue
         text = doc.line_text(item.line)
         m = _ZERO_RE.match(text)
