@@ -133,8 +133,8 @@ def check_keys(ctx: Context) -> Iterator[Diagnostic]:
     # unknown pattern, or with an index outside its array, are visited (in order) for a finding.
     cols = ctx.doc.columns
     rows: list[int] = []  # rows to visit
-    specs: dict[str, ParamSpec] = {}
     known_specs: dict[str, ParamSpec | None] = reg.memo.setdefault(f"key_specs:{ctx.kind}", {})
+    shape_rows, shape_keys = ctx.shape_rows, ctx.shape_keys
     for pattern, shapes in ctx.pattern_shapes.items():
         try:
             spec = known_specs[pattern]
@@ -144,15 +144,16 @@ def check_keys(ctx: Context) -> Iterator[Diagnostic]:
                 known_specs[pattern] = spec
         if spec is None:
             for shape in shapes:
-                rows.extend(ctx.shape_rows[shape])
+                rows.extend(shape_rows[shape])
             continue
-        specs[pattern] = spec
+        if "[" not in pattern:
+            continue  # no index to check
         bounds = bounds_of(spec)
-        if not bounds or "[" not in pattern:
+        if not bounds:
             continue
         for shape in shapes:
-            _, indices, indexed = ctx.shape_keys[shape]
-            group = ctx.shape_rows[shape]
+            _, indices, indexed = shape_keys[shape]
+            group = shape_rows[shape]
             if indices and not _inside(bounds[1:] if indexed else bounds, indices):
                 rows.extend(group)  # the indices after the first (a key without a first: all) outside
                 continue
@@ -171,7 +172,7 @@ def check_keys(ctx: Context) -> Iterator[Diagnostic]:
         e = ctx.entry_at(row)
         key = e.key
         assert key is not None  # a row of a group
-        found = specs.get(key.pattern)
+        found = known_specs[key.pattern] if key.pattern in known_specs else reg.by_pattern(key.pattern, ctx.kind)
         if found is None:
             alias = reg.alias(key.pattern, ctx.kind)
             if alias is not None:
@@ -574,6 +575,7 @@ def check_values(ctx: Context) -> Iterator[Diagnostic]:
     texts = cols.values
     rows: list[int] = []  # rows to visit
     by_value: dict[str, bool] = registry.memo.get("by_value", {})
+    pattern_shapes, shape_rows, value, valueless = ctx.pattern_shapes, ctx.shape_rows, cols.value, ctx.valueless
     for pattern, hit in ctx.bound.items():
         if hit is None:
             continue
@@ -585,11 +587,11 @@ def check_values(ctx: Context) -> Iterator[Diagnostic]:
             else:  # once per value and values referred to
                 rows.extend(_ref_failures(ctx, spec, pattern, plan))
             continue
-        for shape in ctx.pattern_shapes[pattern]:
-            group = ctx.shape_rows[shape]
+        for shape in pattern_shapes[pattern]:
+            group = shape_rows[shape]
             if len(group) == 1:  # one entry (most patterns of a small list)
-                vid = cols.value[group[0]]
-                if vid in ctx.valueless:
+                vid = value[group[0]]
+                if vid in valueless:
                     continue
                 slot = (spec.id, texts[vid])
                 verdict = passed.get(slot) or verdicts.get(slot)
