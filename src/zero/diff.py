@@ -23,8 +23,6 @@ from zero.lists.model import Comment, Entry, Key, ValueKind, parse_key
 from zero.lists.tokenizer import tokenize_text
 from zero.markup import read_document
 from zero.records import field, record
-from zero.structured.formats import read_tree
-from zero.structured.tree import to_list_text
 
 ADDED, REMOVED, CHANGED, SAME, COMMENT = "added", "removed", "changed", "same", "comment"
 
@@ -86,6 +84,9 @@ def read_side(data: bytes, fmt: str, path: str, registry: Registry, kind: str | 
         if any(p.kind == "binary" for p in doc.problems):
             raise ZeroError("not a text file: not a parameter list (zero lint says so as S013)", path)
     else:
+        from zero.structured.formats import read_tree  # start-up: only for a YAML, TOML or JSON side
+        from zero.structured.tree import to_list_text  # start-up: as read_tree
+
         tree = read_tree(data, fmt, registry, path, kind)
         # the text as the list it makes (in UTF-8: the encoding of its `_zero` record changes nothing read)
         doc = tokenize_text(to_list_text(tree).text, path)

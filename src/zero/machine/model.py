@@ -298,23 +298,31 @@ def working_directory(startup: Path, raws: list[str], ceiling: Path | None = Non
     absolute = Path(os.path.abspath(startup))
     base = absolute.parent
     candidates = _candidates(base, ceiling)
-    relative = [Path(_clean(r)) for r in raws if _clean(r) and not controller_absolute(_clean(r))]
+    # each reference as a path joins it (`./listen//x.lis` as `listen/x.lis`), joined to each folder as text
+    relative = [str(Path(c)) for c in map(_clean, raws) if c and not controller_absolute(c)]
     best, hits = base, 0
     for d in candidates:
-        inside = None if ceiling is not None else _inside(layout_bound(d, base), realpath)
-        n = sum(1 for f in (d / r for r in relative) if f.is_file() and (inside is None or inside(f)))
+        folder = os.fspath(d)
+        found = [f for f in (os.path.join(folder, r) for r in relative) if os.path.isfile(f)]
+        if len(found) <= hits:
+            continue  # cannot count more than the best so far
+        if ceiling is None:
+            inside = _inside(layout_bound(d, base), realpath)
+            n = sum(1 for f in found if inside(f))
+        else:
+            n = len(found)
         if n > hits:
             best, hits = d, n
     return shown(best, relative_to_cwd=not startup.is_absolute())
 
 
-def _inside(root: Path, realpath: Callable[[str], str] = os.path.realpath) -> Callable[[Path], bool]:
+def _inside(root: Path, realpath: Callable[[str], str] = os.path.realpath) -> Callable[[str | Path], bool]:
     """:func:`zero.files.within` of many paths in one ``root`` (the root resolved once; each path as
     :func:`zero.files.resolve` resolves it, by ``realpath``)."""
     top = realpath(os.fspath(root))
     below = top.rstrip(os.sep) + os.sep
 
-    def test(path: Path) -> bool:
+    def test(path: str | Path) -> bool:
         real = realpath(split_part(path)[0])
         return real == top or real.startswith(below)
 
