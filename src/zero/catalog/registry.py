@@ -355,13 +355,28 @@ class Registry:
         return self.detect_kind_counts(Counter(patterns), path)  # counted in C: a big list has few patterns
 
     def detect_kind_counts(self, counts: Mapping[str, int], path: str = "") -> str | None:
-        """:meth:`detect_kind` of patterns counted already (pattern -> how many times)."""
+        """:meth:`detect_kind` of patterns counted already (pattern -> how many times). Answered once per
+        (counts, the file name's hint) and registry: the lists of a fleet repeat their keys."""
+        hint = kind_hint(path)
+        memo: dict[tuple[str | None, tuple[tuple[str, int], ...]], str | None] = self.memo.setdefault("kinds", {})
+        slot = (hint, tuple(counts.items()))
+        try:
+            return memo[slot]
+        except KeyError:
+            pass
         votes: dict[str, int] = {}
         kinds_of = self._kinds_of
         for p, n in counts.items():
             for k in kinds_of.get(p, ()):
                 votes[k] = votes.get(k, 0) + n
-        hint = kind_hint(path)
+        got = self._leader(votes, hint)
+        if len(memo) < 4096 and len(counts) <= 4096:
+            memo[slot] = got
+        return got
+
+    @staticmethod
+    def _leader(votes: dict[str, int], hint: str | None) -> str | None:
+        """The kind with the most votes; the file name's hint breaks a tie, else the first by name."""
         if not votes:
             return hint
         best = max(votes.values())
