@@ -403,14 +403,13 @@ class _Shared:
         return hit[1] if hit is not None and hit[0] is registry else None
 
     def keep(self, key: ContentKey, registry: Registry, values: ListValues) -> None:
-        text = values.doc.text
-        if text is None or len(text) > SHARED_MAX_CHARS or values.doc.origin is not None or key in self.kept:
+        size = values.doc.text_size  # 0: no text of its own (a document built from lines)
+        if not 0 < size <= SHARED_MAX_CHARS or values.doc.origin is not None or key in self.kept:
             return
-        while self.kept and (len(self.kept) >= SHARED_LISTS or self.chars + len(text) > SHARED_TOTAL_CHARS):
-            oldest = self.kept.pop(next(iter(self.kept)))[1].doc.text
-            self.chars -= len(oldest or "")
+        while self.kept and (len(self.kept) >= SHARED_LISTS or self.chars + size > SHARED_TOTAL_CHARS):
+            self.chars -= self.kept.pop(next(iter(self.kept)))[1].doc.text_size
         self.kept[key] = (registry, values)
-        self.chars += len(text)
+        self.chars += size
 
     def clear(self) -> None:
         self.kept.clear()
@@ -418,15 +417,6 @@ class _Shared:
 
 
 SHARED = _Shared()
-
-
-def _moved(doc: Document, path: str) -> Document:
-    """``doc`` under another path: the same text, rows and entries (nothing read again)."""
-    moved = getattr(doc, "moved", None)
-    if moved is not None:
-        return moved(path)  # type: ignore[no-any-return]
-    return Document.columnar(path, doc.encoding, doc.text or "", doc.line_count, doc.columns,
-                             doc._slow, doc.problems, doc.bom, doc.end_line)  # stand-in until lists has it
 
 
 def _read(key: str, path: Path, line: int, registry: Registry, kind: str,
@@ -449,7 +439,7 @@ def _read(key: str, path: Path, line: int, registry: Registry, kind: str,
         if part is None and not is_xml(data):
             shared = SHARED.key(data, codec, kind, registry)
             twin = SHARED.twin(shared, registry)
-        doc = _moved(twin.doc, str(path)) if twin is not None else read_document(data, str(path), registry, codec)
+        doc = twin.doc.moved(str(path)) if twin is not None else read_document(data, str(path), registry, codec)
         if docs is not None:
             docs.setdefault(real, doc)
     elif doc.path != str(path) and part is None:
