@@ -216,6 +216,8 @@ def _elements(ctx: Context, err: StartupError, c: _Compiled) -> list[tuple[int, 
     """The elements to check: those the list sets of the reported parameter (or of any parameter of the
     condition), so that a condition on `getriebe[g]` is checked for each gear the list writes."""
     n = _facts(ctx, err.params[0])[2] if err.params else 0
+    if not n:
+        return [()]  # a single value (or no reported parameter): every element the list sets is element ()
     seen: dict[tuple[int, ...], None] = {}
     for pid in (*err.params, *c.read):
         for idx in ctx.ids_of(pid):
