@@ -39,10 +39,13 @@ import sys
 import time
 from collections.abc import Iterator
 from pathlib import Path
-from typing import BinaryIO
 
 from zero.errors import ZeroError
 from zero.forms import CONFIG_NAMES, NOT_A_REPORT, split_part, xml_form
+
+TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (mypy and ruff read it alike)
+if TYPE_CHECKING:
+    from typing import BinaryIO
 
 MAX_FILE_BYTES = 256 * 1024 * 1024
 # What no parameter list (nor its YAML/TOML/JSON form) comes near: the largest zero is measured on,

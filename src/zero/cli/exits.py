@@ -13,13 +13,13 @@ import gc
 import os
 import sys
 from collections.abc import Callable
-from typing import TYPE_CHECKING
 
 from zero.cli import GC_THRESHOLDS
 from zero.diagnostics import Severity
 from zero.engine.results import Totals
 from zero.errors import ZeroError
 
+TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (mypy and ruff read it alike)
 if TYPE_CHECKING:  # start-up: the fleet only for zero diff --fleet
     from zero.engine.fleet import FleetDrift
 

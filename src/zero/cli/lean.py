@@ -13,9 +13,12 @@ import contextlib
 import gc
 import os
 import sys
-from typing import NoReturn
 
 from zero.cli import GC_THRESHOLDS
+
+TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (mypy and ruff read it alike)
+if TYPE_CHECKING:
+    from typing import NoReturn
 
 
 def main() -> None:

@@ -13,12 +13,15 @@ from __future__ import annotations
 import os
 from collections.abc import Iterable, Mapping
 from pathlib import Path
-from typing import Literal
 
 from zero.forms import LIST_SUFFIXES, PROGRAM_SUFFIXES, XML_SUFFIX
 from zero.output.formats import OUTPUT_FORMATS
 from zero.output.formats import help_text as format_help
 from zero.records import record
+
+TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (mypy and ruff read it alike)
+if TYPE_CHECKING:
+    from typing import Literal
 
 
 @record(frozen=True)

@@ -12,7 +12,6 @@ import io
 import sys
 from collections.abc import Callable, Iterable, Iterator, Sequence
 from pathlib import Path
-from typing import TYPE_CHECKING, TextIO
 
 from zero.catalog.registry import KINDS, Registry, load_registry
 from zero.cli import exits
@@ -24,7 +23,10 @@ from zero.files import max_file_bytes, read_stream, write_report
 from zero.output.formats import FORMATS, OUTPUT_FORMATS, STREAMED_FORMATS, emitter
 from zero.output.text import ProgressBar, printable, render_text, statistics, statistics_json
 
+TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (mypy and ruff read it alike)
 if TYPE_CHECKING:  # start-up: the fleet only for zero diff --fleet
+    from typing import TextIO
+
     from zero.engine.fleet import FleetRequest
     from zero.engine.project import Registries
 

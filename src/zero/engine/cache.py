@@ -54,7 +54,6 @@ import sys
 import time
 from collections.abc import Callable, Iterable, Iterator
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
 
 from zero import __version__
 from zero.diagnostics import Diagnostic, Edit, Fix, Related, Severity, Span
@@ -70,7 +69,10 @@ try:  # start-up: `_blake2` is hashlib's own BLAKE2 without OpenSSL (hashlib cos
 except ImportError:  # pragma: no cover - an interpreter without the module
     from hashlib import blake2b
 
+TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (mypy and ruff read it alike)
 if TYPE_CHECKING:  # start-up: a plain lint loads no machine model
+    from typing import Any
+
     from zero.engine.project import Project
     from zero.machine.model import Machine
 
@@ -349,7 +351,7 @@ def open_store(project: Project) -> Store | None:
 
 # What a machine read or looked for: ("f", path, size, mtime, code page) for a file (size -1:
 # absent), ("d", path, mtime) for a folder, ("e", path, exists) for a place looked at.
-Dep = tuple[Any, ...]
+Dep = tuple["Any", ...]  # (a string: typing is not imported at run time)
 
 
 class Checker:

@@ -20,7 +20,6 @@ import os
 import re
 from collections.abc import Callable, Iterator
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
 
 from zero.catalog.registry import KINDS, kind_from_name
 from zero.diagnostics import Severity
@@ -32,7 +31,10 @@ from zero.forms import CONFIG_NAMES, DEFAULT_INCLUDE, controller_absolute
 from zero.lists.model import parse_key
 from zero.records import field, record, replace
 
+TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (mypy and ruff read it alike)
 if TYPE_CHECKING:
+    from typing import Any
+
     from pathspec import GitIgnoreSpec
 
 MAX_PATTERN_WILDCARDS = 3  # `*` runs in one segment of a glob pattern, and `**` segments

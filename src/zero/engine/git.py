@@ -26,13 +26,13 @@ import os
 import stat
 from collections.abc import Callable, Iterator
 from pathlib import Path
-from typing import TYPE_CHECKING
 
 from zero.errors import ZeroError
 from zero.files import describe
 from zero.forms import split_part
 from zero.records import record
 
+TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (mypy and ruff read it alike)
 if TYPE_CHECKING:  # start-up: subprocess only when git is asked
     import subprocess
 

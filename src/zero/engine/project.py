@@ -35,7 +35,6 @@ import os
 from collections import OrderedDict
 from collections.abc import Callable, Hashable, Sequence
 from pathlib import Path
-from typing import TYPE_CHECKING
 
 from zero.catalog.registry import KINDS, Registry
 from zero.engine.config import Config, ConfigFinder, is_inline
@@ -44,6 +43,7 @@ from zero.errors import ZeroError
 from zero.files import read_file, resolve
 from zero.records import field, record
 
+TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (mypy and ruff read it alike)
 if TYPE_CHECKING:  # start-up: `zero lint` of lists loads no machine model
     from zero.lists.model import Document
     from zero.machine.model import Machine

@@ -9,10 +9,13 @@ import os
 import sys
 from collections import Counter
 from collections.abc import Iterable
-from typing import Any, TextIO
 
 from zero.diagnostics import Diagnostic, Severity
 from zero.engine.results import LintResult, Totals, tallied
+
+TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (mypy and ruff read it alike)
+if TYPE_CHECKING:
+    from typing import Any, TextIO
 
 Segment = tuple[str, str]  # (text, rich style)
 MAX_SHOWN_PER_CODE = 50  # the text report shows this many findings of one code per file, then a count

@@ -12,9 +12,12 @@ from __future__ import annotations
 
 import os
 from collections.abc import Callable
-from typing import Any
 
 from zero.records import record
+
+TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (mypy and ruff read it alike)
+if TYPE_CHECKING:
+    from typing import Any
 
 # Where a rule's text is on the web, ``{code}`` replaced by its code: each SARIF rule's
 # ``helpUri``. zero has no public home yet, so there is none by default (SARIF makes it

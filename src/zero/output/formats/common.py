@@ -6,10 +6,13 @@ from __future__ import annotations
 import json
 import os
 from collections.abc import Iterable, Iterator
-from typing import Any
 
 from zero.diagnostics import Diagnostic
 from zero.engine.results import LintResult
+
+TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (mypy and ruff read it alike)
+if TYPE_CHECKING:
+    from typing import Any
 
 
 def each(results: Iterable[LintResult]) -> Iterator[Diagnostic]:

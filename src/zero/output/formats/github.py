@@ -3,11 +3,14 @@
 from __future__ import annotations
 
 from collections.abc import Iterable
-from typing import TextIO
 
 from zero.diagnostics import Severity
 from zero.engine.results import LintResult
 from zero.output.formats.common import each, repo_path
+
+TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (mypy and ruff read it alike)
+if TYPE_CHECKING:
+    from typing import TextIO
 
 
 def _gh_escape(text: str, prop: bool = False) -> str:

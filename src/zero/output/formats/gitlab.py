@@ -5,11 +5,14 @@ from __future__ import annotations
 import json
 import os
 from collections.abc import Sequence
-from typing import TextIO
 
 from zero.diagnostics import Severity
 from zero.engine.results import LintResult
 from zero.output.formats.common import fingerprints, repo_path
+
+TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (mypy and ruff read it alike)
+if TYPE_CHECKING:
+    from typing import TextIO
 
 
 def render_gitlab(results: Sequence[LintResult], stream: TextIO) -> None:

@@ -4,10 +4,13 @@ from __future__ import annotations
 
 import json
 from collections.abc import Iterable
-from typing import TextIO
 
 from zero.engine.results import LintResult
 from zero.output.formats.common import each
+
+TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (mypy and ruff read it alike)
+if TYPE_CHECKING:
+    from typing import TextIO
 
 
 def render_json_lines(results: Iterable[LintResult], stream: TextIO) -> None:

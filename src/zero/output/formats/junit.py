@@ -3,11 +3,14 @@
 from __future__ import annotations
 
 from collections.abc import Sequence
-from typing import TextIO
 
 from zero.diagnostics import Severity
 from zero.engine.results import LintResult
 from zero.output.text import printable
+
+TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (mypy and ruff read it alike)
+if TYPE_CHECKING:
+    from typing import TextIO
 
 
 def render_junit(results: Sequence[LintResult], stream: TextIO, fail_on: Severity = Severity.ERROR) -> None:

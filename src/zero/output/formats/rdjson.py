@@ -5,13 +5,16 @@ from __future__ import annotations
 import json
 import urllib.parse
 from collections.abc import Sequence
-from typing import TextIO
 
 from zero.diagnostics import Severity, Span
 from zero.engine.results import LintResult
 from zero.output.formats import rule_docs_template
 from zero.output.formats.common import repo_path
 from zero.output.text import printable
+
+TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (mypy and ruff read it alike)
+if TYPE_CHECKING:
+    from typing import TextIO
 
 
 def _utf8_column(text: str | None, column: int) -> int:

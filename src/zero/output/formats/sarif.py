@@ -7,7 +7,6 @@ import os
 import urllib.parse
 from collections.abc import Sequence
 from pathlib import Path
-from typing import TextIO
 
 from zero import __version__
 from zero.diagnostics import Severity, Span
@@ -16,6 +15,10 @@ from zero.output.formats import information_uri, rule_docs_template
 from zero.output.formats.common import each, fingerprints, repo_path
 from zero.output.text import printable
 from zero.rules import RULES
+
+TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (mypy and ruff read it alike)
+if TYPE_CHECKING:
+    from typing import TextIO
 
 # The name of zero's own fingerprint among a SARIF result's ``partialFingerprints``.
 SARIF_FINGERPRINT = "zeroKeyHash/v1"
