@@ -247,13 +247,21 @@ def test_short_names_are_what_tells_machines_apart() -> None:
 # ----------------------------------------------------------------------------- parallel, formats
 
 
-def test_jobs_give_the_same_result_in_the_same_order(tmp_path: Path, registry: Registry) -> None:
+def test_jobs_give_the_same_result_in_the_same_order(tmp_path: Path, registry: Registry,
+                                                     monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.setattr("zero.engine.fleet.PARALLEL_MIN_MACHINES", 2)  # two processes for these 24
     golden, fleet, ms = build_fleet(tmp_path, "machine-clean", 24)
     for i in (3, 17, 20):
         set_value(axis(ms[i], "achse_x.lis"), "kenngr.swe_pos", str(16000000 + i % 2))
     axis(ms[9], "achse_c.lis").unlink()
     one = drift_of(registry, golden, [fleet], jobs=1)
+    import zero.engine.fleet as fleet_module
+
+    here: list[str] = []  # the machines compared in this process (a worker counts in its own copy)
+    compare = fleet_module.compare_machine
+    monkeypatch.setattr(fleet_module, "compare_machine", lambda g, s: here.append(s) or compare(g, s))
     two = drift_of(registry, golden, [fleet], jobs=2)
+    assert here == []  # every machine compared by the workers
     assert fleet_json(one) == fleet_json(two)
     assert [v.machines for v in one.params[0].values] == [[str(ms[3]), str(ms[17])], [str(ms[20])]]
     assert one.lists[0].machines == [str(ms[9])]
