@@ -5,6 +5,7 @@ in the order the list first sets it, an alias and its documented key as one para
 from __future__ import annotations
 
 from hypothesis import given, settings
+from hypothesis import strategies as st
 
 from conftest import builtin_registry, generated_lists
 from zero.catalog.values import ListValues, Resolved, bind, read_value
@@ -78,3 +79,24 @@ def test_generated_lists_bind_as_entry_by_entry(data: bytes) -> None:
     doc = tokenize(data, "t.lis")
     _same(ListValues.of(doc, builtin_registry()))
     _same(ListValues.of(tokenize(data, "t.lis"), builtin_registry(), "ZERO"))
+
+
+@settings(max_examples=200, deadline=None)
+@given(st.lists(st.integers(0, 7), min_size=1, max_size=9), st.integers(4096, 4300), st.lists(
+    st.tuples(st.integers(0, 5000), st.integers(0, 9)), max_size=2))
+def test_rows_by_shape_of_a_repeating_table_are_those_of_one_pass(period: list[int], n: int,
+                                                                 changes: list[tuple[int, int]]) -> None:
+    """A big list repeating one sequence of shapes (a tool table) gets each shape's rows as ranges; the
+    same rows as one pass over them, also where the sequence repeats a shape or one row breaks it."""
+    from array import array
+
+    from zero.catalog.values import _rows_by_shape
+
+    shape = array("i", (period * (n // len(period) + 1))[:n])
+    for at, sid in changes:
+        if at < n:
+            shape[at] = sid
+    expected: list[list[int]] = [[] for _ in range(10)]
+    for row, sid in enumerate(shape):
+        expected[sid].append(row)
+    assert _rows_by_shape(shape, 10) == expected

@@ -13,6 +13,7 @@ from __future__ import annotations
 import math
 import re
 import sys
+from array import array
 from collections.abc import Iterator, Mapping, Sequence
 from itertools import chain
 from typing import Any, TypeVar, overload
@@ -296,6 +297,30 @@ _NO_KEY: tuple[str, tuple[int, ...], bool] = ("", (), False)
 _UNINDEXED: dict[str, tuple[str, tuple[int, ...], bool] | None] = {}
 
 
+def _rows_by_shape(shape: Sequence[int], count: int) -> list[list[int]]:
+    """Shape id -> its rows, in order (``count`` shapes). One pass over the rows; a list that repeats one
+    sequence of distinct shapes (a tool table: every tool writes its parameters in the same order) is
+    recognised by comparing its arrays in C, and each shape's rows are a range."""
+    n = len(shape)
+    if n >= 4096 and isinstance(shape, array):
+        try:
+            period = shape.index(shape[0], 1)
+        except ValueError:
+            period = 0
+        head = shape[:period]
+        whole = n - n % period if period else 0
+        if period and len(set(head)) == period and shape[:whole] == head * (n // period) \
+                and shape[whole:] == head[:n - whole]:
+            out: list[list[int]] = [[] for _ in range(count)]
+            for at, sid in enumerate(head):
+                out[sid] = list(range(at, n, period))
+            return out
+    out = [[] for _ in range(count)]
+    for row, sid in enumerate(shape):  # the one pass over the rows
+        out[sid].append(row)
+    return out
+
+
 def _unindexed(text: str) -> tuple[str, tuple[int, ...], bool] | None:
     """``ListValues.shape_keys``'s entry of a shape without a first index, from its key text."""
     try:
@@ -344,9 +369,7 @@ class ListValues:
         """Bind a document's entries (before ``Ende``); ``kind`` detected when ``None``."""
         cols = doc.columns
         shapes = cols.shapes
-        shape_rows: list[list[int]] = [[] for _ in shapes]
-        for row, shape in enumerate(cols.shape):  # the one pass over the rows
-            shape_rows[shape].append(row)
+        shape_rows = _rows_by_shape(cols.shape, len(shapes))
         pattern_shapes: dict[str, list[int]] = {}
         counts: dict[str, int] = {}
         shape_keys: list[tuple[str, tuple[int, ...], bool]] = []
