@@ -20,7 +20,7 @@ _KEYS = ["wz[1].laenge", "wz[17].kinematic.param[3]", "kenngr.swe_pos", "a", "a[
          "x[00].y", "np_grp[1].achse[2].versch", "Ende", "5abc", "a..b", "a.", "a[1]x", "a]", "k[1", f"w[{'9' * 19}].x",
          "np_grp[0].achse[1]. inaktiv", "#kenngr.x", "# zero: ignore[R005]", "# zero: noqa: S", "# zero: ignore R5"]
 _VALUES = ["1", "-5", "2\x1f", "0x1F", "1.5", "1e3", "P-AXIS-00212.0", "A|B", "A | B", '"q s"', '"open', "WORD",
-           "./x.lis", ""]
+           "./x.lis", "../y", ".5", ".x", ".", ".[1]", ""]
 _COMMENTS = ["", "( P-TOOL-00005 : x", "# c", "/* c */", "plain words", "# noqa", "( noqa: R005 )", "# noqa: Q9",
              "(P-AXIS-00001", "# c\r", "( a | b"]
 _GAPS = [" ", "\t", "   ", " \t "]

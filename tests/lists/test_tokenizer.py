@@ -3,10 +3,23 @@
 from __future__ import annotations
 
 import pytest
+from hypothesis import example, given, settings
+from hypothesis import strategies as st
 
 from zero.lists.encoding import decode
-from zero.lists.model import HUGE_INDEX, Blank, Comment, CommentStyle, End, Entry, Invalid, ValueKind, parse_key
-from zero.lists.tokenizer import tokenize
+from zero.lists.model import (
+    HUGE_INDEX,
+    Blank,
+    Comment,
+    CommentStyle,
+    End,
+    Entry,
+    Invalid,
+    Problem,
+    ValueKind,
+    parse_key,
+)
+from zero.lists.tokenizer import scan_entry, scan_line, tokenize
 
 
 def one(line: str) -> Entry:
@@ -208,3 +221,23 @@ def test_a_short_crlf_list_is_text_not_binary() -> None:
     assert "binary" in [p.kind for p in stray.problems]  # real control characters still count
     one = tokenize(b"a 1\r\nb 1 # x\x01y\r\n" + b"kenngr.swe_pos 0\r\n" * 10)
     assert [p.kind for p in one.problems] == ["control-char"]
+
+
+@settings(max_examples=300, deadline=None)
+@given(st.text(alphabet="#*-=_aZ9 .[]\t|ä", max_size=12))
+@example("#****")
+@example("#* .x 1")
+@example("#-a 1")
+def test_a_hash_comment_reads_as_its_entry_would(rest: str) -> None:
+    """`#` and then no key (`#****`) is a comment without an entry, read at once: what scanning the
+    rest as an entry finds."""
+    s = "#" + rest
+    problems: list[Problem] = []
+    item = scan_line(s, 3, problems)
+    if rest[:1] in ("", " ", "\t"):
+        return
+    inner = scan_entry(s, 1, 3, None)  # the careful reading of what follows the `#`
+    commented = inner if type(inner) is Entry and inner.value else None
+    assert type(item) is Comment and item.text == s
+    assert (item.commented_out is None) == (commented is None)
+    assert problems == [Problem("hash-no-space", 3, 0, 1, "entry" if commented is not None else "")]

@@ -48,6 +48,8 @@ BINARY_SHARE = 0.05
 BINARY_MIN_CONTROLS = 8
 _WS = " \t"
 _PLAIN_COMMENT = ("# ", "#\t")
+# What a key starts with (parse_key): after a `#`, anything else is no commented-out entry.
+_KEY_START = frozenset("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789_")
 
 _INT_RE = re.compile(r"[+-]?[0-9]+")
 _HEX_RE = re.compile(r"[+-]?0[xX][0-9A-Fa-f]+")
@@ -60,14 +62,15 @@ _KEY_CONTINUATION_RE = re.compile(
 )
 _MAX_KEY_JOINS = 8
 # The common line, matched in one go: `KEY VALUE [COMMENT]` where nothing needs the
-# careful scanner (no quotes, flags, key continuations or `Ende`). Whatever this does
+# careful scanner (no quotes, flags, key continuations or `Ende`; a value may start with a `.` that
+# no name follows, `./listen/x.lis`, `.5`: that is no key continuation). Whatever this does
 # not match goes to scan_line, which gives the same result for what it does match.
 # Groups: 1 the key, as 2 its names up to the first index, 3 that index (if any) and 4 the rest (what
 # model.scanned_key reads); 5 the value; 6 the comment.
 _FAST_ENTRY_RE = re.compile(
     r"[ \t]*(([A-Za-z_][A-Za-z0-9_]*(?:\.[A-Za-z0-9_]+)*)(?:\[([0-9]+)\])?"
     r"((?:\[[0-9]+\])*(?:\.[A-Za-z0-9_]+(?:\[[0-9]+\])*)*))"
-    r"[ \t]+([^\s\"|.\[\]][^\s|]*)(?:[ \t]+([^\s|].*)|[ \t]*)\Z",
+    r"[ \t]+((?:[^\s\"|.\[\]]|\.(?=[./0-9]))[^\s|]*)(?:[ \t]+([^\s|].*)|[ \t]*)\Z",
     re.DOTALL)
 _KIND_RE = re.compile(
     r"(?P<int>[+-]?[0-9]+)|(?P<hex>[+-]?0[xX][0-9A-Fa-f]+)|(?P<ref>P-[A-Z]{4}-[0-9]{5}(?:\.[0-9]+)?)"
@@ -207,6 +210,9 @@ def scan_line(s: str, line: int, problems: list[Problem]) -> Item:
     if s[i] == "#":
         if i + 1 >= n or s[i + 1] in _WS:
             return Comment(line, s)
+        if s[i + 1] not in _KEY_START:  # `#****`: no key after the `#` (what scan_entry would find, at once)
+            problems.append(Problem("hash-no-space", line, i, i + 1, ""))
+            return Comment(line, s, None)
         inner = scan_entry(s, i + 1, line, None)
         commented = inner if type(inner) is Entry and inner.value else None
         problems.append(
@@ -307,13 +313,13 @@ def split_lines(text: str) -> tuple[list[str], list[str]]:
 # else 6 the line.
 _ROW_RE = re.compile(
     r"(?:[ \t]*([A-Za-z_][A-Za-z0-9_.]*)(?:\[(0|[1-9][0-9]{0,17})(\][A-Za-z0-9_.\[\]]*))?"
-    r"[ \t]+([^\s\"|.\[\]][^\s|]*)(?:[ \t]+([^\s|][^\r\n]*)|[ \t]*)(?:\r?(?=\n)|\Z)|([^\n]*))\n?")
+    r"[ \t]+((?:[^\s\"|.\[\]]|\.(?=[./0-9]))[^\s|]*)(?:[ \t]+([^\s|][^\r\n]*)|[ \t]*)(?:\r?(?=\n)|\Z)|([^\n]*))\n?")
 # _ROW_RE with the whitespace before the key, between key and value and before the comment as groups 1, 5
 # and 7 (names 2, first index 3, rest 4, value 6, comment 8, the line 9): where each part of a row starts,
 # kept as widths so that an entry is built from the columns without its line matched again.
 _ROW_AT_RE = re.compile(
     r"(?:([ \t]*)([A-Za-z_][A-Za-z0-9_.]*)(?:\[(0|[1-9][0-9]{0,17})(\][A-Za-z0-9_.\[\]]*))?"
-    r"([ \t]+)([^\s\"|.\[\]][^\s|]*)(?:([ \t]+)([^\s|][^\r\n]*)|[ \t]*)(?:\r?(?=\n)|\Z)|([^\n]*))\n?")
+    r"([ \t]+)((?:[^\s\"|.\[\]]|\.(?=[./0-9]))[^\s|]*)(?:([ \t]+)([^\s|][^\r\n]*)|[ \t]*)(?:\r?(?=\n)|\Z)|([^\n]*))\n?")
 # The patterns a text is read with, by (bytes, a \r in the text): made on first use (start-up).
 _ROW_PATTERNS: dict[tuple[bool, bool], tuple[re.Pattern[Any], re.Pattern[Any]]] = {(False, True): (_ROW_RE, _ROW_AT_RE)}
 
