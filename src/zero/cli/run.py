@@ -13,7 +13,6 @@ import sys
 from collections.abc import Callable, Iterable, Iterator, Sequence
 from pathlib import Path
 
-from zero.catalog.registry import KINDS, Registry, load_registry
 from zero.cli import exits
 from zero.diagnostics import Severity
 from zero.engine.commands import Echo, LintRequest, parse_kind, run_lint
@@ -27,6 +26,7 @@ TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (mypy and
 if TYPE_CHECKING:  # start-up: the fleet only for zero diff --fleet
     from typing import TextIO
 
+    from zero.catalog.registry import Registry
     from zero.engine.fleet import FleetRequest
     from zero.engine.project import Registries
 
@@ -65,6 +65,8 @@ class RegistryCache:
     def __call__(self, desc: Path | None) -> Registry:
         registry = self._loaded.get(desc)
         if registry is None:
+            from zero.catalog.registry import load_registry  # start-up: a cached run loads no catalogue
+
             registry = self._loaded[desc] = load_registry(desc)
         return registry
 
@@ -101,6 +103,8 @@ def _discard(text: str) -> None:
 
 def kind_names() -> dict[str, str]:
     """Every list kind by its name, with what it is (for messages and shell completion)."""
+    from zero.catalog.registry import KINDS  # start-up: only for messages and shell completion
+
     return {name: what for name, what in KINDS.values()}
 
 

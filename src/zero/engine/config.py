@@ -21,7 +21,6 @@ import re
 from collections.abc import Callable, Iterator
 from pathlib import Path
 
-from zero.catalog.registry import KINDS, kind_from_name
 from zero.diagnostics import Severity
 from zero.engine.results import LintOptions
 from zero.engine.selection import known_code, layered_selection, rule_table
@@ -514,6 +513,8 @@ def _read_kind(r: _Reading, value: Any) -> None:
     pairs = []
     for glob, name in r.table_of("kind", value, "glob = kind").items():
         r.globs(glob, [glob], ("kind",))
+        from zero.catalog.registry import kind_from_name  # start-up: only a configuration that names kinds
+
         k = kind_from_name(name) if isinstance(name, str) else None
         if k is None:
             raise r.fail(glob, f"{name!r} is not a list kind (zero, axis, channel, ...)", ("kind",))
@@ -576,7 +577,8 @@ _CODES = {"type": "array", "items": _CODE}
 _GLOBS = {"type": "array", "items": {"type": "string", "minLength": 1}}
 _CODE_TABLE = {"type": "object", "additionalProperties": _CODES}
 _PATH = {"type": "string", "minLength": 1}
-_KIND_NAMES = [*(name for name, _ in KINDS.values()), *KINDS]  # `zero` or `ZERO`
+# `zero` or `ZERO`: the catalogue's kinds, filled in by config_schema() (a run imports the catalogue only to lint)
+_KIND_NAMES: list[str] = []
 
 OPTIONS: tuple[ConfigOption, ...] = (
     ConfigOption(
@@ -683,6 +685,10 @@ SECTIONS = {"rules": "Which rules run", "files": "Which files, and how they are 
 
 def config_schema() -> dict[str, Any]:
     """The JSON Schema of ``zero.toml`` and of ``[tool.zero]`` (``zero.schema.json``), from :data:`OPTIONS`."""
+    if not _KIND_NAMES:
+        from zero.catalog.registry import KINDS  # start-up: only for the schema
+
+        _KIND_NAMES.extend([*(name for name, _ in KINDS.values()), *KINDS])
     import tomllib  # start-up: only for the schema
 
     props = {}

@@ -36,7 +36,6 @@ from collections import OrderedDict
 from collections.abc import Callable, Hashable, Sequence
 from pathlib import Path
 
-from zero.catalog.registry import KINDS, Registry
 from zero.engine.config import Config, ConfigFinder, is_inline
 from zero.engine.results import LintOptions
 from zero.errors import ZeroError
@@ -45,10 +44,11 @@ from zero.records import field, record
 
 TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (mypy and ruff read it alike)
 if TYPE_CHECKING:  # start-up: `zero lint` of lists loads no machine model
+    from zero.catalog.registry import Registry
     from zero.lists.model import Document
     from zero.machine.model import Machine
 
-Registries = Callable[[Path | None], Registry]
+Registries = Callable[[Path | None], "Registry"]  # (a string: the catalogue is imported where it is loaded)
 Reader = Callable[[Path], bytes]
 Signature = tuple[tuple[str, int, int, str | None], ...]  # path, mtime, size, declared codec
 Layout = tuple[dict[str, Path], Path | None, tuple[tuple[str, Path], ...]]  # overrides, working directory, roots
@@ -335,6 +335,8 @@ def require_startup(machine: Machine, registry: Registry) -> Machine:
     kind = registry.kind_of(doc)
     if not machine.named:
         if kind not in (None, "STUP"):
+            from zero.catalog.registry import KINDS  # start-up: only for this message
+
             raise ZeroError(f"not a start-up list: it reads as a {KINDS[kind][1]} and names no other list; "
                             "give the start-up list (hochlauf.lis)", doc.path)
         raise ZeroError("names no list of a machine (no `achs_mds[i]`, `sda_mds[c]`, ...): not a start-up "
