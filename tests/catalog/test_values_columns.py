@@ -4,7 +4,7 @@ in the order the list first sets it, an alias and its documented key as one para
 
 from __future__ import annotations
 
-from hypothesis import given, settings
+from hypothesis import example, given, settings
 from hypothesis import strategies as st
 
 from conftest import builtin_registry, generated_lists
@@ -100,3 +100,21 @@ def test_rows_by_shape_of_a_repeating_table_are_those_of_one_pass(period: list[i
     for row, sid in enumerate(shape):
         expected[sid].append(row)
     assert _rows_by_shape(shape, 10) == expected
+
+
+@settings(max_examples=200, deadline=None)
+@given(st.integers(0, 50), st.integers(1, 7), st.integers(0, 200), st.sets(st.integers(0, 2000), max_size=3),
+       st.sets(st.integers(1, 198), max_size=2))
+@example(0, 2, 100, {51}, {30})  # one row moved: as many rows, the same ends, not evenly spaced
+def test_a_column_taken_at_evenly_spaced_rows_is_the_rows_values(start: int, step: int, n: int,
+                                                                  extra: set[int], dropped: set[int]) -> None:
+    """take: a slice where the rows are evenly spaced, the values of exactly those rows either way (rows
+    added between them, or a gap, break the spacing)."""
+    from array import array
+
+    from zero.catalog.values import take
+
+    column = array("i", range(3000, 0, -1))
+    spaced = range(start, start + step * n, step)
+    rows = sorted({*(r for i, r in enumerate(spaced) if i not in dropped), *extra})
+    assert list(take(column, rows)) == [column[r] for r in rows]

@@ -25,7 +25,7 @@ from zero.lists.model import HUGE_INDEX, MAX_INDEX_DIGITS, Document, Entry, Valu
 from zero.records import field, record
 
 __all__ = ["NO_DEFAULT", "ListValues", "Resolved", "Slot", "Value", "bind", "canonical_key", "default_number",
-           "parse_int", "read_text", "read_value", "slot_of", "spec_of"]
+           "parse_int", "read_text", "read_value", "slot_of", "spec_of", "take"]
 
 # One element of a parameter: its ID and indices (``("P-AXIS-00178", ())``); an entry whose key the
 # catalogue does not know is its key pattern behind a `?` (``("?a.b[]", (1,))``). `[01]` and `[1]`
@@ -321,6 +321,18 @@ def _rows_by_shape(shape: Sequence[int], count: int) -> list[list[int]]:
     return out
 
 
+def take(column: Sequence[int], rows: list[int]) -> Sequence[int]:
+    """``column``'s values at ``rows`` (increasing), in order: a slice where the rows are evenly spaced (a
+    shape's rows in a repeating table), taken in C; else one look-up per row."""
+    n = len(rows)
+    if n >= 64 and isinstance(column, array):
+        start, stop = rows[0], rows[-1]
+        step = rows[1] - start
+        if step > 0 and stop == start + step * (n - 1) and rows == list(range(start, stop + 1, step)):
+            return column[start:stop + 1:step]
+    return list(map(column.__getitem__, rows))
+
+
 def _unindexed(text: str) -> tuple[str, tuple[int, ...], bool] | None:
     """``ListValues.shape_keys``'s entry of a shape without a first index, from its key text."""
     try:
@@ -444,9 +456,9 @@ class ListValues:
             rows = [r for r in rows if value[r] not in valueless]
         return rows
 
-    def value_ids_at(self, rows: list[int]) -> list[int]:
+    def value_ids_at(self, rows: list[int]) -> Sequence[int]:
         """The value ids (``doc.columns.values``, ``kinds``) of ``rows``, in order."""
-        return list(map(self.doc.columns.value.__getitem__, rows))
+        return take(self.doc.columns.value, rows)
 
     def indices_at(self, rows: list[int]) -> list[tuple[int, ...]]:
         """The key indices of ``rows`` (rows of a key), in order."""

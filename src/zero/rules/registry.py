@@ -12,7 +12,7 @@ from zero.catalog.evidence import Claim, claim, drive_types
 from zero.catalog.ids import SOFT_LIMITS
 from zero.catalog.ranges import TYPE_LIMITS, Bounds, Number, Range, Ref, format_number
 from zero.catalog.registry import BUILTIN_SOURCE, KINDS, ParamSpec, Registry
-from zero.catalog.values import Resolved, Value, default_number
+from zero.catalog.values import Resolved, Value, default_number, take
 from zero.diagnostics import Diagnostic, Edit, Fix, Related, Span
 from zero.errors import ZeroError
 from zero.lists.model import HUGE_INDEX, Comment, Entry, ValueKind, format_key
@@ -164,7 +164,7 @@ def check_keys(ctx: Context) -> Iterator[Diagnostic]:
                 if not low <= cols.first[group[0]] < end:
                     rows.append(group[0])
                 continue
-            firsts = list(map(cols.first.__getitem__, group))
+            firsts = take(cols.first, group)
             if min(firsts) < low or max(firsts) >= end:
                 rows.extend(r for r, first in zip(group, firsts, strict=True) if not low <= first < end)
     rows.sort()
@@ -1085,7 +1085,7 @@ def check_duplicates(ctx: Context) -> Iterator[Diagnostic]:
         if all(indexed for _, _, indexed in kinds) and len({indices for _, indices, _ in kinds}) == len(kinds):
             for shape in shapes:
                 group = ctx.shape_rows[shape]
-                if len(group) > 1 and len(set(map(cols.first.__getitem__, group))) < len(group):
+                if len(group) > 1 and len(set(take(cols.first, group))) < len(group):
                     rows.extend(group)
             continue
         group = ctx.groups[pattern]
@@ -1156,12 +1156,10 @@ def check_annotations(ctx: Context) -> Iterator[Diagnostic]:
                 if note is not None and note != pid:
                     rows.append(group[0])
                 continue
-            found = list(map(notes.__getitem__, map(comment.__getitem__, group)))
-            named = set(found)
-            named.discard(None)
-            named.discard(pid)
-            if named:
-                rows.extend(r for r, note in zip(group, found, strict=True) if note in named)
+            cids = take(comment, group)
+            naming = {cid for cid in set(cids) if notes[cid] is not None and notes[cid] != pid}
+            if naming:  # comments that name another parameter
+                rows.extend(r for r, cid in zip(group, cids, strict=True) if cid in naming)
     if ctx.valueless:  # what `resolved` holds: entries with a value
         rows = [r for r in rows if cols.value[r] not in ctx.valueless]
     rows.sort()
