@@ -223,14 +223,27 @@ def test_a_short_crlf_list_is_text_not_binary() -> None:
     assert [p.kind for p in one.problems] == ["control-char"]
 
 
-@settings(max_examples=300, deadline=None)
-@given(st.text(alphabet="#*-=_aZ9 .[]\t|ä", max_size=12))
+_COMMENTED = st.one_of(
+    st.text(alphabet="#*-=_aZ9 .[]\t|ä", max_size=12),
+    st.tuples(st.sampled_from(["a", "wz[1].x", "k[01]", "Ende", "a.b[2][3]", "_x", "9z", "a]"]),
+              st.sampled_from([" ", "\t", "  "]),
+              st.sampled_from(["1", "-2", "0x1F", "1.5", "./p", ".5", ".x", "A | B", "A|B", '"q s"', "W", ""]),
+              st.sampled_from(["", " # c", "  ( P-TOOL-00005 : x", " plain", " |x"])).map("".join))
+
+
+def _fields(obj: object) -> dict[str, object]:
+    return {k: getattr(obj, k) for k in obj.__slots__}  # type: ignore[attr-defined]
+
+
+@settings(max_examples=400, deadline=None)
+@given(_COMMENTED)
 @example("#****")
 @example("#* .x 1")
 @example("#-a 1")
+@example("wz[1].x  5 ( P-TOOL-00005 : x")
 def test_a_hash_comment_reads_as_its_entry_would(rest: str) -> None:
-    """`#` and then no key (`#****`) is a comment without an entry, read at once: what scanning the
-    rest as an entry finds."""
+    """`#` and then no key (`#****`) is a comment without an entry, read at once; `#key value` holds the
+    entry that scanning the rest as an entry finds."""
     s = "#" + rest
     problems: list[Problem] = []
     item = scan_line(s, 3, problems)
@@ -240,4 +253,6 @@ def test_a_hash_comment_reads_as_its_entry_would(rest: str) -> None:
     commented = inner if type(inner) is Entry and inner.value else None
     assert type(item) is Comment and item.text == s
     assert (item.commented_out is None) == (commented is None)
+    if commented is not None:
+        assert item.commented_out is not None and _fields(item.commented_out) == _fields(commented)
     assert problems == [Problem("hash-no-space", 3, 0, 1, "entry" if commented is not None else "")]

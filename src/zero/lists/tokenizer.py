@@ -213,7 +213,11 @@ def scan_line(s: str, line: int, problems: list[Problem]) -> Item:
         if s[i + 1] not in _KEY_START:  # `#****`: no key after the `#` (what scan_entry would find, at once)
             problems.append(Problem("hash-no-space", line, i, i + 1, ""))
             return Comment(line, s, None)
-        inner = scan_entry(s, i + 1, line, None)
+        m = _FAST_ENTRY_RE.match(s, i + 1)  # `#key value`: the common commented-out entry, matched in one go
+        if m is not None and m.group(1) != END_KEYWORD:
+            inner: Item = _fast_entry(m, line, m.group(5), _value_kind(m.group(5)), None)
+        else:
+            inner = scan_entry(s, i + 1, line, None)
         commented = inner if type(inner) is Entry and inner.value else None
         problems.append(
             Problem("hash-no-space", line, i, i + 1, "entry" if commented is not None else "")
