@@ -99,7 +99,7 @@ def test_rows_by_shape_of_a_repeating_table_are_those_of_one_pass(period: list[i
     expected: list[list[int]] = [[] for _ in range(10)]
     for row, sid in enumerate(shape):
         expected[sid].append(row)
-    assert _rows_by_shape(shape, 10) == expected
+    assert [list(rows) for rows in _rows_by_shape(shape, 10)] == expected
 
 
 @settings(max_examples=200, deadline=None)

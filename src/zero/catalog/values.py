@@ -297,10 +297,10 @@ _NO_KEY: tuple[str, tuple[int, ...], bool] = ("", (), False)
 _UNINDEXED: dict[str, tuple[str, tuple[int, ...], bool] | None] = {}
 
 
-def _rows_by_shape(shape: Sequence[int], count: int) -> list[list[int]]:
+def _rows_by_shape(shape: Sequence[int], count: int) -> list[Sequence[int]]:
     """Shape id -> its rows, in order (``count`` shapes). One pass over the rows; a list that repeats one
     sequence of distinct shapes (a tool table: every tool writes its parameters in the same order) is
-    recognised by comparing its arrays in C, and each shape's rows are a range."""
+    recognised by comparing its arrays in C, and each shape's rows are a ``range`` (no int per row held)."""
     n = len(shape)
     if n >= 4096 and isinstance(shape, array):
         try:
@@ -311,19 +311,21 @@ def _rows_by_shape(shape: Sequence[int], count: int) -> list[list[int]]:
         whole = n - n % period if period else 0
         if period and len(set(head)) == period and shape[:whole] == head * (n // period) \
                 and shape[whole:] == head[:n - whole]:
-            out: list[list[int]] = [[] for _ in range(count)]
+            ranges: list[Sequence[int]] = [[] for _ in range(count)]
             for at, sid in enumerate(head):
-                out[sid] = list(range(at, n, period))
-            return out
-    out = [[] for _ in range(count)]
+                ranges[sid] = range(at, n, period)
+            return ranges
+    out: list[list[int]] = [[] for _ in range(count)]
     for row, sid in enumerate(shape):  # the one pass over the rows
         out[sid].append(row)
-    return out
+    return list(out)
 
 
-def take(column: Sequence[int], rows: list[int]) -> Sequence[int]:
+def take(column: Sequence[int], rows: Sequence[int]) -> Sequence[int]:
     """``column``'s values at ``rows`` (increasing), in order: a slice where the rows are evenly spaced (a
     shape's rows in a repeating table), taken in C; else one look-up per row."""
+    if type(rows) is range and isinstance(column, array):
+        return column[rows.start:rows.stop:rows.step]
     n = len(rows)
     if n >= 64 and isinstance(column, array):
         start, stop = rows[0], rows[-1]
@@ -362,7 +364,7 @@ class ListValues:
     # where this list sets none
     base: ListValues | None = None
     # shape id (``doc.columns.shapes``) -> its rows, in order; none for a shape of rows without a key
-    shape_rows: list[list[int]] = field(default_factory=list, repr=False, compare=False)
+    shape_rows: list[Sequence[int]] = field(default_factory=list, repr=False, compare=False)
     # shape id -> its key pattern, indices (after the first index where ``indexed``, else all) and indexed
     shape_keys: list[tuple[str, tuple[int, ...], bool]] = field(default_factory=list, repr=False, compare=False)
     # key pattern -> the shapes of its rows (first seen first)
@@ -371,7 +373,7 @@ class ListValues:
     bound: dict[str, tuple[ParamSpec, bool] | None] = field(default_factory=dict, repr=False, compare=False)
     # the value ids (``doc.columns.values``) of values the controller does not read (``value_kind`` None)
     valueless: frozenset[int] = field(default=frozenset(), repr=False, compare=False)
-    _groups: dict[str, list[int]] | None = field(default=None, repr=False, compare=False)
+    _groups: dict[str, Sequence[int]] | None = field(default=None, repr=False, compare=False)
     _entries: list[Entry] | None = field(default=None, repr=False, compare=False)
     _resolved: _Resolved | None = field(default=None, repr=False, compare=False)
     _by_id: Mapping[str, dict[tuple[int, ...], Resolved]] | None = field(default=None, repr=False, compare=False)
@@ -394,7 +396,7 @@ class ListValues:
                 got = _unindexed(sh.head + sh.tail)
                 if got is None:  # rows without a key
                     got = _NO_KEY
-                    rows.clear()
+                    rows = shape_rows[len(shape_keys)] = []
             shape_keys.append(got)
             if not rows:
                 continue
@@ -438,7 +440,7 @@ class ListValues:
         return self.doc.entry_at(row)
 
     @property
-    def groups(self) -> dict[str, list[int]]:
+    def groups(self) -> dict[str, Sequence[int]]:
         """Key pattern -> the rows of its entries, in order (the patterns first seen first)."""
         got = self._groups
         if got is None:
@@ -447,7 +449,7 @@ class ListValues:
                 rows.__getitem__, ids))) for p, ids in self.pattern_shapes.items()}
         return got
 
-    def value_rows(self, pattern: str) -> list[int]:
+    def value_rows(self, pattern: str) -> Sequence[int]:
         """The rows of ``pattern`` whose entries have a value the controller reads (what ``resolved``
         holds of it), in order."""
         rows = self.groups[pattern]
@@ -456,11 +458,11 @@ class ListValues:
             rows = [r for r in rows if value[r] not in valueless]
         return rows
 
-    def value_ids_at(self, rows: list[int]) -> Sequence[int]:
+    def value_ids_at(self, rows: Sequence[int]) -> Sequence[int]:
         """The value ids (``doc.columns.values``, ``kinds``) of ``rows``, in order."""
         return take(self.doc.columns.value, rows)
 
-    def indices_at(self, rows: list[int]) -> list[tuple[int, ...]]:
+    def indices_at(self, rows: Sequence[int]) -> list[tuple[int, ...]]:
         """The key indices of ``rows`` (rows of a key), in order."""
         cols, keys = self.doc.columns, self.shape_keys
         out = []
@@ -469,7 +471,7 @@ class ListValues:
             out.append((cols.first[row], *indices) if indexed else indices)
         return out
 
-    def annotations_at(self, rows: list[int]) -> list[str | None]:
+    def annotations_at(self, rows: Sequence[int]) -> list[str | None]:
         """The `( P-XXXX-nnnnn` annotations of ``rows`` (``None``: none), in order."""
         cols = self.doc.columns
         notes = [*cols.notes, None]  # comment id -1: no comment
@@ -685,7 +687,7 @@ class _ById(Mapping[str, dict[tuple[int, ...], Resolved]]):
                 patterns.setdefault(hit[0].id, []).append(pattern)
         self._patterns = patterns
 
-    def _rows(self, pid: str) -> list[int]:
+    def _rows(self, pid: str) -> Sequence[int]:
         values = self._values
         patterns = self._patterns.get(pid, ())
         if len(patterns) == 1:
