@@ -17,9 +17,9 @@ SOURCES: tuple[tuple[str, int], ...] = (
     ('machine.py', 55088),
     ('meaning.py', 13136),
     ('program.py', 31394),
-    ('registry.py', 58208),
-    ('startup.py', 19783),
-    ('suppress.py', 11657),
+    ('registry.py', 59629),
+    ('startup.py', 19905),
+    ('suppress.py', 11728),
     ('syntax.py', 15953),
     ('update.py', 4430),
 )
