@@ -191,14 +191,19 @@ class Config:
                 return None
         parent, name = os.path.split(os.fspath(file))  # a Path's text: file.parent and file.name
         own = os.fspath(self.path) if self.path is not None else None
-        folder = _resolved_folder(parent or ".")
-        root = _resolved_folder((os.path.dirname(own) or ".") if own is not None else _cwd())
-        if folder == root:
+        memo = _RESOLVED[-1] if _RESOLVED else {}
+        key = f"\0rel\0{own}\0{parent}"  # the files of a folder: its place below the configuration's, once
+        rel = memo.get(key)
+        if rel is None:
+            folder = _resolved_folder(parent or ".")
+            root = _resolved_folder((os.path.dirname(own) or ".") if own is not None else _cwd())
+            head = root if root.endswith("/") else root + "/"
+            rel = memo[key] = "" if folder == root else folder[len(head):] if folder.startswith(head) else "\0"
+        if not rel:
             return name if name else "."
-        head = root if root.endswith("/") else root + "/"
-        if not folder.startswith(head):
+        if rel == "\0":  # outside it
             return None
-        return folder[len(head):] + "/" + name if name else folder[len(head):]
+        return rel + "/" + name if name else rel
 
     def _matches(self, globs: tuple[str, ...], file: Path) -> bool:
         """gitignore's meaning: a pattern with a `/` is anchored at the configuration's
