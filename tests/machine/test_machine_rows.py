@@ -217,3 +217,15 @@ def test_the_lists_kept_are_bounded(tmp_path: Path, corpus: Path, registry: Regi
     SHARED.clear()
     load_machine(first, registry)
     assert not SHARED.kept and SHARED.chars == 0
+
+
+def test_the_row_keys_kept_are_those_of_small_lists(registry: Registry) -> None:
+    from zero.machine import effective
+
+    effective._keyed.clear()
+    small = ListValues.of(tokenize(b"kenngr.swe_pos 5\n", "s.lis"), registry, "AXIS")
+    big = ListValues.of(tokenize(b"".join(b"wz[%d].laenge 1\n" % i for i in range(effective._KEYED_ROWS + 1)),
+                                 "t.lis"), registry, "TOOL")
+    assert own_entries(small).texts is own_entries(small).texts  # worked out once
+    assert own_entries(big).texts is not own_entries(big).texts  # a big list's keys are not kept
+    assert len(effective._keyed) == 1

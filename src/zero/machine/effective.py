@@ -294,6 +294,7 @@ def row_keys(values: ListValues) -> list[str]:
 # content (zero.machine.model.SHARED: a fleet's copies) share their columns, and so these. The dicts
 # are never changed once made (Rows.over makes new ones).
 _KEYED_MAX = 64
+_KEYED_ROWS = 16_384
 _keyed: dict[tuple[int, str | None, int], tuple[Columns, Registry, dict[str, str], dict[str, int]]] = {}
 
 
@@ -308,9 +309,10 @@ def own_entries(values: ListValues) -> Rows:
     keys = row_keys(values)
     texts = dict(zip(keys, map(cols.values.__getitem__, cols.value), strict=True))
     rows = dict(zip(keys, range(len(keys)), strict=True))
-    if len(_keyed) >= _KEYED_MAX:
-        del _keyed[next(iter(_keyed))]
-    _keyed[slot] = (cols, values.registry, texts, rows)
+    if len(keys) <= _KEYED_ROWS:  # a big list (a tool list read by diff) is not kept
+        if len(_keyed) >= _KEYED_MAX:
+            del _keyed[next(iter(_keyed))]
+        _keyed[slot] = (cols, values.registry, texts, rows)
     return Rows(texts, ((values.doc, rows),))
 
 
