@@ -311,38 +311,38 @@ def split_lines(text: str) -> tuple[list[str], list[str]]:
     return lines, endings
 
 
-# The common entry line over the whole text, one match per line (the lines _FAST_ENTRY_RE would match,
-# or fewer): the key as 1 its names up to the first index, 2 that index (no leading zero) and 3 the rest
-# from the index's `]` on (loose here: checked once per distinct key shape); 4 the value; 5 the comment;
-# else 6 the line.
-_ROW_RE = re.compile(
-    r"(?:[ \t]*([A-Za-z_][A-Za-z0-9_.]*)(?:\[(0|[1-9][0-9]{0,17})(\][A-Za-z0-9_.\[\]]*))?"
+# The common entry line over the whole text (a pattern's source), one match per line (the lines
+# _FAST_ENTRY_RE would match, or fewer): the key as 1 its names up to the first index, 2 that index (no
+# leading zero) and 3 the rest from the index's `]` on (loose here: checked once per distinct key shape);
+# 4 the value; 5 the comment; else 6 the line.
+_ROW = (r"(?:[ \t]*([A-Za-z_][A-Za-z0-9_.]*)(?:\[(0|[1-9][0-9]{0,17})(\][A-Za-z0-9_.\[\]]*))?"
     r"[ \t]+((?:[^\s\"|.\[\]]|\.(?=[./0-9]))[^\s|]*)(?:[ \t]+([^\s|][^\r\n]*)|[ \t]*)(?:\r?(?=\n)|\Z)|([^\n]*))\n?")
-# _ROW_RE with the whitespace before the key, between key and value and before the comment as groups 1, 5
+# _ROW with the whitespace before the key, between key and value and before the comment as groups 1, 5
 # and 7 (names 2, first index 3, rest 4, value 6, comment 8, the line 9): where each part of a row starts,
 # kept as widths so that an entry is built from the columns without its line matched again.
-_ROW_AT_RE = re.compile(
-    r"(?:([ \t]*)([A-Za-z_][A-Za-z0-9_.]*)(?:\[(0|[1-9][0-9]{0,17})(\][A-Za-z0-9_.\[\]]*))?"
+_ROW_AT = (r"(?:([ \t]*)([A-Za-z_][A-Za-z0-9_.]*)(?:\[(0|[1-9][0-9]{0,17})(\][A-Za-z0-9_.\[\]]*))?"
     r"([ \t]+)((?:[^\s\"|.\[\]]|\.(?=[./0-9]))[^\s|]*)(?:([ \t]+)([^\s|][^\r\n]*)|[ \t]*)(?:\r?(?=\n)|\Z)|([^\n]*))\n?")
-# The patterns a text is read with, by (bytes, a \r in the text): made on first use (start-up).
-_ROW_PATTERNS: dict[tuple[bool, bool], tuple[re.Pattern[Any], re.Pattern[Any]]] = {(False, True): (_ROW_RE, _ROW_AT_RE)}
+# The patterns a text is read with, by (bytes, a CR in the text, widths): each compiled when first needed.
+_ROW_PATTERNS: dict[tuple[bool, bool, bool], re.Pattern[Any]] = {}
 
 
-def _row_patterns(binary: bool, crlf: bool) -> tuple[re.Pattern[Any], re.Pattern[Any]]:
-    """_ROW_RE and _ROW_AT_RE for a text, or for the bytes of an ASCII text (``binary``): the same lines and
-    groups. Without a \r in the text (not ``crlf``) the comment runs to the line's end: in C, a scan for the
-    \n, a quarter fewer instructions over a big list than a test of each character against a set. In a bytes
-    pattern ``\\s`` does not match the separators \\x1c-\\x1f, which that of a str pattern does: spelt out."""
-    got = _ROW_PATTERNS.get((binary, crlf))
+def _row_pattern(binary: bool, crlf: bool, widths: bool) -> re.Pattern[Any]:
+    """_ROW (_ROW_AT: ``widths``) for a text, or for the bytes of an ASCII text (``binary``): the same lines
+    and groups. Without a carriage return in the text (not ``crlf``) the comment runs to the line's end: in C,
+    a scan for the line feed, a quarter fewer instructions over a big list than a test of each character
+    against a set. In a bytes pattern the whitespace class does not match the separators 0x1C-0x1F, which that
+    of a str pattern does: spelt out."""
+    got = _ROW_PATTERNS.get((binary, crlf, widths))
     if got is None:
-        sources = [_ROW_RE.pattern, _ROW_AT_RE.pattern]
+        source = _ROW_AT if widths else _ROW
         if not crlf:
-            sources = [p.replace(r"[^\r\n]*", r"[^\n]*").replace(r"(?:\r?(?=\n)|\Z)", r"(?=\n|\Z)") for p in sources]
-        compiled: list[re.Pattern[Any]] = (
-            [re.compile(p.replace(r"\s", r" \t\n\r\f\v\x1c-\x1f").encode("ascii")) for p in sources] if binary
-            else [re.compile(p) for p in sources])
-        got = _ROW_PATTERNS[binary, crlf] = (compiled[0], compiled[1])
+            source = source.replace(r"[^\r\n]*", r"[^\n]*").replace(r"(?:\r?(?=\n)|\Z)", r"(?=\n|\Z)")
+        got = re.compile(source.replace(r"\s", r" \t\n\r\f\v\x1c-\x1f").encode("ascii") if binary else source)
+        _ROW_PATTERNS[binary, crlf, widths] = got
     return got
+
+
+_row_pattern(False, False, False)  # the common list's (no CR, read as text): compiled as it loads
 
 
 _NAME_RE = re.compile(r"[A-Za-z_][A-Za-z0-9_]*(?:\.[A-Za-z0-9_]+)*")
@@ -579,7 +579,7 @@ class _Reader:
         shape_pattern = self.shape_pattern
         binary = self.binary
         nl: Any = b"\n" if binary else "\n"
-        row_re, row_at_re = _row_patterns(binary, (b"\r" if binary else "\r") in text)
+        row_re = _row_pattern(binary, (b"\r" if binary else "\r") in text, cols.widths is not None)
         while pos < n:
             end = text.find(nl, pos + _CHUNK)
             end = n if end < 0 else end + 1
@@ -590,7 +590,7 @@ class _Reader:
                 names, first_texts, tails, value_texts, comment_texts, wholes = zip(*rows, strict=True)
                 leads = key_gaps = comment_gaps = ()
             else:
-                rows = row_at_re.findall(text, pos, end)
+                rows = row_re.findall(text, pos, end)
                 rows.pop()
                 (leads, names, first_texts, tails, key_gaps, value_texts, comment_gaps, comment_texts,
                  wholes) = zip(*rows, strict=True)
