@@ -70,6 +70,15 @@ def parse_size(text: str) -> int:
     return int(m.group(1)) * _UNITS[unit]
 
 
+_OFF = ("", "0", "false", "no", "off")
+
+
+def switched_on(variable: str) -> bool:
+    """Is the environment variable ``variable`` set to anything but ``0``, ``false``, ``no``, ``off`` or
+    nothing (``ZERO_NO_CACHE=1``)?"""
+    return os.environ.get(variable, "").strip().lower() not in _OFF
+
+
 def max_file_bytes() -> int:
     """The largest input zero reads: 256 MiB unless ``$ZERO_MAX_FILE_SIZE`` says otherwise."""
     text = os.environ.get("ZERO_MAX_FILE_SIZE")

@@ -59,7 +59,7 @@ from zero import __version__
 from zero.diagnostics import Diagnostic, Edit, Fix, Related, Severity, Span
 from zero.engine.results import LintOptions, LintResult
 from zero.errors import ZeroError
-from zero.files import max_file_bytes, read_as_is, read_file, write_disposable
+from zero.files import max_file_bytes, read_as_is, read_file, switched_on, write_disposable
 from zero.forms import CONFIG_NAMES, controller_absolute, is_list, is_program, split_part
 from zero.lists.model import Document, Excerpt
 from zero.records import fields
@@ -90,7 +90,6 @@ _TAG = (b"Signature: 8a477f597d28d172789f06886806bc55\n"
         b"# This file is a cache directory tag created by zero.\n"
         b"# For information about cache directory tags see https://bford.info/cachedir/\n")
 _IGNORE = b"# Automatically created by zero.\n*\n"
-_OFF = ("", "0", "false", "no", "off")
 
 # The fields a stored finding has: a record that gains one is not cached until this module keeps it.
 _DIAGNOSTIC_FIELDS = ("code", "severity", "message", "span", "path", "param_id", "fix", "hint", "related",
@@ -100,7 +99,7 @@ _RESULT_FIELDS = ("path", "document", "kind", "diagnostics", "note")
 
 def disabled() -> bool:
     """``ZERO_NO_CACHE`` set to anything but ``0``, ``false``, ``no``, ``off`` or nothing."""
-    return os.environ.get("ZERO_NO_CACHE", "").strip().lower() not in _OFF
+    return switched_on("ZERO_NO_CACHE")
 
 
 def digest(data: bytes) -> bytes:

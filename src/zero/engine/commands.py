@@ -20,7 +20,7 @@ from zero.engine.project import Project, Registries, common_of, open_project
 from zero.engine.results import LintOptions, LintResult, is_unreadable
 from zero.engine.selection import known_code, rule_table
 from zero.errors import ZeroError
-from zero.files import read_file, write_atomic
+from zero.files import read_file, switched_on, write_atomic
 from zero.forms import PROJECT_ROOTS, TWINCAT_ROOT, is_list, is_program, is_update, is_xml, walked_names
 from zero.records import field, record, replace
 
@@ -147,7 +147,7 @@ def _run_lint(request: LintRequest, registries: Registries, echo: Echo,
         raise ZeroError(f"no list files or NC programs found (looked for {walked_names()}, XML files only where "
                         "they hold lists)" + skipped_note(skipped))
     cache = None  # results kept between runs (zero.engine.cache); never for a run that writes or shows fixes
-    if request.cache and not (request.fix or request.show_diff or request.add_noqa):
+    if request.cache and not (request.fix or request.show_diff or request.add_noqa or switched_on("ZERO_NO_CACHE")):
         from zero.engine.cache import open_lint_cache  # start-up: only when the cache is on
 
         cache = open_lint_cache(project)

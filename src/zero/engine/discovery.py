@@ -9,7 +9,6 @@ import sys
 from collections.abc import Callable, Iterable
 from pathlib import Path
 
-from zero.engine.git import visible_files
 from zero.errors import ZeroError
 from zero.files import check_regular, read_file
 from zero.forms import WALKED_SUFFIXES, is_project, is_xml_name, xml_form
@@ -20,6 +19,8 @@ def git_visible(directory: Path, note: Callable[[str], None] | None = None) -> s
     (``os.sep``-separated); ``None`` outside a git work tree, without git, or where git gives no
     answer (:func:`zero.engine.git.visible_files`: then ``note`` is told why, in one line: the walk
     goes on without the ignore rules, and says so)."""
+    from zero.engine.git import visible_files  # start-up: only where a directory is walked
+
     seen = visible_files(directory)
     if seen.files is None and seen.reason:
         (note or _stderr)(f"zero: {directory}: .gitignore not applied: {seen.reason}\n")
