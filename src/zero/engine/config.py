@@ -922,7 +922,7 @@ class ConfigFinder:
             return self._overlay(self.explicit)
         name = os.fspath(path)  # a Path's text is made once; hashing the text is cheaper than the Path
         if directory is None:
-            directory = os.path.isdir(name)
+            directory = path.is_dir()
         given = (name, directory) if os.path.isabs(name) else (name, directory, _cwd())
         hit = self._by_path.get(given)  # the files of a run are asked about several times each
         if hit is not None:
