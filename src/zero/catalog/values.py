@@ -410,7 +410,8 @@ class ListValues:
                 counts[pattern] += len(rows)
         if kind is None:  # from each pattern's count (what kind_of reads: the entries' key patterns)
             kind = registry.kind_of_counts(doc, counts)
-        valueless = frozenset(v for v, k in enumerate(cols.kinds) if k is None)
+        kinds = cols.kinds
+        valueless = frozenset([v for v, k in enumerate(kinds) if k is None]) if None in kinds else frozenset()
         out = cls(doc, registry, kind, shape_rows=shape_rows, shape_keys=shape_keys, pattern_shapes=pattern_shapes,
                   valueless=valueless)
         # Bindings are kept per registry and kind: the lists of a fleet bind the same patterns.
@@ -575,7 +576,8 @@ class ListValues:
     def value_of(self, param_id: str, indices: tuple[int, ...] = ()) -> Resolved | None:
         """The entry that sets ``param_id[indices]`` (the later one wins; this list before the
         default list under it), if any."""
-        slot = self.by_id.get(param_id)
+        by_id = self._by_id
+        slot = (by_id if by_id is not None else self.by_id).get(param_id)
         hit = slot.get(indices) if slot else None
         if hit is None and self.base is not None:
             return self.base.value_of(param_id, indices)
