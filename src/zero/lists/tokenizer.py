@@ -63,14 +63,14 @@ _KEY_CONTINUATION_RE = re.compile(
 _MAX_KEY_JOINS = 8
 # The common line, matched in one go: `KEY VALUE [COMMENT]` where nothing needs the
 # careful scanner (no quotes, flags, key continuations or `Ende`; a value may start with a `.` that
-# no name follows, `./listen/x.lis`, `.5`: that is no key continuation). Whatever this does
+# no name follows, `./listen/x.lis`, `.5`: that is no key continuation `.name`). Whatever this does
 # not match goes to scan_line, which gives the same result for what it does match.
 # Groups: 1 the key, as 2 its names up to the first index, 3 that index (if any) and 4 the rest (what
 # model.scanned_key reads); 5 the value; 6 the comment.
 _FAST_ENTRY_RE = re.compile(
     r"[ \t]*(([A-Za-z_][A-Za-z0-9_]*(?:\.[A-Za-z0-9_]+)*)(?:\[([0-9]+)\])?"
     r"((?:\[[0-9]+\])*(?:\.[A-Za-z0-9_]+(?:\[[0-9]+\])*)*))"
-    r"[ \t]+((?:[^\s\"|.\[\]]|\.(?=[./0-9]))[^\s|]*)(?:[ \t]+([^\s|].*)|[ \t]*)\Z",
+    r"[ \t]+((?!\.[A-Za-z_])[^\s\"|\[\]][^\s|]*)(?:[ \t]+([^\s|].*)|[ \t]*)\Z",
     re.DOTALL)
 _KIND_RE = re.compile(
     r"(?P<int>[+-]?[0-9]+)|(?P<hex>[+-]?0[xX][0-9A-Fa-f]+)|(?P<ref>P-[A-Z]{4}-[0-9]{5}(?:\.[0-9]+)?)"
@@ -316,12 +316,12 @@ def split_lines(text: str) -> tuple[list[str], list[str]]:
 # leading zero) and 3 the rest from the index's `]` on (loose here: checked once per distinct key shape);
 # 4 the value; 5 the comment; else 6 the line.
 _ROW = (r"(?:[ \t]*([A-Za-z_][A-Za-z0-9_.]*)(?:\[(0|[1-9][0-9]{0,17})(\][A-Za-z0-9_.\[\]]*))?"
-    r"[ \t]+((?:[^\s\"|.\[\]]|\.(?=[./0-9]))[^\s|]*)(?:[ \t]+([^\s|][^\r\n]*)|[ \t]*)(?:\r?(?=\n)|\Z)|([^\n]*))\n?")
+    r"[ \t]+((?!\.[A-Za-z_])[^\s\"|\[\]][^\s|]*)(?:[ \t]+([^\s|][^\r\n]*)|[ \t]*)(?:\r?(?=\n)|\Z)|([^\n]*))\n?")
 # _ROW with the whitespace before the key, between key and value and before the comment as groups 1, 5
 # and 7 (names 2, first index 3, rest 4, value 6, comment 8, the line 9): where each part of a row starts,
 # kept as widths so that an entry is built from the columns without its line matched again.
 _ROW_AT = (r"(?:([ \t]*)([A-Za-z_][A-Za-z0-9_.]*)(?:\[(0|[1-9][0-9]{0,17})(\][A-Za-z0-9_.\[\]]*))?"
-    r"([ \t]+)((?:[^\s\"|.\[\]]|\.(?=[./0-9]))[^\s|]*)(?:([ \t]+)([^\s|][^\r\n]*)|[ \t]*)(?:\r?(?=\n)|\Z)|([^\n]*))\n?")
+    r"([ \t]+)((?!\.[A-Za-z_])[^\s\"|\[\]][^\s|]*)(?:([ \t]+)([^\s|][^\r\n]*)|[ \t]*)(?:\r?(?=\n)|\Z)|([^\n]*))\n?")
 # The patterns a text is read with, by (bytes, a CR in the text, widths): each compiled when first needed.
 _ROW_PATTERNS: dict[tuple[bool, bool, bool], re.Pattern[Any]] = {}
 
@@ -594,8 +594,8 @@ class _Reader:
                 rows.pop()
                 (leads, names, first_texts, tails, key_gaps, value_texts, comment_gaps, comment_texts,
                  wholes) = zip(*rows, strict=True)
-            keys = list(zip(names, tails, strict=True))
-            new_shapes = [k for k in dict.fromkeys(keys) if k not in shapes]
+            # (names, tail) pairs made by zip as they are read, never a list of them (zip reuses its tuple)
+            new_shapes = [k for k in dict.fromkeys(zip(names, tails, strict=True)) if k not in shapes]
             new_values = [v for v in dict.fromkeys(value_texts) if v not in values]
             new_comments = [c for c in dict.fromkeys(comment_texts) if c not in comments]
             known = None
@@ -630,7 +630,7 @@ class _Reader:
             for f in dict.fromkeys(first_texts):
                 if f not in firsts:
                     firsts[f] = int(f)
-            sids = list(map(shapes.__getitem__, keys))
+            sids = list(map(shapes.__getitem__, zip(names, tails, strict=True)))
             count = len(rows)
             if self.end_line is None and -1 not in sids:  # every line an entry of the columns
                 _extend(cols.line, count, range(number, number + count))
