@@ -11,15 +11,16 @@ from __future__ import annotations
 
 import math
 import re
-from collections.abc import Mapping
+from collections.abc import Iterator, Mapping
 from pathlib import Path
 from typing import Any
 
 from zero.catalog.ids import AXIS_TYPE, axis_unit, fixed, g_code_with_index, in_units
 from zero.catalog.registry import INTEGER_TYPES, NO_DEFAULT, ParamSpec, Registry
-from zero.catalog.values import bind, canonical_key, default_number, parse_int, read_value
+from zero.catalog.rows import Rows, own_entries
+from zero.catalog.values import ListValues, bind, canonical_key, default_number, parse_int, read_value
 from zero.errors import ZeroError
-from zero.lists.model import Comment, Entry, Key, ValueKind, parse_key
+from zero.lists.model import Comment, Document, Entry, Key, ValueKind, parse_key
 from zero.lists.tokenizer import tokenize_text
 from zero.markup import read_document
 from zero.records import field, record
@@ -33,8 +34,8 @@ class Side:
 
     path: str
     kind: str | None
-    entries: Mapping[str, Entry]  # a dict, or the machine model's rows (zero.machine.effective.Rows)
-    comments: dict[str, tuple[str, ...]] = field(default_factory=dict)  # key → comments near it
+    entries: Mapping[str, Entry]  # a dict, or the rows of a list (zero.machine.effective.Rows)
+    comments: Mapping[str, tuple[str, ...]] = field(default_factory=dict)  # key → comments near it
     update: bool = False  # an update or revert file: what it changes on a running controller
 
     def applied_to(self, target: Side) -> Side:
@@ -78,7 +79,7 @@ def read_side(data: bytes, fmt: str, path: str, registry: Registry, kind: str | 
     ``encoding`` when its configuration declares one."""
     update = False
     if fmt in ("lis", "xml"):
-        doc = read_document(data, path, registry, encoding, objects=True)  # an ASCII or an XML list (by its content)
+        doc = read_document(data, path, registry, encoding)  # an ASCII or an XML list (by its content)
         if doc.origin is not None:
             kind, update = kind or doc.origin.kind, doc.origin.update
         if any(p.kind == "binary" for p in doc.problems):
@@ -92,20 +93,45 @@ def read_side(data: bytes, fmt: str, path: str, registry: Registry, kind: str | 
         doc = tokenize_text(to_list_text(tree).text, path)
         if kind is None and isinstance(tree.meta.get("kind"), str):
             kind = tree.meta["kind"]
-    if kind is None:
-        kind = registry.kind_of(doc)
-    entries: dict[str, Entry] = {}
-    comments: dict[str, tuple[str, ...]] = {}
-    pending: list[str] = []
-    for item in doc.items:
-        if type(item) is Comment:
-            pending.append(doc.lines[item.line - 1].strip())
-        elif type(item) is Entry and not item.after_end:
-            key = canonical_key(registry, kind, item)  # one element: `[01]` is `[1]`, an alias its key
-            entries[key] = item  # the later value wins, as on the controller
-            comments[key] = (*pending, item.comment.strip() if item.comment else "")
-            pending = []
-    return Side(path, kind, entries, comments, update)
+    # the entries by documented key, read from the rows (an Entry built only where a change is shown);
+    # the comments near each only when asked for (--comments)
+    values = ListValues.of(doc, registry, kind)  # the kind detected where neither side nor file says it
+    return Side(path, values.kind, own_entries(values), _Comments(doc, registry, values.kind), update)
+
+
+class _Comments(Mapping[str, tuple[str, ...]]):
+    """Key → the comments near its entry (the full-line comments above it, then its own; the later
+    entry's where a key is set twice), built on first use."""
+
+    __slots__ = ("_doc", "_got", "_kind", "_registry")
+
+    def __init__(self, doc: Document, registry: Registry, kind: str | None) -> None:
+        self._doc, self._registry, self._kind = doc, registry, kind
+        self._got: dict[str, tuple[str, ...]] | None = None
+
+    def _built(self) -> dict[str, tuple[str, ...]]:
+        got = self._got
+        if got is None:
+            doc = self._doc
+            got = self._got = {}
+            pending: list[str] = []
+            for item in doc.items:
+                if type(item) is Comment:
+                    pending.append(doc.lines[item.line - 1].strip())
+                elif type(item) is Entry and not item.after_end:
+                    key = canonical_key(self._registry, self._kind, item)  # `[01]` is `[1]`, an alias its key
+                    got[key] = (*pending, item.comment.strip() if item.comment else "")
+                    pending = []
+        return got
+
+    def __getitem__(self, key: str) -> tuple[str, ...]:
+        return self._built()[key]
+
+    def __iter__(self) -> Iterator[str]:
+        return iter(self._built())
+
+    def __len__(self) -> int:
+        return len(self._built())
 
 
 # ----------------------------------------------------------------- values
@@ -427,7 +453,7 @@ def diff_sides(a: Side, b: Side, registry: Registry, options: DiffOptions | None
     same_comments = not options.comments
     ta, tb = _value_texts(a.entries), _value_texts(b.entries)
     if ta is not None and tb is not None and same_comments:
-        # the machine model's rows: only the keys whose text differs (or that one side lacks) are
+        # rows: only the keys whose text differs (or that one side lacks) are
         # looked at, and only their entries built (a fleet's lists are mostly the golden's)
         if ta == tb:
             return out
@@ -489,10 +515,8 @@ def diff_sides(a: Side, b: Side, registry: Registry, options: DiffOptions | None
 
 
 def _value_texts(entries: Mapping[str, Entry]) -> dict[str, str] | None:
-    """Key → value text, where the entries are the machine model's rows that hold them
-    (:class:`zero.machine.effective.Rows`, which this layer does not import); ``None`` otherwise."""
-    texts = getattr(entries, "texts", None)
-    return texts if isinstance(texts, dict) else None
+    """Key → value text, where the entries are rows that hold them (:class:`Rows`); ``None`` otherwise."""
+    return entries.texts if isinstance(entries, Rows) else None
 
 
 def _grouped(changes: list[Change]) -> list[Change]:

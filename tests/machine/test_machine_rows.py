@@ -1,5 +1,5 @@
 """The machine model read from rows (issue 40): documented keys per row without building entries,
-the entries of a list as :class:`~zero.machine.effective.Rows`, ``diff_sides`` on them, and the
+the entries of a list as :class:`~zero.catalog.rows.Rows`, ``diff_sides`` on them, and the
 lists of a run shared by content (a fleet's machines are copies), each under its own path."""
 
 from __future__ import annotations
@@ -15,12 +15,13 @@ from hypothesis import strategies as st
 
 from conftest import generated_lists
 from zero.catalog.registry import Registry, load_registry
+from zero.catalog.rows import Rows, own_entries, row_keys
 from zero.catalog.values import ListValues, canonical_key
 from zero.diff import DiffOptions, Side, diff_sides
 from zero.engine.lint import lint_machine
 from zero.lists.model import Entry
 from zero.lists.tokenizer import tokenize
-from zero.machine.effective import Rows, entries_of, own_entries, row_keys, scope_values
+from zero.machine.effective import entries_of, scope_values
 from zero.machine.model import SHARED, ListFile, Machine, load_machine
 
 # lines a fleet's lists hold beside the usual: an alias, indices with a leading zero (first or later),
@@ -220,12 +221,12 @@ def test_the_lists_kept_are_bounded(tmp_path: Path, corpus: Path, registry: Regi
 
 
 def test_the_row_keys_kept_are_those_of_small_lists(registry: Registry) -> None:
-    from zero.machine import effective
+    from zero.catalog import rows
 
-    effective._keyed.clear()
+    rows._keyed.clear()
     small = ListValues.of(tokenize(b"kenngr.swe_pos 5\n", "s.lis"), registry, "AXIS")
-    big = ListValues.of(tokenize(b"".join(b"wz[%d].laenge 1\n" % i for i in range(effective._KEYED_ROWS + 1)),
+    big = ListValues.of(tokenize(b"".join(b"wz[%d].laenge 1\n" % i for i in range(rows._KEYED_ROWS + 1)),
                                  "t.lis"), registry, "TOOL")
     assert own_entries(small).texts is own_entries(small).texts  # worked out once
     assert own_entries(big).texts is not own_entries(big).texts  # a big list's keys are not kept
-    assert len(effective._keyed) == 1
+    assert len(rows._keyed) == 1

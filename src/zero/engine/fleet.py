@@ -44,6 +44,7 @@ from pathlib import Path
 from typing import TYPE_CHECKING, Any
 
 from zero.catalog.registry import ParamSpec, Registry
+from zero.catalog.rows import Rows, own_entries
 from zero.diff import (
     ADDED,
     CHANGED,
@@ -61,7 +62,7 @@ from zero.diff import effective as value_of
 from zero.engine.project import Project, Registries, common_of, open_project
 from zero.errors import ZeroError
 from zero.files import read_file, within
-from zero.machine.effective import Rows, entries_of, own_entries
+from zero.machine.effective import entries_of
 from zero.machine.model import Machine
 from zero.records import field, record
 
