@@ -15,7 +15,8 @@ from conftest import ROOT
 SRC = ROOT / "src"
 
 # component → the components it may import (besides itself)
-FOUNDATION = "foundation"  # zero (version), zero.errors, zero.records, zero.diagnostics, zero.files, zero.forms
+# foundation: zero (version), zero.errors, zero.records, zero.hints, zero.diagnostics, zero.files, zero.forms
+FOUNDATION = "foundation"
 ALLOWED: dict[str, set[str]] = {
     FOUNDATION: set(),
     "lists": {FOUNDATION},
@@ -47,7 +48,7 @@ MODULES = {module_name(p): p for p in (SRC / "zero").rglob("*.py")}
 
 def component(module: str) -> str:
     parts = module.split(".")
-    if len(parts) == 1 or parts[1] in ("errors", "records", "diagnostics", "files", "forms", "__main__"):
+    if len(parts) == 1 or parts[1] in ("errors", "records", "hints", "diagnostics", "files", "forms", "__main__"):
         return FOUNDATION if parts[-1] != "__main__" else "cli"
     return parts[1]
 

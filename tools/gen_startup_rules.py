@@ -14,7 +14,10 @@ from __future__ import annotations
 import sys
 from pathlib import Path
 
+sys.path.insert(0, str(Path(__file__).resolve().parent))
 sys.path.insert(0, str(Path(__file__).resolve().parent.parent / "src"))
+
+from pydata import TYPING_FOR_CHECKERS
 
 DATA = Path(__file__).resolve().parent.parent / "src" / "zero" / "catalog" / "data"
 
@@ -34,7 +37,7 @@ def render() -> str:
             'the parameters it reads)).\n\n'
             'Generated: do not edit."""\n\n'
             "# ruff: noqa\n"
-            "from typing import Any\n\n"
+            + "\n".join(TYPING_FOR_CHECKERS) + "\n\n"
             "DECLARED: dict[str, Any] = {\n" + "\n".join(lines) + "\n}\n")
 
 

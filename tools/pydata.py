@@ -8,11 +8,17 @@ import json
 from pathlib import Path
 from typing import Any
 
+# The annotations of a written module, for type checkers only: importing typing at run time costs a
+# lint's start-up more than the table itself (zero.hints).
+TYPING_FOR_CHECKERS = ("from __future__ import annotations", "",
+                       "TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (zero.hints)",
+                       "if TYPE_CHECKING:", "    from typing import Any")
+
 
 def write_module(path: Path, doc: str, constants: dict[str, Any], rows_name: str | None = None) -> None:
     """``constants`` as module-level names, in order; ``rows_name`` (a list) one item per line.
     The values go through JSON first, so the module holds exactly what a JSON file held."""
-    out = [f'"""{doc}\n\nGenerated: do not edit."""', "", "from typing import Any", ""]
+    out = [f'"""{doc}\n\nGenerated: do not edit."""', "", *TYPING_FOR_CHECKERS, ""]
     for name, value in constants.items():
         value = json.loads(json.dumps(value, ensure_ascii=False))
         if name == rows_name:

@@ -13,7 +13,6 @@ import math
 import re
 from collections.abc import Iterator, Mapping
 from pathlib import Path
-from typing import Any
 
 from zero.catalog.ids import AXIS_TYPE, axis_unit, fixed, g_code_with_index, in_units
 from zero.catalog.registry import INTEGER_TYPES, NO_DEFAULT, ParamSpec, Registry
@@ -24,6 +23,10 @@ from zero.lists.model import Comment, Document, Entry, Key, ValueKind, parse_key
 from zero.lists.tokenizer import tokenize_text
 from zero.markup import read_document
 from zero.records import field, record
+
+TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (mypy and ruff read it alike)
+if TYPE_CHECKING:
+    from typing import Any
 
 ADDED, REMOVED, CHANGED, SAME, COMMENT = "added", "removed", "changed", "same", "comment"
 

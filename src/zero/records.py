@@ -22,20 +22,14 @@ from __future__ import annotations
 from collections.abc import Callable
 from operator import attrgetter
 
+from zero.hints import dataclass_transform, overload
+
 __all__ = ["Field", "field", "fields", "record", "replace"]
 
-# typing (a tenth of a lint's start-up) is imported for type checkers only; at run time `overload` and
-# `dataclass_transform` are what they are for a program: nothing. (The run-time stand-ins come first,
-# so that linters see typing's names where they are used.)
+# typing is imported for type checkers only (zero.hints: `overload` and `dataclass_transform` at run time)
 TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (mypy and ruff read it alike)
-if not TYPE_CHECKING:
-    def overload(function: Callable[..., object]) -> Callable[..., object]:
-        return function
-
-    def dataclass_transform(**_: object) -> Callable[[Callable[..., object]], Callable[..., object]]:
-        return lambda function: function
 if TYPE_CHECKING:
-    from typing import Any, TypeVar, dataclass_transform, overload
+    from typing import Any, TypeVar
 
     _T = TypeVar("_T")
 _FIELDS = "__record_fields__"

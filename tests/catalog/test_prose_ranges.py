@@ -7,15 +7,18 @@ import re
 import tomllib
 from functools import cache
 from pathlib import Path
-from typing import Any
+from typing import TYPE_CHECKING, Any
 
 import pytest
 
-from zero.catalog.conditions import Node, compile_condition, parse, refs
+from zero.catalog.conditions import compile_condition, parse, refs
 from zero.catalog.data.table import ROWS
 from zero.catalog.registry import Registry, load_registry
 from zero.catalog.values import default_number
 from zero.engine.lint import lint_file
+
+if TYPE_CHECKING:
+    from zero.catalog.conditions import Node
 
 ROOT = Path(__file__).resolve().parents[2]
 TABLE = ROOT / "src" / "zero" / "catalog" / "data" / "prose_ranges.toml"

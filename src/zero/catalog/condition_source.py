@@ -21,7 +21,6 @@ from zero.catalog.conditions import (
     Call,
     Lookup,
     Member,
-    Node,
     Num,
     Number,
     Ref,
@@ -31,6 +30,10 @@ from zero.catalog.conditions import (
     _Value,
     supported_drive_types,
 )
+
+TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (mypy and ruff read it alike)
+if TYPE_CHECKING:
+    from zero.catalog.conditions import Node
 
 __all__ = ["source"]
 

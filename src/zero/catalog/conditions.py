@@ -28,8 +28,8 @@ from __future__ import annotations
 
 import re
 from collections.abc import Callable
-from typing import Union
 
+TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (mypy and ruff read it alike)
 Number = int | float
 # A parameter's value by (ID, element index or None for "the checked parameter's"); None: not known.
 # A STRING parameter's value is its text.
@@ -47,8 +47,6 @@ _FUNCTIONS = {"abs": 1, "len": 1, "startswith": 2, "isname": 1, "supports": 1, "
 _NAME = re.compile(r"[A-Za-z0-9_]+")  # what isname() accepts
 UNIQUE = "unique:"  # the lookup's name of the fact unique(...) asks for
 ELSEWHERE = "elsewhere:"  # and of elsewhere(...)
-
-Node = Union["Num", "Str", "Ref", "Unary", "Binary", "Call", "Member"]
 
 
 class Num:
@@ -104,6 +102,10 @@ class Call:
     @property
     def arg(self) -> Node:
         return self.args[0]
+
+
+if TYPE_CHECKING:  # an expression's node (type checkers only)
+    Node = Num | Str | Ref | Unary | Binary | Call | Member
 
 
 def _tokens(text: str) -> list[str]:

@@ -13,7 +13,6 @@ from __future__ import annotations
 import re
 import xml.etree.ElementTree as ET
 from pathlib import Path
-from typing import Any
 
 from defusedxml import DefusedXmlException
 from defusedxml.ElementTree import fromstring as defused_fromstring
@@ -21,6 +20,10 @@ from defusedxml.ElementTree import fromstring as defused_fromstring
 from zero.catalog.ranges import parse_range
 from zero.errors import ZeroError
 from zero.files import read_file
+
+TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (mypy and ruff read it alike)
+if TYPE_CHECKING:
+    from typing import Any
 
 _NS = "{https://www.isg-stuttgart.de/kernel/CncParaDesc}"
 

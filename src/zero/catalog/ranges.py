@@ -21,9 +21,12 @@ from __future__ import annotations
 
 import re
 from collections.abc import Callable
-from typing import Any
 
 from zero.records import record
+
+TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (mypy and ruff read it alike)
+if TYPE_CHECKING:
+    from typing import Any
 
 TYPE_LIMITS: dict[str, tuple[float, float]] = {
     "BOOLEAN": (0, 1),
@@ -388,7 +391,8 @@ def parse_range(text: str | None, own_id: str = "") -> Range | None:
 # they load from bytecode instead of being parsed at every run: issue 40). An expression is a number
 # (Num), or a tuple: ("L", which, type) Limit, ("R", id, index) Ref, ("B", op, left, right) BinOp,
 # ("N", operand) Neg; a range is (low, low_strict, high, high_strict, allowed), ``None`` for prose.
-Encoded = Any
+if TYPE_CHECKING:
+    Encoded = Any
 
 
 def encode_range(rng: Range | None) -> Encoded:

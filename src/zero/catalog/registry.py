@@ -17,13 +17,15 @@ import re
 from collections import Counter
 from collections.abc import Iterable, Iterator, Mapping
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
 
 from zero.catalog.ranges import Range, decode_range, parse_range
 from zero.forms import kind_hint
 from zero.records import field, record
 
+TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (mypy and ruff read it alike)
 if TYPE_CHECKING:
+    from typing import Any
+
     from zero.lists.model import Document, Entry
 
 NO_DEFAULT = ("", "-", "--", "----")  # how the catalogue writes "no default documented"

@@ -25,20 +25,23 @@ from __future__ import annotations
 import re
 from collections.abc import Callable
 from pathlib import Path
-from typing import TYPE_CHECKING, Any, TypeVar
 
 from zero.errors import ZeroError
 from zero.lists.model import format_key
 from zero.records import record
 
+TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (mypy and ruff read it alike)
 if TYPE_CHECKING:
+    from typing import Any, TypeVar
+
     from zero.catalog.registry import Registry
+
+    _Row = TypeVar("_Row")
 
 # The kernel release of the catalogue zero ships: CncParaDesc.xml of the ISG CNC Kernel SDK
 # V1.5.0.0, kernel V4.13.0.0 (the corpus README; data/table.py's GENERATED_FROM).
 CATALOGUE_RELEASE: tuple[int, ...] = (4, 13)
 
-_Row = TypeVar("_Row")
 VENDOR_SOURCE = "isg-sdk "  # a row's source that names a file of the vendor's SDK (lists, XML templates)
 UNKNOWN_RELEASE = "unknown"  # a row whose source does not say which release wrote the spelling
 DATA = Path(__file__).parent / "data" / "releases.toml"

@@ -16,13 +16,17 @@ import sys
 from array import array
 from collections.abc import Iterator, Mapping, Sequence
 from itertools import chain
-from typing import Any, TypeVar, overload
 
 from zero.catalog.ids import AXIS_TYPE, is_rotary
 from zero.catalog.ranges import TYPE_LIMITS, Number
 from zero.catalog.registry import INTEGER_TYPES, NO_DEFAULT, ParamSpec, Registry
+from zero.hints import overload
 from zero.lists.model import HUGE_INDEX, MAX_INDEX_DIGITS, Document, Entry, ValueKind, format_key, parse_key
 from zero.records import field, record
+
+TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (mypy and ruff read it alike)
+if TYPE_CHECKING:
+    from typing import Any, TypeVar
 
 __all__ = ["NO_DEFAULT", "ListValues", "Resolved", "Slot", "Value", "bind", "canonical_key", "default_number",
            "parse_int", "read_text", "read_value", "slot_of", "spec_of", "take"]
@@ -290,7 +294,8 @@ def read_text(spec: ParamSpec, raw: str, kind: ValueKind | None) -> Value:
     return Value(text=raw)  # STRUCT and anything undocumented: not checked
 
 
-_V = TypeVar("_V", bound="ListValues")
+if TYPE_CHECKING:
+    _V = TypeVar("_V", bound="ListValues")
 _NO_KEY: tuple[str, tuple[int, ...], bool] = ("", (), False)
 # a key without a first index (`kenngr.swe_pos`) -> its shape key (pattern, indices, False), or None where
 # it is no key: parsed once per run (a fleet's lists repeat their keys)

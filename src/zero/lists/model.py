@@ -12,10 +12,13 @@ import re
 from array import array
 from collections.abc import Iterator
 from itertools import accumulate
-from typing import Any
 
 from zero.forms import XML_ROOTS, root_of
 from zero.records import Field, record
+
+TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (mypy and ruff read it alike)
+if TYPE_CHECKING:
+    from typing import Any
 
 # An index with more digits than this is not converted to an int: it is clamped
 # to HUGE_INDEX, which lies beyond every array size, and reported as such.

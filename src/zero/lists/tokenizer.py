@@ -17,7 +17,6 @@ import re
 from array import array
 from collections.abc import Iterable, Sequence
 from itertools import compress
-from typing import Any
 
 from zero.lists.encoding import declarable, decode
 from zero.lists.model import (
@@ -40,6 +39,10 @@ from zero.lists.model import (
     scanned_key,
     shape_parts,
 )
+
+TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (mypy and ruff read it alike)
+if TYPE_CHECKING:
+    from typing import Any
 
 END_KEYWORD = "Ende"
 # A file where more than this share of the characters are control characters or stray bytes

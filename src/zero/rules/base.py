@@ -18,20 +18,24 @@ from __future__ import annotations
 
 import re
 from collections.abc import Callable, Iterator, Sequence
-from typing import TYPE_CHECKING, Generic, Literal, TypeVar
 
 from zero.catalog.evidence import Claim, rule_claim
 from zero.catalog.evidence import claim as evidence_claim
 from zero.catalog.registry import Registry
 from zero.catalog.values import ListValues
 from zero.diagnostics import Diagnostic, Fix, Related, Severity, Span
+from zero.hints import Generic, TypeVar
 from zero.records import field, record
 
+TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (mypy and ruff read it alike)
 if TYPE_CHECKING:  # start-up: a list's lint does not load the machine and program models
     from zero.machine.model import Machine
     from zero.nc.program import Program
 
-Scope = Literal["list", "machine", "program", "suppression", "file"]
+if TYPE_CHECKING:
+    from typing import Literal
+
+    Scope = Literal["list", "machine", "program", "suppression", "file"]
 E, W, INFO = Severity.ERROR, Severity.WARNING, Severity.INFO
 
 

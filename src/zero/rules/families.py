@@ -25,12 +25,16 @@ import importlib
 import os
 from collections.abc import Iterator, Sequence
 from types import ModuleType
-from typing import Any, overload
 
 from zero.catalog.data.rules_declared import DECLARED
 from zero.diagnostics import Severity
+from zero.hints import overload
 from zero.rules import elements, files, meaning, registry, startup, suppress, syntax, update
 from zero.rules.base import C, Check, Context, Family, MachineContext, ProgramContext, Rule, declare
+
+TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (mypy and ruff read it alike)
+if TYPE_CHECKING:
+    from typing import Any
 
 # the families loaded on demand, by module name (zero.rules.<name>)
 ON_DEMAND = ("machine", "program")

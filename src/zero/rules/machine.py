@@ -8,7 +8,6 @@ from __future__ import annotations
 
 from collections.abc import Iterator
 from pathlib import Path
-from typing import TYPE_CHECKING
 
 from zero.catalog.ids import (
     AXIS_LISTS,
@@ -31,6 +30,7 @@ from zero.catalog.ranges import TYPE_LIMITS
 from zero.diagnostics import Diagnostic, Related, Span
 from zero.rules.base import INFO, E, Family, MachineContext, W
 
+TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (mypy and ruff read it alike)
 if TYPE_CHECKING:  # start-up: a list's lint does not load the machine model
     from zero.machine.model import Axis, ListFile
 

@@ -10,7 +10,6 @@ from __future__ import annotations
 import math
 from collections.abc import Callable, Iterator
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
 
 from zero.catalog.ids import (
     AXIS_TYPE,
@@ -37,7 +36,10 @@ from zero.records import record
 from zero.rules import elements, registry, syntax
 from zero.rules.base import INFO, Check, Context, E, Family, ProgramContext, W, run_checks
 
+TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (mypy and ruff read it alike)
 if TYPE_CHECKING:  # start-up: a list's lint does not load the machine model
+    from typing import Any
+
     from zero.catalog.registry import Registry
     from zero.machine.model import Axis, Channel, Machine
     from zero.nc.program import Program

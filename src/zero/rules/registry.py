@@ -5,7 +5,6 @@ from __future__ import annotations
 import functools
 import re
 from collections.abc import Callable, Iterator
-from typing import Any
 
 from zero.catalog.conditions import Compiled
 from zero.catalog.evidence import Claim, claim, drive_types
@@ -18,6 +17,10 @@ from zero.errors import ZeroError
 from zero.lists.model import HUGE_INDEX, Comment, Entry, ValueKind, format_key
 from zero.records import replace
 from zero.rules.base import INFO, Context, E, Family, W
+
+TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (mypy and ruff read it alike)
+if TYPE_CHECKING:
+    from typing import Any
 
 FAMILY: Family[Context] = Family("R", "registry", "list")
 

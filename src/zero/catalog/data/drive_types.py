@@ -2,7 +2,11 @@
 
 Generated: do not edit."""
 
-from typing import Any
+from __future__ import annotations
+
+TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (zero.hints)
+if TYPE_CHECKING:
+    from typing import Any
 
 DRIVE_TYPES: list[dict[str, Any]] = [
     {'param': 'P-AXIS-00106', 'types': [2], 'names': 'SERCOS (lr_hw[].mask_mess_1)', 'source': 'https://infosys.beckhoff.com/content/1033/tf5200_axis_parameter/117337611.html'},

@@ -2,7 +2,11 @@
 
 Generated: do not edit."""
 
-from typing import Any
+from __future__ import annotations
+
+TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (zero.hints)
+if TYPE_CHECKING:
+    from typing import Any
 
 CLAIMS: list[dict[str, Any]] = [
     {'name': 'unknown-element', 'kinds': ['ZERO'], 'consequence': 'aborted', 'severity': 'error', 'says': 'the plausibility check of a zero-offset list reports an unknown or incorrectly written parameter or an invalid value (P-ERR-20407), and the kernel aborts the job', 'kernel_error': 'P-ERR-20407', 'source': 'https://infosys.beckhoff.com/content/1033/tf5200_diagnosis/251542155.html', 'releases': 'TF5200 diagnosis documentation'},

@@ -2,7 +2,11 @@
 
 Generated: do not edit."""
 
-from typing import Any
+from __future__ import annotations
+
+TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (zero.hints)
+if TYPE_CHECKING:
+    from typing import Any
 
 RANGES: list[dict[str, Any]] = [
     {'id': 'P-AXIS-00030', 'condition': 'P-AXIS-00030 <= P-AXIS-00212', 'when': '', 'prose': '0 ≤ vb_max_red_zone ≤ P-AXIS-00212 (vb_max)', 'note': "The catalogue writes its own ID as 'P.AXIS-00030', which is all that makes the range prose. Both getriebe[] (paired)."},

@@ -12,7 +12,7 @@ if TYPE_CHECKING:
     from typing import Any
 
 DECLARED: dict[str, Any] = {
-    'machine': ('X', 'machine (across lists, `zero lint --machine`)', 'machine', 55088, (
+    'machine': ('X', 'machine (across lists, `zero lint --machine`)', 'machine', 55156, (
         ('X005', 'missing-list', 'ERROR', 'The start-up list names a list that cannot be read',
          "\nWhat it checks: every list the start-up list names (`default_sda_mds`, `sda_mds[c]`,\n`werkz_data[c]`, `nullp_data[c]`, `pzv_data[c]`, `ve_var[c]`, `hand_mds`, `rtconf_lis`,\n`hw_configuration_list`, `default_achs_mds`, `achs_mds[i]`, `achs_kw[i]`) exists in the\ncontroller's working directory and can be read. The working directory is found once (the\nstart-up list's directory or the ancestor where the named lists are); a list is never looked\nfor anywhere else.\n\nWhy it matters on the machine: what follows depends on the key, and zero says only what the\ncatalogue documents: for axis lists (P-STUP-00015) and compensation lists (P-STUP-00017)\nstart-up is aborted; for the other keys the catalogue does not say.\n\nFix: correct the path, or add the file.\n",
          False, ('P-STUP-00034', 'P-STUP-00009', 'P-STUP-00010', 'P-STUP-00011', 'P-STUP-00012', 'P-STUP-00146', 'P-STUP-00013', 'P-STUP-00135', 'P-STUP-00136', 'P-STUP-00035', 'P-STUP-00015', 'P-STUP-00017', 'P-STUP-00014', 'P-STUP-00016')),
@@ -92,7 +92,7 @@ DECLARED: dict[str, Any] = {
          "\nWhat it checks: the delay time of the velocity feedforward (`vorsteuer.velocity_delay_time`,\nP-AXIS-00389, µs) an axis list writes is shorter than the interpolator's cycle time, found as for X025.\nValues from two lists of the machine: checked with `zero lint --machine`.\n\nWhy it matters on the machine: the kernel reports P-ERR-70349 when it takes over the list (class 1,\nerror type 2) and disables the delay (P-AXIS-00389 = 0). Source:\nhttps://infosys.beckhoff.com/content/1033/tf5200_diagnosis/260829323.html\n\nFix: give the delay a value below one interpolator cycle.\n",
          False, ('P-AXIS-00389', 'P-RTCF-00008', 'P-RTCF-00009')),
     )),
-    'program': ('N', 'NC programs', 'program', 31394, (
+    'program': ('N', 'NC programs', 'program', 31485, (
         ('N001', 'machine-data-syntax', 'ERROR', 'A #MACHINE DATA block the controller rejects',
          '\nWhat it checks: `#MACHINE DATA [SYN] [AX=<name> | AXNR=<n>  <P-AXIS-id>[.<idx>]=<value> |\nAXPARAM="<key> <value>" [WAIT]]`: one axis (AX= or a positive AXNR=), a parameter ID that\n#MACHINE DATA accepts as a keyword, an AXPARAM key and value valid for the axis list, WAIT only\nwith SYN.\n\nWhy it matters on the machine: the block is rejected at run time, in the middle of a program,\nor (AXNR is not checked by the controller) writes the parameter of another axis.\n\nExample: `#MACHINE DATA [AX=X P-AXIS-00209=80000 WAIT]` (WAIT without SYN)\nFix: write the block as in the manual\'s examples.\n',
          False, ()),

@@ -2,7 +2,11 @@
 
 Generated: do not edit."""
 
-from typing import Any
+from __future__ import annotations
+
+TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (zero.hints)
+if TYPE_CHECKING:
+    from typing import Any
 
 ERRORS: list[dict[str, Any]] = [
     {'code': 'K001', 'number': 1030, 'list': 'STUP', 'params': ['P-STUP-00009', 'P-STUP-00015'], 'condition': '', 'when': '', 'correction': '', 'title': 'Channel or axis index in the start-up list beyond the maximum', 'source': 'https://infosys.beckhoff.com/content/1033/tf5200_diagnosis/249290635.html', 'note': 'Concerns the index of sda_mds[i] / achs_mds[i] (and similar), not a value; maxima are application-specific (system parameters). The affected list is not evaluated.'},

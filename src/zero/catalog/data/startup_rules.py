@@ -5,7 +5,11 @@ the parameters it reads)).
 Generated: do not edit."""
 
 # ruff: noqa
-from typing import Any
+from __future__ import annotations
+
+TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (zero.hints)
+if TYPE_CHECKING:
+    from typing import Any
 
 DECLARED: dict[str, Any] = {
     'K002': (('K002', 20419, 'CHAN', ('P-CHAN-00007',), 'unique(P-CHAN-00007)', '', '', 'Two spindles with the same name', 'https://infosys.beckhoff.com/content/1033/tf5200_diagnosis/251568267.html', True, 'at start-up', ''),
