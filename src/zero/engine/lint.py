@@ -25,7 +25,7 @@ from zero.files import read_file
 from zero.forms import is_program, is_update, is_xml, structured_format
 from zero.lists.encoding import decode
 from zero.lists.model import Document
-from zero.lists.tokenizer import tokenize, tokenize_text
+from zero.lists.tokenizer import read_as_bytes, tokenize, tokenize_text
 from zero.records import replace
 from zero.rules import (
     MACHINE_CHECKS,
@@ -259,8 +259,11 @@ def lint_file(path: str | Path, registry: Registry, options: LintOptions | None 
     name = str(path)
     if is_program(name) or structured_format(name) is not None or is_xml(data):
         return lint_data(data, name, registry, options)
-    # a list file (lint_bytes): its bytes let go once decoded, so a big list is held once, as its text
+    # a list file (lint_bytes), held once: a big ASCII list as its bytes (the document keeps them), any
+    # other as its text (the bytes let go once decoded)
     declared = options.encoding if options else None
+    if read_as_bytes(data):
+        return lint_document(tokenize(data, name, declared), registry, options)
     text, codec, bom = decode(data, declared)
     del data
     return lint_document(tokenize_text(text, name, codec, bom, declared=declared is not None), registry, options)

@@ -917,6 +917,12 @@ def _tokenize_items(text: str, path: str = "-", encoding: str = "utf-8", bom: bo
     return Document(path, encoding, lines, endings, items, problems, bom, end_line)
 
 
+def read_as_bytes(data: bytes) -> bool:
+    """Does :func:`tokenize` read these bytes as they are (a big list of ASCII bytes: the document
+    holds them), rather than decode them into a text first?"""
+    return len(data) > _BYTES_FROM and data.isascii() and b"\x00" not in data
+
+
 def tokenize(data: bytes, path: str = "-", encoding: str | None = None, objects: bool = False,
              widths: bool = False) -> Document:
     """Tokenize the bytes of a list file. Never raises (but for an ``encoding`` that
@@ -925,7 +931,7 @@ def tokenize(data: bytes, path: str = "-", encoding: str | None = None, objects:
     ``encoding``: the codec the configuration declares for the file, which wins over detection;
     ``objects``, ``widths``: as :func:`tokenize_text`'s. A big list of ASCII bytes is read as the bytes (the
     same characters in any code page a list may declare): never decoded as a whole, the document holds them."""
-    if not objects and len(data) > _BYTES_FROM and data.isascii() and b"\x00" not in data:
+    if not objects and read_as_bytes(data):
         return _columnar(data, path, declarable(encoding) if encoding is not None else "utf-8", False,
                          encoding is not None, widths)
     text, codec, bom = decode(data, encoding)
