@@ -37,7 +37,7 @@ import re
 import stat
 import sys
 import time
-from collections.abc import Iterator
+from collections.abc import Callable, Iterator
 from pathlib import Path
 
 from zero.errors import ZeroError
@@ -45,7 +45,7 @@ from zero.forms import CONFIG_NAMES, NOT_A_REPORT, split_part, xml_form
 
 TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (mypy and ruff read it alike)
 if TYPE_CHECKING:
-    from typing import BinaryIO
+    from typing import Any, BinaryIO
 
 MAX_FILE_BYTES = 256 * 1024 * 1024
 # What no parameter list (nor its YAML/TOML/JSON form) comes near: the largest zero is measured on,
@@ -77,6 +77,22 @@ def switched_on(variable: str) -> bool:
     """Is the environment variable ``variable`` set to anything but ``0``, ``false``, ``no``, ``off`` or
     nothing (``ZERO_NO_CACHE=1``)?"""
     return os.environ.get(variable, "").strip().lower() not in _OFF
+
+
+def content_digest(data: bytes) -> bytes:
+    """The 16-byte BLAKE2b of ``data``: what the cache and a run's twins know a content by. From
+    ``_blake2``, hashlib's own module without OpenSSL (importing hashlib costs 14 ms of start-up)."""
+    global _blake2b
+    if _blake2b is None:
+        try:
+            from _blake2 import blake2b  # start-up: at the first content hashed
+        except ImportError:  # pragma: no cover - an interpreter without the module
+            from hashlib import blake2b  # start-up: as above
+        _blake2b = blake2b
+    return _blake2b(data, digest_size=16).digest()
+
+
+_blake2b: Callable[..., Any] | None = None
 
 
 def max_file_bytes() -> int:

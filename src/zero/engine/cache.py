@@ -59,15 +59,10 @@ from zero import __version__
 from zero.diagnostics import Diagnostic, Edit, Fix, Related, Severity, Span
 from zero.engine.results import LintOptions, LintResult
 from zero.errors import ZeroError
-from zero.files import max_file_bytes, read_as_is, read_file, switched_on, write_disposable
+from zero.files import content_digest, max_file_bytes, read_as_is, read_file, switched_on, write_disposable
 from zero.forms import CONFIG_NAMES, controller_absolute, is_list, is_program, split_part
 from zero.lists.model import Document, Excerpt
 from zero.records import fields
-
-try:  # start-up: `_blake2` is hashlib's own BLAKE2 without OpenSSL (hashlib costs 14 ms to import)
-    from _blake2 import blake2b
-except ImportError:  # pragma: no cover - an interpreter without the module
-    from hashlib import blake2b
 
 TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (mypy and ruff read it alike)
 if TYPE_CHECKING:  # start-up: a plain lint loads no machine model
@@ -85,7 +80,7 @@ GENERATIONS = 4  # versions of zero whose entries are kept side by side
 RACY_NS = 3_000_000_000  # a file modified this close to when it was checked is checked by its content
 INDEX_RACY_NS = RACY_NS  # the same for a file's record in a run's index (by its modification or change time)
 _MAGIC = b"ZEROCACHE\n"
-_DIGEST = 16
+_DIGEST = 16  # the bytes of files.content_digest
 _TAG = (b"Signature: 8a477f597d28d172789f06886806bc55\n"
         b"# This file is a cache directory tag created by zero.\n"
         b"# For information about cache directory tags see https://bford.info/cachedir/\n")
@@ -103,7 +98,7 @@ def disabled() -> bool:
 
 
 def digest(data: bytes) -> bytes:
-    return blake2b(data, digest_size=_DIGEST).digest()
+    return content_digest(data)
 
 
 # ----------------------------------------------------------------------------- keys

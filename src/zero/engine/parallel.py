@@ -15,7 +15,7 @@ from pathlib import Path
 from zero.catalog.registry import Registry
 from zero.engine.lint import LintOptions, LintResult, lint_data, lint_file
 from zero.errors import ZeroError
-from zero.files import max_file_bytes, read_file
+from zero.files import content_digest, max_file_bytes, read_file
 from zero.forms import is_program, is_xml, kind_hint, structured_format
 from zero.lists.model import Excerpt
 from zero.records import replace
@@ -84,9 +84,7 @@ class SameFiles:
             return None
         if is_xml(data):
             return None
-        from hashlib import blake2b  # start-up: only for a run of many files
-
-        return (blake2b(data, digest_size=16).digest(), kind_hint(name), id(options), id(registry)), data
+        return (content_digest(data), kind_hint(name), id(options), id(registry)), data
 
     def twin(self, key: tuple[bytes, str | None, int, int], path: Path, options: LintOptions,
              registry: Registry) -> LintResult | None:

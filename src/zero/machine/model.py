@@ -41,7 +41,7 @@ from zero.catalog.ids import (
 from zero.catalog.registry import Registry
 from zero.catalog.values import ListValues
 from zero.errors import ZeroError
-from zero.files import nearest_holding, read_file, within
+from zero.files import content_digest, nearest_holding, read_file, within
 from zero.forms import (
     CONFIG_NAMES,
     KERNEL_ROOT,
@@ -394,9 +394,7 @@ class _Shared:
 
     @staticmethod
     def key(data: bytes, codec: str | None, kind: str, registry: Registry) -> ContentKey:
-        from hashlib import blake2b  # start-up: only when a machine is read
-
-        return blake2b(data, digest_size=16).digest(), codec, kind, id(registry)
+        return content_digest(data), codec, kind, id(registry)
 
     def twin(self, key: ContentKey, registry: Registry) -> ListValues | None:
         hit = self.kept.get(key)
