@@ -17,6 +17,7 @@ import shlex
 import subprocess
 import sys
 import time
+from collections.abc import Callable
 from dataclasses import dataclass
 from pathlib import Path
 from types import ModuleType
@@ -58,6 +59,25 @@ def corpus() -> Path:
             pytest.fail(f"CI must run the corpus tests: {reason}")
         pytest.skip(reason)
     return path
+
+
+def count_lints(monkeypatch: pytest.MonkeyPatch, seen: Callable[[str], None]) -> None:
+    """Call ``seen`` with the path of every file :mod:`zero.engine.parallel` really lints: from its path
+    (``lint_file``), or from the bytes it read to tell a run's twins apart (``lint_data``); a twin that
+    shares another's result is not linted."""
+    import zero.engine.parallel as parallel
+    from zero.engine.lint import lint_data, lint_file
+
+    def by_path(path: str | Path, registry: Registry, options: LintOptions | None = None) -> LintResult:
+        seen(str(path))
+        return lint_file(path, registry, options)
+
+    def by_data(data: bytes, path: str, registry: Registry, options: LintOptions | None = None) -> LintResult:
+        seen(path)
+        return lint_data(data, path, registry, options)
+
+    monkeypatch.setattr(parallel, "lint_file", by_path)
+    monkeypatch.setattr(parallel, "lint_data", by_data)
 
 
 def script_module(path: Path) -> ModuleType:

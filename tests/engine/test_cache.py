@@ -20,6 +20,7 @@ import pytest
 
 import zero.engine.cache as cache_module
 import zero.engine.parallel as parallel
+from conftest import count_lints
 from zero.catalog.registry import Registry, load_registry
 from zero.diagnostics import Diagnostic, Edit, Fix, Related, Severity, Span
 from zero.engine.cache import (
@@ -32,7 +33,7 @@ from zero.engine.cache import (
 )
 from zero.engine.commands import Echo, LintRequest, run_lint
 from zero.engine.fleet import fleet_drift
-from zero.engine.lint import LintOptions, LintResult, lint_data, lint_file
+from zero.engine.lint import LintOptions, LintResult
 from zero.engine.project import Project
 from zero.lists.model import Document
 from zero.output.fleet import fleet_json
@@ -66,19 +67,7 @@ class Linter:
     def __init__(self, monkeypatch: pytest.MonkeyPatch, folder: Path) -> None:
         self.linted: list[str] = []
         self.registries: dict[Path | None, Registry] = {}
-        real, real_bytes = lint_file, lint_data
-
-        def counting(path: Any, registry: Registry, options: LintOptions | None = None) -> LintResult:
-            self.linted.append(str(path))
-            return real(path, registry, options)
-
-        def counting_bytes(data: bytes, path: str, registry: Registry,
-                           options: LintOptions | None = None) -> LintResult:
-            self.linted.append(path)  # a list of many files is linted from the bytes read to tell its twins
-            return real_bytes(data, path, registry, options)
-
-        monkeypatch.setattr(parallel, "lint_file", counting)
-        monkeypatch.setattr(parallel, "lint_data", counting_bytes)
+        count_lints(monkeypatch, lambda path: self.linted.append(path))
         monkeypatch.setenv("ZERO_CACHE_DIR", str(folder))
         monkeypatch.delenv("ZERO_NO_CACHE", raising=False)
 

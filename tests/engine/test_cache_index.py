@@ -12,10 +12,10 @@ from typing import Any
 import pytest
 
 import zero.engine.cache as cache_module
-import zero.engine.parallel as parallel
+from conftest import count_lints
 from zero.catalog.registry import Registry, load_registry
 from zero.engine.commands import Echo, LintRequest, run_lint
-from zero.engine.lint import LintOptions, LintResult, lint_data, lint_file
+from zero.engine.lint import LintOptions
 
 LIST = b"kopf.achs_nr 1\nantr_simu.mode 1\nunknown_key 1\nkenngr.swe_pos 1e99\nEnde\n"
 SAME_SIZE = b"kopf.achs_nr 2\nantr_simu.mode 1\nunknown_kez 1\nkenngr.swe_pos 1e99\nEnde\n"
@@ -28,23 +28,13 @@ class Run:
         self.linted: list[str] = []
         self.read: list[str] = []
         self.registries: dict[Path | None, Registry] = {}
-        lint, lint_bytes, read = lint_file, lint_data, cache_module.read_file
-
-        def counting_lint(path: Any, registry: Registry, options: LintOptions | None = None) -> LintResult:
-            self.linted.append(str(path))
-            return lint(path, registry, options)
-
-        def counting_lint_bytes(data: bytes, path: str, registry: Registry,
-                                options: LintOptions | None = None) -> LintResult:
-            self.linted.append(path)  # a list of many files is linted from the bytes read to tell its twins
-            return lint_bytes(data, path, registry, options)
+        read = cache_module.read_file
 
         def counting_read(path: Any, limit: int | None = None) -> bytes:
             self.read.append(str(path))
             return read(path, limit)
 
-        monkeypatch.setattr(parallel, "lint_file", counting_lint)
-        monkeypatch.setattr(parallel, "lint_data", counting_lint_bytes)
+        count_lints(monkeypatch, lambda path: self.linted.append(path))
         monkeypatch.setattr(cache_module, "read_file", counting_read)
         monkeypatch.setenv("ZERO_CACHE_DIR", str(folder))
         monkeypatch.delenv("ZERO_NO_CACHE", raising=False)

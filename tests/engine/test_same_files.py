@@ -18,9 +18,10 @@ from typing import Any
 import pytest
 
 import zero.engine.parallel as parallel
+from conftest import count_lints
 from zero.catalog.registry import Registry
 from zero.diagnostics import Diagnostic, Related, Severity, Span
-from zero.engine.lint import LintOptions, LintResult, lint_data, lint_file
+from zero.engine.lint import LintOptions, LintResult, lint_file
 from zero.engine.parallel import SameFiles, iter_lint_many
 from zero.lists.model import Excerpt
 
@@ -43,18 +44,7 @@ class Counted:
 
     def __init__(self, monkeypatch: pytest.MonkeyPatch) -> None:
         self.linted: list[str] = []
-        real_file, real_data = lint_file, lint_data
-
-        def by_path(path: Any, registry: Registry, options: LintOptions | None = None) -> LintResult:
-            self.linted.append(str(path))
-            return real_file(path, registry, options)
-
-        def by_data(data: bytes, path: str, registry: Registry, options: LintOptions | None = None) -> LintResult:
-            self.linted.append(path)
-            return real_data(data, path, registry, options)
-
-        monkeypatch.setattr(parallel, "lint_file", by_path)
-        monkeypatch.setattr(parallel, "lint_data", by_data)
+        count_lints(monkeypatch, lambda path: self.linted.append(path))
 
 
 @pytest.fixture()
