@@ -26,7 +26,9 @@ import pytest
 from hypothesis import strategies as st
 
 from zero.catalog.registry import Registry, load_registry
+from zero.catalog.values import Resolved, bind, read_value
 from zero.engine.lint import LintOptions, LintResult, lint_bytes
+from zero.lists.model import Document
 
 ROOT = Path(__file__).resolve().parent.parent
 FIXTURES = ROOT / "fixtures"
@@ -78,6 +80,19 @@ def count_lints(monkeypatch: pytest.MonkeyPatch, seen: Callable[[str], None]) ->
 
     monkeypatch.setattr(parallel, "lint_file", by_path)
     monkeypatch.setattr(parallel, "lint_data", by_data)
+
+
+def bound_one_by_one(doc: Document, registry: Registry, kind: str | None) -> list[Resolved]:
+    """Every entry the controller reads, bound on its own: the per-entry reference the value model's
+    passes per pattern and value are held to."""
+    out = []
+    for e in doc.entries:
+        if e.key is None or e.value_kind is None:
+            continue
+        hit = bind(registry, e.key.pattern, kind)
+        if hit is not None:
+            out.append(Resolved(e, hit[0], read_value(hit[0], e), hit[1]))
+    return out
 
 
 def script_module(path: Path) -> ModuleType:

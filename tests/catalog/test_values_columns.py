@@ -7,8 +7,8 @@ from __future__ import annotations
 from hypothesis import example, given, settings
 from hypothesis import strategies as st
 
-from conftest import builtin_registry, generated_lists
-from zero.catalog.values import ListValues, Resolved, bind, read_value
+from conftest import bound_one_by_one, builtin_registry, generated_lists
+from zero.catalog.values import ListValues, Resolved
 from zero.lists.tokenizer import tokenize
 
 
@@ -18,16 +18,11 @@ def _values(text: str, kind: str | None = None) -> ListValues:
 
 def _reference(values: ListValues) -> tuple[list[Resolved], dict[str, dict[tuple[int, ...], Resolved]]]:
     """Every entry bound on its own, as ListValues.of did before it worked per pattern."""
-    resolved, by_id = [], {}
-    for e in values.doc.entries:
-        if e.key is None or e.value_kind is None:
-            continue
-        hit = bind(values.registry, e.key.pattern, values.kind)
-        if hit is None:
-            continue
-        res = Resolved(e, hit[0], read_value(hit[0], e), hit[1])
-        resolved.append(res)
-        by_id.setdefault(hit[0].id, {})[e.key.indices] = res
+    resolved = bound_one_by_one(values.doc, values.registry, values.kind)
+    by_id: dict[str, dict[tuple[int, ...], Resolved]] = {}
+    for res in resolved:
+        assert res.entry.key is not None
+        by_id.setdefault(res.spec.id, {})[res.entry.key.indices] = res
     return resolved, by_id
 
 

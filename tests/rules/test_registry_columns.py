@@ -13,8 +13,8 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from conftest import builtin_registry, generated_lists, lint_text
-from zero.catalog.values import Resolved, bind, read_value
+from conftest import bound_one_by_one, builtin_registry, generated_lists, lint_text
+from zero.catalog.values import Resolved
 from zero.diagnostics import Diagnostic, Edit, Fix, Related, Span
 from zero.lists.model import HUGE_INDEX, format_key
 from zero.lists.tokenizer import tokenize
@@ -30,14 +30,7 @@ def _context(text: str, kind: str | None = None) -> Context:
 
 
 def _resolved(ctx: Context) -> list[Resolved]:
-    out = []
-    for e in ctx.doc.entries:
-        if e.key is None or e.value_kind is None:
-            continue
-        hit = bind(ctx.registry, e.key.pattern, ctx.kind)
-        if hit is not None:
-            out.append(Resolved(e, hit[0], read_value(hit[0], e), hit[1]))
-    return out
+    return bound_one_by_one(ctx.doc, ctx.registry, ctx.kind)
 
 
 def _reference_keys(ctx: Context) -> Iterator[Diagnostic]:

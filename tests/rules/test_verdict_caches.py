@@ -12,9 +12,9 @@ from pathlib import Path
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from conftest import FIXTURES, builtin_registry, generated_lists
+from conftest import FIXTURES, bound_one_by_one, builtin_registry, generated_lists
 from zero.catalog.registry import Registry, load_registry
-from zero.catalog.values import ListValues, Resolved, bind, read_value
+from zero.catalog.values import ListValues
 from zero.diagnostics import Diagnostic
 from zero.lists.tokenizer import tokenize
 from zero.records import replace
@@ -51,13 +51,7 @@ def _context(text: str, registry: Registry, kind: str | None, m001: bool) -> Con
 def _reference_values(ctx: Context) -> list[Diagnostic]:
     """check_values as the loop over every entry, each bound and judged on its own (no memo)."""
     out = []
-    for e in ctx.doc.entries:
-        if e.key is None or e.value_kind is None:
-            continue
-        hit = bind(ctx.registry, e.key.pattern, ctx.kind)
-        if hit is None:
-            continue
-        res = Resolved(e, hit[0], read_value(hit[0], e), hit[1])
+    for res in bound_one_by_one(ctx.doc, ctx.registry, ctx.kind):
         if not R.not_configured(ctx, res):
             out.extend(R._check_value(ctx, res))
     return out
