@@ -8,6 +8,7 @@ import dataclasses
 import pickle
 import subprocess
 import sys
+from pathlib import Path
 from typing import ClassVar
 
 import pytest
@@ -172,3 +173,54 @@ def test_init_is_compiled_at_the_first_instance_and_then_called_directly() -> No
     assert Late.__init__ is compiled and Sub.__init__ is compiled
     with pytest.raises(TypeError, match="missing 1 required positional argument: 'a'"):
         Late()  # type: ignore[call-arg]
+
+
+ROOT = Path(__file__).resolve().parent.parent
+
+
+def test_the_ahead_of_time_inits_are_current() -> None:
+    """Run ``python tools/gen_record_inits.py`` after adding or changing a record's fields."""
+    done = subprocess.run([sys.executable, str(ROOT / "tools" / "gen_record_inits.py"), "--check"],
+                          capture_output=True, text=True, check=False)
+    assert done.returncode == 0, done.stdout + done.stderr
+
+
+def test_a_record_of_zero_takes_its_init_from_the_table_and_behaves_as_compiled() -> None:
+    from zero.diagnostics import Span
+    from zero.record_inits import INITS
+
+    span = Span(3, 4, 3, 9)
+    init = type(span).__init__
+    assert init.__code__ in INITS.values()
+    assert init.__code__.co_filename.endswith("record_inits.py")
+    assert (span.line, span.column, span.end_line, span.end_column) == (3, 4, 3, 9)
+    assert init.__globals__ is not vars(sys.modules["zero.record_inits"])  # its own scope, not the table's
+
+
+def test_a_record_the_table_does_not_hold_is_compiled_with_its_defaults() -> None:
+    @record(frozen=True)
+    class Unlisted:
+        a_field_no_zero_record_has: int
+        with_default: str = "d"
+        with_factory: list[int] = field(default_factory=lambda: [7])
+
+    made = Unlisted(1)
+    assert type(made).__init__.__code__.co_filename == "<string>"
+    assert (made.a_field_no_zero_record_has, made.with_default, made.with_factory) == (1, "d", [7])
+    assert Unlisted(2, "e", [1]).with_factory == [1]
+    with pytest.raises(AttributeError):
+        made.with_default = "x"  # type: ignore[misc]
+
+
+def test_every_ahead_of_time_init_is_the_code_its_text_compiles_to() -> None:
+    """The table's functions are compiled from the text with its defaults replaced: the code is the same."""
+    from types import CodeType
+
+    from zero.record_inits import INITS
+
+    assert len(INITS) > 50
+    for source, code in INITS.items():
+        assert isinstance(code, CodeType)
+        ref = next(c for c in compile(source, "<string>", "exec").co_consts if isinstance(c, CodeType))
+        assert (code.co_code, code.co_names, code.co_varnames, code.co_argcount, code.co_consts) == (
+            ref.co_code, ref.co_names, ref.co_varnames, ref.co_argcount, ref.co_consts), source

@@ -21,8 +21,10 @@ from __future__ import annotations
 
 from collections.abc import Callable
 from operator import attrgetter
+from types import FunctionType
 
 from zero.hints import dataclass_transform, overload
+from zero.record_inits import INITS
 
 __all__ = ["Field", "field", "fields", "record", "replace"]
 
@@ -182,15 +184,18 @@ def _build(cls: type, frozen: bool, eq: bool, unsafe_hash: bool) -> type:
     scope: dict[str, Any] = {"MISSING": MISSING, "__set": object.__setattr__}
     params: list[str] = []
     lines: list[str] = []
+    defaults: list[Any] = []  # the parameters' defaults, in order (what the def line names)
     for f in all_fields:
         n = f.name
         if f.default_factory is not MISSING:
             scope[f"__factory_{n}"] = f.default_factory
             params.append(f"{n}=MISSING")
+            defaults.append(MISSING)
             value = f"__factory_{n}() if {n} is MISSING else {n}"
         elif f.default is not MISSING:
             scope[f"__default_{n}"] = f.default
             params.append(f"{n}=__default_{n}")
+            defaults.append(f.default)
             value = n
         else:
             params.append(n)
@@ -207,7 +212,7 @@ def _build(cls: type, frozen: bool, eq: bool, unsafe_hash: bool) -> type:
             body[name] = value
 
     owner: list[type] = []  # the class built below, whose __init__ the first call compiles
-    put("__init__", _first_init(source, scope, owner))
+    put("__init__", _first_init(source, scope, tuple(defaults), owner))
     put("__repr__", methods["__repr__"])
     if eq:
         put("__eq__", methods["__eq__"])
@@ -234,20 +239,31 @@ def _build(cls: type, frozen: bool, eq: bool, unsafe_hash: bool) -> type:
     return new
 
 
-def _compiled_init(source: str, scope: dict[str, Any]) -> Callable[..., None]:
+def _compiled_init(source: str, scope: dict[str, Any], defaults: tuple[Any, ...]) -> Callable[..., None]:
+    """The record's ``__init__``: from the code compiled ahead of time (:mod:`zero.record_inits`,
+    written by ``tools/gen_record_inits.py``) with ``scope`` as its globals and ``defaults`` as its
+    parameters' defaults, which is what executing ``source`` in ``scope`` makes; or, for a record
+    that table does not hold (a test's, or a table not yet regenerated), by compiling ``source``.
+    Compiling Python text is the costly part (some forty records a run: 5 ms of ``zero lint``)."""
+    code = INITS.get(source)
+    if code is not None:
+        made: Callable[..., None] = FunctionType(code, scope, "__init__", defaults or None)
+        scope["__init__"] = made
+        return made
     exec(source, scope)  # the text is built from field names only
     init: Callable[..., None] = scope["__init__"]
     return init
 
 
-def _first_init(source: str, scope: dict[str, Any], owner: list[type]) -> Callable[..., None]:
-    """An ``__init__`` that compiles the record's own at its first call and puts it in its place.
+def _first_init(source: str, scope: dict[str, Any], defaults: tuple[Any, ...],
+                owner: list[type]) -> Callable[..., None]:
+    """An ``__init__`` that makes the record's own at its first call and puts it in its place.
 
-    Compiling is most of what declaring a record costs, and a run instantiates fewer than half of
-    the records it imports (``zero lint`` of one list: issue 40, start-up), so each is compiled
-    when its class is first instantiated; from then on the class calls the compiled one directly."""
+    Making it is most of what declaring a record costs, and a run instantiates fewer than half of
+    the records it imports (``zero lint`` of one list: issue 40, start-up), so each is made
+    when its class is first instantiated; from then on the class calls its own directly."""
     def __init__(self: Any, *args: Any, **kwargs: Any) -> None:
-        init = scope.get("__init__") or _compiled_init(source, scope)
+        init = scope.get("__init__") or _compiled_init(source, scope, defaults)
         if owner[0].__dict__.get("__init__") is __init__:
             type.__setattr__(owner[0], "__init__", init)
         init(self, *args, **kwargs)
