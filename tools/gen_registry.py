@@ -67,6 +67,42 @@ def _tupled(value: object) -> object:
     return tuple(_tupled(v) for v in value) if isinstance(value, list) else value
 
 
+def _index(rows: list[dict[str, object]]) -> list[str]:
+    """The registry's index of the rows' keys, as constants sorted for bisection: what ``Registry`` built of
+    every row at each start-up, where a lint looks up a few hundred (issue 40). ``IDS`` the rows' IDs in
+    order (sorted); per kind its keys sorted, each with the ID of its first row; the keys sorted, each
+    with the kinds that have it in the rows' order; the count parameters (``…_anzahl``) as (ID, kind, key)."""
+    by_key: dict[tuple[str, str], str] = {}
+    kinds_of: dict[str, list[str]] = {}
+    counts: list[tuple[str, str, str]] = []
+    for r in rows:
+        pid, kind, key = str(r["id"]), str(r["kind"]), r.get("key")
+        if not key:
+            continue
+        by_key.setdefault((kind, str(key)), pid)
+        kinds_of.setdefault(str(key), []).append(kind)
+        if str(key).endswith("_anzahl"):
+            counts.append((pid, kind, str(key)))
+    by_kind: dict[str, tuple[tuple[str, ...], tuple[str, ...]]] = {}
+    for kind in sorted({k for k, _ in by_key}):
+        pairs = sorted((key, pid) for (k, key), pid in by_key.items() if k == kind)
+        by_kind[kind] = (tuple(key for key, _ in pairs), tuple(pid for _, pid in pairs))
+    keys = sorted(kinds_of)
+
+    def constant(name: str, typ: str, values: object) -> str:
+        return f"{name}: {typ} = {values!r}"
+
+    return ["",
+            "# The registry's index (tools/gen_registry.py), each sorted: a look-up bisects, no dictionary of every",
+            "# parameter is built at start-up. The IDs; per kind its keys and the ID of each; the keys and the",
+            "# kinds of each; the count parameters.",
+            constant("IDS", "tuple[str, ...]", tuple(str(r["id"]) for r in rows)),
+            constant("KEYS", "dict[str, tuple[tuple[str, ...], tuple[str, ...]]]", by_kind),
+            constant("KINDS_OF_KEYS", "tuple[str, ...]", tuple(keys)),
+            constant("KINDS_OF", "tuple[tuple[str, ...], ...]", tuple(tuple(kinds_of[k]) for k in keys)),
+            constant("COUNTS", "tuple[tuple[str, str, str], ...]", tuple(counts))]
+
+
 def write_table(rows: list[dict[str, object]], out: Path = OUT) -> None:
     """``rows`` (compact: no empty field) as ``table.py``: COLUMNS, and DATA one tuple per row."""
     columns: list[str] = []
@@ -76,6 +112,7 @@ def write_table(rows: list[dict[str, object]], out: Path = OUT) -> None:
              f"COLUMNS: tuple[str, ...] = {tuple(columns)!r}", "DATA: tuple[tuple[Any, ...], ...] = ("]
     lines.extend(f"    {tuple(_tupled(r.get(c)) for c in columns)!r}," for r in rows)
     lines.append(")")
+    lines.extend(_index(rows))
     out.write_text("\n".join(lines) + "\n" + TAIL, encoding="utf-8")
 
 

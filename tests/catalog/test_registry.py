@@ -10,7 +10,7 @@ import pytest
 
 from conftest import ROOT
 from zero.catalog.ranges import parse_range
-from zero.catalog.registry import KINDS, Registry, build_registry, load_registry
+from zero.catalog.registry import BUILTIN_SOURCE, KINDS, Registry, build_registry, load_registry
 from zero.catalog.values import default_number
 
 
@@ -171,3 +171,61 @@ def test_building_registries_leaves_the_built_in_tables_as_they_were() -> None:
         linted = [lint_file(path, reg) for path in sorted((ROOT / "fixtures" / "rules").rglob("*.lis"))]
         assert len(linted) > 50 and any(r.diagnostics for r in linted)
     assert rows == ROWS and seeds == SEEDS
+
+
+def test_the_tables_written_index_is_the_one_the_registry_builds_of_its_rows() -> None:
+    """data/table.py's index (tools/gen_registry.py) answers as the dictionaries a registry builds of the rows
+    itself: every (kind, key), every key's kinds, the counts, in the same order; a stale index fails here."""
+    from zero.catalog.data.table import ROWS
+    from zero.catalog.registry import KeyIndex, SortedIndex
+
+    built_in = load_registry()
+    assert isinstance(built_in._by_key, KeyIndex) and isinstance(built_in._kinds_of, SortedIndex)
+    own = build_registry(ROWS, BUILTIN_SOURCE)  # the rows as dictionaries: indexed by the registry itself
+    assert isinstance(own._by_key, dict) and isinstance(own._kinds_of, dict)
+    assert list(built_in._by_key.items()) == list(own._by_key.items())
+    assert len(built_in._by_key) == len(own._by_key)
+    assert {k: list(v) for k, v in built_in._kinds_of.items()} == own._kinds_of
+    assert built_in._counters() == own._counters()
+    assert list(built_in.specs) == list(own.specs) and len(built_in.specs) == len(own.specs)
+    assert all(built_in.specs[pid] == own.specs[pid] for pid in own.specs)
+
+
+def test_a_sorted_index_answers_as_a_dictionary() -> None:
+    from zero.catalog.registry import KeyIndex, SortedIndex
+
+    plain = {"b": 2, "d": 4, "a": 1}
+    idx = SortedIndex(("a", "b", "d"), (1, 2, 4), rank=(3, 1, 2))
+    assert list(idx) == ["b", "d", "a"] and len(idx) == 3  # in rank order
+    assert all(idx[k] == v and k in idx for k, v in plain.items())
+    assert idx.get("c") is None and "c" not in idx and 5 not in idx and idx.get(5, "no") == "no"
+    with pytest.raises(KeyError):
+        idx["c"]
+    over = SortedIndex(("a", "b", "d"), (1, 2, 4), over={"b": 20, "c": 30})
+    assert dict(over) == {"a": 1, "b": 20, "d": 4, "c": 30} and list(over) == ["a", "b", "d", "c"]
+    assert len(over) == 4 and over["c"] == 30 and "c" in over
+    keys = KeyIndex({"AXIS": (("a.b", "c"), ("P-AXIS-00002", "P-AXIS-00001")), "ZERO": (("a.b",), ("P-ZERO-00001",))})
+    assert list(keys.items()) == [(("AXIS", "c"), "P-AXIS-00001"), (("AXIS", "a.b"), "P-AXIS-00002"),
+                                  (("ZERO", "a.b"), "P-ZERO-00001")]
+    assert keys.get(("AXIS", "a.b")) == "P-AXIS-00002" and ("ZERO", "c") not in keys and ("TOOL", "c") not in keys
+    assert keys.get(("AXIS",)) is None and keys.get(None) is None and len(keys) == 3  # type: ignore[arg-type]
+    with pytest.raises(KeyError):
+        keys[("ZERO", "x")]
+
+
+def test_an_overlay_that_moves_a_key_is_indexed_from_the_rows(monkeypatch: pytest.MonkeyPatch) -> None:
+    """A seed that gives a parameter another key (or a new parameter) makes the written index wrong: the
+    registry then indexes the rows itself."""
+    from zero.catalog import registry as catalog
+    from zero.catalog.data.seeds import SEEDS
+
+    seeds = {**SEEDS, "params": {**SEEDS["params"], "P-AXIS-00001": {"key": "moved.a_beschl"},
+                                 "P-AXIS-99999": {"key": "brand.new", "type": "UNS16"}}}
+    monkeypatch.setattr(catalog, "_overlay", lambda: seeds)
+    reg = load_registry()
+    assert isinstance(reg._by_key, dict)
+    spec = reg.by_pattern("moved.a_beschl", "AXIS")
+    assert spec is not None and spec.id == "P-AXIS-00001"
+    assert reg.by_pattern("getriebe[].slope_profil.a_beschl", "AXIS") is None
+    new = reg.by_pattern("brand.new", None)
+    assert new is not None and new.id == "P-AXIS-99999" and reg.kinds_of("brand.new") == ["AXIS"]

@@ -14,8 +14,10 @@ line keeps a process-wide registry.
 from __future__ import annotations
 
 import re
+from bisect import bisect_left
 from collections import Counter
-from collections.abc import Iterable, Iterator, Mapping
+from collections.abc import Iterable, Iterator, Mapping, Sequence
+from operator import itemgetter
 from pathlib import Path
 
 from zero.catalog.ranges import Range, decode_range, parse_range
@@ -166,6 +168,97 @@ class ParamSpec:
         return d
 
 
+class SortedIndex(Mapping["Any", "Any"]):
+    """A read-only mapping over keys sorted at build time (the built-in table's index, ``data/table.py``): a
+    look-up bisects them, so that a start-up builds no dictionary of the 1766 parameters to look up a few
+    hundred (issue 40). ``over``: entries that take the place of the sorted ones, or come after them (the
+    seed overlay's rows). Iterated in the order of ``rank`` (each key's, e.g. the ID of its row: the order
+    of the rows), else in key order; ``over``'s new keys after them."""
+
+    __slots__ = ("_keys", "_over", "_rank", "_values")
+
+    def __init__(self, keys: Sequence[Any], values: Sequence[Any], rank: Sequence[Any] | None = None,
+                 over: Mapping[Any, Any] | None = None) -> None:
+        self._keys, self._values, self._rank, self._over = keys, values, rank, over or {}
+
+    def _at(self, key: Any) -> int:
+        """The position of ``key`` among the sorted keys, -1 where it is none of them."""
+        keys = self._keys
+        try:
+            at = bisect_left(keys, key)
+        except TypeError:  # a key that does not compare with these (a number among strings): none of them
+            return -1
+        return at if at < len(keys) and keys[at] == key else -1
+
+    def get(self, key: Any, default: Any = None) -> Any:
+        if self._over:
+            hit = self._over.get(key, _ABSENT)
+            if hit is not _ABSENT:
+                return hit
+        at = self._at(key)
+        return self._values[at] if at >= 0 else default
+
+    def __getitem__(self, key: Any) -> Any:
+        got = self.get(key, _ABSENT)
+        if got is _ABSENT:
+            raise KeyError(key)
+        return got
+
+    def __contains__(self, key: object) -> bool:
+        return key in self._over or self._at(key) >= 0
+
+    def __iter__(self) -> Iterator[Any]:
+        keys, rank = self._keys, self._rank
+        if rank is None:
+            yield from keys
+        else:
+            yield from (keys[i] for i in sorted(range(len(keys)), key=rank.__getitem__))
+        yield from (k for k in self._over if self._at(k) < 0)
+
+    def __len__(self) -> int:
+        return len(self._keys) + sum(1 for k in self._over if self._at(k) < 0)
+
+
+_ABSENT: Any = object()
+
+
+class KeyIndex(Mapping[tuple[str, str], str]):
+    """(kind, key) → ID over the built-in table's keys sorted per kind (``data/table.py``): a look-up bisects
+    its kind's keys, no dictionary of every key is built at start-up. Iterated in the order of the IDs (the
+    order of the rows, the first row of each key)."""
+
+    __slots__ = ("_by_kind",)
+
+    def __init__(self, by_kind: Mapping[str, tuple[Sequence[str], Sequence[str]]]) -> None:
+        self._by_kind = by_kind
+
+    def get(self, pair: tuple[str, str], default: Any = None) -> Any:
+        try:
+            kind, key = pair
+            keys, ids = self._by_kind[kind]
+            at = bisect_left(keys, key)
+        except (KeyError, TypeError, ValueError):  # no such kind, or no (kind, key) pair
+            return default
+        return ids[at] if at < len(keys) and keys[at] == key else default
+
+    def __getitem__(self, pair: tuple[str, str]) -> str:
+        got = self.get(pair, _ABSENT)
+        if got is _ABSENT:
+            raise KeyError(pair)
+        return str(got)
+
+    def __contains__(self, pair: object) -> bool:
+        return self.get(pair, _ABSENT) is not _ABSENT  # type: ignore[arg-type]
+
+    def __iter__(self) -> Iterator[tuple[str, str]]:
+        pairs = [(pid, kind, key) for kind, (keys, ids) in self._by_kind.items()
+                 for key, pid in zip(keys, ids, strict=True)]
+        return ((kind, key) for _, kind, key in sorted(pairs))
+
+    def __len__(self) -> int:
+        return sum(len(keys) for keys, _ in self._by_kind.values())
+
+
 class SpecTable(Mapping[str, "ParamSpec"]):
     """ID → :class:`ParamSpec`, each built from its table row on first use.
 
@@ -174,19 +267,23 @@ class SpecTable(Mapping[str, "ParamSpec"]):
     """
 
     def __init__(self, rows: Mapping[str, dict[str, Any] | tuple[Any, ...]], index_base: dict[str, int],
-                 columns: tuple[str, ...] = ()) -> None:
+                 columns: tuple[str, ...] = (), counts: tuple[tuple[str, str, str], ...] | None = None) -> None:
         self._rows = rows  # a row: a dictionary, or a tuple of the built-in table (fields in ``columns``' order)
         self._index_base = index_base
         self._columns = columns
         self._built: dict[str, ParamSpec] = {}
+        self._counts = counts  # (id, kind, key) of the count parameters (`…_anzahl`), where known already
+        # a tuple row (and a None after it) -> its fields in _SPEC_FIELDS' order (None: not given), in C
+        self._pick = itemgetter(*(columns.index(f) if f in columns else len(columns) for f in _SPEC_FIELDS))
 
     def __getitem__(self, param_id: str) -> ParamSpec:
         spec = self._built.get(param_id)
         if spec is None:
             row = self._rows[param_id]
             if isinstance(row, tuple):
-                row = {c: v for c, v in zip(self._columns, row, strict=True) if v is not None}
-            spec = self._built[param_id] = _spec_from_row(row, self._index_base)
+                spec = self._built[param_id] = _spec_from_fields(self._pick((*row, None)), self._index_base)
+            else:
+                spec = self._built[param_id] = _spec_from_row(row, self._index_base)
         return spec
 
     def get(self, param_id: str, default: Any = None) -> Any:
@@ -214,6 +311,12 @@ class SpecTable(Mapping[str, "ParamSpec"]):
             elif row.get("key"):
                 yield pid, row["kind"], row["key"]
 
+    def count_triples(self) -> Iterable[tuple[str, str, str]]:
+        """(id, kind, key) of the parameters whose key ends in ``_anzahl`` (the counts of arrays), in order."""
+        if self._counts is not None:
+            return self._counts
+        return [t for t in self.keys_by_kind() if t[2].endswith("_anzahl")]
+
 
 @record
 class Registry:
@@ -221,8 +324,9 @@ class Registry:
 
     specs: Mapping[str, ParamSpec]
     source: str = "built-in"
-    _by_key: dict[tuple[str, str], str] = field(default_factory=dict)  # (kind, key) → ID
-    _kinds_of: dict[str, list[str]] = field(default_factory=dict)
+    # (kind, key) → ID; key → its kinds (the built-in table's: sorted tuples bisected, SortedIndex)
+    _by_key: Mapping[tuple[str, str], str] = field(default_factory=dict)
+    _kinds_of: Mapping[str, Sequence[str]] = field(default_factory=dict)
     _ranges: dict[str, Range | None] = field(default_factory=dict)
     aliases: dict[tuple[str, str], str] = field(default_factory=dict)
     # (kind, pattern) → (where the vendor's lists use it, the ID it probably stands for or "")
@@ -236,14 +340,19 @@ class Registry:
     memo: dict[str, dict[Any, Any]] = field(default_factory=dict, repr=False)
 
     def __post_init__(self) -> None:
+        if self._by_key:
+            return  # given with its index (the built-in table's, written at build time)
+        by_key: dict[tuple[str, str], str] = {}
+        kinds_of: dict[str, list[str]] = {}
+        self._by_key, self._kinds_of = by_key, kinds_of
         if isinstance(self.specs, SpecTable):
             triples: Iterable[tuple[str, str, str]] = self.specs.keys_by_kind()
         else:
             triples = ((s.id, s.kind, s.key) for s in self.specs.values() if s.key)
         for pid, kind, key in triples:
-            if (kind, key) not in self._by_key:
-                self._by_key[(kind, key)] = pid
-            self._kinds_of.setdefault(key, []).append(kind)
+            if (kind, key) not in by_key:
+                by_key[(kind, key)] = pid
+            kinds_of.setdefault(key, []).append(kind)
 
     def __len__(self) -> int:
         return len(self.specs)
@@ -297,9 +406,10 @@ class Registry:
         memo: dict[str, list[tuple[str, str, str, int]]] = self.memo.setdefault("counters", {})
         if not memo:
             memo[""] = []  # never empty once built
-            for count_id, count_kind, count_key in _triples(self.specs):
-                if not count_key.endswith("_anzahl"):
-                    continue
+            specs = self.specs
+            counts = specs.count_triples() if isinstance(specs, SpecTable) else \
+                [t for t in _triples(specs) if t[2].endswith("_anzahl")]
+            for count_id, count_kind, count_key in counts:
                 m = _COUNT_RE.search(count_key)
                 if m is None or not self.specs[count_id].type.startswith("UNS"):
                     continue
@@ -315,7 +425,7 @@ class Registry:
         return self._machine_data
 
     def kinds_of(self, pattern: str) -> list[str]:
-        return self._kinds_of.get(pattern, [])
+        return list(self._kinds_of.get(pattern, ()))
 
     def range_of(self, spec: ParamSpec) -> Range | None:
         """The parsed formal range of a spec (parsed once, cached). The built-in catalogue's ranges
@@ -487,6 +597,45 @@ def _compiled_ranges() -> dict[str, tuple[str, Any]]:
     return _COMPILED_RANGES
 
 
+# The fields of a row a ParamSpec is made of, in the order _spec_from_fields reads them.
+_SPEC_FIELDS = ("id", "kind", "key", "type", "default", "range", "range_note", "dims", "symbols", "units",
+                "quantity", "max_len", "restart", "description", "vendor_text", "source", "enum", "enum_flags", "bits",
+                "enum_labels")
+
+
+def _spec_from_fields(fields: tuple[Any, ...], index_base: dict[str, int]) -> ParamSpec:
+    """:func:`_spec_from_row` of a row's fields in ``_SPEC_FIELDS``' order (``None``: not given), as a table
+    row's tuple gives them: no dictionary per row."""
+    (pid, kind, key, typ, default, range_text, range_note, dims, symbols, units, quantity, max_len, restart,
+     description, vendor_text, source, enum, enum_flags, bits, enum_labels) = fields
+    base = 0
+    if key:
+        first = key.split("[", 1)[0].split(".", 1)[0]
+        base = index_base.get(f"{kind}:{first}", 0)
+    return ParamSpec(
+        id=pid,
+        kind=kind,
+        key=key,
+        type="STRING" if typ is None else typ,
+        default=default,
+        range_text=range_text,
+        range_note=range_note,
+        dims=tuple(dims) if dims is not None else (),
+        symbols=tuple((s[0], s[1]) for s in symbols) if symbols is not None else (),
+        units=tuple(units) if units is not None else (),
+        quantity=quantity,
+        max_len=max_len,
+        restart=bool(restart),
+        description=description or vendor_text,
+        source="CncParaDesc.xml" if source is None else source,
+        index_base=base,
+        enum=tuple(enum) if enum is not None else (),
+        enum_flags=bool(enum_flags),
+        bits=bool(bits),
+        enum_labels=tuple(enum_labels) if enum_labels is not None else (),
+    )
+
+
 def _spec_from_row(row: dict[str, Any], index_base: dict[str, int]) -> ParamSpec:
     key = row.get("key")
     base = 0
@@ -531,21 +680,40 @@ def build_registry(rows: list[dict[str, Any]], source: str) -> Registry:
     return _built(by_id, source)
 
 
-def _built(by_id: dict[str, dict[str, Any] | tuple[Any, ...]], source: str, columns: tuple[str, ...] = ()) -> Registry:
+# The built-in table's index, written at build time (``data/table.py``), each sorted: per kind its keys and
+# the ID of each, the keys and the kinds of each, and the count parameters' (ID, kind, key).
+Index = tuple[Mapping[str, tuple[tuple[str, ...], tuple[str, ...]]], tuple[str, ...], tuple[tuple[str, ...], ...],
+              tuple[tuple[str, str, str], ...]]
+
+
+def _built(rows: Mapping[str, dict[str, Any] | tuple[Any, ...]], source: str, columns: tuple[str, ...] = (),
+           index: Index | None = None) -> Registry:
     """The registry of rows by ID (dictionaries, or the built-in table's tuples in ``columns``' order)
-    with the seed overlay. The rows are shared, never changed: a row the overlay changes is copied."""
+    with the seed overlay. The rows are shared, never changed: a row the overlay changes is copied.
+    ``index``: the rows' index written at build time, used where the overlay changes no row's key or kind
+    (else the registry indexes the rows itself)."""
     overlay = _overlay()
+    changed: dict[str, dict[str, Any] | tuple[Any, ...]] = {}
     for pid, extra in overlay.get("params", {}).items():
-        old = by_id.get(pid)
+        old = rows.get(pid)
         if isinstance(old, tuple):
+            if index is not None and (extra.get("key", old[2]) != old[2] or extra.get("kind", old[1]) != old[1]):
+                index = None
             old = {c: v for c, v in zip(columns, old, strict=True) if v is not None}
-        row = by_id[pid] = dict(old or {"id": pid, "kind": pid[2:6], "type": "STRING"})
+        elif index is not None and (old is None or extra.get("key", old.get("key")) != old.get("key")
+                                    or extra.get("kind", old["kind"]) != old["kind"]):
+            index = None  # a new parameter, or one the overlay gives another key or kind
+        row = changed[pid] = dict(old or {"id": pid, "kind": pid[2:6], "type": "STRING"})
         if "description" in extra and row.get("vendor_text"):
             row["vendor_text"] = None
         row.update(extra)
         row.pop("range_note", None) if "range" in extra else None
+    if isinstance(rows, SortedIndex):
+        rows = SortedIndex(rows._keys, rows._values, rows._rank, changed)
+    else:
+        rows = {**rows, **changed}
     index_base = overlay.get("index_base", {})
-    specs = SpecTable(by_id, index_base, columns)
+    specs = SpecTable(rows, index_base, columns, index[3] if index is not None else None)
     aliases = {}
     for name, target in overlay.get("aliases", {}).items():
         kind, _, pattern = name.partition(":")
@@ -554,7 +722,11 @@ def _built(by_id: dict[str, dict[str, Any] | tuple[Any, ...]], source: str, colu
     for name, facts in overlay.get("vendor_keys", {}).items():
         kind, _, pattern = name.partition(":")
         vendor_keys[(kind, pattern)] = (facts["source"], facts.get("near", ""))
-    return Registry(specs, source, aliases=aliases, vendor_keys=vendor_keys)
+    if index is None:
+        return Registry(specs, source, aliases=aliases, vendor_keys=vendor_keys)
+    by_kind, kinds_of_keys, kinds_of, _ = index
+    return Registry(specs, source, _by_key=KeyIndex(by_kind), _kinds_of=SortedIndex(kinds_of_keys, kinds_of),
+                    aliases=aliases, vendor_keys=vendor_keys)
 
 
 def load_table() -> list[dict[str, Any]]:
@@ -568,10 +740,11 @@ def load_registry(param_desc: str | Path | None = None) -> Registry:
     """A new registry: the built-in table, or one built from a user's ``CncParaDesc.xml``
     (:class:`~zero.errors.ZeroError` when that file cannot be read)."""
     if param_desc is None:
-        from zero.catalog.data.table import COLUMNS, DATA  # start-up: the 1766 rows only for the built-in registry
+        from zero.catalog.data import table  # start-up: the 1766 rows only for the built-in registry
 
-        assert COLUMNS[:3] == ("id", "kind", "key")  # what keys_by_kind reads of a tuple
-        return _built({row[0]: row for row in DATA}, BUILTIN_SOURCE, COLUMNS)
+        assert table.COLUMNS[:3] == ("id", "kind", "key")  # what keys_by_kind reads of a tuple
+        return _built(SortedIndex(table.IDS, table.DATA), BUILTIN_SOURCE, table.COLUMNS,
+                      (table.KEYS, table.KINDS_OF_KEYS, table.KINDS_OF, table.COUNTS))
     from zero.catalog.paramdesc import read_param_desc  # start-up: XML parsing only when asked
 
     rows = read_param_desc(param_desc, with_text=True)
