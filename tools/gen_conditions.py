@@ -1,8 +1,9 @@
 #!/usr/bin/env python3
 """Write the K rules' conditions (``src/zero/catalog/data/startup_errors.py``) as Python functions to
-``startup_compiled.py``: read from bytecode at start-up instead of parsed and compiled at each run
-(issue 40). A row whose condition text differs from the one written here is compiled at run time, so a
-stale module is slower, never wrong; a test fails while it is stale. Run it after tools/gen_startup.py.
+``startup_compiled.py``, and the prose ranges' (``prose_ranges.py``) to ``prose_compiled.py``: read from
+bytecode at start-up instead of parsed and compiled at each run (issue 40). A row whose condition text
+differs from the one written here is compiled at run time, so a stale module is slower, never wrong; a
+test fails while it is stale. tools/gen_startup.py runs it after writing the rows.
 
 Usage: python tools/gen_conditions.py
 """
@@ -43,10 +44,36 @@ def render() -> str:
     return head + "\n\n".join(defs) + "\n\nCOMPILED = {\n" + "\n".join(table) + "\n}\n"
 
 
+def render_prose() -> str:
+    """``prose_compiled.py``'s text: each prose range's condition (and guard) as a function, with the
+    elements it reads, keyed by the parameter's ID, from the rows as they are now."""
+    from zero.catalog.condition_source import HELPERS, source
+    from zero.catalog.conditions import parse, ref_elements
+    from zero.catalog.data.prose_ranges import RANGES
+
+    defs: list[str] = []
+    table: list[str] = []
+    for n, row in enumerate(RANGES):
+        pid, condition, when = str(row["id"]), str(row["condition"]), str(row.get("when", ""))
+        node = parse(condition)
+        defs.append(source(f"_r{n}", node))
+        if when:
+            defs.append(source(f"_r{n}_when", parse(when)))
+        table.append(f"    {pid!r}: ({condition!r}, {when!r}, _r{n}, {f'_r{n}_when' if when else 'None'}, "
+                     f"{tuple(ref_elements(node))!r}),")
+    head = ('"""The prose ranges\' conditions of prose_ranges.toml as Python, written by tools/gen_conditions.py:\n'
+            "ID -> (condition, guard, the condition's function, the guard's or None, the elements it reads).\n\n"
+            'Generated: do not edit."""\n\n'
+            "# ruff: noqa\n# mypy: ignore-errors\n"
+            f"from zero.catalog.condition_source import {', '.join(HELPERS)}\n\n\n")
+    return head + "\n\n".join(defs) + "\n\nCOMPILED = {\n" + "\n".join(table) + "\n}\n"
+
+
 def main() -> None:
-    target = DATA / "startup_compiled.py"
-    target.write_text(render(), encoding="utf-8")
-    print(f"wrote {target}")
+    for name, text in (("startup_compiled.py", render()), ("prose_compiled.py", render_prose())):
+        target = DATA / name
+        target.write_text(text, encoding="utf-8")
+        print(f"wrote {target}")
 
 
 if __name__ == "__main__":

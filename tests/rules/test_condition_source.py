@@ -1,4 +1,5 @@
-"""The K conditions written as Python at build time give what the compiled closures give (issue 40)."""
+"""The K conditions and the prose ranges' written as Python at build time give what the compiled closures
+give (issue 40)."""
 
 from __future__ import annotations
 
@@ -12,7 +13,10 @@ import pytest
 from conftest import script_module
 from zero.catalog.condition_source import source
 from zero.catalog.conditions import compile_condition, parse, ref_elements, refs
+from zero.catalog.data.prose_compiled import COMPILED as PROSE_COMPILED
+from zero.catalog.data.prose_ranges import RANGES
 from zero.catalog.data.startup_compiled import COMPILED
+from zero.rules import registry as rules_registry
 from zero.rules import startup
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -29,10 +33,16 @@ def test_the_generated_module_is_up_to_date() -> None:
     assert written == _generator().render()  # type: ignore[attr-defined]
 
 
-@pytest.mark.parametrize("err", startup.CHECKS, ids=lambda e: e.code)
-def test_each_written_condition_gives_what_its_closure_gives(err: startup.StartupError) -> None:
-    rnd = random.Random(err.code)
-    for text, written in ((err.condition_text, COMPILED[err.code][2]), (err.when_text, COMPILED[err.code][3])):
+def test_the_generated_prose_module_is_up_to_date() -> None:
+    """Run ``python tools/gen_conditions.py`` (tools/gen_startup.py runs it) after editing prose_ranges.toml."""
+    written = (ROOT / "src" / "zero" / "catalog" / "data" / "prose_compiled.py").read_text(encoding="utf-8")
+    assert written == _generator().render_prose()  # type: ignore[attr-defined]
+
+
+def _same_as_closures(seed: str, pairs: tuple[tuple[str, object], ...]) -> None:
+    """Each written function gives what the closure compiled from its text gives, on random values."""
+    rnd = random.Random(seed)
+    for text, written in pairs:
         if not text:
             assert written is None
             continue
@@ -46,7 +56,37 @@ def test_each_written_condition_gives_what_its_closure_gives(err: startup.Startu
                 return values[(pid, index)]
 
             want = closure(lookup)  # type: ignore[arg-type]
-            assert written(lookup) == want and type(written(lookup)) is type(want), (text, values)
+            got = written(lookup)  # type: ignore[operator]
+            assert got == want and type(got) is type(want), (text, values)
+
+
+@pytest.mark.parametrize("err", startup.CHECKS, ids=lambda e: e.code)
+def test_each_written_condition_gives_what_its_closure_gives(err: startup.StartupError) -> None:
+    _same_as_closures(err.code, ((err.condition_text, COMPILED[err.code][2]), (err.when_text, COMPILED[err.code][3])))
+
+
+@pytest.mark.parametrize("row", RANGES, ids=lambda r: str(r["id"]))
+def test_each_written_prose_range_gives_what_its_closure_gives(row: dict[str, object]) -> None:
+    pre = PROSE_COMPILED[str(row["id"])]
+    assert pre[:2] == (row["condition"], row.get("when") or "")
+    assert pre[4] == tuple(ref_elements(parse(str(row["condition"]))))
+    _same_as_closures(str(row["id"]), ((str(row["condition"]), pre[2]), (str(row.get("when") or ""), pre[3])))
+
+
+def test_a_prose_range_takes_its_written_function_unless_its_row_is_stale(monkeypatch: pytest.MonkeyPatch) -> None:
+    pid = str(next(r for r in RANGES if r.get("when"))["id"])
+    rules_registry._prose.cache_clear()
+    try:
+        got = rules_registry._prose(pid)
+        assert got[0] is PROSE_COMPILED[pid][2] and got[1] is PROSE_COMPILED[pid][3]
+        assert got[4] == list(PROSE_COMPILED[pid][4])
+        rules_registry._prose.cache_clear()
+        monkeypatch.setitem(PROSE_COMPILED, pid, ("something else", "", lambda _lookup: True, None, ()))
+        stale = rules_registry._prose(pid)
+        assert stale[0] is not PROSE_COMPILED[pid][2] and stale[1] is not None
+        assert stale[4] == ref_elements(parse(stale[2]))
+    finally:
+        rules_registry._prose.cache_clear()
 
 
 def test_compiled_takes_the_written_function_and_its_reads() -> None:

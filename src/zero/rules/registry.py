@@ -960,10 +960,16 @@ def _prose_rows() -> dict[str, dict[str, Any]]:
 @functools.cache
 def _prose(pid: str) -> tuple[Compiled, Compiled | None, str, str, list[tuple[str, int | None]]]:
     """One prose range compiled, at its parameter's first value (an axis range is never compiled for a
-    zero-offset list)."""
-    from zero.catalog.conditions import compile_condition, parse, ref_elements  # start-up: as above
+    zero-offset list): written at build time (``tools/gen_conditions.py``), else (a row whose text differs
+    from the one written: a stale module, slower, never wrong) compiled from its text here."""
+    from zero.catalog.data.prose_compiled import COMPILED  # start-up: as above
 
     row = _prose_rows()[pid]
+    pre = COMPILED.get(pid)
+    if pre is not None and pre[:2] == (row["condition"], row.get("when") or ""):
+        return pre[2], pre[3], row["condition"], row["prose"], list(pre[4])
+    from zero.catalog.conditions import compile_condition, parse, ref_elements  # start-up: a stale row only
+
     cond = parse(row["condition"])
     when = compile_condition(parse(row["when"])) if row.get("when") else None
     return compile_condition(cond), when, row["condition"], row["prose"], ref_elements(cond)
