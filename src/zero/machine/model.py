@@ -331,7 +331,13 @@ def _inside(root: Path, realpath: Callable[[str], str] = os.path.realpath) -> Ca
 
 class _Realpaths:
     """``os.path.realpath`` of the paths one reading of a machine asks about, each asked once: a list's
-    path is tested by the working directory's search, by the containment test and by its reading."""
+    path is tested by the working directory's search, by the containment test and by its reading.
+
+    A path's folder is resolved once for all the lists in it: ``realpath`` of ``folder/name`` is the
+    folder's real path joined with ``name`` unless ``name`` is a link (one ``lstat``), which is what
+    ``realpath`` itself does after resolving the folder, component by component, with an ``lstat``
+    each (seven a list in a fleet, before). A link, ``.``, ``..`` or a trailing separator is left to
+    ``realpath`` whole."""
 
     def __init__(self) -> None:
         self.seen: dict[str, str] = {}
@@ -339,7 +345,13 @@ class _Realpaths:
     def __call__(self, path: str) -> str:
         got = self.seen.get(path)
         if got is None:
-            got = self.seen[path] = os.path.realpath(path)
+            head, tail = os.path.split(path)
+            if head and head != path and tail not in ("", ".", "..") and not os.path.islink(
+                    joined := os.path.join(self(head), tail)):
+                got = joined
+            else:
+                got = os.path.realpath(path)
+            self.seen[path] = got
         return got
 
 
