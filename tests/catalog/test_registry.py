@@ -229,3 +229,13 @@ def test_an_overlay_that_moves_a_key_is_indexed_from_the_rows(monkeypatch: pytes
     assert reg.by_pattern("getriebe[].slope_profil.a_beschl", "AXIS") is None
     new = reg.by_pattern("brand.new", None)
     assert new is not None and new.id == "P-AXIS-99999" and reg.kinds_of("brand.new") == ["AXIS"]
+
+
+@pytest.mark.parametrize("key", ["grp_anzahl", "gruppe[].achs_anzahl", "a.b_c_anzahl", "x[].grp_anzahl", "c[]_anzahl",
+                                 "_anzahl", "a._anzahl", "Grp_anzahl", "grp_anzahl.x", "spdl_anzahl", "ä_anzahl",
+                                 "a.b.hr_anzahl", "grp2_anzahl", "anzahl"])
+def test_a_counts_stem_is_found_as_the_pattern_finds_it(key: str) -> None:
+    from zero.catalog.registry import _count_stem
+
+    m = re.search(r"(?:^|\.)([a-z]+)_anzahl$", key)
+    assert _count_stem(key) == (m.start(1) if m is not None else -1)

@@ -11,6 +11,8 @@ unknown side where the known side decides. The helpers below are the closures' b
 
 from __future__ import annotations
 
+import re
+
 from zero.catalog.conditions import (
     _NAME,
     _OPS,
@@ -62,7 +64,7 @@ def _len(v: _Value) -> _Value:
 
 
 def _isname(v: _Value) -> _Value:
-    return _NAME.fullmatch(v) is not None if isinstance(v, str) and v else None
+    return re.fullmatch(_NAME, v) is not None if isinstance(v, str) and v else None
 
 
 def _startswith(a: _Value, b: _Value) -> _Value:

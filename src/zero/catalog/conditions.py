@@ -44,7 +44,7 @@ _TOKEN = (r"\s*(?:(P-[A-Z]{4}-[0-9]{5}(?:\.[0-9]+)?|DEFAULT_LIST\b)"
           r"|(<=|>=|==|!=|<|>|\+|-|\*|/|%|&|\(|\)|,)|(and|or|not|in|abs|len|startswith|isname|supports|unique|elsewhere)\b)")
 # arguments of each function; 0: one or more IDs
 _FUNCTIONS = {"abs": 1, "len": 1, "startswith": 2, "isname": 1, "supports": 1, "unique": 0, "elsewhere": 2}
-_NAME = re.compile(r"[A-Za-z0-9_]+")  # what isname() accepts
+_NAME = r"[A-Za-z0-9_]+"  # what isname() accepts (compiled at its first use, through re's own cache)
 UNIQUE = "unique:"  # the lookup's name of the fact unique(...) asks for
 ELSEWHERE = "elsewhere:"  # and of elsewhere(...)
 
@@ -410,7 +410,7 @@ def _compile_call(node: Call) -> Compiled:
         return lambda lookup: len(v) if isinstance(v := arg(lookup), str) else None
     if node.name == "isname":
         arg = args[0]
-        return lambda lookup: _NAME.fullmatch(v) is not None if isinstance(v := arg(lookup), str) and v else None
+        return lambda lookup: re.fullmatch(_NAME, v) is not None if isinstance(v := arg(lookup), str) and v else None
     text, prefix = args
 
     def startswith(lookup: Lookup) -> _Value:

@@ -13,7 +13,6 @@ line keeps a process-wide registry.
 
 from __future__ import annotations
 
-import re
 from bisect import bisect_left
 from collections import Counter
 from collections.abc import Iterable, Iterator, Mapping, Sequence
@@ -410,11 +409,12 @@ class Registry:
             counts = specs.count_triples() if isinstance(specs, SpecTable) else \
                 [t for t in _triples(specs) if t[2].endswith("_anzahl")]
             for count_id, count_kind, count_key in counts:
-                m = _COUNT_RE.search(count_key)
-                if m is None or not self.specs[count_id].type.startswith("UNS"):
+                start = _count_stem(count_key)
+                if start < 0 or not self.specs[count_id].type.startswith("UNS"):
                     continue
-                parent = count_key[: m.start(1)]
-                memo.setdefault(count_kind, []).append((count_id, m.group(1), parent, parent.count("[]")))
+                parent = count_key[:start]
+                memo.setdefault(count_kind, []).append((count_id, count_key[start:-len("_anzahl")], parent,
+                                                        parent.count("[]")))
         return memo
 
     def machine_data_ids(self) -> frozenset[str]:
@@ -543,7 +543,15 @@ class Registry:
         return out
 
 
-_COUNT_RE = re.compile(r"(?:^|\.)([a-z]+)_anzahl$")
+def _count_stem(key: str) -> int:
+    r"""Where the stem of a count's key starts (`gruppe[].achs_anzahl`: 10, at `achs`): the letters a-z
+    before ``_anzahl``, after the key's start or a dot (``(?:^|\.)([a-z]+)_anzahl$``); -1: no count's key."""
+    if not key.endswith("_anzahl"):
+        return -1
+    head = key[:-len("_anzahl")]
+    start = head.rfind(".") + 1
+    stem = head[start:]
+    return start if stem and stem.isascii() and stem.isalpha() and stem.islower() else -1
 
 
 def _letters_in_order(stem: str, name: str) -> bool:

@@ -12,7 +12,7 @@ from zero.catalog.registry import Registry
 from zero.catalog.values import ListValues
 from zero.lists.model import Columns, Document, Entry, format_key
 
-_LEADING_ZERO = re.compile(r"\[0[0-9]")  # `[01]`: an index written with a leading zero (canonical_key's test)
+_LEADING_ZERO = r"\[0[0-9]"  # `[01]`: a leading zero (canonical_key's test), compiled at its first use
 
 
 class Rows(Mapping[str, Entry]):
@@ -71,7 +71,7 @@ def row_keys(values: ListValues) -> list[str]:
             continue
         hit = bound.get(pattern)
         canon = hit[0].key if hit is not None and hit[0].key else pattern
-        plain = canon == pattern and ("[0" not in text or _LEADING_ZERO.search(text) is None)
+        plain = canon == pattern and ("[0" not in text or re.search(_LEADING_ZERO, text) is None)
         if not indexed:
             forms.append(text if plain else format_key(canon, indices))
         elif plain:

@@ -35,7 +35,7 @@ __all__ = ["NO_DEFAULT", "ListValues", "Resolved", "Slot", "Value", "bind", "can
 # catalogue does not know is its key pattern behind a `?` (``("?a.b[]", (1,))``). `[01]` and `[1]`
 # are one element, and so are an alias and the key it stands for.
 Slot = tuple[str, tuple[int, ...]]
-_LEADING_ZERO = re.compile(r"\[0[0-9]")  # `[01]`: an index written with a leading zero
+_LEADING_ZERO = r"\[0[0-9]"  # `[01]`: an index written with a leading zero (compiled at its first use)
 
 
 def _renamed(registry: Registry, pattern: str, kind: str | None) -> ParamSpec | None:
@@ -102,7 +102,7 @@ def canonical_key(registry: Registry, kind: str | None, entry: Entry) -> str:
         pattern = hit[0].key if hit is not None and hit[0].key else key.pattern
         if len(patterns) < 100_000:
             patterns[(kind, key.pattern)] = pattern
-    if pattern == key.pattern and ("[0" not in key.text or _LEADING_ZERO.search(key.text) is None):
+    if pattern == key.pattern and ("[0" not in key.text or re.search(_LEADING_ZERO, key.text) is None):
         return key.text  # written as documented (the usual case): as it is
     return format_key(pattern, key.indices)
 

@@ -225,7 +225,7 @@ def _inside(bounds: tuple[tuple[int, int], ...], indices: tuple[int, ...]) -> bo
     return all(first <= idx < end for (first, end), idx in zip(bounds, indices, strict=False))
 
 
-_LEADING_ZERO = re.compile(r"\[0[0-9]")
+_LEADING_ZERO = r"\[0[0-9]"  # compiled at its first use (through re's own cache): few lists write `[01]`
 _BOUNDS: dict[tuple[tuple[int, ...], int], tuple[tuple[int, int], ...]] = {}  # by (dims, index base)
 
 
@@ -249,10 +249,11 @@ def _bounds(spec: ParamSpec) -> tuple[tuple[int, int], ...]:
     return tuple(out)
 
 
-_ANNOTATED_ID = re.compile(r"\(\s*(P-[A-Z]{4}-[0-9]{5})")
+# The patterns below are compiled at their first use, through re's own cache: a finding's, not a start-up's
+_ANNOTATED_ID = r"\(\s*(P-[A-Z]{4}-[0-9]{5})"
 # `# … written for kernel V3.01.3074`, `# CNC V3.1.3074`: a kernel or CNC release with its `V` (a bare
 # "Version 1.2" of the list itself is not one)
-_HEADER_RELEASE = re.compile(r"(?i)\b(?:kernel|cnc)\b[^\n]{0,24}?\b(V\d+\.\d+(?:\.\d+){0,2})\b")
+_HEADER_RELEASE = r"(?i)\b(?:kernel|cnc)\b[^\n]{0,24}?\b(V\d+\.\d+(?:\.\d+){0,2})\b"
 
 
 def _kernel_of(ctx: Context) -> tuple[int, ...] | None:
@@ -264,7 +265,7 @@ def _kernel_of(ctx: Context) -> tuple[int, ...] | None:
     if text is None:
         for item in ctx.doc.items[:40]:
             if type(item) is Comment:
-                m = _HEADER_RELEASE.search(ctx.doc.lines[item.line - 1])
+                m = re.search(_HEADER_RELEASE, ctx.doc.lines[item.line - 1])
                 if m is not None:
                     text = m.group(1)
                     break
@@ -297,7 +298,7 @@ def _other_release(ctx: Context, e: Entry, known: dict[str, Any], propose: bool 
     row, gone = rows[e.key.pattern]
     source = row.source if row is not None else ""
     if row is None and e.comment is not None:  # the line's own annotation names today's parameter
-        m = _ANNOTATED_ID.match(e.comment.strip())
+        m = re.match(_ANNOTATED_ID, e.comment.strip())
         spec = ctx.registry.get(m.group(1)) if m is not None else None
         last = e.key.pattern.rsplit(".", 1)[-1]
         if spec is not None and spec.key and spec.kind == (ctx.kind or spec.kind) and \
@@ -485,7 +486,7 @@ of range — the catalogue does not say which.
 Example: `wz[1].grinding_disc_tilt_angle 450000`
 Fix: check the parameter's unit in its documentation; write the value in it.
 """)
-_PHYSICAL_UNIT = re.compile(r"°|\b(?:mm|µm|um|m/s|mm/s|mm/min|rpm)\b")
+_PHYSICAL_UNIT = r"°|\b(?:mm|µm|um|m/s|mm/s|mm/min|rpm)\b"  # compiled at its first use (a finding's)
 
 _SIMPLE_PROBLEMS = {
     "type": ("R004", "`{value}` is not {what} ({type}) for `{key}`"),
@@ -502,7 +503,7 @@ def _value_span(e: Entry) -> Span:
 
 
 DRIVE_TYPE = "P-AXIS-00020"  # kenngr.antr_typ: 1 conventional, 2 SERCOS, 4 simulation, ...
-_APPLICATION_SPECIFIC = re.compile(r"(?i)application[-. ]specific|applikationsspezifisch")
+_APPLICATION_SPECIFIC = r"(?i)application[-. ]specific|applikationsspezifisch"  # compiled at its first use
 
 
 def _range_claim(ctx: Context, e: Entry, spec: ParamSpec, name: str = "out-of-range") -> Claim:
@@ -520,7 +521,7 @@ def _range_claim(ctx: Context, e: Entry, spec: ParamSpec, name: str = "out-of-ra
             return replace(c, source=hit[1], says=(
                 f"the documentation gives `{e.key.pattern}` for drive type {types} only, and this axis has drive "
                 f"type {format_number(drive)} ({origin}, P-AXIS-00020): the kernel does not use the value"))
-    if spec.range_text and _APPLICATION_SPECIFIC.search(spec.range_text):
+    if spec.range_text and re.search(_APPLICATION_SPECIFIC, spec.range_text):
         return claim("application-specific", kind)
     return claim(name, kind)
 
@@ -930,7 +931,7 @@ def _check_range(ctx: Context, e: Entry, spec: ParamSpec, v: Value) -> Iterator[
             f"{_range_claim(ctx, e, spec, 'relation').says}",
             param_id=spec.id, claim=_range_claim(ctx, e, spec, "relation"),
         )
-    elif spec.range_text and not spec.units and (unit := _PHYSICAL_UNIT.search(spec.range_text)):
+    elif spec.range_text and not spec.units and (unit := re.search(_PHYSICAL_UNIT, spec.range_text)):
         yield ctx.report("R012", span, f"{e.value} is outside {text} for `{e.key_text}` if it is in "
                          f"{unit.group()}, as the catalogue writes the range; the catalogue gives no unit for the "
                          "value itself, so whether it lies inside is not known", param_id=spec.id)
@@ -1108,7 +1109,7 @@ def check_duplicates(ctx: Context) -> Iterator[Diagnostic]:
         assert key is not None  # a row of a group
         # the element's key as written without leading zeros; most keys are written so already
         slot = key.text
-        if ("[0" in slot and _LEADING_ZERO.search(slot)) or HUGE_INDEX in key.indices:
+        if ("[0" in slot and re.search(_LEADING_ZERO, slot)) or HUGE_INDEX in key.indices:
             slot = format_key(key.pattern, key.indices)
         first = seen.get(slot)
         if first is None:
