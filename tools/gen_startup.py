@@ -46,8 +46,10 @@ def main() -> None:
                           if hasattr(r, f)} for r in rs] for name, rs in rows.items()})
     print(f"wrote {DATA / 'releases_table.py'}")
     import gen_conditions  # the K conditions as Python (issue 40: start-up), from the rows just written
+    import gen_startup_rules  # and what each K rule declares, with the size of the rows' module
 
     gen_conditions.main()
+    gen_startup_rules.main()
 
 
 if __name__ == "__main__":

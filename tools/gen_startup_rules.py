@@ -1,10 +1,11 @@
 #!/usr/bin/env python3
 """Write what each K rule declares (its severity, name, summary, explanation and the parameters it reads)
 to ``src/zero/catalog/data/startup_rules.py``, each with the facts of its row of startup_errors.toml: read
-from bytecode at start-up instead of written out at each run (issue 40). A row whose facts differ from
-the ones written here is declared from its own at run time, so a stale module is slower, never wrong; a
-test fails while it is stale. Run it after tools/gen_startup.py (and after changing how
-``zero.rules.startup.said`` words a rule).
+from bytecode at start-up instead of written out at each run (issue 40). With them the size of the
+``startup_errors.py`` they were written from: while that file has it, a start-up declares the rules from
+this module alone (without importing the rows); else each row whose facts differ from the ones written
+here is declared from its own, so a stale module is slower, never wrong; a test fails while it is stale.
+Run it after tools/gen_startup.py (and after changing how ``zero.rules.startup.said`` words a rule).
 
 Usage: python tools/gen_startup_rules.py
 """
@@ -34,10 +35,11 @@ def render() -> str:
             lines.append(f"    {f[0]!r}: ({f!r},\n             {said(f)!r}),")
     return ('"""What each K rule declares, with the facts of its row of startup_errors.toml it is declared from,\n'
             'written by tools/gen_startup_rules.py: code -> (facts, (severity letter, name, summary, explanation,\n'
-            'the parameters it reads)).\n\n'
+            'the parameters it reads)); ERRORS_SIZE: the size of the startup_errors.py written from.\n\n'
             'Generated: do not edit."""\n\n'
             "# ruff: noqa\n"
             + "\n".join(TYPING_FOR_CHECKERS) + "\n\n"
+            f"ERRORS_SIZE: int = {(DATA / 'startup_errors.py').stat().st_size}\n"
             "DECLARED: dict[str, Any] = {\n" + "\n".join(lines) + "\n}\n")
 
 

@@ -2,10 +2,15 @@
 
 from __future__ import annotations
 
+import subprocess
+import sys
 from pathlib import Path
 from types import ModuleType
 
+import pytest
+
 from conftest import script_module
+from zero.catalog.data import startup_rules
 from zero.catalog.data.startup_errors import ERRORS
 from zero.catalog.data.startup_rules import DECLARED
 from zero.rules import startup
@@ -44,3 +49,20 @@ def test_a_row_whose_facts_differ_from_the_written_ones_is_declared_from_its_own
     assert changed != DECLARED[f[0]][0]  # not the written facts: declared by said(), a warning now
     letter, _, summary, explanation, _ = startup.said(changed)
     assert letter == "W" and "Another title" in summary and "Another title" in explanation
+
+
+def test_the_written_rules_are_taken_without_the_rows_while_the_rows_module_has_its_size() -> None:
+    rows_module = ROOT / "src" / "zero" / "catalog" / "data" / "startup_errors.py"
+    assert rows_module.stat().st_size == startup_rules.ERRORS_SIZE
+    assert list(startup._declared()) == list(DECLARED.values())
+    code = "import sys, zero.rules; print('zero.catalog.data.startup_errors' in sys.modules)"
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout
+    assert out.strip() == "False"  # a lint's start-up reads the written module only
+
+
+def test_a_rows_module_of_another_size_is_declared_from_its_rows(monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.setattr(startup_rules, "ERRORS_SIZE", -2)
+    rows = [r for r in ERRORS if r.get("condition")]
+    declared = list(startup._declared())
+    assert declared == list(DECLARED.values())  # the same, from the rows (facts(), and said() where they differ)
+    assert [f for f, _ in declared] == [startup.facts(r) for r in rows]

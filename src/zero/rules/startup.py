@@ -13,8 +13,9 @@ does, the message says so.
 from __future__ import annotations
 
 import itertools
+import os
 import re
-from collections.abc import Iterator
+from collections.abc import Iterable, Iterator
 
 from zero.catalog.conditions import (
     DEFAULT_LIST,
@@ -27,8 +28,7 @@ from zero.catalog.conditions import (
     refs,
     supported_drive_types,
 )
-from zero.catalog.data.startup_errors import ERRORS
-from zero.catalog.data.startup_rules import DECLARED
+from zero.catalog.data import startup_rules
 from zero.catalog.ranges import format_number
 from zero.catalog.registry import ParamSpec
 from zero.catalog.values import Resolved, default_number, parse_int
@@ -144,17 +144,35 @@ Fix: change the values so that `{condition}` holds. Source: {source}
     return letter, f"kernel-{number}", f"P-ERR-{number}: {title}", explanation, reads
 
 
-def _declare() -> list[StartupError]:
-    """Each row's rule and check. What a row declares is written at build time (tools/gen_startup_rules.py:
-    its explanation and the parameters it reads, about a third of this module's import); a row whose
-    facts differ from the ones written there is declared from its own (a stale module: slower, never wrong)."""
+def _declared() -> Iterable[tuple[Facts, Said]]:
+    """Each row's facts and what it declares, in order (the rows with a condition). Written at build time
+    (tools/gen_startup_rules.py: its explanation and the parameters it reads, about a third of this module's
+    import): taken as written while ``startup_errors.py`` has the size it was written from (the rows are
+    then not imported at all), else each row whose facts differ from the ones written is declared from its
+    own (a stale module: slower, never wrong)."""
+    written = startup_rules.DECLARED
+    try:
+        size = os.stat(os.path.join(os.path.dirname(startup_rules.__file__), "startup_errors.py")).st_size
+    except OSError:
+        size = -1
+    if size == getattr(startup_rules, "ERRORS_SIZE", None):  # (none: a module written before it said its size)
+        return written.values()
+    from zero.catalog.data.startup_errors import ERRORS  # start-up: only where the module written from them is stale
+
     out = []
     for row in ERRORS:
         if not row.get("condition"):
             continue  # documented, but not as a condition zero can evaluate (said in the table)
         f = facts(row)
-        pre = DECLARED.get(f[0])
-        letter, name, summary, explanation, reads = pre[1] if pre is not None and pre[0] == f else said(f)
+        pre = written.get(f[0])
+        out.append((f, pre[1] if pre is not None and pre[0] == f else said(f)))
+    return out
+
+
+def _declare() -> list[StartupError]:
+    """Each row's rule and check (:func:`_declared`)."""
+    out = []
+    for f, (letter, name, summary, explanation, reads) in _declared():
         FAMILY.rule(f[0], name, W if letter == "W" else E, summary, explanation, reads=reads)
         out.append(StartupError(*f[:11]))
     return out

@@ -1,6 +1,6 @@
 """What each K rule declares, with the facts of its row of startup_errors.toml it is declared from,
 written by tools/gen_startup_rules.py: code -> (facts, (severity letter, name, summary, explanation,
-the parameters it reads)).
+the parameters it reads)); ERRORS_SIZE: the size of the startup_errors.py written from.
 
 Generated: do not edit."""
 
@@ -11,6 +11,7 @@ TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (zero.hin
 if TYPE_CHECKING:
     from typing import Any
 
+ERRORS_SIZE: int = 117796
 DECLARED: dict[str, Any] = {
     'K002': (('K002', 20419, 'CHAN', ('P-CHAN-00007',), 'unique(P-CHAN-00007)', '', '', 'Two spindles with the same name', 'https://infosys.beckhoff.com/content/1033/tf5200_diagnosis/251568267.html', True, 'at start-up', ''),
              ('E', 'kernel-20419', 'P-ERR-20419: Two spindles with the same name', '\nWhat it checks: Two spindles with the same name. When it takes over the list, the kernel checks that `unique(P-CHAN-00007)` holds, and\nreports error P-ERR-20419 when it does not.\n\nWhy it matters on the machine: the message appears when the controller starts, and the documentation does not say what the kernel then uses.\n\nFix: change the values so that `unique(P-CHAN-00007)` holds. Source: https://infosys.beckhoff.com/content/1033/tf5200_diagnosis/251568267.html\n', ('P-CHAN-00007',))),
