@@ -56,14 +56,14 @@ MAX_LINES = 4_000_000
 MAX_LINE_BYTES = 1024 * 1024
 _UNITS = {"": 1, "B": 1, "K": 1024, "KB": 1000, "KIB": 1024, "M": 1024**2, "MB": 1000**2, "MIB": 1024**2,
           "G": 1024**3, "GB": 1000**3, "GIB": 1024**3}
-_SIZE_RE = re.compile(r"\s*([0-9]+)\s*([A-Za-z]*)\s*")
+_SIZE = r"\s*([0-9]+)\s*([A-Za-z]*)\s*"  # compiled at its first use (ZERO_MAX_FILE_SIZE set)
 _O_BINARY = getattr(os, "O_BINARY", 0)
 _STALE_SECONDS = 24 * 3600  # where process IDs cannot be checked (Windows)
 
 
 def parse_size(text: str) -> int:
     """``"256MiB"``, ``"64M"``, ``"1000000"`` → bytes; :class:`ZeroError` for anything else."""
-    m = _SIZE_RE.fullmatch(text)
+    m = re.fullmatch(_SIZE, text)
     unit = m.group(2).upper() if m else ""
     if m is None or unit not in _UNITS or int(m.group(1)) <= 0:
         raise ZeroError(f"{text!r} is not a size (e.g. 256MiB, 64M, 1000000)", "ZERO_MAX_FILE_SIZE")
@@ -670,7 +670,8 @@ def write_atomic(path: Path, data: bytes, force: bool = False, inputs: tuple[Pat
         raise
 
 
-_LIST_LINE = re.compile(rb"[A-Za-z_][A-Za-z0-9_]*(?:\[[0-9]+\])*(?:\.[A-Za-z0-9_]+(?:\[[0-9]+\])*)*[ \t]+[^ \t\r\n]")
+# compiled at its first use (re keeps it): a file whose name does not say what it holds
+_LIST_LINE = rb"[A-Za-z_][A-Za-z0-9_]*(?:\[[0-9]+\])*(?:\.[A-Za-z0-9_]+(?:\[[0-9]+\])*)*[ \t]+[^ \t\r\n]"
 
 
 _COMMENT_STARTS = (b"#", b"(", b"/*", b";")
@@ -710,7 +711,7 @@ def _looks_like_a_list(path: Path) -> bool:
                 text = line.strip()
                 if not text or text.startswith(_COMMENT_STARTS):
                     continue
-                if _LIST_LINE.match(text) or text == b"Ende":
+                if re.match(_LIST_LINE, text) or text == b"Ende":
                     return True
                 seen += 1
                 if seen >= 20:

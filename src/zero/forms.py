@@ -49,8 +49,8 @@ EMBEDDED: dict[str, str] = {"AchsMds": "AXIS", "SdaMds": "CHAN", "NullpD": "ZERO
                             "PzvD": "CLMP", "VeD": "EXTV", "Startup": "STUP"}
 _BOM = b"\xef\xbb\xbf"
 _SPACE = b" \t\r\n\f\v"
-_NAME_START = re.compile(rb"[A-Za-z_]")
-_NAME_END = re.compile(rb"[\s/>]")
+_NAME_START = rb"[A-Za-z_]"  # compiled at their first use (re keeps them): XML only
+_NAME_END = rb"[\s/>]"
 
 
 _SUFFIXES: dict[str, str] = {}  # a name → its suffix: a run asks a dozen questions of each file's name
@@ -156,8 +156,8 @@ def root_of(data: bytes) -> str | None:
             if end < 0:
                 return None
             i = end + 3
-        elif head.startswith(b"<", i) and _NAME_START.match(head, i + 1):
-            stop = _NAME_END.search(head, i + 2)
+        elif head.startswith(b"<", i) and re.compile(_NAME_START).match(head, i + 1):
+            stop = re.compile(_NAME_END).search(head, i + 2)
             return head[i + 1: stop.start() if stop else n].decode("ascii", "replace")
         else:
             return None

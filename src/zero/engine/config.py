@@ -772,7 +772,7 @@ def _line_of(text: str, table: tuple[str, ...], key: str | None) -> int | None:
     return None
 
 
-_TOML_AT = re.compile(r"\s*\(at line (\d+), column (\d+)\)\s*$")
+_TOML_AT = r"\s*\(at line (\d+), column (\d+)\)\s*$"  # compiled at its first use: a file tomllib refuses
 
 
 def parse_config(path: Path, text: str | None = None, _chain: tuple[Path, ...] = (),
@@ -796,7 +796,7 @@ def parse_config(path: Path, text: str | None = None, _chain: tuple[Path, ...] =
     try:
         data = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
-        at = _TOML_AT.search(str(exc))  # tomllib says where only in its message
+        at = re.search(_TOML_AT, str(exc))  # tomllib says where only in its message
         if at is None:
             raise ZeroError(f"not valid TOML: {exc}", str(path)) from None
         raise ZeroError(f"not valid TOML: {str(exc)[:at.start()].rstrip()}", str(path),

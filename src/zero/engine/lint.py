@@ -123,7 +123,7 @@ def lint_tree(tree: Tree, registry: Registry, options: LintOptions | None = None
     return LintResult(tree.path, shown, result.kind, out)
 
 
-_P_ID = re.compile(r"P-[A-Z]{4}-[0-9]{5}")
+_P_ID = r"P-[A-Z]{4}-[0-9]{5}"  # compiled at its first use (re keeps it): YAML/TOML/JSON forms only
 
 
 def list_form(tree: Tree, registry: Registry) -> bool:
@@ -138,7 +138,7 @@ def list_form(tree: Tree, registry: Registry) -> bool:
     heads: dict[str, bool] = registry.memo.setdefault("key-heads", {})
     if not heads:
         heads.update((re.split(r"[.\[]", s.key, maxsplit=1)[0], True) for s in registry.specs.values() if s.key)
-    ours = sum(1 for k in top if k in heads or _P_ID.fullmatch(k) is not None)
+    ours = sum(1 for k in top if k in heads or re.fullmatch(_P_ID, k) is not None)
     return ours > 0 and 2 * ours >= len(top)  # most of them: `a`, `tool`, `path` are parameters' too
 
 

@@ -277,8 +277,9 @@ def _commented_parameter(ctx: Context, line: int) -> str | None:
     return entry.key_text if known or "." in pattern or "[" in pattern else None
 
 
-_BANNER_RE = re.compile(r"#[^A-Za-z0-9\s]*\s*$")  # `#=====`, `#*****`: decoration
-_TAG_RE = re.compile(r"#[A-Z][A-Z0-9_]*:")  # `#TC_AXIS_DESC:`: a tag a tool writes
+# Compiled at their first use (re keeps them), by a list with a comment glued to its `#`:
+_BANNER = r"#[^A-Za-z0-9\s]*\s*$"  # `#=====`, `#*****`: decoration
+_TAG = r"#[A-Z][A-Z0-9_]*:"  # `#TC_AXIS_DESC:`: a tag a tool writes
 
 
 def _hash_no_space(ctx: Context, p: Problem) -> Diagnostic | None:
@@ -289,7 +290,7 @@ def _hash_no_space(ctx: Context, p: Problem) -> Diagnostic | None:
         return ctx.report("S012", span, f"`{key}` is commented out without a space after `#`: the manual "
                           "asks for one; the vendor's own lists write it this way", fix=fix, hint=fix.title)
     rest = ctx.doc.line_text(p.line)[p.start:]
-    if _BANNER_RE.match(rest) or _TAG_RE.match(rest):
+    if re.match(_BANNER, rest) or re.match(_TAG, rest):
         return None
     return ctx.report("S005", span, "comment text glued to `#`: the manual requires a space after `#`, "
                       "and without it the controller may try to read the line as an entry", fix=fix,

@@ -17,10 +17,10 @@ SOURCES: tuple[tuple[str, int], ...] = (
     ('machine.py', 55156),
     ('meaning.py', 13136),
     ('program.py', 31485),
-    ('registry.py', 59753),
-    ('startup.py', 19905),
-    ('suppress.py', 11728),
-    ('syntax.py', 15953),
+    ('registry.py', 60421),
+    ('startup.py', 20653),
+    ('suppress.py', 12089),
+    ('syntax.py', 16015),
     ('update.py', 4430),
 )
 
