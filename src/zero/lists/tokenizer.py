@@ -17,6 +17,7 @@ import re
 from array import array
 from collections.abc import Iterable, Sequence
 from itertools import compress
+from operator import length_hint
 
 from zero.lists.encoding import declarable, decode
 from zero.lists.model import (
@@ -317,14 +318,24 @@ def split_lines(text: str) -> tuple[list[str], list[str]]:
 # The common entry line over the whole text (a pattern's source), one match per line (the lines
 # _FAST_ENTRY_RE would match, or fewer): the key as 1 its names up to the first index, 2 that index (no
 # leading zero) and 3 the rest from the index's `]` on (loose here: checked once per distinct key shape);
-# 4 the value; 5 the comment; else 6 the line.
-_ROW = (r"(?:[ \t]*([A-Za-z_][A-Za-z0-9_.]*)(?:\[(0|[1-9][0-9]{0,17})(\][A-Za-z0-9_.\[\]]*))?"
-    r"[ \t]+((?!\.[A-Za-z_])[^\s\"|\[\]][^\s|]*)(?:[ \t]+([^\s|][^\r\n]*)|[ \t]*)(?:\r?(?=\n)|\Z)|([^\n]*))\n?")
+# 4 the value; 5 the comment; else 6 the line. Written for the regex engine's cheapest steps: every
+# repeat possessive (none ever gives back what it took: what follows it cannot start with it), so no
+# step of a line is kept to return to; the optional index an alternative with an empty one, not a
+# repeat; a run of whitespace as its first character, then the spaces (compared one by one, not looked
+# up in a set), then the rest. No whitespace group asks for at least one before a comment: a value ends
+# at whitespace or `|` only, where no comment starts.
+_ROW = (r"(?:[ \t]*+([A-Za-z_][A-Za-z0-9_.]*+)(?:\[(0|[1-9][0-9]{0,17}+)(\][A-Za-z0-9_.\[\]]*+)|)"
+    r"[ \t] *+[ \t]*+((?!\.[A-Za-z_])[^\s\"|\[\]][^\s|]*+) *+[ \t]*+(?:([^\s|][^\r\n]*+)|)(?:\r?+(?=\n)|\Z)"
+    r"|([^\n]*+))\n?+")
 # _ROW with the whitespace before the key, between key and value and before the comment as groups 1, 5
 # and 7 (names 2, first index 3, rest 4, value 6, comment 8, the line 9): where each part of a row starts,
 # kept as widths so that an entry is built from the columns without its line matched again.
-_ROW_AT = (r"(?:([ \t]*)([A-Za-z_][A-Za-z0-9_.]*)(?:\[(0|[1-9][0-9]{0,17})(\][A-Za-z0-9_.\[\]]*))?"
-    r"([ \t]+)((?!\.[A-Za-z_])[^\s\"|\[\]][^\s|]*)(?:([ \t]+)([^\s|][^\r\n]*)|[ \t]*)(?:\r?(?=\n)|\Z)|([^\n]*))\n?")
+_ROW_AT = (r"(?:([ \t]*+)([A-Za-z_][A-Za-z0-9_.]*+)(?:\[(0|[1-9][0-9]{0,17}+)(\][A-Za-z0-9_.\[\]]*+)|)"
+    r"([ \t] *+[ \t]*+)((?!\.[A-Za-z_])[^\s\"|\[\]][^\s|]*+)( *+[ \t]*+)(?:([^\s|][^\r\n]*+)|)(?:\r?+(?=\n)|\Z)"
+    r"|([^\n]*+))\n?+")
+# The groups of each pattern (what Pattern.split gives per line, and the text between two lines).
+_ROW_GROUPS = 6
+_ROW_AT_GROUPS = 9
 # The patterns a text is read with, by (bytes, a CR in the text, widths): each compiled when first needed.
 _ROW_PATTERNS: dict[tuple[bool, bool, bool], re.Pattern[Any]] = {}
 
@@ -338,8 +349,8 @@ def _row_pattern(binary: bool, crlf: bool, widths: bool) -> re.Pattern[Any]:
     got = _ROW_PATTERNS.get((binary, crlf, widths))
     if got is None:
         source = _ROW_AT if widths else _ROW
-        if not crlf:
-            source = source.replace(r"[^\r\n]*", r"[^\n]*").replace(r"(?:\r?(?=\n)|\Z)", r"(?=\n|\Z)")
+        if not crlf:  # after a comment, the line's end: no test of it
+            source = source.replace(r"(?:([^\s|][^\r\n]*+)|)(?:\r?+(?=\n)|\Z)", r"(?:([^\s|][^\n]*+)|(?=\n|\Z))")
         got = re.compile(source.replace(r"\s", r" \t\n\r\f\v\x1c-\x1f").encode("ascii") if binary else source)
         _ROW_PATTERNS[binary, crlf, widths] = got
     return got
@@ -557,12 +568,12 @@ class _Reader:
         self.problems: list[Problem] = []
         self.end_line: int | None = None
         self.after_end_reported = False
-        # (names, `]` and the rest of the key after the first index) -> shape id, -1: not read into columns
-        empty: Any = b"" if self.binary else ""
-        self.shapes: dict[tuple[Any, Any], int] = {(empty, empty): -1}
-        self.firsts: dict[Any, int] = {empty: -1}
-        self.values: dict[Any, int] = {}
-        self.comments: dict[Any, int] = {empty: -1}
+        # (names, `]` and the rest of the key after the first index) -> shape id, -1: not read into columns; a
+        # part a line does not have is None (no key: no row)
+        self.shapes: dict[tuple[Any, Any], int] = {(None, None): -1}
+        self.firsts: dict[Any, int] = {None: -1}
+        self.values: dict[Any, int] = {None: -1}
+        self.comments: dict[Any, int] = {None: -1}
         self.shape_pattern: list[int] = []
 
     def part(self, pos: int, end: int) -> str:
@@ -583,26 +594,31 @@ class _Reader:
         binary = self.binary
         nl: Any = b"\n" if binary else "\n"
         row_re = _row_pattern(binary, (b"\r" if binary else "\r") in text, cols.widths is not None)
+        widths = cols.widths
+        step = (_ROW_GROUPS if widths is None else _ROW_AT_GROUPS) + 1
         while pos < n:
             end = text.find(nl, pos + _CHUNK)
             end = n if end < 0 else end + 1
-            widths = cols.widths
+            # One list of every line's groups (then the text between two lines: none), no tuple per line; a
+            # group a line does not have is None. The last match is the empty one where the part ends.
+            got = row_re.split(text if pos == 0 and end == n else text[pos:end])
+            del got[-step:]
             if widths is None:
-                rows = row_re.findall(text, pos, end)
-                rows.pop()  # the empty match where the text (or this part) ends
-                names, first_texts, tails, value_texts, comment_texts, wholes = zip(*rows, strict=True)
-                leads = key_gaps = comment_gaps = ()
+                names, first_texts, tails, value_texts, comment_texts, wholes = (
+                    got[1::step], got[2::step], got[3::step], got[4::step], got[5::step], got[6::step])
+                leads = key_gaps = comment_gaps = []
             else:
-                rows = row_re.findall(text, pos, end)
-                rows.pop()
-                (leads, names, first_texts, tails, key_gaps, value_texts, comment_gaps, comment_texts,
-                 wholes) = zip(*rows, strict=True)
+                (leads, names, first_texts, tails, key_gaps, value_texts, comment_gaps, comment_texts, wholes) = (
+                    got[1::step], got[2::step], got[3::step], got[4::step], got[5::step], got[6::step],
+                    got[7::step], got[8::step], got[9::step])
+            del got
             # (names, tail) pairs made by zip as they are read, never a list of them (zip reuses its tuple)
             new_shapes = [k for k in dict.fromkeys(zip(names, tails, strict=True)) if k not in shapes]
             new_values = [v for v in dict.fromkeys(value_texts) if v not in values]
             new_comments = [c for c in dict.fromkeys(comment_texts) if c not in comments]
             known = None
-            small = not binary and pos == 0 and end == n and len(rows) <= _SMALL_LIST
+            count = len(names)
+            small = not binary and pos == 0 and end == n and count <= _SMALL_LIST
             if small:  # a small list: like one read before?
                 signature = (tuple(new_shapes), tuple(new_values), tuple(new_comments))
                 known = _small_tables.get(signature)
@@ -614,7 +630,8 @@ class _Reader:
                     shape_pattern.extend(pattern_of)
             if known is None:
                 if new_shapes:
-                    named = [(a.decode("ascii"), b.decode("ascii")) for a, b in new_shapes] if binary else new_shapes
+                    named = ([(a.decode("ascii"), b.decode("ascii") if b is not None else "") for a, b in new_shapes]
+                             if binary else [(a, b if b is not None else "") for a, b in new_shapes])
                     shapes.update(zip(new_shapes, add_shapes(
                         [_shape_of(k) if (info := info_of(k, _UNKNOWN)) is _UNKNOWN else info for k in named]),
                         strict=True))
@@ -622,7 +639,7 @@ class _Reader:
                         shape_pattern.extend([sh.pattern for sh in cols.shapes[len(shape_pattern):]])
                 for v in new_values:
                     t = v.decode("ascii") if binary else v
-                    values[v] = value_id(t, kinds(t) or _value_kind(t)) if v else -1
+                    values[v] = value_id(t, kinds(t) or _value_kind(t))
                 if new_comments:
                     said = [c.decode("ascii") for c in new_comments] if binary else new_comments
                     comments.update(zip(new_comments, add_comments(
@@ -634,7 +651,6 @@ class _Reader:
                 if f not in firsts:
                     firsts[f] = int(f)
             sids = list(map(shapes.__getitem__, zip(names, tails, strict=True)))
-            count = len(rows)
             if self.end_line is None and -1 not in sids:  # every line an entry of the columns
                 _extend(cols.line, count, range(number, number + count))
                 _extend(cols.shape, count, sids)
@@ -653,12 +669,12 @@ class _Reader:
             pos = end
         self.line_count = number - 1
 
-    def _mixed(self, names: tuple[Any, ...], wholes: tuple[Any, ...], sids: list[int], number: int, text: Any,
-               pos: int, end: int, first_texts: tuple[Any, ...], value_texts: tuple[Any, ...],
-               comment_texts: tuple[Any, ...], gaps: tuple[tuple[Any, ...], ...]) -> None:
+    def _mixed(self, names: list[Any], wholes: list[Any], sids: list[int], number: int, text: Any,
+               pos: int, end: int, first_texts: list[Any], value_texts: list[Any],
+               comment_texts: list[Any], gaps: tuple[list[Any], ...]) -> None:
         """A part where some lines are no row of the columns: plain comments and blank lines become their
         items here; the rows between the other lines go into the columns in bulk, those lines to _line.
-        ``names``, ``wholes``: each line's key names (empty: no row) and the line as a whole; ``gaps``: the
+        ``names``, ``wholes``: each line's key names (None: no row) and the line as a whole; ``gaps``: the
         whitespace before each key, value and comment (when the columns keep widths)."""
         first_row = len(self.cols.line)
         self._mixed_lines(names, wholes, sids, number, text, pos, end, first_texts, value_texts, comment_texts)
@@ -666,11 +682,11 @@ class _Reader:
         if widths is not None:  # of the rows this part added, in bulk (a row read the careful way: never read)
             at = [n - number for n in self.cols.line[first_row:]]
             for width, gap in zip(widths, gaps, strict=True):
-                _extend(width, len(at), map(len, map(gap.__getitem__, at)))
+                _extend(width, len(at), map(length_hint, map(gap.__getitem__, at)))  # None (no such row): 0
 
-    def _mixed_lines(self, names: tuple[Any, ...], wholes: tuple[Any, ...], sids: list[int], number: int,
-                     text: Any, pos: int, end: int, first_texts: tuple[Any, ...], value_texts: tuple[Any, ...],
-                     comment_texts: tuple[Any, ...]) -> None:
+    def _mixed_lines(self, names: list[Any], wholes: list[Any], sids: list[int], number: int,
+                     text: Any, pos: int, end: int, first_texts: list[Any], value_texts: list[Any],
+                     comment_texts: list[Any]) -> None:
         slow = self.slow
         last = len(names) - 1
         ends_nl = text.endswith(b"\n" if self.binary else "\n", pos, end)
@@ -715,7 +731,7 @@ class _Reader:
             self._line(s, number + i)
 
     def _take(self, start: int, stop: int, mask: list[bool], sids: list[int], number: int,
-              first_texts: tuple[Any, ...], value_texts: tuple[Any, ...], comment_texts: tuple[Any, ...]) -> None:
+              first_texts: list[Any], value_texts: list[Any], comment_texts: list[Any]) -> None:
         """The rows of the columns among a part's lines ``start`` to ``stop`` (exclusive), in bulk."""
         if start >= stop:
             return
