@@ -89,6 +89,9 @@ _C1_RE = re.compile(r"[\x80-\x9f]")
 _MARKED_COMMENTS = (CommentStyle.HASH, CommentStyle.PAREN, CommentStyle.BLOCK)
 # Every ASCII byte _CONTROL_RE does not match: deleting them leaves the control characters.
 _NOT_CONTROL = bytes(b for b in range(128) if not (b <= 0x08 or 0x0B <= b <= 0x1F or b == 0x7F))
+# The ASCII control characters but \r, as characters and as bytes: each searched for on its own.
+_CONTROL_CHARS = tuple(chr(b) for b in range(128) if (b <= 0x08 or 0x0B <= b <= 0x1F or b == 0x7F) and b != 0x0D)
+_CONTROL_BYTES = tuple(c.encode("ascii") for c in _CONTROL_CHARS)
 _NOT_CONTROL_LATIN1 = bytes(b for b in range(256) if not (b <= 0x08 or 0x0B <= b <= 0x1F or 0x7F <= b <= 0x9F))
 
 
@@ -284,15 +287,31 @@ def _controls(lines: list[str], items: list[Item], end_line: int | None, declare
 
 def _control_count(text: str) -> int:
     """How many characters of the text ``_CONTROL_RE`` matches (each CRLF's \\r among them)."""
-    if text.isascii():  # in C, ten times faster than the regex over a big list; in parts: no copy of the text
-        return sum(len(text[at:at + _CHUNK].encode("ascii").translate(None, _NOT_CONTROL))
-                   for at in range(0, len(text), _CHUNK))
+    if text.isascii():
+        return _ascii_controls(text)
     if len(text) <= _CHUNK:  # a small list with letters of a code page: in C as bytes, when Latin-1 holds it
         try:
             return len(text.encode("latin-1").translate(None, _NOT_CONTROL_LATIN1))
         except UnicodeEncodeError:
             pass
     return len(_CONTROL_RE.findall(text))
+
+
+def _ascii_controls(text: str | bytes) -> int:
+    """:func:`_control_count` of an ASCII text, or of its bytes. A list mostly has none but the \\r of its CRLF
+    endings: a search for each of the others (memchr: a few instructions per 32 characters) in each part of the
+    text tells, for a tenth of the instructions of deleting every other character, which counts them (in C, ten
+    times faster than the regex; in parts: no copy of the text)."""
+    if isinstance(text, bytes):
+        find = text.find
+        if not any(find(c, at, at + _CHUNK) >= 0 for at in range(0, len(text), _CHUNK) for c in _CONTROL_BYTES):
+            return text.count(b"\r") if b"\r" in text else 0  # a search for one (memchr) before a count
+        return sum(len(text[at:at + _CHUNK].translate(None, _NOT_CONTROL)) for at in range(0, len(text), _CHUNK))
+    search = text.find
+    if not any(search(c, at, at + _CHUNK) >= 0 for at in range(0, len(text), _CHUNK) for c in _CONTROL_CHARS):
+        return text.count("\r") if "\r" in text else 0
+    return sum(len(text[at:at + _CHUNK].encode("ascii").translate(None, _NOT_CONTROL))
+               for at in range(0, len(text), _CHUNK))
 
 
 def split_lines(text: str) -> tuple[list[str], list[str]]:
@@ -819,8 +838,7 @@ def _text_problems(doc: Document, text: str | bytes, problems: list[Problem], de
     end_line = doc.end_line
     if isinstance(text, bytes):  # an ASCII text: no C1 control
         crlf = text.count(b"\r\n") if b"\r" in text else 0
-        controls = sum(len(text[at:at + _CHUNK].translate(None, _NOT_CONTROL))
-                       for at in range(0, len(text), _CHUNK)) - crlf
+        controls = _ascii_controls(text) - crlf
         lf = text.count(b"\n") if crlf else 0
     else:
         crlf = text.count("\r\n") if "\r" in text else 0
