@@ -6,6 +6,7 @@ own); generated lists and hand-written cases compare the two."""
 
 from __future__ import annotations
 
+import re
 from collections.abc import Iterator
 from typing import Any
 
@@ -83,7 +84,7 @@ def _reference_duplicates(ctx: Context) -> Iterator[Diagnostic]:
         if key is None:
             continue
         slot = key.text
-        if ("[0" in slot and R._LEADING_ZERO.search(slot)) or HUGE_INDEX in key.indices:
+        if ("[0" in slot and re.search(R._LEADING_ZERO, slot)) or HUGE_INDEX in key.indices:
             slot = format_key(key.pattern, key.indices)
         first = seen.get(slot)
         seen[slot] = e
