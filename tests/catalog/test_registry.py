@@ -115,9 +115,12 @@ def test_did_you_mean(registry: Registry) -> None:
 
 
 def test_no_vendor_description_texts_committed() -> None:
-    data = (ROOT / "src" / "zero" / "catalog" / "data" / "table.py").read_text(encoding="utf-8")
-    assert "ShortDescription" not in data and "vendor_text" not in data
-    assert "Negative software limit switch" not in data
+    tables = sorted((ROOT / "src" / "zero" / "catalog" / "data").glob("table*.py"))
+    assert len(tables) == 1 + len(KINDS)  # the index, and each kind's rows
+    for table in tables:
+        data = table.read_text(encoding="utf-8")
+        assert "ShortDescription" not in data and "vendor_text" not in data
+        assert "Negative software limit switch" not in data
 
 
 def test_param_desc_from_user_file(corpus: Path) -> None:
@@ -177,10 +180,11 @@ def test_the_tables_written_index_is_the_one_the_registry_builds_of_its_rows() -
     """data/table.py's index (tools/gen_registry.py) answers as the dictionaries a registry builds of the rows
     itself: every (kind, key), every key's kinds, the counts, in the same order; a stale index fails here."""
     from zero.catalog.data.table import ROWS
-    from zero.catalog.registry import KeyIndex, SortedIndex
+    from zero.catalog.registry import KeyIndex, SortedIndex, SpecTable, TableRows
 
     built_in = load_registry()
     assert isinstance(built_in._by_key, KeyIndex) and isinstance(built_in._kinds_of, SortedIndex)
+    assert isinstance(built_in.specs, SpecTable) and isinstance(built_in.specs._rows, TableRows)
     own = build_registry(ROWS, BUILTIN_SOURCE)  # the rows as dictionaries: indexed by the registry itself
     assert isinstance(own._by_key, dict) and isinstance(own._kinds_of, dict)
     assert list(built_in._by_key.items()) == list(own._by_key.items())
@@ -195,15 +199,12 @@ def test_a_sorted_index_answers_as_a_dictionary() -> None:
     from zero.catalog.registry import KeyIndex, SortedIndex
 
     plain = {"b": 2, "d": 4, "a": 1}
-    idx = SortedIndex(("a", "b", "d"), (1, 2, 4), rank=(3, 1, 2))
-    assert list(idx) == ["b", "d", "a"] and len(idx) == 3  # in rank order
+    idx = SortedIndex(("a", "b", "d"), (1, 2, 4))
+    assert list(idx) == ["a", "b", "d"] and len(idx) == 3 and dict(idx) == plain
     assert all(idx[k] == v and k in idx for k, v in plain.items())
     assert idx.get("c") is None and "c" not in idx and 5 not in idx and idx.get(5, "no") == "no"
     with pytest.raises(KeyError):
         idx["c"]
-    over = SortedIndex(("a", "b", "d"), (1, 2, 4), over={"b": 20, "c": 30})
-    assert dict(over) == {"a": 1, "b": 20, "d": 4, "c": 30} and list(over) == ["a", "b", "d", "c"]
-    assert len(over) == 4 and over["c"] == 30 and "c" in over
     keys = KeyIndex({"AXIS": (("a.b", "c"), ("P-AXIS-00002", "P-AXIS-00001")), "ZERO": (("a.b",), ("P-ZERO-00001",))})
     assert list(keys.items()) == [(("AXIS", "c"), "P-AXIS-00001"), (("AXIS", "a.b"), "P-AXIS-00002"),
                                   (("ZERO", "a.b"), "P-ZERO-00001")]
@@ -239,3 +240,21 @@ def test_a_counts_stem_is_found_as_the_pattern_finds_it(key: str) -> None:
 
     m = re.search(r"(?:^|\.)([a-z]+)_anzahl$", key)
     assert _count_stem(key) == (m.start(1) if m is not None else -1)
+
+
+def test_a_lint_reads_the_rows_of_its_lists_kind_only(tmp_path: Path) -> None:
+    """Each kind's rows are a module of their own, read at the kind's first row (issue 40: start-up): a
+    zero-offset list's lint reads no axis or channel row, and a registry whose every row is read has them all."""
+    import subprocess
+    import sys
+
+    listing = tmp_path / "nullp.lis"
+    listing.write_text("g53_verfuegbar 1\nnp_grp[0].achse[0].versch 100\nEnde\n", encoding="utf-8")
+    code = ("import sys\nfrom zero.catalog.registry import load_registry\nfrom zero.engine.lint import lint_file\n"
+            f"lint_file({str(listing)!r}, load_registry())\n"
+            "print(sorted(m for m in sys.modules if m.startswith('zero.catalog.data.table')))")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout
+    assert out.strip() == "['zero.catalog.data.table', 'zero.catalog.data.table_zero']"
+    reg = load_registry()
+    assert len(reg.specs) == 1766 and len(list(reg.specs)) == 1766 and "P-AXIS-00001" in reg.specs
+    assert "P-AXIS-99999" not in reg.specs and "P-NOPE-00001" not in reg.specs and reg.get("P-AXIS") is None

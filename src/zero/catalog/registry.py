@@ -13,9 +13,10 @@ line keeps a process-wide registry.
 
 from __future__ import annotations
 
+import importlib
 from bisect import bisect_left
 from collections import Counter
-from collections.abc import Iterable, Iterator, Mapping, Sequence
+from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
 from operator import itemgetter
 from pathlib import Path
 
@@ -170,31 +171,15 @@ class ParamSpec:
 class SortedIndex(Mapping["Any", "Any"]):
     """A read-only mapping over keys sorted at build time (the built-in table's index, ``data/table.py``): a
     look-up bisects them, so that a start-up builds no dictionary of the 1766 parameters to look up a few
-    hundred (issue 40). ``over``: entries that take the place of the sorted ones, or come after them (the
-    seed overlay's rows). Iterated in the order of ``rank`` (each key's, e.g. the ID of its row: the order
-    of the rows), else in key order; ``over``'s new keys after them."""
+    hundred (issue 40). Iterated in key order."""
 
-    __slots__ = ("_keys", "_over", "_rank", "_values")
+    __slots__ = ("_keys", "_values")
 
-    def __init__(self, keys: Sequence[Any], values: Sequence[Any], rank: Sequence[Any] | None = None,
-                 over: Mapping[Any, Any] | None = None) -> None:
-        self._keys, self._values, self._rank, self._over = keys, values, rank, over or {}
-
-    def _at(self, key: Any) -> int:
-        """The position of ``key`` among the sorted keys, -1 where it is none of them."""
-        keys = self._keys
-        try:
-            at = bisect_left(keys, key)
-        except TypeError:  # a key that does not compare with these (a number among strings): none of them
-            return -1
-        return at if at < len(keys) and keys[at] == key else -1
+    def __init__(self, keys: Sequence[Any], values: Sequence[Any]) -> None:
+        self._keys, self._values = keys, values
 
     def get(self, key: Any, default: Any = None) -> Any:
-        if self._over:
-            hit = self._over.get(key, _ABSENT)
-            if hit is not _ABSENT:
-                return hit
-        at = self._at(key)
+        at = _position(self._keys, key)
         return self._values[at] if at >= 0 else default
 
     def __getitem__(self, key: Any) -> Any:
@@ -204,27 +189,129 @@ class SortedIndex(Mapping["Any", "Any"]):
         return got
 
     def __contains__(self, key: object) -> bool:
-        return key in self._over or self._at(key) >= 0
+        return _position(self._keys, key) >= 0
 
     def __iter__(self) -> Iterator[Any]:
-        keys, rank = self._keys, self._rank
-        if rank is None:
-            yield from keys
-        else:
-            yield from (keys[i] for i in sorted(range(len(keys)), key=rank.__getitem__))
-        yield from (k for k in self._over if self._at(k) < 0)
+        return iter(self._keys)
 
     def __len__(self) -> int:
-        return len(self._keys) + sum(1 for k in self._over if self._at(k) < 0)
+        return len(self._keys)
+
+
+def _position(keys: Sequence[Any], key: Any) -> int:
+    """The position of ``key`` among the sorted ``keys``, -1 where it is none of them."""
+    try:
+        at = bisect_left(keys, key)
+    except TypeError:  # a key that does not compare with these (a number among strings): none of them
+        return -1
+    return at if at < len(keys) and keys[at] == key else -1
+
+
+class Lazy(Mapping[str, "Any"]):
+    """``key`` → ``load(key)`` for each of ``keys``, loaded at its first look-up and kept (a kind's rows of
+    the built-in table, imported at the first row of that kind a run reads)."""
+
+    __slots__ = ("_keys", "_load", "_loaded")
+
+    def __init__(self, keys: Mapping[str, Any], load: Callable[[str], Any]) -> None:
+        self._keys, self._load = keys, load
+        self._loaded: dict[str, Any] = {}
+
+    def __getitem__(self, key: str) -> Any:
+        try:
+            return self._loaded[key]
+        except KeyError:
+            if key not in self._keys:
+                raise
+        got = self._loaded[key] = self._load(key)
+        return got
+
+    def __contains__(self, key: object) -> bool:
+        return key in self._keys
+
+    def __iter__(self) -> Iterator[str]:
+        return iter(self._keys)
+
+    def __len__(self) -> int:
+        return len(self._keys)
+
+
+class TableRows(Mapping[str, "tuple[Any, ...] | dict[str, Any]"]):
+    """The built-in table's rows by ID (``data/table_axis.py``, ...: a kind's IDs sorted, and its rows), a
+    kind's read at its first row asked for; ``seeds``: the seed overlay's facts of a parameter, its row
+    (:func:`_seeded`, a dictionary) made at its first look-up, in the table row's place or after them."""
+
+    __slots__ = ("_columns", "_kinds", "_seeded", "_seeds")
+
+    def __init__(self, kinds: Mapping[str, Any], columns: tuple[str, ...] = (),
+                 seeds: Mapping[str, dict[str, Any]] | None = None) -> None:
+        self._kinds = kinds  # kind -> its module: IDS and DATA
+        self._columns = columns
+        self._seeds = seeds or {}
+        self._seeded: dict[str, dict[str, Any]] = {}
+
+    def table_row(self, pid: object) -> tuple[Any, ...] | None:
+        """The table's own row of ``pid`` (``None``: none), its kind's module read at the first."""
+        if type(pid) is not str or pid[2:6] not in self._kinds:
+            return None
+        table = self._kinds[pid[2:6]]
+        at = _position(table.IDS, pid)
+        return table.DATA[at] if at >= 0 else None
+
+    def get(self, pid: str, default: Any = None) -> Any:
+        if pid in self._seeds:
+            seeded = self._seeded.get(pid)
+            if seeded is None:
+                old = self.table_row(pid)
+                seeded = self._seeded[pid] = _seeded(pid, None if old is None else dict(_fields(self._columns, old)),
+                                                     self._seeds[pid])
+            return seeded
+        got = self.table_row(pid)
+        return default if got is None else got
+
+    def __getitem__(self, pid: str) -> tuple[Any, ...] | dict[str, Any]:
+        got = self.get(pid)
+        if got is None:
+            raise KeyError(pid)
+        return got  # type: ignore[no-any-return]
+
+    def __contains__(self, pid: object) -> bool:
+        return pid in self._seeds or self.table_row(pid) is not None
+
+    def __iter__(self) -> Iterator[str]:
+        for kind in self._kinds:
+            yield from self._kinds[kind].IDS
+        yield from (pid for pid in self._seeds if self.table_row(pid) is None)
+
+    def __len__(self) -> int:
+        return sum(len(self._kinds[k].IDS) for k in self._kinds) + \
+            sum(1 for pid in self._seeds if self.table_row(pid) is None)
+
+
+def _fields(columns: tuple[str, ...], row: tuple[Any, ...]) -> Iterator[tuple[str, Any]]:
+    """A table row's given fields (name, value)."""
+    return ((c, v) for c, v in zip(columns, row, strict=True) if v is not None)
+
+
+def _seeded(pid: str, old: dict[str, Any] | None, extra: dict[str, Any]) -> dict[str, Any]:
+    """The row of ``pid`` with the seed overlay's facts ``extra`` over its row ``old`` (a copy: the table's
+    rows are shared, never changed; ``None``: a parameter the table does not have)."""
+    row = dict(old or {"id": pid, "kind": pid[2:6], "type": "STRING"})
+    if "description" in extra and row.get("vendor_text"):
+        row["vendor_text"] = None
+    row.update(extra)
+    if "range" in extra:
+        row.pop("range_note", None)
+    return row
 
 
 _ABSENT: Any = object()
 
 
 class KeyIndex(Mapping[tuple[str, str], str]):
-    """(kind, key) → ID over the built-in table's keys sorted per kind (``data/table.py``): a look-up bisects
-    its kind's keys, no dictionary of every key is built at start-up. Iterated in the order of the IDs (the
-    order of the rows, the first row of each key)."""
+    """(kind, key) → ID over the built-in table's keys sorted per kind (``data/table_axis.py``, ...): a look-up
+    bisects its kind's keys, no dictionary of every key is built at start-up. Iterated in the order of the
+    IDs (the order of the rows, the first row of each key)."""
 
     __slots__ = ("_by_kind",)
 
@@ -339,7 +426,7 @@ class Registry:
     memo: dict[str, dict[Any, Any]] = field(default_factory=dict, repr=False)
 
     def __post_init__(self) -> None:
-        if self._by_key:
+        if isinstance(self._by_key, KeyIndex) or self._by_key:
             return  # given with its index (the built-in table's, written at build time)
         by_key: dict[tuple[str, str], str] = {}
         kinds_of: dict[str, list[str]] = {}
@@ -397,25 +484,34 @@ class Registry:
         memo: dict[str, tuple[tuple[str, int], ...]] = self.memo.setdefault("counted_by", {})
         got = memo.get(spec.id)
         if got is None:
-            got = memo[spec.id] = _counted(spec.key, self._counters().get(spec.kind, ()))
+            got = memo[spec.id] = _counted(spec.key, self._counters_of(spec.kind))
         return got
 
     def _counters(self) -> dict[str, list[tuple[str, str, str, int]]]:
-        """Kind → its counts: (ID, stem, parent, the index it counts), found once from the keys."""
+        """Kind → its counts: (ID, stem, parent, the index it counts), found from the keys (every kind's)."""
+        return {kind: got for kind in dict.fromkeys(k for _, k, _ in self._count_keys())
+                if (got := self._counters_of(kind))}
+
+    def _count_keys(self) -> Iterable[tuple[str, str, str]]:
+        """(ID, kind, key) of the parameters whose key ends in ``_anzahl``."""
+        specs = self.specs
+        return specs.count_triples() if isinstance(specs, SpecTable) else \
+            [t for t in _triples(specs) if t[2].endswith("_anzahl")]
+
+    def _counters_of(self, kind: str) -> list[tuple[str, str, str, int]]:
+        """The counts of one kind (see :meth:`_counters`), found once: only that kind's are built (an axis
+        list's lint reads no channel parameter's row)."""
         memo: dict[str, list[tuple[str, str, str, int]]] = self.memo.setdefault("counters", {})
-        if not memo:
-            memo[""] = []  # never empty once built
-            specs = self.specs
-            counts = specs.count_triples() if isinstance(specs, SpecTable) else \
-                [t for t in _triples(specs) if t[2].endswith("_anzahl")]
-            for count_id, count_kind, count_key in counts:
+        got = memo.get(kind)
+        if got is None:
+            got = memo[kind] = []
+            for count_id, count_kind, count_key in self._count_keys():
                 start = _count_stem(count_key)
-                if start < 0 or not self.specs[count_id].type.startswith("UNS"):
+                if count_kind != kind or start < 0 or not self.specs[count_id].type.startswith("UNS"):
                     continue
                 parent = count_key[:start]
-                memo.setdefault(count_kind, []).append((count_id, count_key[start:-len("_anzahl")], parent,
-                                                        parent.count("[]")))
-        return memo
+                got.append((count_id, count_key[start:-len("_anzahl")], parent, parent.count("[]")))
+        return got
 
     def machine_data_ids(self) -> frozenset[str]:
         """The IDs ``#MACHINE DATA`` accepts as keywords (the seed's entries), computed once."""
@@ -689,37 +785,36 @@ def build_registry(rows: list[dict[str, Any]], source: str) -> Registry:
 
 
 # The built-in table's index, written at build time (``data/table.py``), each sorted: per kind its keys and
-# the ID of each, the keys and the kinds of each, and the count parameters' (ID, kind, key).
+# the ID of each (read at the kind's first look-up), the keys and the kinds of each, and the count
+# parameters' (ID, kind, key).
 Index = tuple[Mapping[str, tuple[tuple[str, ...], tuple[str, ...]]], tuple[str, ...], tuple[tuple[str, ...], ...],
               tuple[tuple[str, str, str], ...]]
 
 
 def _built(rows: Mapping[str, dict[str, Any] | tuple[Any, ...]], source: str, columns: tuple[str, ...] = (),
-           index: Index | None = None) -> Registry:
-    """The registry of rows by ID (dictionaries, or the built-in table's tuples in ``columns``' order)
-    with the seed overlay. The rows are shared, never changed: a row the overlay changes is copied.
-    ``index``: the rows' index written at build time, used where the overlay changes no row's key or kind
-    (else the registry indexes the rows itself)."""
+           index: Index | None = None, seeded_keys: Mapping[str, str | None] | None = None) -> Registry:
+    """The registry of rows by ID (dictionaries, or the built-in table's :class:`TableRows`, tuples in
+    ``columns``' order) with the seed overlay. The rows are shared, never changed: a row the overlay changes
+    is copied. ``index``: the rows' index written at build time, used where the overlay changes no row's key
+    or kind (else the registry indexes the rows itself); ``seeded_keys``: the table's key of the parameters
+    the overlay names, written with it (a parameter not there is looked up in its kind's rows)."""
     overlay = _overlay()
-    changed: dict[str, dict[str, Any] | tuple[Any, ...]] = {}
-    for pid, extra in overlay.get("params", {}).items():
-        old = rows.get(pid)
-        if isinstance(old, tuple):
-            if index is not None and (extra.get("key", old[2]) != old[2] or extra.get("kind", old[1]) != old[1]):
-                index = None
-            old = {c: v for c, v in zip(columns, old, strict=True) if v is not None}
-        elif index is not None and (old is None or extra.get("key", old.get("key")) != old.get("key")
-                                    or extra.get("kind", old["kind"]) != old["kind"]):
-            index = None  # a new parameter, or one the overlay gives another key or kind
-        row = changed[pid] = dict(old or {"id": pid, "kind": pid[2:6], "type": "STRING"})
-        if "description" in extra and row.get("vendor_text"):
-            row["vendor_text"] = None
-        row.update(extra)
-        row.pop("range_note", None) if "range" in extra else None
-    if isinstance(rows, SortedIndex):
-        rows = SortedIndex(rows._keys, rows._values, rows._rank, changed)
+    params: dict[str, dict[str, Any]] = overlay.get("params", {})
+    if isinstance(rows, TableRows):
+        for pid, extra in params.items():
+            if index is not None and (extra.get("kind", pid[2:6]) != pid[2:6] or (
+                    "key" in extra and extra["key"] != _table_key(rows, pid, seeded_keys))):
+                index = None  # a new parameter with a key, or one the overlay gives another key or kind
+        rows = TableRows(rows._kinds, columns, params)
     else:
+        changed: dict[str, dict[str, Any] | tuple[Any, ...]] = {}
+        for pid, extra in params.items():
+            old = rows.get(pid)
+            if isinstance(old, tuple):
+                old = dict(_fields(columns, old))
+            changed[pid] = _seeded(pid, old, extra)
         rows = {**rows, **changed}
+        index = None  # rows of a user's catalogue: indexed by the registry
     index_base = overlay.get("index_base", {})
     specs = SpecTable(rows, index_base, columns, index[3] if index is not None else None)
     aliases = {}
@@ -737,6 +832,20 @@ def _built(rows: Mapping[str, dict[str, Any] | tuple[Any, ...]], source: str, co
                     aliases=aliases, vendor_keys=vendor_keys)
 
 
+def _table_key(rows: TableRows, pid: str, seeded_keys: Mapping[str, str | None] | None) -> str | None:
+    """The built-in table's key of ``pid`` (``None``: no such parameter): as written with the table where it
+    is (``SEEDED_KEYS``), else from its kind's rows."""
+    if seeded_keys is not None and pid in seeded_keys:
+        return seeded_keys[pid]
+    row = rows.table_row(pid)
+    return row[2] if row is not None else None
+
+
+def _kind_table(kind: str) -> Any:
+    """The module of one kind's rows of the built-in table (``data/table_axis.py``: IDS, DATA, KEYS, KEY_IDS)."""
+    return importlib.import_module(f"zero.catalog.data.table_{kind.lower()}")  # start-up: a kind at its first row
+
+
 def load_table() -> list[dict[str, Any]]:
     """The committed table rows (generated facts, no vendor texts)."""
     from zero.catalog.data.table import ROWS  # start-up: the 1766 rows only for the built-in registry
@@ -751,8 +860,10 @@ def load_registry(param_desc: str | Path | None = None) -> Registry:
         from zero.catalog.data import table  # start-up: the 1766 rows only for the built-in registry
 
         assert table.COLUMNS[:3] == ("id", "kind", "key")  # what keys_by_kind reads of a tuple
-        return _built(SortedIndex(table.IDS, table.DATA), BUILTIN_SOURCE, table.COLUMNS,
-                      (table.KEYS, table.KINDS_OF_KEYS, table.KINDS_OF, table.COUNTS))
+        kinds = Lazy(table.SIZES, _kind_table)
+        return _built(TableRows(kinds), BUILTIN_SOURCE, table.COLUMNS,
+                      (Lazy(table.SIZES, lambda kind: (kinds[kind].KEYS, kinds[kind].KEY_IDS)), table.KINDS_OF_KEYS,
+                       table.KINDS_OF, table.COUNTS), table.SEEDED_KEYS)
     from zero.catalog.paramdesc import read_param_desc  # start-up: XML parsing only when asked
 
     rows = read_param_desc(param_desc, with_text=True)
