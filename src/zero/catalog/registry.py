@@ -18,7 +18,6 @@ from bisect import bisect_left
 from collections import Counter
 from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
 from operator import itemgetter
-from pathlib import Path
 
 from zero.catalog.ranges import Range, decode_range, parse_range
 from zero.forms import kind_hint
@@ -26,6 +25,7 @@ from zero.records import field, record
 
 TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (mypy and ruff read it alike)
 if TYPE_CHECKING:
+    from pathlib import Path
     from typing import Any
 
     from zero.lists.model import Document, Entry
