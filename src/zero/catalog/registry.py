@@ -14,7 +14,6 @@ line keeps a process-wide registry.
 from __future__ import annotations
 
 import importlib
-from bisect import bisect_left
 from collections import Counter
 from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
 from operator import itemgetter
@@ -22,6 +21,11 @@ from operator import itemgetter
 from zero.catalog.ranges import Range, decode_range, parse_range
 from zero.forms import kind_hint
 from zero.records import field, record
+
+try:  # the C search itself: bisect.py only re-exports it (half the import's cost at start-up)
+    from _bisect import bisect_left
+except ImportError:  # an interpreter without the accelerator
+    from bisect import bisect_left
 
 TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (mypy and ruff read it alike)
 if TYPE_CHECKING:
@@ -709,35 +713,18 @@ _SPEC_FIELDS = ("id", "kind", "key", "type", "default", "range", "range_note", "
 
 def _spec_from_fields(fields: tuple[Any, ...], index_base: dict[str, int]) -> ParamSpec:
     """:func:`_spec_from_row` of a row's fields in ``_SPEC_FIELDS``' order (``None``: not given), as a table
-    row's tuple gives them: no dictionary per row."""
+    row's tuple gives them (its arrays tuples already, written so by tools/gen_registry.py): no dictionary per
+    row, the fields passed in ParamSpec's order."""
     (pid, kind, key, typ, default, range_text, range_note, dims, symbols, units, quantity, max_len, restart,
      description, vendor_text, source, enum, enum_flags, bits, enum_labels) = fields
     base = 0
     if key:
         first = key.split("[", 1)[0].split(".", 1)[0]
         base = index_base.get(f"{kind}:{first}", 0)
-    return ParamSpec(
-        id=pid,
-        kind=kind,
-        key=key,
-        type="STRING" if typ is None else typ,
-        default=default,
-        range_text=range_text,
-        range_note=range_note,
-        dims=tuple(dims) if dims is not None else (),
-        symbols=tuple((s[0], s[1]) for s in symbols) if symbols is not None else (),
-        units=tuple(units) if units is not None else (),
-        quantity=quantity,
-        max_len=max_len,
-        restart=bool(restart),
-        description=description or vendor_text,
-        source="CncParaDesc.xml" if source is None else source,
-        index_base=base,
-        enum=tuple(enum) if enum is not None else (),
-        enum_flags=bool(enum_flags),
-        bits=bool(bits),
-        enum_labels=tuple(enum_labels) if enum_labels is not None else (),
-    )
+    return ParamSpec(pid, kind, key, "STRING" if typ is None else typ, default, range_text, range_note,
+                     dims or (), symbols or (), units or (), quantity, max_len, bool(restart), description or vendor_text,
+                     "CncParaDesc.xml" if source is None else source, base, enum or (), bool(enum_flags), bool(bits),
+                     enum_labels or ())
 
 
 def _spec_from_row(row: dict[str, Any], index_base: dict[str, int]) -> ParamSpec:
