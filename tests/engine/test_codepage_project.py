@@ -7,6 +7,7 @@ import shutil
 from pathlib import Path
 
 import zero.engine.config as config
+import zero.engine.config_file as config_file
 from conftest import FIXTURES, builtin_registry
 from zero.engine.project import Project
 
@@ -35,8 +36,9 @@ def test_the_declared_codec_reaches_options_and_the_machine(tmp_path: Path) -> N
 
 
 def test_the_configuration_modules_example_declares_a_code_page(tmp_path: Path) -> None:
-    """The example in zero.engine.config's documentation reads, `encoding` among its keys."""
-    doc = config.__doc__ or ""
+    """The example in zero.engine.config_file's documentation (the options' declarations) reads, `encoding`
+    among its keys."""
+    doc = config_file.__doc__ or ""
     example = doc.split("```toml\n", 1)[1].split("```", 1)[0]
     (tmp_path / "pyproject.toml").write_text(example)
     cfg = config.parse_config(tmp_path / "pyproject.toml")

@@ -36,7 +36,7 @@ from zero.cli.run import (
 from zero.cli.run import lint as run_lint_command
 from zero.diff import SAME, DiffOptions, show_lines
 from zero.engine.commands import parse_kind, run_format
-from zero.engine.config import config_schema_text
+from zero.engine.config_file import config_schema_text
 from zero.engine.convert import check_convert_options, convert_inputs, write_into, write_outputs
 from zero.engine.project import Common, Project, open_project
 from zero.engine.queries import find_param, load_side, machine_of, run_diff, run_effective, run_limits
