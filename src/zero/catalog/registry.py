@@ -722,9 +722,9 @@ def _spec_from_fields(fields: tuple[Any, ...], index_base: dict[str, int]) -> Pa
         first = key.split("[", 1)[0].split(".", 1)[0]
         base = index_base.get(f"{kind}:{first}", 0)
     return ParamSpec(pid, kind, key, "STRING" if typ is None else typ, default, range_text, range_note,
-                     dims or (), symbols or (), units or (), quantity, max_len, bool(restart), description or vendor_text,
-                     "CncParaDesc.xml" if source is None else source, base, enum or (), bool(enum_flags), bool(bits),
-                     enum_labels or ())
+                     dims or (), symbols or (), units or (), quantity, max_len, bool(restart),
+                     description or vendor_text, "CncParaDesc.xml" if source is None else source, base, enum or (),
+                     bool(enum_flags), bool(bits), enum_labels or ())
 
 
 def _spec_from_row(row: dict[str, Any], index_base: dict[str, int]) -> ParamSpec:
