@@ -205,7 +205,8 @@ def test_a_sorted_index_answers_as_a_dictionary() -> None:
     assert idx.get("c") is None and "c" not in idx and 5 not in idx and idx.get(5, "no") == "no"
     with pytest.raises(KeyError):
         idx["c"]
-    keys = KeyIndex({"AXIS": (("a.b", "c"), ("P-AXIS-00002", "P-AXIS-00001")), "ZERO": (("a.b",), ("P-ZERO-00001",))})
+    by_kind = {"AXIS": (("a.b", "c"), ("P-AXIS-00002", "P-AXIS-00001")), "ZERO": (("a.b",), ("P-ZERO-00001",))}
+    keys = KeyIndex(by_kind, by_kind.__getitem__)
     assert list(keys.items()) == [(("AXIS", "c"), "P-AXIS-00001"), (("AXIS", "a.b"), "P-AXIS-00002"),
                                   (("ZERO", "a.b"), "P-ZERO-00001")]
     assert keys.get(("AXIS", "a.b")) == "P-AXIS-00002" and ("ZERO", "c") not in keys and ("TOOL", "c") not in keys

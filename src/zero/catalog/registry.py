@@ -211,35 +211,6 @@ def _position(keys: Sequence[Any], key: Any) -> int:
     return at if at < len(keys) and keys[at] == key else -1
 
 
-class Lazy(Mapping[str, "Any"]):
-    """``key`` → ``load(key)`` for each of ``keys``, loaded at its first look-up and kept (a kind's rows of
-    the built-in table, imported at the first row of that kind a run reads)."""
-
-    __slots__ = ("_keys", "_load", "_loaded")
-
-    def __init__(self, keys: Mapping[str, Any], load: Callable[[str], Any]) -> None:
-        self._keys, self._load = keys, load
-        self._loaded: dict[str, Any] = {}
-
-    def __getitem__(self, key: str) -> Any:
-        try:
-            return self._loaded[key]
-        except KeyError:
-            if key not in self._keys:
-                raise
-        got = self._loaded[key] = self._load(key)
-        return got
-
-    def __contains__(self, key: object) -> bool:
-        return key in self._keys
-
-    def __iter__(self) -> Iterator[str]:
-        return iter(self._keys)
-
-    def __len__(self) -> int:
-        return len(self._keys)
-
-
 class TableRows(Mapping[str, "tuple[Any, ...] | dict[str, Any]"]):
     """The built-in table's rows by ID (``data/table_axis.py``, ...: a kind's IDs sorted, and its rows), a
     kind's read at its first row asked for; ``seeds``: the seed overlay's facts of a parameter, its row
@@ -247,9 +218,9 @@ class TableRows(Mapping[str, "tuple[Any, ...] | dict[str, Any]"]):
 
     __slots__ = ("_columns", "_kinds", "_seeded", "_seeds")
 
-    def __init__(self, kinds: Mapping[str, Any], columns: tuple[str, ...] = (),
+    def __init__(self, kinds: Mapping[str, int], columns: tuple[str, ...] = (),
                  seeds: Mapping[str, dict[str, Any]] | None = None) -> None:
-        self._kinds = kinds  # kind -> its module: IDS and DATA
+        self._kinds = kinds  # the kinds that have rows (a kind's: _kind_table(kind).IDS, DATA)
         self._columns = columns
         self._seeds = seeds or {}
         self._seeded: dict[str, dict[str, Any]] = {}
@@ -258,7 +229,7 @@ class TableRows(Mapping[str, "tuple[Any, ...] | dict[str, Any]"]):
         """The table's own row of ``pid`` (``None``: none), its kind's module read at the first."""
         if type(pid) is not str or pid[2:6] not in self._kinds:
             return None
-        table = self._kinds[pid[2:6]]
+        table = _kind_table(pid[2:6])
         at = _position(table.IDS, pid)
         return table.DATA[at] if at >= 0 else None
 
@@ -284,11 +255,11 @@ class TableRows(Mapping[str, "tuple[Any, ...] | dict[str, Any]"]):
 
     def __iter__(self) -> Iterator[str]:
         for kind in self._kinds:
-            yield from self._kinds[kind].IDS
+            yield from _kind_table(kind).IDS
         yield from (pid for pid in self._seeds if self.table_row(pid) is None)
 
     def __len__(self) -> int:
-        return sum(len(self._kinds[k].IDS) for k in self._kinds) + \
+        return sum(len(_kind_table(k).IDS) for k in self._kinds) + \
             sum(1 for pid in self._seeds if self.table_row(pid) is None)
 
 
@@ -317,17 +288,20 @@ class KeyIndex(Mapping[tuple[str, str], str]):
     bisects its kind's keys, no dictionary of every key is built at start-up. Iterated in the order of the
     IDs (the order of the rows, the first row of each key)."""
 
-    __slots__ = ("_by_kind",)
+    __slots__ = ("_keys_of", "_kinds")
 
-    def __init__(self, by_kind: Mapping[str, tuple[Sequence[str], Sequence[str]]]) -> None:
-        self._by_kind = by_kind
+    def __init__(self, kinds: Mapping[str, Any], keys_of: Callable[[str], tuple[Sequence[str], Sequence[str]]]) -> None:
+        self._kinds = kinds  # the kinds that have keys
+        self._keys_of = keys_of  # a kind's keys sorted, and the ID of each
 
     def get(self, pair: tuple[str, str], default: Any = None) -> Any:
         try:
             kind, key = pair
-            keys, ids = self._by_kind[kind]
+            if kind not in self._kinds:
+                return default
+            keys, ids = self._keys_of(kind)
             at = bisect_left(keys, key)
-        except (KeyError, TypeError, ValueError):  # no such kind, or no (kind, key) pair
+        except (TypeError, ValueError):  # no (kind, key) pair
             return default
         return ids[at] if at < len(keys) and keys[at] == key else default
 
@@ -341,12 +315,11 @@ class KeyIndex(Mapping[tuple[str, str], str]):
         return self.get(pair, _ABSENT) is not _ABSENT  # type: ignore[arg-type]
 
     def __iter__(self) -> Iterator[tuple[str, str]]:
-        pairs = [(pid, kind, key) for kind, (keys, ids) in self._by_kind.items()
-                 for key, pid in zip(keys, ids, strict=True)]
+        pairs = [(pid, kind, key) for kind in self._kinds for key, pid in zip(*self._keys_of(kind), strict=True)]
         return ((kind, key) for _, kind, key in sorted(pairs))
 
     def __len__(self) -> int:
-        return sum(len(keys) for keys, _ in self._by_kind.values())
+        return sum(len(self._keys_of(kind)[0]) for kind in self._kinds)
 
 
 class SpecTable(Mapping[str, "ParamSpec"]):
@@ -771,11 +744,10 @@ def build_registry(rows: list[dict[str, Any]], source: str) -> Registry:
     return _built(by_id, source)
 
 
-# The built-in table's index, written at build time (``data/table.py``), each sorted: per kind its keys and
-# the ID of each (read at the kind's first look-up), the keys and the kinds of each, and the count
-# parameters' (ID, kind, key).
-Index = tuple[Mapping[str, tuple[tuple[str, ...], tuple[str, ...]]], tuple[str, ...], tuple[tuple[str, ...], ...],
-              tuple[tuple[str, str, str], ...]]
+# The built-in table's index, written at build time (``data/table.py``): the kinds with rows (each kind's
+# keys sorted, and the ID of each, read from its module at the kind's first look-up), the keys sorted and the
+# kinds of each, and the count parameters' (ID, kind, key).
+Index = tuple[Mapping[str, int], tuple[str, ...], tuple[tuple[str, ...], ...], tuple[tuple[str, str, str], ...]]
 
 
 def _built(rows: Mapping[str, dict[str, Any] | tuple[Any, ...]], source: str, columns: tuple[str, ...] = (),
@@ -814,8 +786,8 @@ def _built(rows: Mapping[str, dict[str, Any] | tuple[Any, ...]], source: str, co
         vendor_keys[(kind, pattern)] = (facts["source"], facts.get("near", ""))
     if index is None:
         return Registry(specs, source, aliases=aliases, vendor_keys=vendor_keys)
-    by_kind, kinds_of_keys, kinds_of, _ = index
-    return Registry(specs, source, _by_key=KeyIndex(by_kind), _kinds_of=SortedIndex(kinds_of_keys, kinds_of),
+    kinds, kinds_of_keys, kinds_of, _ = index
+    return Registry(specs, source, _by_key=KeyIndex(kinds, _kind_keys), _kinds_of=SortedIndex(kinds_of_keys, kinds_of),
                     aliases=aliases, vendor_keys=vendor_keys)
 
 
@@ -828,9 +800,22 @@ def _table_key(rows: TableRows, pid: str, seeded_keys: Mapping[str, str | None] 
     return row[2] if row is not None else None
 
 
+_KIND_TABLES: dict[str, Any] = {}
+
+
 def _kind_table(kind: str) -> Any:
-    """The module of one kind's rows of the built-in table (``data/table_axis.py``: IDS, DATA, KEYS, KEY_IDS)."""
-    return importlib.import_module(f"zero.catalog.data.table_{kind.lower()}")  # start-up: a kind at its first row
+    """The module of one kind's rows of the built-in table (``data/table_axis.py``: IDS, DATA, KEYS, KEY_IDS),
+    imported at the kind's first row."""
+    got = _KIND_TABLES.get(kind)
+    if got is None:
+        got = _KIND_TABLES[kind] = importlib.import_module(f"zero.catalog.data.table_{kind.lower()}")
+    return got
+
+
+def _kind_keys(kind: str) -> tuple[Sequence[str], Sequence[str]]:
+    """One kind's keys of the built-in table, sorted, and the ID of each."""
+    table = _kind_table(kind)
+    return table.KEYS, table.KEY_IDS
 
 
 def load_table() -> list[dict[str, Any]]:
@@ -847,10 +832,8 @@ def load_registry(param_desc: str | Path | None = None) -> Registry:
         from zero.catalog.data import table  # start-up: the 1766 rows only for the built-in registry
 
         assert table.COLUMNS[:3] == ("id", "kind", "key")  # what keys_by_kind reads of a tuple
-        kinds = Lazy(table.SIZES, _kind_table)
-        return _built(TableRows(kinds), BUILTIN_SOURCE, table.COLUMNS,
-                      (Lazy(table.SIZES, lambda kind: (kinds[kind].KEYS, kinds[kind].KEY_IDS)), table.KINDS_OF_KEYS,
-                       table.KINDS_OF, table.COUNTS), table.SEEDED_KEYS)
+        return _built(TableRows(table.SIZES), BUILTIN_SOURCE, table.COLUMNS,
+                      (table.SIZES, table.KINDS_OF_KEYS, table.KINDS_OF, table.COUNTS), table.SEEDED_KEYS)
     from zero.catalog.paramdesc import read_param_desc  # start-up: XML parsing only when asked
 
     rows = read_param_desc(param_desc, with_text=True)
