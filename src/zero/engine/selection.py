@@ -35,7 +35,8 @@ def _written() -> dict[str, tuple[Severity, bool]] | None:
             return None
     except OSError:
         return None
-    return {code: (Severity[severity], opt_in) for code, severity, opt_in in CODES}
+    by_name = {s.name: s for s in Severity}  # a dictionary's look-up, not the enum's per code
+    return {code: (by_name[severity], opt_in) for code, severity, opt_in in CODES}
 
 
 def _imported() -> dict[str, tuple[Severity, bool]]:
@@ -76,6 +77,8 @@ def _match(prefixes: Sequence[str], code: str, names: frozenset[str] = frozenset
     ``names``: ``prefixes`` as a set, for a selection of full codes (one look-up, not one per prefix)."""
     if code in names:  # as long as a prefix of it can be
         return len(code)
+    if not prefixes:  # what max() below gives for none, without a generator per code (a run asks ~600 times)
+        return -1
     return max((0 if p == ALL else len(p) for p in prefixes if p == ALL or code.startswith(p)), default=-1)
 
 
@@ -93,10 +96,11 @@ def _selected_rules(options: LintOptions) -> dict[str, Severity]:
     # (199 codes), and 199 prefixes tried on each code were the slowest part of start-up
     select, extend, ignore = (frozenset(options.select), frozenset(options.extend_select),
                               frozenset(options.ignore))
+    # (a selector that is empty matches nothing, and a code a set names is matched by it: no call for either)
     for code, (severity, opt_in) in rule_table().items():
-        sel = _match(options.select, code, select)
-        ext = _match(options.extend_select, code, extend)
-        ign = _match(options.ignore, code, ignore)
+        sel = len(code) if code in select else _match(options.select, code) if select else -1
+        ext = len(code) if code in extend else _match(options.extend_select, code) if extend else -1
+        ign = len(code) if code in ignore else _match(options.ignore, code) if ignore else -1
         if opt_in and not _named(code, options.select, options.extend_select):
             continue
         if options.select and sel < 0 and ext < 0:
