@@ -8,7 +8,7 @@ import pytest
 
 from zero.lists import model
 from zero.lists.model import HUGE_INDEX, parse_key, scanned_key
-from zero.lists.tokenizer import _FAST_ENTRY_RE, tokenize_text
+from zero.lists.tokenizer import _fast_entry_re, tokenize_text
 
 KEYS = ["wz[17].laenge", "kenngr.swe_neg", "np_grp[0].achse[2].versch", "a[1][2].b[3]", "x.y[4].z",
         "wz[0]", "tool[3].kinematic.param[12]", "unknown_key_5.member[7]",
@@ -18,7 +18,7 @@ KEYS = ["wz[17].laenge", "kenngr.swe_neg", "np_grp[0].achse[2].versch", "a[1][2]
 @pytest.mark.parametrize("text", KEYS)
 def test_scanned_key_is_parse_key(text: str) -> None:
     model._keys.clear()
-    m = _FAST_ENTRY_RE.match(f"{text} 1")
+    m = _fast_entry_re().match(f"{text} 1")
     assert m is not None and m.group(1) == text
     got = scanned_key(*m.group(1, 2, 3, 4))
     model._keys.clear()

@@ -11,6 +11,7 @@ import enum
 import re
 from array import array
 from collections.abc import Iterator
+from functools import cache
 from itertools import accumulate
 
 from zero.forms import XML_ROOTS, root_of
@@ -25,8 +26,16 @@ if TYPE_CHECKING:
 MAX_INDEX_DIGITS = 18
 HUGE_INDEX = 10**MAX_INDEX_DIGITS
 
-_KEY_RE = re.compile(r"[A-Za-z0-9_]+(?:\[[0-9]+\])*(?:\.[A-Za-z0-9_]+(?:\[[0-9]+\])*)*")
-_INDEX_RE = re.compile(r"\[([0-9]+)\]")
+
+@cache
+def key_form() -> re.Pattern[str]:
+    """The form of a key, ``name[n].name...`` (compiled when first used, as every pattern of the lists)."""
+    return re.compile(r"[A-Za-z0-9_]+(?:\[[0-9]+\])*(?:\.[A-Za-z0-9_]+(?:\[[0-9]+\])*)*")
+
+
+@cache
+def _index_re() -> re.Pattern[str]:
+    return re.compile(r"\[([0-9]+)\]")
 
 
 class ValueKind(enum.Enum):
@@ -81,8 +90,9 @@ _keys: dict[str, Key] = {}
 def _part(text: str) -> tuple[str, tuple[int, ...]]:
     got = _part_cache.get(text)
     if got is None:
-        digits = _INDEX_RE.findall(text)
-        got = (_INDEX_RE.sub("[]", text) if digits else text,
+        index = _index_re()
+        digits = index.findall(text)
+        got = (index.sub("[]", text) if digits else text,
                tuple(int(d) if len(d) <= MAX_INDEX_DIGITS else HUGE_INDEX for d in digits))
         if len(_part_cache) < _CACHE_LIMIT and len(text) < 512:
             _part_cache[text] = got
@@ -98,7 +108,7 @@ def parse_key(text: str, trusted: bool = False) -> Key | None:
     got = _keys.get(text)
     if got is not None:
         return got
-    if not trusted and not _KEY_RE.fullmatch(text):
+    if not trusted and not key_form().fullmatch(text):
         return None
     cut = text.find("]") + 1
     if not cut:

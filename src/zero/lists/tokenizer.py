@@ -16,6 +16,7 @@ from __future__ import annotations
 import re
 from array import array
 from collections.abc import Iterable, Sequence
+from functools import cache
 from itertools import compress
 from operator import length_hint
 
@@ -35,6 +36,7 @@ from zero.lists.model import (
     Problem,
     ValueKind,
     _singles,
+    key_form,
     parse_key,
     row_readers,
     scanned_key,
@@ -55,59 +57,77 @@ _PLAIN_COMMENT = ("# ", "#\t")
 # What a key starts with (parse_key): after a `#`, anything else is no commented-out entry.
 _KEY_START = frozenset("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789_")
 
-_INT_RE = re.compile(r"[+-]?[0-9]+")
-_HEX_RE = re.compile(r"[+-]?0[xX][0-9A-Fa-f]+")
-_REAL_RE = re.compile(r"[+-]?(?:[0-9]+\.[0-9]*|\.[0-9]+|[0-9]+(?=[eE]))(?:[eE][+-]?[0-9]+)?")
-_REF_RE = re.compile(r"P-[A-Z]{4}-[0-9]{5}(?:\.[0-9]+)?")
-_ANNOTATION_RE = re.compile(r"\(\s*(P-[A-Z]{4}-[0-9]{5})")
-# A token that continues a key after whitespace: `.member`, `[n]` or a lone `]`.
-_KEY_CONTINUATION_RE = re.compile(
-    r"(?:\.[A-Za-z_][A-Za-z0-9_]*(?:\[[0-9]*\]?)*|\[[0-9]*\]?)(?:\.[A-Za-z0-9_]+(?:\[[0-9]+\])*)*|\]"
-)
+# The patterns are compiled when first used (start-up: a lint of a short list with nothing unusual in it
+# compiles the few its lines need, a third of what this module cost to import).
+@cache
+def _annotation_re() -> re.Pattern[str]:
+    return re.compile(r"\(\s*(P-[A-Z]{4}-[0-9]{5})")
+
+
+@cache
+def _key_continuation_re() -> re.Pattern[str]:
+    """A token that continues a key after whitespace: `.member`, `[n]` or a lone `]`."""
+    return re.compile(r"(?:\.[A-Za-z_][A-Za-z0-9_]*(?:\[[0-9]*\]?)*|\[[0-9]*\]?)(?:\.[A-Za-z0-9_]+(?:\[[0-9]+\])*)*|\]")
+
+
 _MAX_KEY_JOINS = 8
-# The common line, matched in one go: `KEY VALUE [COMMENT]` where nothing needs the
-# careful scanner (no quotes, flags, key continuations or `Ende`; a value may start with a `.` that
-# no name follows, `./listen/x.lis`, `.5`: that is no key continuation `.name`). Whatever this does
-# not match goes to scan_line, which gives the same result for what it does match.
-# Groups: 1 the key, as 2 its names up to the first index, 3 that index (if any) and 4 the rest (what
-# model.scanned_key reads); 5 the value; 6 the comment.
-_FAST_ENTRY_RE = re.compile(
-    r"[ \t]*(([A-Za-z_][A-Za-z0-9_]*(?:\.[A-Za-z0-9_]+)*)(?:\[([0-9]+)\])?"
-    r"((?:\[[0-9]+\])*(?:\.[A-Za-z0-9_]+(?:\[[0-9]+\])*)*))"
-    r"[ \t]+((?!\.[A-Za-z_])[^\s\"|\[\]][^\s|]*)(?:[ \t]+([^\s|].*)|[ \t]*)\Z",
-    re.DOTALL)
-_KIND_RE = re.compile(
-    r"(?P<int>[+-]?[0-9]+)|(?P<hex>[+-]?0[xX][0-9A-Fa-f]+)|(?P<ref>P-[A-Z]{4}-[0-9]{5}(?:\.[0-9]+)?)"
-    r"|(?P<real>[+-]?(?:[0-9]+\.[0-9]*|\.[0-9]+|[0-9]+(?=[eE]))(?:[eE][+-]?[0-9]+)?)")
+
+
+@cache
+def _fast_entry_re() -> re.Pattern[str]:
+    """The common line, matched in one go: `KEY VALUE [COMMENT]` where nothing needs the careful scanner (no
+    quotes, flags, key continuations or `Ende`; a value may start with a `.` that no name follows,
+    `./listen/x.lis`, `.5`: that is no key continuation `.name`). Whatever this does not match goes to
+    scan_line, which gives the same result for what it does match. Groups: 1 the key, as 2 its names up to
+    the first index, 3 that index (if any) and 4 the rest (what model.scanned_key reads); 5 the value; 6 the
+    comment."""
+    return re.compile(
+        r"[ \t]*(([A-Za-z_][A-Za-z0-9_]*(?:\.[A-Za-z0-9_]+)*)(?:\[([0-9]+)\])?"
+        r"((?:\[[0-9]+\])*(?:\.[A-Za-z0-9_]+(?:\[[0-9]+\])*)*))"
+        r"[ \t]+((?!\.[A-Za-z_])[^\s\"|\[\]][^\s|]*)(?:[ \t]+([^\s|].*)|[ \t]*)\Z",
+        re.DOTALL)
+
+
+@cache
+def _kind_re() -> re.Pattern[str]:
+    """The lexical kinds of a value that are a number or a reference, by the name of the group that matches."""
+    return re.compile(
+        r"(?P<int>[+-]?[0-9]+)|(?P<hex>[+-]?0[xX][0-9A-Fa-f]+)|(?P<ref>P-[A-Z]{4}-[0-9]{5}(?:\.[0-9]+)?)"
+        r"|(?P<real>[+-]?(?:[0-9]+\.[0-9]*|\.[0-9]+|[0-9]+(?=[eE]))(?:[eE][+-]?[0-9]+)?)")
+
+
 _KIND_OF = {"int": ValueKind.INT, "hex": ValueKind.HEX, "ref": ValueKind.REF, "real": ValueKind.REAL}
 _STYLE_OF = {"#": CommentStyle.HASH, "(": CommentStyle.PAREN}
-# Control characters other than tab; \r only counts when it is not a CRLF ending.
-_CONTROL_RE = re.compile(r"[\x00-\x08\x0b-\x1f\x7f-\x9f\udc80-\udcff]")
-# The C1 controls: what a byte above 0x7F becomes when a list written in another code page
-# (CP850's 0x81 `ü`) is read as Latin-1. In a comment the controller never reads it.
-_C1_RE = re.compile(r"[\x80-\x9f]")
+
+
+@cache
+def _control_re() -> re.Pattern[str]:
+    """Control characters other than tab; \r only counts when it is not a CRLF ending."""
+    return re.compile(r"[\x00-\x08\x0b-\x1f\x7f-\x9f\udc80-\udcff]")
+
+
+@cache
+def _c1_re() -> re.Pattern[str]:
+    """The C1 controls: what a byte above 0x7F becomes when a list written in another code page (CP850's 0x81
+    `ü`) is read as Latin-1. In a comment the controller never reads it."""
+    return re.compile(r"[\x80-\x9f]")
+
+
 _MARKED_COMMENTS = (CommentStyle.HASH, CommentStyle.PAREN, CommentStyle.BLOCK)
-# Every ASCII byte _CONTROL_RE does not match: deleting them leaves the control characters.
-_NOT_CONTROL = bytes(b for b in range(128) if not (b <= 0x08 or 0x0B <= b <= 0x1F or b == 0x7F))
-# The ASCII control characters but \r, as characters and as bytes: each searched for on its own.
-_CONTROL_CHARS = tuple(chr(b) for b in range(128) if (b <= 0x08 or 0x0B <= b <= 0x1F or b == 0x7F) and b != 0x0D)
-_CONTROL_BYTES = tuple(c.encode("ascii") for c in _CONTROL_CHARS)
-_NOT_CONTROL_LATIN1 = bytes(b for b in range(256) if not (b <= 0x08 or 0x0B <= b <= 0x1F or 0x7F <= b <= 0x9F))
+# The ASCII control characters but \r, as bytes and as characters: each searched for on its own.
+_CONTROL_BYTES = tuple(bytes((b,)) for b in (*range(0x09), 0x0B, 0x0C, *range(0x0E, 0x20), 0x7F))
+_CONTROL_CHARS = tuple(c.decode("ascii") for c in _CONTROL_BYTES)
+# Every ASCII byte (and Latin-1 byte) _control_re does not match: deleting them leaves the control characters.
+_NOT_CONTROL = b"\t\n" + bytes(range(0x20, 0x7F))
+_NOT_CONTROL_LATIN1 = _NOT_CONTROL + bytes(range(0xA0, 0x100))
 
 
 def classify_value(value: str) -> ValueKind:
     """The lexical kind of an unquoted value."""
-    if _INT_RE.fullmatch(value):
-        return ValueKind.INT
-    if _HEX_RE.fullmatch(value):
-        return ValueKind.HEX
-    if _REF_RE.fullmatch(value):
-        return ValueKind.REF
-    if "|" in value:
-        return ValueKind.FLAGS
-    if _REAL_RE.fullmatch(value):
-        return ValueKind.REAL
-    return ValueKind.WORD
+    km = _kind_re().fullmatch(value)  # an int, hex, reference or real never holds a `|`
+    if km is not None and km.lastgroup:
+        return _KIND_OF[km.lastgroup]
+    return ValueKind.FLAGS if "|" in value else ValueKind.WORD
 
 
 def comment_style(comment: str) -> CommentStyle:
@@ -144,7 +164,7 @@ def scan_entry(s: str, start: int, line: int, problems: list[Problem] | None) ->
             break
         nxt_end = _skip_token(s, nxt, n)
         token = s[nxt:nxt_end]
-        if key_text[-1] in ".[" or _KEY_CONTINUATION_RE.fullmatch(token):
+        if key_text[-1] in ".[" or _key_continuation_re().fullmatch(token):
             gaps.append((key_end, nxt))
             key_text += token
             key_end = nxt_end
@@ -201,7 +221,7 @@ def scan_entry(s: str, start: int, line: int, problems: list[Problem] | None) ->
         entry.comment_start = cs
         entry.comment_style = comment_style(comment)
         if "P-" in comment:
-            m = _ANNOTATION_RE.search(comment)
+            m = _annotation_re().search(comment)
             if m:
                 entry.annotation = m.group(1)
                 entry.annotation_start = cs + m.start(1)
@@ -220,7 +240,7 @@ def scan_line(s: str, line: int, problems: list[Problem]) -> Item:
         if s[i + 1] not in _KEY_START:  # `#****`: no key after the `#` (what scan_entry would find, at once)
             problems.append(Problem("hash-no-space", line, i, i + 1, ""))
             return Comment(line, s, None)
-        m = _FAST_ENTRY_RE.match(s, i + 1)  # `#key value`: the common commented-out entry, matched in one go
+        m = _fast_entry_re().match(s, i + 1)  # `#key value`: the common commented-out entry, matched in one go
         if m is not None and m.group(1) != END_KEYWORD:
             inner: Item = _fast_entry(m, line, m.group(5), _value_kind(m.group(5)), None)
         else:
@@ -254,7 +274,7 @@ def _comment_starts(items: list[Item], end_line: int | None) -> list[int]:
 def _c1_in_comments(lines: list[str], items: list[Item], end_line: int | None) -> int:
     """How many C1 controls the comments hold (counted, never one problem each: a binary file)."""
     starts = _comment_starts(items, end_line)
-    return sum(len(_C1_RE.findall(s, starts[n])) for n, s in enumerate(lines)
+    return sum(len(_c1_re().findall(s, starts[n])) for n, s in enumerate(lines)
                if n < len(starts) and starts[n] >= 0 and not s.isascii())
 
 
@@ -263,7 +283,7 @@ def _controls(lines: list[str], items: list[Item], end_line: int | None, declare
     starts: list[int] | None = None
     problems = []
     for number, s in enumerate(lines, 1):
-        for m in _CONTROL_RE.finditer(s):
+        for m in _control_re().finditer(s):
             ch = m.group()
             code = ord(ch)
             if code == 0:
@@ -286,7 +306,7 @@ def _controls(lines: list[str], items: list[Item], end_line: int | None, declare
 
 
 def _control_count(text: str) -> int:
-    """How many characters of the text ``_CONTROL_RE`` matches (each CRLF's \\r among them)."""
+    """How many characters of the text ``_control_re()`` matches (each CRLF's \\r among them)."""
     if text.isascii():
         return _ascii_controls(text)
     if len(text) <= _CHUNK:  # a small list with letters of a code page: in C as bytes, when Latin-1 holds it
@@ -294,7 +314,7 @@ def _control_count(text: str) -> int:
             return len(text.encode("latin-1").translate(None, _NOT_CONTROL_LATIN1))
         except UnicodeEncodeError:
             pass
-    return len(_CONTROL_RE.findall(text))
+    return len(_control_re().findall(text))
 
 
 def _ascii_controls(text: str | bytes) -> int:
@@ -335,7 +355,7 @@ def split_lines(text: str) -> tuple[list[str], list[str]]:
 
 
 # The common entry line over the whole text (a pattern's source), one match per line (the lines
-# _FAST_ENTRY_RE would match, or fewer): the key as 1 its names up to the first index, 2 that index (no
+# _fast_entry_re() would match, or fewer): the key as 1 its names up to the first index, 2 that index (no
 # leading zero) and 3 the rest from the index's `]` on (loose here: checked once per distinct key shape);
 # 4 the value; 5 the comment; else 6 the line. Written for the regex engine's cheapest steps: every
 # repeat possessive (none ever gives back what it took: what follows it cannot start with it), so no
@@ -375,18 +395,13 @@ def _row_pattern(binary: bool, crlf: bool, widths: bool) -> re.Pattern[Any]:
     return got
 
 
-_row_pattern(False, False, False)  # the common list's (no CR, read as text): compiled as it loads
-
-
-_NAME_RE = re.compile(r"[A-Za-z_][A-Za-z0-9_]*(?:\.[A-Za-z0-9_]+)*")
-_TAIL_RE = re.compile(r"(?:\[[0-9]+\])*(?:\.[A-Za-z0-9_]+(?:\[[0-9]+\])*)*")
 _CHUNK = 1 << 18  # characters of text read per pattern call: bounded memory for the match tuples
 _BYTES_FROM = 1 << 18  # an ASCII list of more bytes is read as the bytes, never decoded as a whole
 
 
 def _fast_entry(m: re.Match[str], number: int, value: str, kind: ValueKind | None,
                 notes: dict[str, tuple[str, CommentStyle, str | None, int]] | None) -> Entry:
-    """The entry of a line ``_FAST_ENTRY_RE`` matched (its key is no ``Ende``)."""
+    """The entry of a line ``_fast_entry_re()`` matched (its key is no ``Ende``)."""
     key_text, name, first, tail, comment = m.group(1, 2, 3, 4, 6)
     ks, ke = m.span(1)
     vs, ve = m.span(5)
@@ -395,7 +410,7 @@ def _fast_entry(m: re.Match[str], number: int, value: str, kind: ValueKind | Non
         return Entry(number, key_text, key_text, key, ks, ke, value, kind, vs, ve)
     known = notes.get(comment) if notes is not None else None
     if known is None:
-        am = _ANNOTATION_RE.search(comment) if "P-" in comment else None
+        am = _annotation_re().search(comment) if "P-" in comment else None
         known = (comment, _STYLE_OF.get(comment[0]) or comment_style(comment),
                  am.group(1) if am is not None else None, am.start(1) if am is not None else -1)
         if notes is not None and len(notes) < 4096:
@@ -416,7 +431,7 @@ _comment_table: dict[str, tuple[CommentStyle, str | None, int]] = {}
 def _value_kind(value: str) -> ValueKind:
     got = _kinds.get(value)
     if got is None:
-        km = _KIND_RE.fullmatch(value)
+        km = _kind_re().fullmatch(value)
         got = _KIND_OF[km.lastgroup] if km is not None and km.lastgroup else ValueKind.WORD
         if len(_kinds) < _TABLE_LIMIT and len(value) < 256:
             _kinds[value] = got
@@ -427,7 +442,7 @@ def _comment_parts(comment: str) -> tuple[CommentStyle, str | None, int]:
     """A comment's style, the annotation it holds (`( P-TOOL-00005 …`) and where in it."""
     got = _comment_table.get(comment)
     if got is None:
-        am = _ANNOTATION_RE.search(comment) if "P-" in comment else None
+        am = _annotation_re().search(comment) if "P-" in comment else None
         got = (_STYLE_OF.get(comment[0]) or comment_style(comment), am.group(1) if am is not None else None,
                am.start(1) if am is not None else -1)
         if len(_comment_table) < _TABLE_LIMIT and len(comment) < 512:
@@ -498,7 +513,7 @@ def _read(doc: Document, rows: Sequence[int], lines: list[str], one: bool) -> di
     ``doc.columns.objects``: positions from the line, the rest from the columns."""
     cols = doc.columns
     objects = cols.objects
-    match = _FAST_ENTRY_RE.match
+    match = _fast_entry_re().match
     line, shape, first, value, comment = cols.line, cols.shape, cols.first, cols.value, cols.comment
     shapes, patterns, values, kinds = cols.shapes, cols.patterns, cols.values, cols.kinds
     comments, styles, notes, note_at = cols.comments, cols.styles, cols.notes, cols.note_at
@@ -545,7 +560,7 @@ _UNKNOWN: _ShapeInfo = ("", False, "", "", ())
 def _shape_of(key: tuple[str, str]) -> _ShapeInfo | None:
     name, tail = key
     info: _ShapeInfo | None = None
-    if (_NAME_RE.fullmatch(name) and _TAIL_RE.fullmatch(tail, 1)
+    if (key_form().fullmatch(f"{name}[0{tail}" if tail else name)  # names `a.b`, then `[n]`s and `.name[n]`s
             and not (name == END_KEYWORD and not tail)):
         info = (name, bool(tail), tail[1:], *shape_parts(name, bool(tail), tail[1:]))
     if len(_shape_info) < _TABLE_LIMIT:
@@ -720,7 +735,7 @@ class _Reader:
                 s = wholes[i].decode("ascii") if self.binary else wholes[i]
                 if s[-1:] == "\r" and (i < last or ends_nl):
                     s = s[:-1]
-                # A plain comment or a blank line never matches _FAST_ENTRY_RE (a key starts with a letter or `_`).
+                # A plain comment or a blank line never matches _fast_entry_re() (a key starts with a letter or `_`).
                 if s[:2] in _PLAIN_COMMENT or s == "#":
                     slow.append(Comment(number + i, s))
                     continue
@@ -777,14 +792,14 @@ class _Reader:
 
     def _line(self, s: str, number: int) -> None:
         """A line the columns do not take, read as the tokenizer always did."""
-        # A plain comment or a blank line never matches _FAST_ENTRY_RE (its key starts with a letter or `_`).
+        # A plain comment or a blank line never matches _fast_entry_re() (its key starts with a letter or `_`).
         if s[:2] in _PLAIN_COMMENT or s == "#":
             self.slow.append(Comment(number, s))
             return
         if not s.strip():
             self.slow.append(Blank(number))
             return
-        m = _FAST_ENTRY_RE.match(s)
+        m = _fast_entry_re().match(s)
         item: Item
         if m is not None and self.end_line is None and m.group(1) != END_KEYWORD:
             value = m.group(5)
@@ -846,7 +861,7 @@ def _text_problems(doc: Document, text: str | bytes, problems: list[Problem], de
         controls = _control_count(text) - crlf
         lf = text.count("\n") if crlf else 0
     if (controls >= BINARY_MIN_CONTROLS and controls > len(text) * BINARY_SHARE and isinstance(text, str)
-            and _C1_RE.search(text)):
+            and _c1_re().search(text)):
         # C1 controls in comments are letters of another code page, not signs of a binary file
         controls -= _c1_in_comments(doc.lines, doc.items, end_line)
     if controls:
@@ -872,8 +887,8 @@ def _tokenize_items(text: str, path: str = "-", encoding: str = "utf-8", bom: bo
     items: list[Item] = []
     end_line: int | None = None
     after_end_reported = False
-    fast = _FAST_ENTRY_RE.match if use_fast else None
-    kind_match = _KIND_RE.fullmatch
+    fast = _fast_entry_re().match if use_fast else None
+    kind_match = _kind_re().fullmatch
     # Values repeat ("0", "1"), and comments too (`( P-TOOL-00005 : …`): each is classified once and
     # kept once, whatever the number of entries that share it. A big list repeats a few dozen
     # comments: one string each instead of 114,000 (17 MB of a 14 MB tool list).
@@ -906,7 +921,7 @@ def _tokenize_items(text: str, path: str = "-", encoding: str = "utf-8", bom: bo
                     continue
                 known = notes.get(comment)
                 if known is None:
-                    am = _ANNOTATION_RE.search(comment) if "P-" in comment else None
+                    am = _annotation_re().search(comment) if "P-" in comment else None
                     known = (comment, _STYLE_OF.get(comment[0]) or comment_style(comment),
                              am.group(1) if am is not None else None, am.start(1) if am is not None else -1)
                     if len(notes) < 4096:
@@ -936,7 +951,7 @@ def _tokenize_items(text: str, path: str = "-", encoding: str = "utf-8", bom: bo
 
     # the \r of each CRLF ending is no control character of a line
     controls = _control_count(text) - (endings.count("\r\n") if "\r" in text else 0)
-    if controls >= BINARY_MIN_CONTROLS and controls > len(text) * BINARY_SHARE and _C1_RE.search(text):
+    if controls >= BINARY_MIN_CONTROLS and controls > len(text) * BINARY_SHARE and _c1_re().search(text):
         # C1 controls in comments are letters of another code page, not signs of a binary file
         controls -= _c1_in_comments(lines, items, end_line)
     if controls:
