@@ -192,3 +192,16 @@ def test_the_outputs_carry_the_consequence_and_its_source(registry: Registry, re
         assert item["properties"]["consequence"] == "zeroed"
         assert item["properties"]["source"].endswith("269276555.html")
         assert item["properties"]["kernelError"] == "P-ERR-1001138"
+
+
+def test_a_claim_is_built_at_its_first_use_and_each_row_once(monkeypatch: pytest.MonkeyPatch) -> None:
+    """A lint's findings ask for a few claims: only theirs become Claim objects (issue 40: start-up)."""
+    from zero.catalog import evidence
+
+    monkeypatch.setattr(evidence, "_built", {})
+    first = evidence.claim("style")
+    assert list(evidence._built) == ["style"] and evidence.claim("style") is first
+    every = evidence.claims()
+    assert len(every) == sum(len(rows) for rows in evidence._load()[0].values()) and first in every
+    with pytest.raises(KeyError):
+        evidence.claim("no-such-claim")

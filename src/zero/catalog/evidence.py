@@ -8,8 +8,8 @@ follows its claim: an **error** only where the source documents that the control
 changes or ignores the value or stops; a **warning** where nothing is documented; **info** for what
 the vendor itself writes or what does not apply.
 
-The table is compiled to ``data/evidence_table.py`` by ``tools/gen_startup.py`` and built at the
-first finding, once per process.
+The table is compiled to ``data/evidence_table.py`` by ``tools/gen_startup.py`` and read at the
+first finding, once per process; a claim's rows become :class:`Claim` objects at its first use.
 """
 
 from __future__ import annotations
@@ -40,28 +40,42 @@ class Claim:
         return not self.kinds or (kind is not None and kind in self.kinds)
 
 
-_table: tuple[dict[str, list[Claim]], dict[str, str]] | None = None
+_rows: dict[str, list[dict[str, object]]] | None = None  # claim name -> its rows, in order (read once)
+_rules: dict[str, str] | None = None  # rule code -> the name of its claim
+_built: dict[str, list[Claim]] = {}  # claim name -> its rows as claims (each name's at its first use)
 _drives: list[tuple[str, tuple[int, ...], str]] | None = None
 
 
-def _load() -> tuple[dict[str, list[Claim]], dict[str, str]]:
-    global _table
-    if _table is None:
+def _load() -> tuple[dict[str, list[dict[str, object]]], dict[str, str]]:
+    """The table's rows by claim name, and the rules' claims (one pass over the rows, no claim built: a
+    lint's findings ask for a few of them)."""
+    global _rows, _rules
+    if _rows is None or _rules is None:
         from zero.catalog.data.evidence_table import CLAIMS, RULES  # start-up: at the first finding
 
-        by_name: dict[str, list[Claim]] = {}
+        rows: dict[str, list[dict[str, object]]] = {}
         for row in CLAIMS:
-            c = Claim(str(row["name"]), str(row["consequence"]), Severity.parse(str(row["severity"])),
-                      str(row["says"]), str(row["source"]), str(row.get("releases", "all")),
-                      tuple(str(k) for k in row.get("kinds", ()) or ()), row.get("kernel_error") or None)
-            by_name.setdefault(c.name, []).append(c)
-        _table = (by_name, {str(k): str(v) for k, v in RULES.items()})
-    return _table
+            rows.setdefault(str(row["name"]), []).append(row)
+        _rows, _rules = rows, {str(k): str(v) for k, v in RULES.items()}
+    return _rows, _rules
+
+
+def _claims(name: str) -> list[Claim]:
+    """The rows of claim ``name`` as claims (none: no such claim), built at its first use."""
+    got = _built.get(name)
+    if got is None:
+        got = _built[name] = [
+            Claim(str(row["name"]), str(row["consequence"]), Severity.parse(str(row["severity"])), str(row["says"]),
+                  str(row["source"]), str(row.get("releases", "all")),
+                  tuple(str(k) for k in row.get("kinds", ()) or ()),  # type: ignore[attr-defined]
+                  str(row.get("kernel_error") or "") or None)
+            for row in _load()[0].get(name, ())]
+    return got
 
 
 def claim(name: str, kind: str | None = None) -> Claim:
     """The claim ``name`` for a list of ``kind``: its first row that holds for the kind."""
-    rows = _load()[0].get(name)
+    rows = _claims(name)
     if not rows:
         raise KeyError(f"no claim {name!r} in the evidence table")
     for c in rows:
@@ -93,7 +107,7 @@ def drive_types(pattern: str) -> tuple[tuple[int, ...], str] | None:
 
 def claims() -> list[Claim]:
     """Every row of the table."""
-    return [c for rows in _load()[0].values() for c in rows]
+    return [c for name in _load()[0] for c in _claims(name)]
 
 
 def rule_claims() -> dict[str, str]:
