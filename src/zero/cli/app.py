@@ -35,7 +35,7 @@ from zero.cli.run import (
 )
 from zero.cli.run import lint as run_lint_command
 from zero.diff import SAME, DiffOptions, show_lines
-from zero.engine.commands import parse_kind, run_format
+from zero.engine.commands import parse_kind
 from zero.engine.config_file import config_schema_text
 from zero.engine.convert import check_convert_options, convert_inputs, write_into, write_outputs
 from zero.engine.project import Common, Project, open_project
@@ -609,6 +609,8 @@ def format_cmd(
     and their order stay."""
 
     def body() -> int:
+        from zero.engine.formatting import run_format  # start-up: the catalogue and tokenizer only to format
+
         run = run_format(paths, REGISTRIES, echo(), check, diff, common.configs, common.isolated, common.param_desc,
                          read_stdin, stdin_filename)
         if [str(p) for p in paths] == ["-"]:
