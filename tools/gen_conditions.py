@@ -60,12 +60,15 @@ def render_prose() -> str:
         if when:
             defs.append(source(f"_r{n}_when", parse(when)))
         table.append(f"    {pid!r}: ({condition!r}, {when!r}, _r{n}, {f'_r{n}_when' if when else 'None'}, "
-                     f"{tuple(ref_elements(node))!r}),")
+                     f"{tuple(ref_elements(node))!r},\n                     {str(row['prose'])!r}),")
     head = ('"""The prose ranges\' conditions of prose_ranges.toml as Python, written by tools/gen_conditions.py:\n'
-            "ID -> (condition, guard, the condition's function, the guard's or None, the elements it reads).\n\n"
+            "ID -> (condition, guard, the condition's function, the guard's or None, the elements it reads, the\n"
+            "catalogue's prose); ROWS_SIZE: the size of the prose_ranges.py they were written from (while it has it,\n"
+            "a lint reads the prose ranges from here alone).\n\n"
             'Generated: do not edit."""\n\n'
             "# ruff: noqa\n# mypy: ignore-errors\n"
-            f"from zero.catalog.condition_source import {', '.join(HELPERS)}\n\n\n")
+            f"from zero.catalog.condition_source import {', '.join(HELPERS)}\n\n"
+            f"ROWS_SIZE = {(DATA / 'prose_ranges.py').stat().st_size}\n\n\n")
     return head + "\n\n".join(defs) + "\n\nCOMPILED = {\n" + "\n".join(table) + "\n}\n"
 
 

@@ -118,3 +118,26 @@ def test_and_or_decide_without_the_unknown_side() -> None:
         look = lambda pid, _i, values=values: values[pid]  # noqa: E731
         assert f(look) == compile_condition(parse("P-AXIS-00001 > 0 and P-AXIS-00002 > 0"))(look)  # type: ignore[operator]
         assert g(look) == compile_condition(parse("P-AXIS-00001 > 0 or P-AXIS-00002 > 0"))(look)  # type: ignore[operator]
+
+
+def test_the_prose_rows_are_read_from_the_written_module_while_their_module_has_its_size(
+        monkeypatch: pytest.MonkeyPatch) -> None:
+    import subprocess
+
+    from zero.catalog.data import prose_compiled
+
+    rows = {str(r["id"]): (str(r["condition"]), str(r.get("when") or ""), str(r["prose"])) for r in RANGES}
+    rows_module = ROOT / "src" / "zero" / "catalog" / "data" / "prose_ranges.py"
+    assert rows_module.stat().st_size == prose_compiled.ROWS_SIZE
+    rules_registry._prose_rows.cache_clear()
+    try:
+        assert rules_registry._prose_rows() == rows
+        monkeypatch.setattr(prose_compiled, "ROWS_SIZE", -2)  # another size: read from the rows, the same
+        rules_registry._prose_rows.cache_clear()
+        assert rules_registry._prose_rows() == rows
+    finally:
+        rules_registry._prose_rows.cache_clear()
+    code = ("import sys\nfrom zero.rules.registry import _prose, _prose_rows\n_prose(next(iter(_prose_rows())))\n"
+            "print('zero.catalog.data.prose_ranges' in sys.modules)")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout
+    assert out.strip() == "False"

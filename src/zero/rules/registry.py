@@ -3,6 +3,7 @@
 from __future__ import annotations
 
 import functools
+import os
 import re
 from collections.abc import Callable, Iterator
 
@@ -951,11 +952,21 @@ def _check_range(ctx: Context, e: Entry, spec: ParamSpec, v: Value) -> Iterator[
 
 
 @functools.cache
-def _prose_rows() -> dict[str, dict[str, Any]]:
-    """The catalogue's prose ranges written as conditions (``catalog/data/prose_ranges.toml``), by ID."""
-    from zero.catalog.data.prose_ranges import RANGES  # start-up: at the first value checked
+def _prose_rows() -> dict[str, tuple[str, str, str]]:
+    """The catalogue's prose ranges written as conditions (``catalog/data/prose_ranges.toml``) by ID: the
+    condition, its guard ("": none) and the catalogue's prose. Read from ``prose_compiled.py`` (written at build
+    time with them) while ``prose_ranges.py`` has the size it was written from, else from the rows."""
+    from zero.catalog.data import prose_compiled  # start-up: at the first value checked
 
-    return {row["id"]: row for row in RANGES}
+    try:
+        size = os.stat(os.path.join(os.path.dirname(prose_compiled.__file__), "prose_ranges.py")).st_size
+    except OSError:
+        size = -1
+    if size == getattr(prose_compiled, "ROWS_SIZE", None):
+        return {pid: (pre[0], pre[1], pre[5]) for pid, pre in prose_compiled.COMPILED.items()}
+    from zero.catalog.data.prose_ranges import RANGES  # start-up: only where the written module is stale
+
+    return {row["id"]: (row["condition"], row.get("when") or "", row["prose"]) for row in RANGES}
 
 
 @functools.cache
@@ -965,15 +976,15 @@ def _prose(pid: str) -> tuple[Compiled, Compiled | None, str, str, list[tuple[st
     from the one written: a stale module, slower, never wrong) compiled from its text here."""
     from zero.catalog.data.prose_compiled import COMPILED  # start-up: as above
 
-    row = _prose_rows()[pid]
+    condition, guard, prose = _prose_rows()[pid]
     pre = COMPILED.get(pid)
-    if pre is not None and pre[:2] == (row["condition"], row.get("when") or ""):
-        return pre[2], pre[3], row["condition"], row["prose"], list(pre[4])
+    if pre is not None and pre[:2] == (condition, guard):
+        return pre[2], pre[3], condition, prose, list(pre[4])
     from zero.catalog.conditions import compile_condition, parse, ref_elements  # start-up: a stale row only
 
-    cond = parse(row["condition"])
-    when = compile_condition(parse(row["when"])) if row.get("when") else None
-    return compile_condition(cond), when, row["condition"], row["prose"], ref_elements(cond)
+    cond = parse(condition)
+    when = compile_condition(parse(guard)) if guard else None
+    return compile_condition(cond), when, condition, prose, ref_elements(cond)
 
 
 def _check_prose(ctx: Context, e: Entry, spec: ParamSpec, number: Number) -> Iterator[Diagnostic]:

@@ -37,6 +37,10 @@ from zero.lists.model import Entry, format_key
 from zero.records import record
 from zero.rules.base import Context, E, Family, W
 
+TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (mypy and ruff read it alike)
+if TYPE_CHECKING:
+    from typing import Any
+
 FAMILY: Family[Context] = Family("K", "kernel start-up checks", "list")
 
 
@@ -68,6 +72,7 @@ class _Compiled:
 
 
 _compiled: dict[str, _Compiled] = {}
+_written: list[dict[str, tuple[Any, ...]]] = []  # startup_compiled.COMPILED, once read
 
 
 def compiled(err: StartupError) -> _Compiled:
@@ -75,9 +80,11 @@ def compiled(err: StartupError) -> _Compiled:
     needs the axis checks)."""
     hit = _compiled.get(err.code)
     if hit is None:
-        from zero.catalog.data.startup_compiled import COMPILED  # start-up: written at build time, at the first check
+        if not _written:
+            from zero.catalog.data.startup_compiled import COMPILED  # start-up: written at build time, first check
 
-        pre = COMPILED.get(err.code)
+            _written.append(COMPILED)
+        pre = _written[0].get(err.code)
         if pre is not None and pre[:2] == (err.condition_text, err.when_text):  # else stale: compiled here
             hit = _compiled[err.code] = _Compiled(*pre[2:])
             return hit

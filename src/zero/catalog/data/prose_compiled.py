@@ -1,11 +1,15 @@
 """The prose ranges' conditions of prose_ranges.toml as Python, written by tools/gen_conditions.py:
-ID -> (condition, guard, the condition's function, the guard's or None, the elements it reads).
+ID -> (condition, guard, the condition's function, the guard's or None, the elements it reads, the
+catalogue's prose); ROWS_SIZE: the size of the prose_ranges.py they were written from (while it has it,
+a lint reads the prose ranges from here alone).
 
 Generated: do not edit."""
 
 # ruff: noqa
 # mypy: ignore-errors
 from zero.catalog.condition_source import _abs, _binary, _both, _fact, _isname, _len, _member, _neg, _not, _startswith, _supports
+
+ROWS_SIZE = 8140
 
 
 def _r0(lookup):
@@ -105,24 +109,44 @@ def _r19(lookup):
 
 
 COMPILED = {
-    'P-AXIS-00030': ('P-AXIS-00030 <= P-AXIS-00212', '', _r0, None, (('P-AXIS-00030', None), ('P-AXIS-00212', None))),
-    'P-AXIS-00071': ('P-AXIS-00072 < P-AXIS-00071', 'P-AXIS-00071 != 0', _r1, _r1_when, (('P-AXIS-00072', None), ('P-AXIS-00071', None))),
-    'P-AXIS-00126': ('P-AXIS-00127 < P-AXIS-00126', '', _r2, None, (('P-AXIS-00127', None), ('P-AXIS-00126', None))),
-    'P-AXIS-00127': ('P-AXIS-00127 < P-AXIS-00126', '', _r3, None, (('P-AXIS-00127', None), ('P-AXIS-00126', None))),
-    'P-AXIS-00152': ('P-AXIS-00177 <= P-AXIS-00152 and P-AXIS-00152 <= P-AXIS-00178', '', _r4, None, (('P-AXIS-00177', None), ('P-AXIS-00152', None), ('P-AXIS-00178', None))),
-    'P-AXIS-00248': ('P-AXIS-00246 < P-AXIS-00248', '', _r5, None, (('P-AXIS-00246', None), ('P-AXIS-00248', None))),
-    'P-AXIS-00292': ('P-AXIS-00292 <= P-AXIS-00008 and ((P-AXIS-00001 <= P-AXIS-00292 and P-AXIS-00002 <= P-AXIS-00292) or (P-AXIS-00011 <= P-AXIS-00292 and P-AXIS-00012 <= P-AXIS-00292))', '', _r6, None, (('P-AXIS-00292', None), ('P-AXIS-00008', None), ('P-AXIS-00001', None), ('P-AXIS-00002', None), ('P-AXIS-00011', None), ('P-AXIS-00012', None))),
-    'P-AXIS-00293': ('P-AXIS-00201 <= P-AXIS-00293 and P-AXIS-00293 <= P-AXIS-00195 and P-AXIS-00293 <= P-AXIS-00196 and P-AXIS-00293 <= P-AXIS-00197 and P-AXIS-00293 <= P-AXIS-00198', 'P-AXIS-00293 != 0', _r7, _r7_when, (('P-AXIS-00201', None), ('P-AXIS-00293', None), ('P-AXIS-00195', None), ('P-AXIS-00196', None), ('P-AXIS-00197', None), ('P-AXIS-00198', None))),
-    'P-AXIS-00305': ('P-AXIS-00305 >= 1 and P-AXIS-00305 <= P-AXIS-00212.0 / 2', '', _r8, None, (('P-AXIS-00305', None), ('P-AXIS-00212', 0))),
-    'P-AXIS-00306': ('P-AXIS-00306 >= 1 and P-AXIS-00306 <= P-AXIS-00008.0 / 2', '', _r9, None, (('P-AXIS-00306', None), ('P-AXIS-00008', 0))),
-    'P-AXIS-00307': ('P-AXIS-00307 >= 1 and P-AXIS-00307 <= P-AXIS-00008.0 / 2', '', _r10, None, (('P-AXIS-00307', None), ('P-AXIS-00008', 0))),
-    'P-AXIS-00335': ('P-AXIS-00335 < P-AXIS-00008 * 1000000 / P-AXIS-00196', '', _r11, None, (('P-AXIS-00335', None), ('P-AXIS-00008', None), ('P-AXIS-00196', None))),
-    'P-AXIS-00376': ('P-AXIS-00376 >= 1 and P-AXIS-00376 <= P-AXIS-00008.0 / 2 * 1000000 / P-AXIS-00201.0', '', _r12, None, (('P-AXIS-00376', None), ('P-AXIS-00008', 0), ('P-AXIS-00201', 0))),
-    'P-AXIS-00377': ('P-AXIS-00377 >= 1 and P-AXIS-00377 <= P-AXIS-00008.0 / 2 * 1000000 / P-AXIS-00201.0', '', _r13, None, (('P-AXIS-00377', None), ('P-AXIS-00008', 0), ('P-AXIS-00201', 0))),
-    'P-AXIS-00388': ('P-AXIS-00388 != 0', 'P-AXIS-00386 == 1', _r14, _r14_when, (('P-AXIS-00388', None),)),
-    'P-AXIS-00395': ('P-AXIS-00395 <= P-AXIS-00236 and (P-AXIS-00472 <= 0 or P-AXIS-00395 <= P-AXIS-00472)', '', _r15, None, (('P-AXIS-00395', None), ('P-AXIS-00236', None), ('P-AXIS-00472', None))),
-    'P-AXIS-00531': ('P-AXIS-00531 > 0 and (P-AXIS-00018 == 1 or P-AXIS-00531 < P-AXIS-00126.0 - P-AXIS-00127.0)', 'P-AXIS-00531 != 0', _r16, _r16_when, (('P-AXIS-00531', None), ('P-AXIS-00018', None), ('P-AXIS-00126', 0), ('P-AXIS-00127', 0))),
-    'P-AXIS-00760': ('P-AXIS-00760 <= P-AXIS-00008', '', _r17, None, (('P-AXIS-00760', None), ('P-AXIS-00008', None))),
-    'P-MANU-00004': ('(P-MANU-00003 == 0 and P-MANU-00004 >= 0 and P-MANU-00004 <= 5) or (P-MANU-00003 == 1 and P-MANU-00004 > 0)', '', _r18, None, (('P-MANU-00003', None), ('P-MANU-00004', None))),
-    'P-RTCF-00013': ('P-RTCF-00013 > 0', '', _r19, None, (('P-RTCF-00013', None),)),
+    'P-AXIS-00030': ('P-AXIS-00030 <= P-AXIS-00212', '', _r0, None, (('P-AXIS-00030', None), ('P-AXIS-00212', None)),
+                     '0 ≤ vb_max_red_zone ≤ P-AXIS-00212 (vb_max)'),
+    'P-AXIS-00071': ('P-AXIS-00072 < P-AXIS-00071', 'P-AXIS-00071 != 0', _r1, _r1_when, (('P-AXIS-00072', None), ('P-AXIS-00071', None)),
+                     '0 < gantry_max_diff_resetable < gantry_max_diff_reset_locked < MAX(UNS32)'),
+    'P-AXIS-00126': ('P-AXIS-00127 < P-AXIS-00126', '', _r2, None, (('P-AXIS-00127', None), ('P-AXIS-00126', None)),
+                     'modulou < moduloo ≤ MAX(SGN32)'),
+    'P-AXIS-00127': ('P-AXIS-00127 < P-AXIS-00126', '', _r3, None, (('P-AXIS-00127', None), ('P-AXIS-00126', None)),
+                     'MIN(SGN32) ≤ modulou < moduloo'),
+    'P-AXIS-00152': ('P-AXIS-00177 <= P-AXIS-00152 and P-AXIS-00152 <= P-AXIS-00178', '', _r4, None, (('P-AXIS-00177', None), ('P-AXIS-00152', None), ('P-AXIS-00178', None)),
+                     'swe_neg < pos_refpkt < swe_pos'),
+    'P-AXIS-00248': ('P-AXIS-00246 < P-AXIS-00248', '', _r5, None, (('P-AXIS-00246', None), ('P-AXIS-00248', None)),
+                     'v1 < v2 ≤ MAX(UNS32)'),
+    'P-AXIS-00292': ('P-AXIS-00292 <= P-AXIS-00008 and ((P-AXIS-00001 <= P-AXIS-00292 and P-AXIS-00002 <= P-AXIS-00292) or (P-AXIS-00011 <= P-AXIS-00292 and P-AXIS-00012 <= P-AXIS-00292))', '', _r6, None, (('P-AXIS-00292', None), ('P-AXIS-00008', None), ('P-AXIS-00001', None), ('P-AXIS-00002', None), ('P-AXIS-00011', None), ('P-AXIS-00012', None)),
+                     'A_F ≤ a_w_max ≤ P-AXIS-00008; A_F = MAX[P-AXIS-00001, P-AXIS-00002] (non-linear slope), MAX[P-AXIS-00011, P-AXIS-00012] (linear slope)'),
+    'P-AXIS-00293': ('P-AXIS-00201 <= P-AXIS-00293 and P-AXIS-00293 <= P-AXIS-00195 and P-AXIS-00293 <= P-AXIS-00196 and P-AXIS-00293 <= P-AXIS-00197 and P-AXIS-00293 <= P-AXIS-00198', 'P-AXIS-00293 != 0', _r7, _r7_when, (('P-AXIS-00201', None), ('P-AXIS-00293', None), ('P-AXIS-00195', None), ('P-AXIS-00196', None), ('P-AXIS-00197', None), ('P-AXIS-00198', None)),
+                     'P-AXIS-00201 ≤ tr_w_min ≤ TR_F; TR_F = MIN[P-AXIS-00195, P-AXIS-00196, P-AXIS-00197, P-AXIS-00198]'),
+    'P-AXIS-00305': ('P-AXIS-00305 >= 1 and P-AXIS-00305 <= P-AXIS-00212.0 / 2', '', _r8, None, (('P-AXIS-00305', None), ('P-AXIS-00212', 0)),
+                     '1 ... P-AXIS-00212 / 2'),
+    'P-AXIS-00306': ('P-AXIS-00306 >= 1 and P-AXIS-00306 <= P-AXIS-00008.0 / 2', '', _r9, None, (('P-AXIS-00306', None), ('P-AXIS-00008', 0)),
+                     '1 ... P-AXIS-00008 / 2'),
+    'P-AXIS-00307': ('P-AXIS-00307 >= 1 and P-AXIS-00307 <= P-AXIS-00008.0 / 2', '', _r10, None, (('P-AXIS-00307', None), ('P-AXIS-00008', 0)),
+                     '1 ... P-AXIS-00008 / 2'),
+    'P-AXIS-00335': ('P-AXIS-00335 < P-AXIS-00008 * 1000000 / P-AXIS-00196', '', _r11, None, (('P-AXIS-00335', None), ('P-AXIS-00008', None), ('P-AXIS-00196', None)),
+                     '1 ≤ torq_move_jerk < (P-AXIS-00008 / P-AXIS-00196)'),
+    'P-AXIS-00376': ('P-AXIS-00376 >= 1 and P-AXIS-00376 <= P-AXIS-00008.0 / 2 * 1000000 / P-AXIS-00201.0', '', _r12, None, (('P-AXIS-00376', None), ('P-AXIS-00008', 0), ('P-AXIS-00201', 0)),
+                     '1 ... (P-AXIS-00008 / 2) / P-AXIS-00201'),
+    'P-AXIS-00377': ('P-AXIS-00377 >= 1 and P-AXIS-00377 <= P-AXIS-00008.0 / 2 * 1000000 / P-AXIS-00201.0', '', _r13, None, (('P-AXIS-00377', None), ('P-AXIS-00008', 0), ('P-AXIS-00201', 0)),
+                     '1 ... (P-AXIS-00008 / 2) / P-AXIS-00201'),
+    'P-AXIS-00388': ('P-AXIS-00388 != 0', 'P-AXIS-00386 == 1', _r14, _r14_when, (('P-AXIS-00388', None),),
+                     '0: value is not configured. If P-AXIS-00386 is set to 1, set this parameter to a valid value'),
+    'P-AXIS-00395': ('P-AXIS-00395 <= P-AXIS-00236 and (P-AXIS-00472 <= 0 or P-AXIS-00395 <= P-AXIS-00472)', '', _r15, None, (('P-AXIS-00395', None), ('P-AXIS-00236', None), ('P-AXIS-00472', None)),
+                     '0 ... MIN(P-AXIS-00236, P-AXIS-00472)'),
+    'P-AXIS-00531': ('P-AXIS-00531 > 0 and (P-AXIS-00018 == 1 or P-AXIS-00531 < P-AXIS-00126.0 - P-AXIS-00127.0)', 'P-AXIS-00531 != 0', _r16, _r16_when, (('P-AXIS-00531', None), ('P-AXIS-00018', None), ('P-AXIS-00126', 0), ('P-AXIS-00127', 0)),
+                     '0 < P-AXIS-00531 < MAX(SGN32) for translatory axes; 0 < P-AXIS-00531 < (P-AXIS-00126 - P-AXIS-00127) for rotary axes and spindles'),
+    'P-AXIS-00760': ('P-AXIS-00760 <= P-AXIS-00008', '', _r17, None, (('P-AXIS-00760', None), ('P-AXIS-00008', None)),
+                     '[0 … P-AXIS-00008]'),
+    'P-MANU-00004': ('(P-MANU-00003 == 0 and P-MANU-00004 >= 0 and P-MANU-00004 <= 5) or (P-MANU-00003 == 1 and P-MANU-00004 > 0)', '', _r18, None, (('P-MANU-00003', None), ('P-MANU-00004', None)),
+                     '0 ... 5: array index in the HLI where P-MANU-00003 = 0; > 0: physical address of a counter module where P-MANU-00003 = 1'),
+    'P-RTCF-00013': ('P-RTCF-00013 > 0', '', _r19, None, (('P-RTCF-00013', None),),
+                     '0 < P-RTFC-00013 < MAX(UNS32)'),
 }
