@@ -43,10 +43,19 @@ def kernel_rules() -> dict[str, tuple[frozenset[str], str, str]]:
     return out
 
 
+@functools.cache
+def _kernel_codes() -> frozenset[str]:
+    """The K codes (what :func:`kernel_rules` holds), without reading what each row's condition reads."""
+    return frozenset(err.code for err in startup.CHECKS)
+
+
 def _kernel_first(ctx: Context, kept: list[Diagnostic]) -> list[Diagnostic]:
     """``kept`` (the selected findings: the funnel's consolidation step) with the generic findings that
     a K finding on the same parameter (and the same element of an array) supersedes left out, and
     each K finding with its consequence and source."""
+    codes = _kernel_codes()
+    if not any(d.code in codes for d in kept):  # no K finding: nothing superseded, and no table to build
+        return kept
     rules = kernel_rules()
     kernel = [d for d in kept if d.code in rules]
     if not kernel:
