@@ -56,6 +56,12 @@ def _fields(obj: Any) -> dict[str, Any]:
 def _check(text: str) -> None:
     for widths in (False, True):
         _check_read(text, widths)
+    careful_first = tokenizer._CAREFUL_FIRST
+    tokenizer._CAREFUL_FIRST = 0  # every line the columns do not take tried with the common line's pattern first
+    try:
+        _check_read(text, False)
+    finally:
+        tokenizer._CAREFUL_FIRST = careful_first
     if text.isascii() and "\x00" not in text:  # a big ASCII list: read as its bytes
         bytes_from = tokenizer._BYTES_FROM
         tokenizer._BYTES_FROM = -1

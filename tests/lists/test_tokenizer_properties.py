@@ -86,3 +86,28 @@ def test_control_characters_are_counted_as_the_regex_counts_them(text: str) -> N
     plain = text.encode("ascii", "ignore")
     assert _control_count(plain.decode("ascii")) == len(_control_re().findall(plain.decode("ascii")))
     assert _ascii_controls(plain) == len(_control_re().findall(plain.decode("ascii")))  # a big list's bytes
+
+
+_CODE_PAGE_BYTES = [b"a", b"\n", b"\xe4", b"\xfc", b"\xa0", b"\x80", b"\x81", b"\x93", b"\x9f", b"\xc3\xa4"]
+
+
+@given(st.lists(st.sampled_from(_CODE_PAGE_BYTES), max_size=40).map(b"".join))
+@example(b"\xe4\n")
+@example(b"\x81")
+def test_a_list_that_is_no_utf8_reads_as_cp1252_else_latin1(data: bytes) -> None:
+    """The built-in Latin-1 codec reads a list without the bytes where CP1252 differs: the text is CP1252's."""
+    text, encoding, _ = decode(data)
+    try:
+        data.decode("utf-8")
+    except UnicodeDecodeError:
+        pass
+    else:
+        assert encoding == "utf-8"
+        return
+    if encoding == "utf-8":  # real UTF-8 sequences among stray bytes
+        return
+    try:
+        want = (data.decode("cp1252"), "cp1252")
+    except UnicodeDecodeError:
+        want = (data.decode("latin-1"), "latin-1")
+    assert (text, encoding) == want

@@ -80,10 +80,22 @@ def decode(data: bytes, declared: str | None = None) -> tuple[str, str, bool]:
         # Real UTF-8 sequences next to stray bytes: a file of mixed encodings. (ASCII and each stray
         # byte give one character per byte; only a real sequence of 2 to 4 bytes gives one for more.)
         return text, "utf-8", False
+    if _no_c1(data):  # where CP1252 is Latin-1: the built-in codec decodes it (no codec module imported)
+        return data.decode("latin-1"), "cp1252", False
     try:
         return data.decode("cp1252"), "cp1252", False
     except UnicodeDecodeError:
         return data.decode("latin-1"), "latin-1", False
+
+
+_C1_BYTES = tuple(bytes((b,)) for b in range(0x80, 0xA0))  # where CP1252 differs from Latin-1
+_PART = 1 << 18
+
+
+def _no_c1(data: bytes) -> bool:
+    """Does ``data`` lack every byte from 0x80 to 0x9F? A search for each (memchr) in each part of the data."""
+    find = data.find
+    return not any(find(c, at, at + _PART) >= 0 for at in range(0, len(data), _PART) for c in _C1_BYTES)
 
 
 def encode_text(text: str, encoding: str, bom: bool = False, path: str = "-") -> bytes:

@@ -397,6 +397,10 @@ def _row_pattern(binary: bool, crlf: bool, widths: bool) -> re.Pattern[Any]:
 
 _CHUNK = 1 << 18  # characters of text read per pattern call: bounded memory for the match tuples
 _BYTES_FROM = 1 << 18  # an ASCII list of more bytes is read as the bytes, never decoded as a whole
+_PACK_FROM = 1024  # values an array is extended with at once, from which they are packed first
+# The lines the columns do not take that are read the careful way at once, without the pattern of the common
+# entry line (which reads what it matches alike): a list with a few (quoted values, flags) never compiles it.
+_CAREFUL_FIRST = 32
 
 
 def _fast_entry(m: re.Match[str], number: int, value: str, kind: ValueKind | None,
@@ -510,10 +514,12 @@ def _build(doc: Document, rows: Sequence[int]) -> dict[int, Entry]:
 
 def _read(doc: Document, rows: Sequence[int], lines: list[str], one: bool) -> dict[int, Entry]:
     """Build the entries of ``rows`` (from ``lines``: the document's, or ``one`` row's line) into
-    ``doc.columns.objects``: positions from the line, the rest from the columns."""
+    ``doc.columns.objects``: positions from the line (matched again by a row pattern: a row's line has no CR, so
+    each variant reads it alike; one compiled already), the rest from the columns."""
     cols = doc.columns
     objects = cols.objects
-    match = _fast_entry_re().match
+    match = (_ROW_PATTERNS.get((False, False, False)) or _ROW_PATTERNS.get((False, True, False))
+             or _row_pattern(False, False, False)).match
     line, shape, first, value, comment = cols.line, cols.shape, cols.first, cols.value, cols.comment
     shapes, patterns, values, kinds = cols.shapes, cols.patterns, cols.values, cols.kinds
     comments, styles, notes, note_at = cols.comments, cols.styles, cols.notes, cols.note_at
@@ -521,10 +527,12 @@ def _read(doc: Document, rows: Sequence[int], lines: list[str], one: bool) -> di
         if row in objects:
             continue
         number = line[row]
-        m = match(lines[0 if one else number - 1])
-        assert m is not None, (doc.path, number)
-        ks, ke = m.span(1)
-        vs, ve = m.span(5)
+        text = lines[0 if one else number - 1]
+        m = match(text)
+        assert m is not None and m.start(1) >= 0, (doc.path, number)
+        ks = m.start(1)
+        ke = m.end(3) if m.start(3) >= 0 else m.end(1)  # the key: its names, then its first index and the rest
+        vs, ve = m.span(4)
         sh = shapes[shape[row]]
         index = first[row]
         if index < 0:
@@ -533,14 +541,14 @@ def _read(doc: Document, rows: Sequence[int], lines: list[str], one: bool) -> di
             indices = (index, *sh.indices)
         else:  # the keys of one element (a tool's 38) share their tuple
             indices = _singles.get(index) or _singles.setdefault(index, (index,))
-        key_text = m.group(1)
+        key_text = text[ks:ke]
         key = Key(key_text, patterns[sh.pattern], indices)
         at = value[row]
         cid = comment[row]
         if cid < 0:
             objects[row] = Entry(number, key_text, key_text, key, ks, ke, values[at], kinds[at], vs, ve)
             continue
-        cs = m.start(6)
+        cs = m.start(5)
         at_note = note_at[cid]
         objects[row] = Entry(number, key_text, key_text, key, ks, ke, values[at], kinds[at], vs, ve,
                              comments[cid], cs, styles[cid], notes[cid], cs + at_note if at_note >= 0 else -1)
@@ -578,8 +586,9 @@ _small_tables: dict[tuple[tuple[tuple[str, str], ...], tuple[str, ...], tuple[st
 
 def _extend(column: array[int], count: int, values: Iterable[int]) -> None:
     """``column.extend(values)``, ``count`` of them: many are packed in C first (an array's extend parses each
-    int as the argument of a call: a seventh of the instructions of reading a big list)."""
-    if count < 256:
+    int as the argument of a call: a seventh of the instructions of reading a big list). Not the rows of a short
+    list: importing struct (a library loaded) costs more than its extends."""
+    if count < _PACK_FROM:
         column.extend(values)
         return
     from struct import pack  # start-up: only for a big part of a list
@@ -602,6 +611,7 @@ class _Reader:
         self.problems: list[Problem] = []
         self.end_line: int | None = None
         self.after_end_reported = False
+        self.careful = 0  # lines read by _line
         # (names, `]` and the rest of the key after the first index) -> shape id, -1: not read into columns; a
         # part a line does not have is None (no key: no row)
         self.shapes: dict[tuple[Any, Any], int] = {(None, None): -1}
@@ -799,9 +809,10 @@ class _Reader:
         if not s.strip():
             self.slow.append(Blank(number))
             return
-        m = _fast_entry_re().match(s)
+        self.careful += 1
+        m = _fast_entry_re().match(s) if self.end_line is None and self.careful > _CAREFUL_FIRST else None
         item: Item
-        if m is not None and self.end_line is None and m.group(1) != END_KEYWORD:
+        if m is not None and m.group(1) != END_KEYWORD:
             value = m.group(5)
             item = _fast_entry(m, number, value, _value_kind(value), None)
             self.cols.add_entry(item)
