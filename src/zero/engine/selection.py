@@ -150,7 +150,9 @@ def _layered_selection(layers: Sequence[Layer], dropped: Sequence[str] = ()) -> 
                 enabled.add(code)
             else:
                 enabled.discard(code)
-    kept = tuple(sorted(c for c in enabled if not any(c.startswith(p) for p in dropped)))
+    if dropped:
+        enabled = {c for c in enabled if not any(c.startswith(p) for p in dropped)}
+    kept = tuple(sorted(enabled))
     return LintOptions(select=kept) if kept else LintOptions(ignore=("",))  # "" matches every code
 
 

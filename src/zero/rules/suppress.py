@@ -153,7 +153,10 @@ def parse_directives(doc: Document, known: set[str]) -> tuple[list[Directive], l
             at = bisect_right(entry_lines, item.line)
             got.target = entry_lines[at] if at < len(entry_lines) else None
         found.append((item.line, got))
-    noqa = {cid for cid, c in enumerate(cols.comments) if "noqa" in c.lower()}
+    # one look over all distinct comments first (lower() maps each character on its own, but for a final
+    # sigma: a join holds `noqa` where a comment does)
+    noqa = {cid for cid, c in enumerate(cols.comments) if "noqa" in c.lower()} \
+        if "noqa" in "\n".join(cols.comments).lower() else set()
     entries = [doc.entry_at(row) for row, cid in enumerate(cols.comment) if cid in noqa] if noqa else []
     entries += [i for i in others if type(i) is Entry and i.comment is not None and "noqa" in i.comment.lower()]
     for entry in entries:

@@ -17,9 +17,9 @@ SOURCES: tuple[tuple[str, int], ...] = (
     ('machine.py', 55156),
     ('meaning.py', 13136),
     ('program.py', 31485),
-    ('registry.py', 61060),
-    ('startup.py', 20951),
-    ('suppress.py', 12089),
+    ('registry.py', 61071),
+    ('startup.py', 21036),
+    ('suppress.py', 12316),
     ('syntax.py', 16015),
     ('update.py', 4430),
 )
