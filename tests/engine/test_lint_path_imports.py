@@ -1,0 +1,61 @@
+"""What one list's lint leaves unloaded (issue 40, start-up): the configuration's declarations where no
+configuration file applies, and the K table where no K finding is reported; each is loaded where it is needed."""
+
+from __future__ import annotations
+
+import os
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+_RUN = """
+import sys
+import zero.cli.lean as lean
+
+def end(code):
+    from zero.rules.lists import kernel_rules
+    sys.stdout.write("\\nMODULES " + " ".join(sorted(sys.modules)) + "\\n")
+    sys.stdout.write("KTABLE " + str(kernel_rules.cache_info().currsize) + "\\n")
+    sys.stdout.flush()
+    raise SystemExit(code)
+
+lean.end = end
+sys.argv = ["zero", "lint", "--exit-zero", "--output-format", "json", "lists"]
+lean.main()
+"""
+
+
+def _run(folder: Path) -> tuple[str, set[str], int]:
+    env = {**os.environ, "ZERO_NO_CACHE": "1"}
+    out = subprocess.run([sys.executable, "-c", _RUN], cwd=folder, env=env, capture_output=True, text=True,
+                         timeout=120, check=False)
+    assert out.returncode == 0, out.stderr
+    report, _, tail = out.stdout.rpartition("\nMODULES ")
+    modules, _, table = tail.partition("\nKTABLE ")
+    return report, set(modules.split()), int(table)
+
+
+@pytest.mark.parametrize("config", [None, 'ignore = ["R"]\n'])
+def test_the_declarations_are_read_only_with_a_configuration(tmp_path: Path, config: str | None) -> None:
+    lists = tmp_path / "lists"
+    lists.mkdir()
+    (lists / "achse.lis").write_text("kopf.achs_nr 1\nkenngr.swe_pos 5000000000\nEnde\n", encoding="utf-8")
+    if config is not None:
+        (tmp_path / "zero.toml").write_text(config, encoding="utf-8")
+    report, loaded, _ = _run(tmp_path)
+    assert ("zero.engine.config_file" in loaded) == (config is not None)
+    assert ('"code": "R' in report) == (config is None)  # the configuration read is the one applied
+
+
+@pytest.mark.parametrize("k_finding", [False, True])
+def test_the_k_table_is_built_only_for_a_k_finding(tmp_path: Path, k_finding: bool) -> None:
+    lists = tmp_path / "lists"
+    lists.mkdir()
+    # K074: the fast homing speed above the speed for a non-homed axis (the kernel's start-up check)
+    speeds = "getriebe[0].vb_refmax 83333\ngetriebe[0].vb_not_referenced 30000\n" if k_finding else ""
+    (lists / "achse.lis").write_text(f"kopf.achs_nr 1\n{speeds}Ende\n", encoding="utf-8")
+    report, _, table = _run(tmp_path)
+    assert ('"code": "K074"' in report) == k_finding
+    assert (table > 0) == k_finding
