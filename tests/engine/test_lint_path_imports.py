@@ -10,6 +10,8 @@ from pathlib import Path
 
 import pytest
 
+from conftest import FIXTURES
+
 _RUN = """
 import sys
 import zero.cli.lean as lean
@@ -53,9 +55,10 @@ def test_the_declarations_are_read_only_with_a_configuration(tmp_path: Path, con
 def test_the_k_table_is_built_only_for_a_k_finding(tmp_path: Path, k_finding: bool) -> None:
     lists = tmp_path / "lists"
     lists.mkdir()
-    # K074: the fast homing speed above the speed for a non-homed axis (the kernel's start-up check)
-    speeds = "getriebe[0].vb_refmax 83333\ngetriebe[0].vb_not_referenced 30000\n" if k_finding else ""
-    (lists / "achse.lis").write_text(f"kopf.achs_nr 1\n{speeds}Ende\n", encoding="utf-8")
+    # issue 26's planted start-up faults (K032, K075, K074), or a list with findings but none of them K
+    planted = (FIXTURES / "kernel" / "planted_spindle.lis").read_bytes()
+    (lists / "achse.lis").write_bytes(planted if k_finding else b"kopf.achs_nr 1\nkenngr.swe_pos 5000000000\nEnde\n")
     report, _, table = _run(tmp_path)
+    assert '"code": "R' in report
     assert ('"code": "K074"' in report) == k_finding
     assert (table > 0) == k_finding
