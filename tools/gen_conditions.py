@@ -40,7 +40,7 @@ def render() -> str:
     head = ('"""The K rules\' conditions of startup_errors.toml as Python, written by tools/gen_conditions.py.\n\n'
             'Generated: do not edit."""\n\n'
             "# ruff: noqa\n# mypy: ignore-errors\n"
-            f"from zero.catalog.condition_source import {', '.join(HELPERS)}\n\n\n")
+            f"from zero.catalog.condition_helpers import {', '.join(HELPERS)}\n\n\n")
     return head + "\n\n".join(defs) + "\n\nCOMPILED = {\n" + "\n".join(table) + "\n}\n"
 
 
@@ -67,7 +67,7 @@ def render_prose() -> str:
             "a lint reads the prose ranges from here alone).\n\n"
             'Generated: do not edit."""\n\n'
             "# ruff: noqa\n# mypy: ignore-errors\n"
-            f"from zero.catalog.condition_source import {', '.join(HELPERS)}\n\n"
+            f"from zero.catalog.condition_helpers import {', '.join(HELPERS)}\n\n"
             f"ROWS_SIZE = {(DATA / 'prose_ranges.py').stat().st_size}\n\n\n")
     return head + "\n\n".join(defs) + "\n\nCOMPILED = {\n" + "\n".join(table) + "\n}\n"
 

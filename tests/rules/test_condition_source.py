@@ -108,8 +108,7 @@ def test_a_stale_row_is_compiled_from_its_text(monkeypatch: pytest.MonkeyPatch) 
 
 def test_and_or_decide_without_the_unknown_side() -> None:
     namespace: dict[str, object] = {}
-    exec("from zero.catalog.condition_source import *\n"
-         "from zero.catalog.condition_source import _both, _binary\n"
+    exec("from zero.catalog.condition_helpers import _both, _binary\n"
          + source("f", parse("P-AXIS-00001 > 0 and P-AXIS-00002 > 0"))
          + source("g", parse("P-AXIS-00001 > 0 or P-AXIS-00002 > 0")), namespace)
     f, g = namespace["f"], namespace["g"]

@@ -27,15 +27,23 @@ unknown, never an error. :func:`parse` raises :class:`ValueError` for anything e
 from __future__ import annotations
 
 import re
-from collections.abc import Callable
+
+from zero.catalog.condition_helpers import (
+    _NAME,
+    _OPS,
+    DEFAULT_LIST,
+    DRIVE_TYPE,
+    ELSEWHERE,
+    UNIQUE,
+    Compiled,
+    Lookup,
+    Number,
+    _num,
+    _Value,
+    supported_drive_types,
+)
 
 TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (mypy and ruff read it alike)
-Number = int | float
-# A parameter's value by (ID, element index or None for "the checked parameter's"); None: not known.
-# A STRING parameter's value is its text.
-Lookup = Callable[[str, int | None], Number | str | None]
-
-DEFAULT_LIST = "DEFAULT_LIST"  # a fact of the list, not a parameter: read by the lookup like one
 # compiled at the first condition parsed (through re's own cache): the K rules' and the prose ranges'
 # are parsed at build time, so a lint seldom parses one (issue 40: start-up)
 _TOKEN = (r"\s*(?:(P-[A-Z]{4}-[0-9]{5}(?:\.[0-9]+)?|DEFAULT_LIST\b)"
@@ -44,9 +52,6 @@ _TOKEN = (r"\s*(?:(P-[A-Z]{4}-[0-9]{5}(?:\.[0-9]+)?|DEFAULT_LIST\b)"
           r"|(<=|>=|==|!=|<|>|\+|-|\*|/|%|&|\(|\)|,)|(and|or|not|in|abs|len|startswith|isname|supports|unique|elsewhere)\b)")
 # arguments of each function; 0: one or more IDs
 _FUNCTIONS = {"abs": 1, "len": 1, "startswith": 2, "isname": 1, "supports": 1, "unique": 0, "elsewhere": 2}
-_NAME = r"[A-Za-z0-9_]+"  # what isname() accepts (compiled at its first use, through re's own cache)
-UNIQUE = "unique:"  # the lookup's name of the fact unique(...) asks for
-ELSEWHERE = "elsewhere:"  # and of elsewhere(...)
 
 
 class Num:
@@ -288,41 +293,6 @@ def ref_elements(node: Node) -> list[tuple[str, int | None]]:
     return list(dict.fromkeys(out))
 
 
-_Value = Number | str | bool | None
-DRIVE_TYPE = "P-AXIS-00020"  # kenngr.antr_typ: what supports() reads
-
-
-def _num(v: Number | bool) -> Number:
-    return v if isinstance(v, float) else int(v)
-
-
-def _drive_types() -> dict[str, frozenset[int]]:
-    from zero.catalog.data.drive_types import DRIVE_TYPES  # start-up: read at the first supports()
-
-    return {str(row["param"]): frozenset(int(str(t)) for t in row["types"]) for row in DRIVE_TYPES
-            if "param" in row}  # a row for a subtree of keys (`antr.sercos.`) names no one parameter
-
-
-_SUPPORTED: dict[str, frozenset[int]] = {}
-
-
-def supported_drive_types(pid: str) -> frozenset[int] | None:
-    """The drive types (P-AXIS-00020 values) the table lists for ``pid``; ``None``: no row."""
-    if not _SUPPORTED:
-        _SUPPORTED.update(_drive_types())
-    return _SUPPORTED.get(pid)
-
-
-Compiled = Callable[[Lookup], "_Value"]
-_OPS: dict[str, Callable[[Number, Number], _Value]] = {
-    "+": lambda a, b: a + b, "-": lambda a, b: a - b, "*": lambda a, b: a * b,
-    "/": lambda a, b: None if b == 0 else a / b, "%": lambda a, b: None if b == 0 else a % b,
-    "&": lambda a, b: int(a) & int(b),
-    "<": lambda a, b: a < b, "<=": lambda a, b: a <= b, ">": lambda a, b: a > b, ">=": lambda a, b: a >= b,
-    "==": lambda a, b: a == b, "!=": lambda a, b: a != b,
-}
-
-
 def compile_condition(node: Node) -> Compiled:
     """A condition as a function of the lookup, built once (a fleet evaluates each condition once per
     list). ``None`` where a parameter it needs is not known: then nothing is said; ``and``/``or`` decide
@@ -417,3 +387,8 @@ def _compile_call(node: Call) -> Compiled:
         a, b = text(lookup), prefix(lookup)
         return a.startswith(b) if isinstance(a, str) and isinstance(b, str) else None
     return startswith
+
+
+__all__ = ["DEFAULT_LIST", "DRIVE_TYPE", "ELSEWHERE", "UNIQUE", "Binary", "Call", "Compiled", "Lookup", "Member", "Num",
+           "Number", "Ref", "Str", "Unary", "compile_condition", "parse", "ref_elements", "refs",
+           "supported_drive_types"]

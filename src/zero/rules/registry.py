@@ -7,7 +7,6 @@ import os
 import re
 from collections.abc import Callable, Iterator
 
-from zero.catalog.conditions import Compiled
 from zero.catalog.evidence import Claim, claim, drive_types
 from zero.catalog.ids import SOFT_LIMITS
 from zero.catalog.ranges import TYPE_LIMITS, Bounds, Number, Range, Ref, format_number
@@ -22,6 +21,8 @@ from zero.rules.base import INFO, Context, E, Family, W
 TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (mypy and ruff read it alike)
 if TYPE_CHECKING:
     from typing import Any
+
+    from zero.catalog.condition_helpers import Compiled
 
 FAMILY: Family[Context] = Family("R", "registry", "list")
 

@@ -17,17 +17,7 @@ import os
 import re
 from collections.abc import Iterable, Iterator
 
-from zero.catalog.conditions import (
-    DEFAULT_LIST,
-    ELSEWHERE,
-    UNIQUE,
-    Compiled,
-    compile_condition,
-    parse,
-    ref_elements,
-    refs,
-    supported_drive_types,
-)
+from zero.catalog.condition_helpers import DEFAULT_LIST, ELSEWHERE, UNIQUE, supported_drive_types
 from zero.catalog.data import startup_rules
 from zero.catalog.ranges import format_number
 from zero.catalog.registry import ParamSpec
@@ -40,6 +30,8 @@ from zero.rules.base import Context, E, Family, W
 TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (mypy and ruff read it alike)
 if TYPE_CHECKING:
     from typing import Any
+
+    from zero.catalog.condition_helpers import Compiled
 
 FAMILY: Family[Context] = Family("K", "kernel start-up checks", "list")
 
@@ -88,6 +80,8 @@ def compiled(err: StartupError) -> _Compiled:
         if pre is not None and pre[:2] == (err.condition_text, err.when_text):  # else stale: compiled here
             hit = _compiled[err.code] = _Compiled(*pre[2:])
             return hit
+        from zero.catalog.conditions import compile_condition, parse, ref_elements, refs  # start-up: a stale row only
+
         node = parse(err.condition_text)
         hit = _compiled[err.code] = _Compiled(compile_condition(node),
                                               compile_condition(parse(err.when_text)) if err.when_text else None,

@@ -7,7 +7,7 @@ Generated: do not edit."""
 
 # ruff: noqa
 # mypy: ignore-errors
-from zero.catalog.condition_source import _abs, _binary, _both, _fact, _isname, _len, _member, _neg, _not, _startswith, _supports
+from zero.catalog.condition_helpers import _abs, _binary, _both, _fact, _isname, _len, _member, _neg, _not, _startswith, _supports
 
 ROWS_SIZE = 8140
 
