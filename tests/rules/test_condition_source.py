@@ -140,3 +140,18 @@ def test_the_prose_rows_are_read_from_the_written_module_while_their_module_has_
             "print('zero.catalog.data.prose_ranges' in sys.modules)")
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout
     assert out.strip() == "False"
+
+
+def test_a_lint_imports_no_condition_parser(tmp_path: Path) -> None:
+    """The written K conditions and prose ranges need the helpers only (catalog/condition_helpers.py): the
+    parser and the writer are imported for a stale row or a tool (issue 40: start-up)."""
+    import subprocess
+
+    listing = tmp_path / "achse.lis"
+    listing.write_text("kenngr.swe_pos 100000\nkenngr.swe_neg -100000\ngetriebe[0].dynamik.vb_max 0\nEnde\n",
+                       encoding="utf-8")
+    code = ("import sys\nfrom zero.catalog.registry import load_registry\nfrom zero.engine.lint import lint_file\n"
+            f"print(len(lint_file({str(listing)!r}, load_registry()).diagnostics) > 0, "
+            "'zero.catalog.conditions' in sys.modules, 'zero.catalog.condition_source' in sys.modules)")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout
+    assert out.split() == ["True", "False", "False"]
