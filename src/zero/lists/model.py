@@ -88,6 +88,8 @@ _keys: dict[str, Key] = {}
 
 
 def _part(text: str) -> tuple[str, tuple[int, ...]]:
+    if "[" not in text:  # no index (`kenngr.swe_pos`, `.laenge`): most keys of most lists
+        return text, ()
     got = _part_cache.get(text)
     if got is None:
         index = _index_re()

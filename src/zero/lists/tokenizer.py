@@ -566,10 +566,12 @@ _UNKNOWN: _ShapeInfo = ("", False, "", "", ())
 
 
 def _shape_of(key: tuple[str, str]) -> _ShapeInfo | None:
+    """What the row pattern's names (``[A-Za-z_][A-Za-z0-9_.]*``) and rest of a key (``]`` and what follows the
+    first index, or ``""``) stand for, if they are a key: names `a.b`, then `[n]`s and `.name[n]`s."""
     name, tail = key
     info: _ShapeInfo | None = None
-    if (key_form().fullmatch(f"{name}[0{tail}" if tail else name)  # names `a.b`, then `[n]`s and `.name[n]`s
-            and not (name == END_KEYWORD and not tail)):
+    if (key_form().fullmatch(f"{name}[0{tail}") if tail
+            else ".." not in name and name[-1] != "." and name != END_KEYWORD):
         info = (name, bool(tail), tail[1:], *shape_parts(name, bool(tail), tail[1:]))
     if len(_shape_info) < _TABLE_LIMIT:
         _shape_info[key] = info
