@@ -40,3 +40,19 @@ def test_the_registry_reads_the_written_range_and_parses_a_text_it_does_not_have
     fresh = load_registry()
     rng = fresh.range_of(other)
     assert rng == parse_range("0 ≤ x ≤ 7", pid) and rng != decode_range(RANGES[pid][1])
+
+
+def test_whether_a_range_refers_is_read_from_the_written_one_as_the_range_says() -> None:
+    from zero.catalog.ranges import encoded_refers
+
+    for pid, (_, data) in RANGES.items():
+        rng = decode_range(data)
+        assert encoded_refers(data) == bool(rng is not None and rng.refs), pid
+    registry, parsed = load_registry(), load_registry()
+    for pid in registry.specs:
+        spec = registry.specs[pid]
+        rng = parsed.range_of(parsed.specs[pid])
+        assert registry.range_refers(spec) == bool(rng is not None and rng.refs), pid
+    assert not registry._ranges  # answered from the written ranges: none decoded, none parsed
+    other = ParamSpec(id="P-AXIS-00001", kind="AXIS", key="x", type="SGN32", range_text="0 ≤ x ≤ P-AXIS-00008")
+    assert load_registry().range_refers(other)  # a text not written: parsed

@@ -416,6 +416,25 @@ def _encode(e: Expr | None) -> Encoded:
     return ("N", _encode(e.operand))
 
 
+def encoded_refers(data: Encoded) -> bool:
+    """Whether the range :func:`encode_range` wrote refers to other parameters (``decode_range(data).refs`` is
+    not empty), read from the constants without building the range."""
+    if data is None:
+        return False
+    stack = [data[0], data[2]]
+    while stack:
+        e = stack.pop()
+        if type(e) is tuple:
+            tag = e[0]
+            if tag == "R":
+                return True
+            if tag == "B":
+                stack += (e[2], e[3])
+            elif tag == "N":
+                stack.append(e[1])
+    return False
+
+
 def decode_range(data: Encoded) -> Range | None:
     """The range :func:`encode_range` wrote (equal to what :func:`parse_range` gives for its text)."""
     if data is None:

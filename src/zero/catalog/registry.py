@@ -18,7 +18,7 @@ from collections import Counter
 from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
 from operator import itemgetter
 
-from zero.catalog.ranges import Range, decode_range, parse_range
+from zero.catalog.ranges import Range, decode_range, encoded_refers, parse_range
 from zero.forms import kind_hint
 from zero.records import field, record
 
@@ -516,6 +516,18 @@ class Registry:
                     parse_range(text, spec.id)
             self._ranges[spec.id] = rng
             return rng
+
+    def range_refers(self, spec: ParamSpec) -> bool:
+        """Whether ``spec``'s formal range refers to other parameters (``range_of(spec).refs``), read from the
+        range written at build time where it is not parsed yet (a lint asks this of every parameter it
+        binds, and reads the range of half of them)."""
+        rng = self._ranges.get(spec.id, _ABSENT)
+        if rng is _ABSENT and spec.range_text:
+            written = _compiled_ranges().get(spec.id)
+            if written is not None and written[0] == spec.range_text:
+                return encoded_refers(written[1])
+            rng = self.range_of(spec)
+        return bool(rng is not None and rng is not _ABSENT and rng.refs)
 
     def kind_of(self, doc: Document, entries: Iterable[Entry] | None = None) -> str | None:
         """The list kind of a document, the one way every command tells it: what the document declares

@@ -639,8 +639,7 @@ def _by_value(registry: Registry, spec: ParamSpec) -> bool:
     memo: dict[str, bool] = registry.memo.setdefault("by_value", {})
     got = memo.get(spec.id)
     if got is None:
-        rng = registry.range_of(spec) if spec.range_text else None
-        got = memo[spec.id] = spec.id not in _prose_rows() and (rng is None or not rng.refs)  # prose reads others
+        got = memo[spec.id] = spec.id not in _prose_rows() and not registry.range_refers(spec)  # prose reads others
     return got
 
 
