@@ -103,14 +103,15 @@ def _is_classvar(annotation: object) -> bool:
     return text.startswith(("ClassVar", "typing.ClassVar"))
 
 
-def _frozen_setattr(cls: type, names: frozenset[str]) -> tuple[Callable[..., None], Callable[..., None]]:
+def _frozen_setattr(owner: list[type], names: frozenset[str]) -> tuple[Callable[..., None], Callable[..., None]]:
+    """``__setattr__`` and ``__delattr__`` of a frozen record: ``owner`` holds the class once it is made."""
     def __setattr__(self: Any, name: str, value: Any) -> None:
-        if type(self) is cls or name in names:
+        if type(self) is owner[0] or name in names:
             raise AttributeError(f"cannot assign to field {name!r} of a frozen record")
         object.__setattr__(self, name, value)
 
     def __delattr__(self: Any, name: str) -> None:
-        if type(self) is cls or name in names:
+        if type(self) is owner[0] or name in names:
             raise AttributeError(f"cannot delete field {name!r} of a frozen record")
         object.__delattr__(self, name)
 
@@ -154,9 +155,8 @@ def _build(cls: type, frozen: bool, eq: bool, unsafe_hash: bool) -> type:
     for base in reversed(cls.__mro__[1:]):
         for f in base.__dict__.get(_FIELDS, ()):
             by_name[f.name] = f
-    for name, annotation in own.items():
-        if _is_classvar(annotation):
-            continue
+    declared_here = [name for name, annotation in own.items() if not _is_classvar(annotation)]
+    for name in declared_here:
         declared = cls.__dict__.get(name, MISSING)
         f = declared if isinstance(declared, Field) else Field(default=declared)
         f.name = name
@@ -170,9 +170,8 @@ def _build(cls: type, frozen: bool, eq: bool, unsafe_hash: bool) -> type:
         seen_default = seen_default or not f.required
 
     body = dict(cls.__dict__)
-    for name, annotation in own.items():
-        if not _is_classvar(annotation):
-            body.pop(name, None)
+    for name in declared_here:
+        body.pop(name, None)
     body.pop("__dict__", None)
     body.pop("__weakref__", None)
     inherited = {s for base in cls.__mro__[1:-1] for s in base.__dict__.get("__slots__", ())}
@@ -226,16 +225,14 @@ def _build(cls: type, frozen: bool, eq: bool, unsafe_hash: bool) -> type:
     if frozen:
         put("__getstate__", _frozen_getstate)
         put("__setstate__", _frozen_setstate)
+        # in the body, not set on the class made: assigning a special method to a class updates its slots again
+        setter, deleter = _frozen_setattr(owner, frozenset(f.name for f in all_fields))
+        put("__setattr__", setter)
+        put("__delattr__", deleter)
+    body["__qualname__"] = cls.__qualname__
 
     new = type(cls)(cls.__name__, cls.__bases__, body)
-    new.__qualname__ = cls.__qualname__
     owner.append(new)
-    if frozen:
-        setter, deleter = _frozen_setattr(new, frozenset(f.name for f in all_fields))
-        if "__setattr__" not in cls.__dict__:
-            new.__setattr__ = setter  # type: ignore[method-assign]
-        if "__delattr__" not in cls.__dict__:
-            new.__delattr__ = deleter  # type: ignore[method-assign]
     return new
 
 
