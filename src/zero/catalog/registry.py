@@ -183,8 +183,12 @@ class SortedIndex(Mapping["Any", "Any"]):
         self._keys, self._values = keys, values
 
     def get(self, key: Any, default: Any = None) -> Any:
-        at = _position(self._keys, key)
-        return self._values[at] if at >= 0 else default
+        keys = self._keys  # _position inline: a list of unknown keys asks once per entry
+        try:
+            at = bisect_left(keys, key)
+        except TypeError:  # a key that does not compare with these: none of them
+            return default
+        return self._values[at] if at < len(keys) and keys[at] == key else default
 
     def __getitem__(self, key: Any) -> Any:
         got = self.get(key, _ABSENT)
@@ -288,11 +292,12 @@ class KeyIndex(Mapping[tuple[str, str], str]):
     bisects its kind's keys, no dictionary of every key is built at start-up. Iterated in the order of the
     IDs (the order of the rows, the first row of each key)."""
 
-    __slots__ = ("_keys_of", "_kinds")
+    __slots__ = ("_keys_of", "_kinds", "_order")
 
     def __init__(self, kinds: Mapping[str, Any], keys_of: Callable[[str], tuple[Sequence[str], Sequence[str]]]) -> None:
         self._kinds = kinds  # the kinds that have keys
         self._keys_of = keys_of  # a kind's keys sorted, and the ID of each
+        self._order: list[tuple[str, str]] | None = None  # every pair in the IDs' order, once iterated
 
     def get(self, pair: tuple[str, str], default: Any = None) -> Any:
         try:
@@ -315,8 +320,10 @@ class KeyIndex(Mapping[tuple[str, str], str]):
         return self.get(pair, _ABSENT) is not _ABSENT  # type: ignore[arg-type]
 
     def __iter__(self) -> Iterator[tuple[str, str]]:
-        pairs = [(pid, kind, key) for kind in self._kinds for key, pid in zip(*self._keys_of(kind), strict=True)]
-        return ((kind, key) for _, kind, key in sorted(pairs))
+        if self._order is None:  # did-you-mean scans every key, once per distinct unknown key
+            pairs = [(pid, kind, key) for kind in self._kinds for key, pid in zip(*self._keys_of(kind), strict=True)]
+            self._order = [(kind, key) for _, kind, key in sorted(pairs)]
+        return iter(self._order)
 
     def __len__(self) -> int:
         return sum(len(self._keys_of(kind)[0]) for kind in self._kinds)
