@@ -450,6 +450,18 @@ class Columns:
         self.kinds.append(kind)
         return at
 
+    def add_values(self, values: list[str], kinds: list[ValueKind]) -> list[int]:
+        """:meth:`value_id` of each of ``values`` (distinct) with its kind, in bulk."""
+        ids = self._value_ids
+        if not ids.keys().isdisjoint(values):
+            return [self.value_id(v, k) for v, k in zip(values, kinds, strict=True)]
+        start = len(self.values)
+        stop = start + len(values)
+        self.values.extend(values)
+        self.kinds.extend(kinds)
+        ids.update(zip(values, range(start, stop), strict=True))
+        return list(range(start, stop))
+
     def comment_id(self, comment: str | None, style: CommentStyle | None = None, note: str | None = None,
                    note_at: int = -1) -> int:
         if comment is None:

@@ -442,6 +442,21 @@ def _value_kind(value: str) -> ValueKind:
     return got
 
 
+def _value_kinds(values: list[str]) -> list[ValueKind]:
+    """:func:`_value_kind` of each of ``values``, in one call (a big list holds thousands of distinct values)."""
+    got: list[Any] = list(map(_kinds.get, values))
+    if None in got:
+        match = _kind_re().fullmatch
+        room = len(_kinds) < _TABLE_LIMIT
+        for at, value in enumerate(values):
+            if got[at] is None:
+                km = match(value)
+                kind = got[at] = _KIND_OF[km.lastgroup] if km is not None and km.lastgroup else ValueKind.WORD
+                if room and len(value) < 256:
+                    _kinds[value] = kind
+    return got
+
+
 def _comment_parts(comment: str) -> tuple[CommentStyle, str | None, int]:
     """A comment's style, the annotation it holds (`( P-TOOL-00005 …`) and where in it."""
     got = _comment_table.get(comment)
@@ -634,8 +649,8 @@ class _Reader:
         number = 1
         cols = self.cols
         shapes, firsts, values, comments = self.shapes, self.firsts, self.values, self.comments
-        add_shapes, add_comments, value_id = cols.add_shapes, cols.add_comments, cols.value_id
-        info_of, comment_table, kinds = _shape_info.get, _comment_table.get, _kinds.get
+        add_shapes, add_comments, add_values = cols.add_shapes, cols.add_comments, cols.add_values
+        info_of, comment_table = _shape_info.get, _comment_table.get
         shape_pattern = self.shape_pattern
         binary = self.binary
         nl: Any = b"\n" if binary else "\n"
@@ -683,9 +698,9 @@ class _Reader:
                         strict=True))
                     if len(shape_pattern) < len(cols.shapes):
                         shape_pattern.extend([sh.pattern for sh in cols.shapes[len(shape_pattern):]])
-                for v in new_values:
-                    t = v.decode("ascii") if binary else v
-                    values[v] = value_id(t, kinds(t) or _value_kind(t))
+                if new_values:
+                    said = [v.decode("ascii") for v in new_values] if binary else new_values
+                    values.update(zip(new_values, add_values(said, _value_kinds(said)), strict=True))
                 if new_comments:
                     said = [c.decode("ascii") for c in new_comments] if binary else new_comments
                     comments.update(zip(new_comments, add_comments(
