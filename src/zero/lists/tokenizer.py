@@ -17,7 +17,7 @@ import re
 from array import array
 from collections.abc import Iterable, Sequence
 from functools import cache
-from itertools import compress
+from itertools import compress, islice, repeat
 from operator import length_hint
 
 from zero.lists.encoding import declarable, decode
@@ -601,6 +601,9 @@ _small_tables: dict[tuple[tuple[tuple[str, str], ...], tuple[str, ...], tuple[st
                     tuple[ColumnTables, dict[tuple[str, str], int], dict[str, int], dict[str, int], list[int]]] = {}
 
 
+_NEW = -2  # the id of a shape or comment a reader has just seen for the first time
+
+
 def _extend(column: array[int], count: int, values: Iterable[int]) -> None:
     """``column.extend(values)``, ``count`` of them: many are packed in C first (an array's extend parses each
     int as the argument of a call: a seventh of the instructions of reading a big list). Not the rows of a short
@@ -673,10 +676,17 @@ class _Reader:
                     got[1::step], got[2::step], got[3::step], got[4::step], got[5::step], got[6::step],
                     got[7::step], got[8::step], got[9::step])
             del got
-            # (names, tail) pairs made by zip as they are read, never a list of them (zip reuses its tuple)
-            new_shapes = [k for k in dict.fromkeys(zip(names, tails, strict=True)) if k not in shapes]
+            # Shapes and comments, which a big list repeats: each line's id in one look-up, a text not seen yet added
+            # as _NEW (so the last keys of the dictionary are the new ones, in order), its lines' ids read again once
+            # it has one (mostly none). Values and first indices, of which most parts have new ones: the distinct
+            # ones first. (names, tail) pairs made by zip as they are read, never a list of them (zip reuses its
+            # tuple).
+            had_shapes, had_comments = len(shapes), len(comments)
+            sids = list(map(shapes.setdefault, zip(names, tails, strict=True), repeat(_NEW)))
+            cids = list(map(comments.setdefault, comment_texts, repeat(_NEW)))
+            new_shapes = list(islice(shapes, had_shapes, None)) if len(shapes) > had_shapes else []
+            new_comments = list(islice(comments, had_comments, None)) if len(comments) > had_comments else []
             new_values = [v for v in dict.fromkeys(value_texts) if v not in values]
-            new_comments = [c for c in dict.fromkeys(comment_texts) if c not in comments]
             known = None
             count = len(names)
             small = not binary and pos == 0 and end == n and count <= _SMALL_LIST
@@ -711,14 +721,17 @@ class _Reader:
             for f in dict.fromkeys(first_texts):
                 if f not in firsts:
                     firsts[f] = int(f)
-            sids = list(map(shapes.__getitem__, zip(names, tails, strict=True)))
+            if new_shapes or known is not None:
+                sids = list(map(shapes.__getitem__, zip(names, tails, strict=True)))
+            if new_comments or known is not None:
+                cids = list(map(comments.__getitem__, comment_texts))
             if self.end_line is None and -1 not in sids:  # every line an entry of the columns
                 _extend(cols.line, count, range(number, number + count))
                 _extend(cols.shape, count, sids)
                 _extend(cols.pattern, count, map(shape_pattern.__getitem__, sids))
                 _extend(cols.first, count, map(firsts.__getitem__, first_texts))
                 _extend(cols.value, count, map(values.__getitem__, value_texts))
-                _extend(cols.comment, count, map(comments.__getitem__, comment_texts))
+                _extend(cols.comment, count, cids)
                 if widths is not None:
                     _extend(widths[0], count, map(len, leads))
                     _extend(widths[1], count, map(len, key_gaps))
