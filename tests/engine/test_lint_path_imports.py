@@ -62,3 +62,42 @@ def test_the_k_table_is_built_only_for_a_k_finding(tmp_path: Path, k_finding: bo
     assert '"code": "R' in report
     assert ('"code": "K074"' in report) == k_finding
     assert (table > 0) == k_finding
+
+
+_MODULES = """
+import sys
+import zero.cli.lean as lean
+
+def end(code):
+    sys.stdout.write("\\nMODULES " + " ".join(sorted(sys.modules)) + "\\n")
+    sys.stdout.flush()
+    raise SystemExit(code)
+
+lean.end = end
+sys.argv = ["zero", *sys.argv[1:]]
+lean.main()
+"""
+
+
+@pytest.mark.parametrize("cache", [False, True])
+@pytest.mark.parametrize("command", ["lint", "diff --fleet"])
+def test_a_lint_and_a_fleet_diff_import_no_typing(tmp_path: Path, command: str, cache: bool) -> None:
+    """typing is a twentieth of a list's lint at start-up; annotations are strings that only type
+    checkers read (zero.hints holds the few run-time names), so neither command, cold or from the cache,
+    loads it. A module that imports typing at run time on these paths fails here."""
+    machine = tmp_path / "m001" / "listen"
+    machine.mkdir(parents=True)
+    (machine / "hochlauf.lis").write_text("# start-up list\nEnde\n", encoding="ascii")
+    args = (["lint", "--exit-zero", str(machine / "hochlauf.lis")] if command == "lint"
+            else ["diff", "--fleet", str(machine / "hochlauf.lis"), str(tmp_path), "--output-format", "json"])
+    env = {k: v for k, v in os.environ.items() if k != "ZERO_NO_CACHE"}
+    env["ZERO_CACHE_DIR"] = str(tmp_path / "cache")
+    if not cache:
+        env["ZERO_NO_CACHE"] = "1"
+    for _ in range(2 if cache else 1):  # the second run answers from the cache
+        out = subprocess.run([sys.executable, "-c", _MODULES, *args], cwd=tmp_path, env=env, capture_output=True,
+                             text=True, timeout=120, check=False)
+    assert "MODULES " in out.stdout, out.stderr
+    modules = set(out.stdout.rpartition("\nMODULES ")[2].split())
+    assert "zero.cli.run" in modules
+    assert "typing" not in modules

@@ -41,7 +41,6 @@ import os
 import re
 from collections.abc import Callable, Hashable, Sequence
 from pathlib import Path
-from typing import TYPE_CHECKING, Any
 
 from zero.catalog.registry import ParamSpec, Registry
 from zero.catalog.rows import Rows, own_entries
@@ -66,7 +65,10 @@ from zero.machine.effective import entries_of
 from zero.machine.model import Machine
 from zero.records import field, record
 
-if TYPE_CHECKING:  # start-up: the cache only when it is on
+TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (mypy and ruff read it alike)
+if TYPE_CHECKING:  # start-up: the cache only when it is on; typing for type checkers only
+    from typing import Any
+
     from zero.engine.cache import FleetCache
 
 # The names of a start-up list, as a folder of machines is searched for them (lower case, in order).

@@ -9,12 +9,11 @@ file's bytes, whatever the form.
 
 from __future__ import annotations
 
-from typing import TYPE_CHECKING
-
 from zero.forms import is_xml
 from zero.lists.model import Document
 from zero.lists.tokenizer import tokenize
 
+TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (mypy and ruff read it alike)
 if TYPE_CHECKING:
     from zero.catalog.registry import Registry
 

@@ -41,10 +41,13 @@ import csv
 import json
 from collections.abc import Callable, Sequence
 from pathlib import PurePath
-from typing import Any, TextIO
 
 from zero.engine.fleet import EXTRA, MISSING, FleetDrift, FleetValue, ParamDrift
 from zero.errors import ZeroError
+
+TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (mypy and ruff read it alike)
+if TYPE_CHECKING:  # typing for type checkers only (start-up of zero diff --fleet)
+    from typing import Any, TextIO
 
 FLEET_FORMATS = ("text", "json", "csv")
 
