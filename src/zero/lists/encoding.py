@@ -88,7 +88,7 @@ def decode(data: bytes, declared: str | None = None) -> tuple[str, str, bool]:
         return data.decode("latin-1"), "latin-1", False
 
 
-_C1_BYTES = tuple(bytes((b,)) for b in range(0x80, 0xA0))  # where CP1252 differs from Latin-1
+_C1_BYTES = range(0x80, 0xA0)  # where CP1252 differs from Latin-1 (bytes.find takes a byte's value)
 _PART = 1 << 18
 
 

@@ -114,9 +114,10 @@ def _c1_re() -> re.Pattern[str]:
 
 
 _MARKED_COMMENTS = (CommentStyle.HASH, CommentStyle.PAREN, CommentStyle.BLOCK)
-# The ASCII control characters but \r, as bytes and as characters: each searched for on its own.
-_CONTROL_BYTES = tuple(bytes((b,)) for b in (*range(0x09), 0x0B, 0x0C, *range(0x0E, 0x20), 0x7F))
-_CONTROL_CHARS = tuple(c.decode("ascii") for c in _CONTROL_BYTES)
+# The ASCII control characters but \r, as byte values (what bytes.find takes) and as characters: each searched for
+# on its own.
+_CONTROL_BYTES = (*range(0x09), 0x0B, 0x0C, *range(0x0E, 0x20), 0x7F)
+_CONTROL_CHARS = tuple(map(chr, _CONTROL_BYTES))
 # Every ASCII byte (and Latin-1 byte) _control_re does not match: deleting them leaves the control characters.
 _NOT_CONTROL = b"\t\n" + bytes(range(0x20, 0x7F))
 _NOT_CONTROL_LATIN1 = _NOT_CONTROL + bytes(range(0xA0, 0x100))
