@@ -75,7 +75,7 @@ def _claims(name: str) -> list[Claim]:
 
 def claim(name: str, kind: str | None = None) -> Claim:
     """The claim ``name`` for a list of ``kind``: its first row that holds for the kind."""
-    rows = _claims(name)
+    rows = _built.get(name) or _claims(name)
     if not rows:
         raise KeyError(f"no claim {name!r} in the evidence table")
     for c in rows:

@@ -366,7 +366,10 @@ SUGGESTIONS = 100
 def _unknown_key(ctx: Context, e: Entry, propose: bool = True, known: dict[str, Any] | None = None) -> Diagnostic:
     assert e.key is not None
     reg = ctx.registry
-    other = [k for k in reg.kinds_of(e.key.pattern) if k != ctx.kind]
+    others: dict[str, list[str]] = known.setdefault("kinds", {}) if known is not None else {}
+    other = others.get(e.key.pattern)
+    if other is None:  # once per distinct key of the list (a list of made-up keys repeats them)
+        other = others[e.key.pattern] = [k for k in reg.kinds_of(e.key.pattern) if k != ctx.kind]
     hint = None
     fix = None
     if other:
