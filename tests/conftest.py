@@ -230,3 +230,31 @@ def zero_cli(*args: str, cwd: Path | None = None, stdin: bytes | None = None, ti
     assert run.code in (0, 1, 2, 130, 141, 143), run
     assert b"Traceback" not in proc.stderr, run.stderr
     return run
+
+
+_MODULES_SCRIPT = """
+import sys
+import zero.cli.lean as lean
+
+def end(code):
+    probe = {probe}
+    sys.stdout.write("\\nMODULES " + " ".join(sorted(sys.modules)) + "\\nPROBE " + repr(probe) + "\\n")
+    sys.stdout.flush()
+    raise SystemExit(code)
+
+lean.end = end
+sys.argv = ["zero", *sys.argv[1:]]
+lean.main()
+"""
+
+
+def zero_modules(*args: str, cwd: Path, env: dict[str, str], probe: str = "None") -> tuple[str, set[str], str]:
+    """The console script's ``zero ARGS`` in a fresh interpreter, as a pre-commit hook starts it: its report,
+    the modules loaded when it ends, and ``repr`` of the expression ``probe`` evaluated then (issue 40:
+    what a command leaves unloaded). ``env`` is the child's whole environment."""
+    out = subprocess.run([sys.executable, "-c", _MODULES_SCRIPT.format(probe=probe), *args], cwd=cwd, env=env,
+                         capture_output=True, text=True, timeout=120, check=False)
+    assert "\nMODULES " in out.stdout and out.returncode in (0, 1), out.stderr
+    report, _, tail = out.stdout.rpartition("\nMODULES ")
+    modules, _, probed = tail.partition("\nPROBE ")
+    return report, set(modules.split()), probed.strip()

@@ -4,38 +4,20 @@ the same fleet again): its results, options and report need none of them."""
 from __future__ import annotations
 
 import os
-import subprocess
-import sys
 import time
 from pathlib import Path
 
 import pytest
 
+from conftest import zero_modules
+
 LINT_PATH = ("zero.rules", "zero.lists.tokenizer", "zero.catalog.values", "zero.engine.lint", "zero.engine.parallel")
-
-_RUN = """
-import sys
-import zero.cli.lean as lean
-
-def end(code):
-    sys.stdout.write("\\nMODULES " + " ".join(sorted(sys.modules)) + "\\n")
-    sys.stdout.flush()
-    raise SystemExit(code)
-
-lean.end = end
-sys.argv = ["zero", "lint", "--exit-zero", "--output-format", "json", "lists"]
-lean.main()
-"""
-
 
 def _run(folder: Path) -> tuple[str, set[str]]:
     env = {**os.environ, "ZERO_CACHE_DIR": str(folder / "cache")}
     env.pop("ZERO_NO_CACHE", None)
-    out = subprocess.run([sys.executable, "-c", _RUN], cwd=folder, env=env, capture_output=True, text=True,
-                         timeout=120, check=False)
-    assert out.returncode == 0, out.stderr
-    report, _, modules = out.stdout.rpartition("\nMODULES ")
-    return report, set(modules.split())
+    report, modules, _ = zero_modules("lint", "--exit-zero", "--output-format", "json", "lists", cwd=folder, env=env)
+    return report, modules
 
 
 @pytest.mark.parametrize("config", [None, 'extend-select = ["M"]\nignore = ["R003"]\n'])

@@ -3,40 +3,22 @@ configuration file applies, and the K table where no K finding is reported; each
 
 from __future__ import annotations
 
+import json
 import os
-import subprocess
-import sys
+import shutil
 from pathlib import Path
 
 import pytest
 
-from conftest import FIXTURES
-
-_RUN = """
-import sys
-import zero.cli.lean as lean
-
-def end(code):
-    from zero.rules.lists import kernel_rules
-    sys.stdout.write("\\nMODULES " + " ".join(sorted(sys.modules)) + "\\n")
-    sys.stdout.write("KTABLE " + str(kernel_rules.cache_info().currsize) + "\\n")
-    sys.stdout.flush()
-    raise SystemExit(code)
-
-lean.end = end
-sys.argv = ["zero", "lint", "--exit-zero", "--output-format", "json", "lists"]
-lean.main()
-"""
+from conftest import FIXTURES, zero_modules
 
 
 def _run(folder: Path) -> tuple[str, set[str], int]:
     env = {**os.environ, "ZERO_NO_CACHE": "1"}
-    out = subprocess.run([sys.executable, "-c", _RUN], cwd=folder, env=env, capture_output=True, text=True,
-                         timeout=120, check=False)
-    assert out.returncode == 0, out.stderr
-    report, _, tail = out.stdout.rpartition("\nMODULES ")
-    modules, _, table = tail.partition("\nKTABLE ")
-    return report, set(modules.split()), int(table)
+    report, modules, table = zero_modules(
+        "lint", "--exit-zero", "--output-format", "json", "lists", cwd=folder, env=env,
+        probe='__import__("zero.rules.lists", fromlist=["kernel_rules"]).kernel_rules.cache_info().currsize')
+    return report, modules, int(table)
 
 
 @pytest.mark.parametrize("config", [None, 'ignore = ["R"]\n'])
@@ -64,40 +46,27 @@ def test_the_k_table_is_built_only_for_a_k_finding(tmp_path: Path, k_finding: bo
     assert (table > 0) == k_finding
 
 
-_MODULES = """
-import sys
-import zero.cli.lean as lean
-
-def end(code):
-    sys.stdout.write("\\nMODULES " + " ".join(sorted(sys.modules)) + "\\n")
-    sys.stdout.flush()
-    raise SystemExit(code)
-
-lean.end = end
-sys.argv = ["zero", *sys.argv[1:]]
-lean.main()
-"""
-
-
 @pytest.mark.parametrize("cache", [False, True])
 @pytest.mark.parametrize("command", ["lint", "diff --fleet"])
 def test_a_lint_and_a_fleet_diff_import_no_typing(tmp_path: Path, command: str, cache: bool) -> None:
     """typing is a twentieth of a list's lint at start-up; annotations are strings that only type
     checkers read (zero.hints holds the few run-time names), so neither command, cold or from the cache,
     loads it. A module that imports typing at run time on these paths fails here."""
-    machine = tmp_path / "m001" / "listen"
-    machine.mkdir(parents=True)
-    (machine / "hochlauf.lis").write_text("# start-up list\nEnde\n", encoding="ascii")
-    args = (["lint", "--exit-zero", str(machine / "hochlauf.lis")] if command == "lint"
-            else ["diff", "--fleet", str(machine / "hochlauf.lis"), str(tmp_path), "--output-format", "json"])
+    for name in ("m001", "m002"):  # a fleet of two copies of the clean fixture machine
+        shutil.copytree(FIXTURES / "machine-clean", tmp_path / "fleet" / name)
+    startup = tmp_path / "fleet" / "m001" / "listen" / "hochlauf.lis"
+    args = (["lint", "--exit-zero", "--output-format", "json", str(startup)] if command == "lint"
+            else ["diff", "--fleet", str(startup), str(tmp_path / "fleet"), "--output-format", "json"])
     env = {k: v for k, v in os.environ.items() if k != "ZERO_NO_CACHE"}
     env["ZERO_CACHE_DIR"] = str(tmp_path / "cache")
     if not cache:
         env["ZERO_NO_CACHE"] = "1"
     for _ in range(2 if cache else 1):  # the second run answers from the cache
-        out = subprocess.run([sys.executable, "-c", _MODULES, *args], cwd=tmp_path, env=env, capture_output=True,
-                             text=True, timeout=120, check=False)
-    assert "MODULES " in out.stdout, out.stderr
-    modules = set(out.stdout.rpartition("\nMODULES ")[2].split())
+        report, modules, _ = zero_modules(*args, cwd=tmp_path, env=env)
+    answer = json.loads(report)
+    if command == "lint":
+        assert isinstance(answer, list)
+    else:  # the other machine compared with the golden one
+        assert [Path(m).parts[-3] for m in answer["machines"]] == ["m002"]
     assert "zero.cli.run" in modules
     assert "typing" not in modules
