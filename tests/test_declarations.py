@@ -17,7 +17,8 @@ import jsonschema  # type: ignore[import-untyped]
 import pytest
 
 from conftest import ROOT, script_module
-from zero.engine.config import BY_KEY, OPTIONS, config_schema, options_example, parse_config
+from zero.engine.config import parse_config
+from zero.engine.config_file import BY_KEY, OPTIONS, config_schema, options_example
 from zero.errors import ZeroError
 
 SRC = ROOT / "src" / "zero"

@@ -11,7 +11,8 @@ from typer.testing import CliRunner
 
 from conftest import FIXTURES
 from zero.cli.app import app
-from zero.engine.config import ConfigFinder, parse_config, patterns
+from zero.engine.config import ConfigFinder, parse_config
+from zero.engine.config_file import patterns
 from zero.errors import ZeroError
 
 runner = CliRunner()

@@ -11,7 +11,8 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from zero.engine.config import Config, _resolved, _suffixes, one_resolution, patterns
+from zero.engine.config import Config, _resolved, _suffixes, one_resolution
+from zero.engine.config_file import patterns
 from zero.forms import DEFAULT_INCLUDE
 
 _PARTS = st.lists(st.sampled_from(["a", ".lis", "x.lis", ".nc", "nc", "*", "[", "\\", " ", "ü", ".", "..", "",

@@ -455,17 +455,3 @@ class ConfigFinder:
         for w in walked:
             self._by_dir[w] = found
         return found
-
-
-# The declarations moved to zero.engine.config_file answer here too (as they did), imported when asked for.
-_DECLARED_IN_CONFIG_FILE = frozenset({"BY_KEY", "OPTIONS", "SECTIONS", "ConfigOption", "config_schema",
-                                      "config_schema_text", "options_example", "options_reference",
-                                      "patterns", "project_root", "MAX_PATTERN_WILDCARDS", "MAX_PATTERN_LENGTH"})
-
-
-def __getattr__(name: str) -> Any:
-    if name in _DECLARED_IN_CONFIG_FILE:
-        from zero.engine import config_file  # start-up: only where a declaration is asked for
-
-        return getattr(config_file, name)
-    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
