@@ -15,13 +15,30 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent.parent / "src"))
 
+TYPE_CHECKING = False
+if TYPE_CHECKING:
+    from zero.catalog.conditions import Node
+
 DATA = Path(__file__).resolve().parent.parent / "src" / "zero" / "catalog" / "data"
+
+
+def _functions(defs: list[str], name: str, condition: str, when: str) -> Node:
+    """Append the functions of ``condition`` (as ``name``) and of its guard ``when`` (as ``name_when``, if
+    any) to ``defs``; the condition's parsed node."""
+    from zero.catalog.condition_source import source
+    from zero.catalog.conditions import parse
+
+    node = parse(condition)
+    defs.append(source(name, node))
+    if when:
+        defs.append(source(f"{name}_when", parse(when)))
+    return node
 
 
 def render() -> str:
     """The module's text, from the rows as they are now."""
-    from zero.catalog.condition_source import HELPERS, source
-    from zero.catalog.conditions import parse, ref_elements, refs
+    from zero.catalog.condition_source import HELPERS
+    from zero.catalog.conditions import ref_elements, refs
     from zero.catalog.data.startup_errors import ERRORS
 
     defs: list[str] = []
@@ -31,10 +48,7 @@ def render() -> str:
         if not condition:
             continue
         code = str(row["code"])
-        node = parse(condition)
-        defs.append(source(f"_{code}", node))
-        if when:
-            defs.append(source(f"_{code}_when", parse(when)))
+        node = _functions(defs, f"_{code}", condition, when)
         table.append(f"    {code!r}: ({condition!r}, {when!r}, _{code}, {f'_{code}_when' if when else 'None'},\n"
                      f"             {tuple(refs(node))!r}, {tuple(ref_elements(node))!r}),")
     head = ('"""The K rules\' conditions of startup_errors.toml as Python, written by tools/gen_conditions.py.\n\n'
@@ -47,18 +61,15 @@ def render() -> str:
 def render_prose() -> str:
     """``prose_compiled.py``'s text: each prose range's condition (and guard) as a function, with the
     elements it reads, keyed by the parameter's ID, from the rows as they are now."""
-    from zero.catalog.condition_source import HELPERS, source
-    from zero.catalog.conditions import parse, ref_elements
+    from zero.catalog.condition_source import HELPERS
+    from zero.catalog.conditions import ref_elements
     from zero.catalog.data.prose_ranges import RANGES
 
     defs: list[str] = []
     table: list[str] = []
     for n, row in enumerate(RANGES):
         pid, condition, when = str(row["id"]), str(row["condition"]), str(row.get("when", ""))
-        node = parse(condition)
-        defs.append(source(f"_r{n}", node))
-        if when:
-            defs.append(source(f"_r{n}_when", parse(when)))
+        node = _functions(defs, f"_r{n}", condition, when)
         table.append(f"    {pid!r}: ({condition!r}, {when!r}, _r{n}, {f'_r{n}_when' if when else 'None'}, "
                      f"{tuple(ref_elements(node))!r},\n                     {str(row['prose'])!r}),")
     head = ('"""The prose ranges\' conditions of prose_ranges.toml as Python, written by tools/gen_conditions.py:\n'
