@@ -35,9 +35,10 @@ def sources() -> list[str]:
     seen: set[str] = set()
     first_init = records._first_init
 
-    def capture(source: str, *args: object) -> object:
-        seen.add(source)
-        return first_init(source, *args)  # type: ignore[arg-type]
+    def capture(all_fields: tuple[records.Field, ...], frozen: bool, post_init: bool,
+                owner: list[type]) -> object:
+        seen.add(records.init_source(all_fields, frozen, post_init)[0])
+        return first_init(all_fields, frozen, post_init, owner)
 
     records._first_init = capture  # type: ignore[assignment]
     try:

@@ -103,19 +103,22 @@ def _is_classvar(annotation: object) -> bool:
     return text.startswith(("ClassVar", "typing.ClassVar"))
 
 
-def _frozen_setattr(owner: list[type], names: frozenset[str]) -> tuple[Callable[..., None], Callable[..., None]]:
-    """``__setattr__`` and ``__delattr__`` of a frozen record: ``owner`` holds the class once it is made."""
-    def __setattr__(self: Any, name: str, value: Any) -> None:
-        if type(self) is owner[0] or name in names:
-            raise AttributeError(f"cannot assign to field {name!r} of a frozen record")
-        object.__setattr__(self, name, value)
+_CLASSVAR = ("ClassVar", "typing.ClassVar")
 
-    def __delattr__(self: Any, name: str) -> None:
-        if type(self) is owner[0] or name in names:
-            raise AttributeError(f"cannot delete field {name!r} of a frozen record")
-        object.__delattr__(self, name)
 
-    return __setattr__, __delattr__
+def _frozen_setattr(self: Any, name: str, value: Any) -> None:
+    """``__setattr__`` of a frozen record: refuses its fields (and, on the record itself, any name)."""
+    cls = self.__class__
+    if "__record_frozen__" in cls.__dict__ or name in cls.__record_names__:
+        raise AttributeError(f"cannot assign to field {name!r} of a frozen record")
+    object.__setattr__(self, name, value)
+
+
+def _frozen_delattr(self: Any, name: str) -> None:
+    cls = self.__class__
+    if "__record_frozen__" in cls.__dict__ or name in cls.__record_names__:
+        raise AttributeError(f"cannot delete field {name!r} of a frozen record")
+    object.__delattr__(self, name)
 
 
 def _frozen_getstate(self: Any) -> tuple[Any, ...]:
@@ -127,63 +130,115 @@ def _frozen_setstate(self: Any, state: tuple[Any, ...]) -> None:
         object.__setattr__(self, f.name, value)
 
 
-def _methods(shown: tuple[str, ...], compared: tuple[str, ...]) -> dict[str, Callable[..., Any]]:
-    """``__repr__``, ``__eq__`` and ``__hash__`` as closures: compiling them per class (what
-    dataclasses does) costs four times what compiling ``__init__`` alone costs."""
-    values = attrgetter(*compared) if compared else (lambda _: ())
+# ``__repr__``, ``__eq__`` and ``__hash__`` are shared by every record and read what they need from the
+# class (``__record_shown__``, ``__record_key__``): making them per class, as closures or compiled as
+# dataclasses does, was most of what declaring a record cost at start-up (issue 40).
+def _record_repr(self: Any) -> str:
+    inner = ", ".join(f"{name}={getattr(self, name)!r}" for name in self.__record_shown__)
+    return f"{self.__class__.__qualname__}({inner})"
 
-    def __repr__(self: Any) -> str:
-        inner = ", ".join(f"{name}={getattr(self, name)!r}" for name in shown)
-        return f"{self.__class__.__qualname__}({inner})"
 
-    def __eq__(self: Any, other: object) -> bool:
-        if other.__class__ is self.__class__:
-            return bool(values(self) == values(other))
-        return NotImplemented
+def _record_eq(self: Any, other: object) -> bool:
+    values = self.__record_key__
+    if other.__class__ is self.__class__:
+        return bool(values(self) == values(other))
+    return NotImplemented  # type: ignore[no-any-return]  # (mypy allows it only in a method named __eq__)
 
-    def __hash__(self: Any) -> int:
-        return hash(values(self))
 
-    return {"__repr__": __repr__, "__eq__": __eq__, "__hash__": __hash__}
+def _record_hash(self: Any) -> int:
+    return hash(self.__record_key__(self))
+
+
+def _no_values(_: object) -> tuple[()]:
+    return ()
 
 
 def _build(cls: type, frozen: bool, eq: bool, unsafe_hash: bool) -> type:
-    # The class's own annotations (3.10 and later answer for the class alone; strings here, as
-    # every zero module imports annotations from __future__); inspect is what this module avoids.
-    own: dict[str, Any] = getattr(cls, "__annotations__", {})
-    by_name: dict[str, Field] = {}
-    for base in reversed(cls.__mro__[1:]):
-        for f in base.__dict__.get(_FIELDS, ()):
-            by_name[f.name] = f
-    declared_here = [name for name, annotation in own.items() if not _is_classvar(annotation)]
+    # The class's own annotations (strings: every zero module imports annotations from __future__;
+    # 3.10 and later answer for the class alone); inspect is what this module avoids.
+    ns = cls.__dict__
+    own: dict[str, Any] = ns.get("__annotations__") or {}
+    declared_here = [name for name, annotation in own.items()
+                     if not (annotation.startswith(_CLASSVAR) if annotation.__class__ is str
+                             else _is_classvar(annotation))]
+    bases = cls.__mro__[1:-1]
+    body = dict(ns)
+    if any(_FIELDS in base.__dict__ for base in bases):
+        by_name: dict[str, Field] = {}
+        for base in reversed(bases):
+            for f in base.__dict__.get(_FIELDS, ()):
+                by_name[f.name] = f
+    else:
+        by_name = {}
     for name in declared_here:
-        declared = cls.__dict__.get(name, MISSING)
-        f = declared if isinstance(declared, Field) else Field(default=declared)
+        declared = body.pop(name, MISSING)
+        f = declared if declared.__class__ is Field else Field(declared)
         f.name = name
         by_name.pop(name, None)
         by_name[name] = f
     all_fields = tuple(by_name.values())
+    names = tuple(by_name)
     seen_default = False
     for f in all_fields:
-        if f.required and seen_default:
-            raise TypeError(f"{cls.__name__}: field {f.name!r} without a default follows one with a default")
-        seen_default = seen_default or not f.required
+        if f.default is MISSING and f.default_factory is MISSING:
+            if seen_default:
+                raise TypeError(f"{cls.__name__}: field {f.name!r} without a default follows one with a default")
+        else:
+            seen_default = True
 
-    body = dict(cls.__dict__)
-    for name in declared_here:
-        body.pop(name, None)
     body.pop("__dict__", None)
     body.pop("__weakref__", None)
-    inherited = {s for base in cls.__mro__[1:-1] for s in base.__dict__.get("__slots__", ())}
-    body["__slots__"] = tuple(f.name for f in all_fields if f.name not in inherited)
+    if bases:
+        inherited = {s for base in bases for s in base.__dict__.get("__slots__", ())}
+        body["__slots__"] = tuple(n for n in names if n not in inherited)
+    else:
+        body["__slots__"] = names
     body[_FIELDS] = all_fields
-    body["__match_args__"] = tuple(f.name for f in all_fields)
+    body["__match_args__"] = names
 
-    # __init__, written out and compiled; defaults and factories are passed to it by name.
+    def put(name: str, value: Any) -> None:
+        if name not in ns:
+            body[name] = value
+
+    owner: list[type] = []  # the class built below, whose __init__ the first call makes
+    post_init = "__post_init__" in body or any(hasattr(b, "__post_init__") for b in bases)
+    put("__init__", _first_init(all_fields, frozen, post_init, owner))
+    body["__record_shown__"] = tuple(f.name for f in all_fields if f.repr)
+    put("__repr__", _record_repr)
+    explicit_hash = "__hash__" in ns and not (ns["__hash__"] is None and "__eq__" in ns)
+    hashed = not explicit_hash and (unsafe_hash or (eq and frozen))
+    if eq or hashed:
+        compared = tuple(f.name for f in all_fields if f.compare)
+        body["__record_key__"] = attrgetter(*compared) if compared else _no_values
+    if eq:
+        put("__eq__", _record_eq)
+    if hashed:
+        body["__hash__"] = _record_hash
+    elif eq and not explicit_hash:
+        body["__hash__"] = None
+    if frozen:
+        put("__getstate__", _frozen_getstate)
+        put("__setstate__", _frozen_setstate)
+        # in the body, not set on the class made: assigning a special method to a class updates its slots again
+        body["__record_frozen__"] = True
+        body["__record_names__"] = frozenset(names)
+        put("__setattr__", _frozen_setattr)
+        put("__delattr__", _frozen_delattr)
+    body["__qualname__"] = cls.__qualname__
+
+    new = type(cls)(cls.__name__, cls.__bases__, body)
+    owner.append(new)
+    return new
+
+
+def init_source(all_fields: tuple[Field, ...], frozen: bool, post_init: bool) -> tuple[str, dict[str, Any],
+                                                                                      tuple[Any, ...]]:
+    """A record's ``__init__`` as Python text, the globals it runs with (its defaults and factories by
+    name) and its parameters' defaults in order (what the ``def`` line names)."""
     scope: dict[str, Any] = {"MISSING": MISSING, "__set": object.__setattr__}
     params: list[str] = []
     lines: list[str] = []
-    defaults: list[Any] = []  # the parameters' defaults, in order (what the def line names)
+    defaults: list[Any] = []
     for f in all_fields:
         n = f.name
         if f.default_factory is not MISSING:
@@ -200,48 +255,18 @@ def _build(cls: type, frozen: bool, eq: bool, unsafe_hash: bool) -> type:
             params.append(n)
             value = n
         lines.append(f"    __set(self, {n!r}, {value})" if frozen else f"    self.{n} = {value}")
-    if "__post_init__" in body or any(hasattr(b, "__post_init__") for b in cls.__mro__[1:]):
+    if post_init:
         lines.append("    self.__post_init__()")
     source = "\n".join([f"def __init__(self, {', '.join(params)}) -> None:", *(lines or ["    pass"])])
-    methods = _methods(tuple(f.name for f in all_fields if f.repr),
-                       tuple(f.name for f in all_fields if f.compare))
-
-    def put(name: str, value: Any) -> None:
-        if name not in cls.__dict__:
-            body[name] = value
-
-    owner: list[type] = []  # the class built below, whose __init__ the first call compiles
-    put("__init__", _first_init(source, scope, tuple(defaults), owner))
-    put("__repr__", methods["__repr__"])
-    if eq:
-        put("__eq__", methods["__eq__"])
-    explicit_hash = "__hash__" in cls.__dict__ and not (
-        cls.__dict__["__hash__"] is None and "__eq__" in cls.__dict__)
-    if not explicit_hash:
-        if unsafe_hash or (eq and frozen):
-            body["__hash__"] = methods["__hash__"]
-        elif eq:
-            body["__hash__"] = None
-    if frozen:
-        put("__getstate__", _frozen_getstate)
-        put("__setstate__", _frozen_setstate)
-        # in the body, not set on the class made: assigning a special method to a class updates its slots again
-        setter, deleter = _frozen_setattr(owner, frozenset(f.name for f in all_fields))
-        put("__setattr__", setter)
-        put("__delattr__", deleter)
-    body["__qualname__"] = cls.__qualname__
-
-    new = type(cls)(cls.__name__, cls.__bases__, body)
-    owner.append(new)
-    return new
+    return source, scope, tuple(defaults)
 
 
 def _compiled_init(source: str, scope: dict[str, Any], defaults: tuple[Any, ...]) -> Callable[..., None]:
     """The record's ``__init__``: from the code compiled ahead of time (:mod:`zero.record_inits`,
-    written by ``tools/gen_record_inits.py``) with ``scope`` as its globals and ``defaults`` as its
-    parameters' defaults, which is what executing ``source`` in ``scope`` makes; or, for a record
-    that table does not hold (a test's, or a table not yet regenerated), by compiling ``source``.
-    Compiling Python text is the costly part (some forty records a run: 5 ms of ``zero lint``)."""
+    written by ``tools/gen_record_inits.py`` and keyed by its text) with ``scope`` as its globals and
+    ``defaults`` as its parameters' defaults, which is what executing ``source`` in ``scope`` makes; or,
+    for a record that table does not hold (a test's, or a table not yet regenerated), by compiling
+    ``source``. Compiling Python text is the costly part (some forty records a run: 5 ms of ``zero lint``)."""
     code = INITS.get(source)
     if code is not None:
         made: Callable[..., None] = FunctionType(code, scope, "__init__", defaults or None)
@@ -252,15 +277,19 @@ def _compiled_init(source: str, scope: dict[str, Any], defaults: tuple[Any, ...]
     return init
 
 
-def _first_init(source: str, scope: dict[str, Any], defaults: tuple[Any, ...],
+def _first_init(all_fields: tuple[Field, ...], frozen: bool, post_init: bool,
                 owner: list[type]) -> Callable[..., None]:
     """An ``__init__`` that makes the record's own at its first call and puts it in its place.
 
-    Making it is most of what declaring a record costs, and a run instantiates fewer than half of
-    the records it imports (``zero lint`` of one list: issue 40, start-up), so each is made
-    when its class is first instantiated; from then on the class calls its own directly."""
+    Writing and making it is most of what declaring a record would cost, and a run instantiates fewer
+    than half of the records it imports (``zero lint`` of one list: issue 40, start-up), so each is
+    made when its class is first instantiated; from then on the class calls its own directly."""
+    made: list[Callable[..., None]] = []
+
     def __init__(self: Any, *args: Any, **kwargs: Any) -> None:
-        init = scope.get("__init__") or _compiled_init(source, scope, defaults)
+        if not made:
+            made.append(_compiled_init(*init_source(all_fields, frozen, post_init)))
+        init = made[0]
         if owner[0].__dict__.get("__init__") is __init__:
             type.__setattr__(owner[0], "__init__", init)
         init(self, *args, **kwargs)
