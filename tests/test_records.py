@@ -197,6 +197,31 @@ def test_a_record_of_zero_takes_its_init_from_the_table_and_behaves_as_compiled(
     assert init.__globals__ is not vars(sys.modules["zero.record_inits"])  # its own scope, not the table's
 
 
+def test_a_record_of_the_second_table_takes_its_init_from_there() -> None:
+    """The records of modules a list's lint does not load are in ``record_inits_rest``, read at the first of them."""
+    from zero.machine.limits import LimitRow
+    from zero.record_inits import INITS
+    from zero.record_inits_rest import INITS as REST
+
+    limits = LimitRow(1, 2, 3, "X", 4, "mm", -1.0, 1.0, 0.0, False, -1.0, 1.0)
+    code = type(limits).__init__.__code__
+    assert code in REST.values() and code not in INITS.values()
+    assert (limits.axis_name, limits.pcs_pos, limits.note) == ("X", 1.0, "")
+
+
+def test_a_lint_of_a_list_reads_the_first_table_only(tmp_path: Path) -> None:
+    code = ("import sys, os; os.environ['ZERO_NO_CACHE'] = '1'; sys.argv = ['zero', 'lint', sys.argv[1]]\n"
+            "import zero.cli.lean as lean\n"
+            "def end(code):\n"
+            "    print('REST' if 'zero.record_inits_rest' in sys.modules else 'FIRST'); raise SystemExit(code)\n"
+            "lean.end = end\nlean.main()\n")
+    target = tmp_path / "axis.lis"
+    target.write_text("kenngr.achs_mode 1\nkenngr.no_such_key 1\nEnde\n", encoding="ascii")
+    out = subprocess.run([sys.executable, "-c", code, str(target)], capture_output=True, text=True, check=False,
+                         cwd=tmp_path)
+    assert out.stdout.strip().endswith("FIRST"), out.stdout + out.stderr
+
+
 def test_a_record_the_table_does_not_hold_is_compiled_with_its_defaults() -> None:
     @record(frozen=True)
     class Unlisted:
@@ -217,9 +242,10 @@ def test_every_ahead_of_time_init_is_the_code_its_text_compiles_to() -> None:
     from types import CodeType
 
     from zero.record_inits import INITS
+    from zero.record_inits_rest import INITS as REST
 
-    assert len(INITS) > 50
-    for source, code in INITS.items():
+    assert len(INITS) > 20 and len(REST) > 20 and not INITS.keys() & REST.keys()
+    for source, code in (INITS | REST).items():
         assert isinstance(code, CodeType)
         ref = next(c for c in compile(source, "<string>", "exec").co_consts if isinstance(c, CodeType))
         assert (code.co_code, code.co_names, code.co_varnames, code.co_argcount, code.co_consts) == (

@@ -268,6 +268,10 @@ def _compiled_init(source: str, scope: dict[str, Any], defaults: tuple[Any, ...]
     for a record that table does not hold (a test's, or a table not yet regenerated), by compiling
     ``source``. Compiling Python text is the costly part (some forty records a run: 5 ms of ``zero lint``)."""
     code = INITS.get(source)
+    if code is None:
+        from zero.record_inits_rest import INITS as rest  # start-up: the records a list's lint does not load
+
+        code = rest.get(source)
     if code is not None:
         made: Callable[..., None] = FunctionType(code, scope, "__init__", defaults or None)
         scope["__init__"] = made
