@@ -38,13 +38,13 @@ import stat
 import sys
 import time
 from collections.abc import Callable, Iterator
-from pathlib import Path
 
 from zero.errors import ZeroError
 from zero.forms import CONFIG_NAMES, NOT_A_REPORT, split_part, xml_form
 
 TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (mypy and ruff read it alike)
 if TYPE_CHECKING:
+    from pathlib import Path  # start-up: pathlib (and urllib.parse, ipaddress) only where a file is written
     from typing import Any, BinaryIO
 
 MAX_FILE_BYTES = 256 * 1024 * 1024
@@ -59,6 +59,30 @@ _UNITS = {"": 1, "B": 1, "K": 1024, "KB": 1000, "KIB": 1024, "M": 1024**2, "MB":
 _SIZE = r"\s*([0-9]+)\s*([A-Za-z]*)\s*"  # compiled at its first use (ZERO_MAX_FILE_SIZE set)
 _O_BINARY = getattr(os, "O_BINARY", 0)
 _STALE_SECONDS = 24 * 3600  # where process IDs cannot be checked (Windows)
+
+
+def path_str(path: str | os.PathLike[str]) -> str:
+    """``str(Path(path))`` without importing pathlib (with urllib.parse and ipaddress, 7% of a
+    lint's start-up): the text of a path as a ``Path`` gives it, which is how zero names a file:
+    ``./a.lis`` → ``a.lis``, ``a//b/`` → ``a/b``, ``a/./b`` → ``a/b``, ``''`` → ``.``; ``..`` is
+    kept (``os.path.normpath`` would take it away with the folder before it), and so is a leading
+    ``//`` (POSIX lets a system give it a meaning of its own; three or more are one). Windows
+    paths have rules of their own (drives, shares, both separators): pathlib's there."""
+    text = os.fspath(path)
+    if os.sep != "/" or os.altsep is not None:  # pragma: no cover - Windows: its paths' own rules
+        from pathlib import Path  # start-up: only on Windows
+
+        return str(Path(text))
+    if not text:
+        return "."
+    root = ""
+    if text[0] == "/":
+        rest = text.lstrip("/")
+        root = "//" if len(text) - len(rest) == 2 else "/"
+        text = rest
+    if "//" not in text and "." not in text and not text.endswith("/"):
+        return root + text or "."  # nothing to drop (the common name of a folder)
+    return root + "/".join(part for part in text.split("/") if part and part != ".") or "."
 
 
 def parse_size(text: str) -> int:
@@ -120,7 +144,7 @@ def describe(mode: int) -> str:
     return "not a regular file"
 
 
-def _open_error(exc: OSError, path: str | Path) -> ZeroError:
+def _open_error(exc: OSError, path: str | os.PathLike[str]) -> ZeroError:
     where = str(path)
     if isinstance(exc, FileNotFoundError):
         if os.path.islink(path):
@@ -135,7 +159,7 @@ def _open_error(exc: OSError, path: str | Path) -> ZeroError:
     return ZeroError(str(exc.strerror or exc), where)
 
 
-def check_regular(path: str | Path) -> None:
+def check_regular(path: str | os.PathLike[str]) -> None:
     """Raise the reason :func:`read_file` would give if ``path`` is no readable regular file,
     without reading it (for paths named on the command line, checked before any work)."""
     try:
@@ -147,7 +171,7 @@ def check_regular(path: str | Path) -> None:
                         "and standard input (-)", str(path))
 
 
-def read_file(path: str | Path, limit: int | None = None) -> bytes:
+def read_file(path: str | os.PathLike[str], limit: int | None = None) -> bytes:
     """The bytes of a regular file; :class:`ZeroError` with a one-line reason otherwise."""
     limit = max_file_bytes() if limit is None else limit
     where = str(path)
@@ -166,7 +190,7 @@ def read_file(path: str | Path, limit: int | None = None) -> bytes:
                             "(ZERO_MAX_FILE_SIZE raises the limit)", where)
         # an in-place rewrite stopped half way is completed (never through a link to another's file)
         if (st.st_nlink > 1 or _foreign(st)) and not (_foreign(st) and through_link(path)) \
-                and recover_journals(Path(path)):
+                and recover_journals(path):
             return read_file(path, limit)
         data = _read_at_most(fd, st.st_size, limit)
         if data is None:  # the file grew while it was read: never more than the limit is held
@@ -236,7 +260,7 @@ def check_shape(data: bytes, where: str) -> None:
             pos = cut + 1
 
 
-def resolve(path: str | Path) -> str:
+def resolve(path: str | os.PathLike[str]) -> str:
     """The one resolution of a path zero reads: the file it names, every symbolic link followed
     (of the file and of each folder on the way), ``..`` taken after the links as the operating
     system does, and a list element's suffix (``export.xml#AchsMds``) taken off first, so that the
@@ -244,7 +268,7 @@ def resolve(path: str | Path) -> str:
     return os.path.realpath(split_part(path)[0])
 
 
-def within(path: str | Path, root: str | Path) -> bool:
+def within(path: str | os.PathLike[str], root: str | os.PathLike[str]) -> bool:
     """Is ``path`` (:func:`resolve`d: links followed, in every form, ``#Element`` suffix included)
     ``root`` or below it? The one containment test: a start-up list or a configuration cannot make
     zero read, and print, any other file (``/proc/self/environ``, ``../../etc/passwd``, a link in the
@@ -253,9 +277,11 @@ def within(path: str | Path, root: str | Path) -> bool:
     return real == top or real.startswith(top.rstrip(os.sep) + os.sep)
 
 
-def nearest_holding(folder: str | Path, names: tuple[str, ...]) -> Path | None:
+def nearest_holding(folder: str | os.PathLike[str], names: tuple[str, ...]) -> Path | None:
     """The nearest of ``folder`` (made absolute) and its ancestors that holds one of ``names``
     (``.git``, a configuration file); ``None`` where none does."""
+    from pathlib import Path  # start-up: only for a machine or a configuration file's folders
+
     base = Path(os.path.abspath(folder))
     for d in (base, *base.parents):
         if any(os.path.lexists(d / name) for name in names):
@@ -276,9 +302,10 @@ def _pid_alive(pid: int) -> bool:
     return True
 
 
-def temp_name(target: Path) -> Path:
-    """The temporary file a write to ``target`` uses: hidden, with this process's ID."""
-    return target.parent / f".{target.name}.zero-{os.getpid()}-{os.urandom(4).hex()}.tmp"
+def temp_name(target: str | os.PathLike[str]) -> str:
+    """The temporary file a write to ``target`` uses: hidden, beside it, with this process's ID."""
+    folder, name = os.path.split(os.fspath(target))
+    return os.path.join(folder, f".{name}.zero-{os.getpid()}-{os.urandom(4).hex()}.tmp")
 
 
 def _stale(target: Path, suffix: str) -> list[Path]:
@@ -324,7 +351,7 @@ def _euid() -> int | None:
     return os.geteuid() if hasattr(os, "geteuid") else None
 
 
-def through_link(path: str | Path) -> bool:
+def through_link(path: str | os.PathLike[str]) -> bool:
     """Is ``path`` reached through a symbolic link (of the file itself or of a folder on the way)?"""
     return os.path.realpath(path) != os.path.normpath(os.path.abspath(path))
 
@@ -403,7 +430,7 @@ def _note(key: str, text: str) -> None:
         sys.stderr.write(text)
 
 
-def recover_journals(target: Path) -> bool:
+def recover_journals(target: str | os.PathLike[str]) -> bool:
     """Complete an in-place rewrite that a killed zero left half done, from its journal, beside the
     file itself (links followed). A journal is applied only when it is proven zero's own for this
     very file and its content: a regular file of zero's user (or root, or the file's owner) with one
@@ -411,6 +438,8 @@ def recover_journals(target: Path) -> bool:
     as the copy leaves it (old, new, or a prefix of the new over the old). A journal proven zero's
     but stale (the file was changed since) is removed unapplied; anything else is left alone, said
     once. ``True`` when something was recovered."""
+    from pathlib import Path  # start-up: only for a file of several links or another owner
+
     real = Path(os.path.realpath(target))
     recovered = False
     for journal in _stale(real, "journal"):
@@ -503,7 +532,7 @@ def _signals_unwind(done: list[bool]) -> Iterator[None]:
             signal.signal(getattr(signal, name), handler)
 
 
-def _fsync_directory(directory: Path) -> None:
+def _fsync_directory(directory: str | os.PathLike[str]) -> None:
     if os.name != "posix":
         return
     with contextlib.suppress(OSError):
@@ -593,11 +622,14 @@ def _signals_held() -> Iterator[None]:
         signal.pthread_sigmask(signal.SIG_SETMASK, old)
 
 
-def write_atomic(path: Path, data: bytes, force: bool = False, inputs: tuple[Path, ...] = ()) -> None:
+def write_atomic(path: str | os.PathLike[str], data: bytes, force: bool = False,
+                 inputs: tuple[str | os.PathLike[str], ...] = ()) -> None:
     """Write ``data`` to ``path`` all at once or not at all (see the module's rules).
 
     Never over an input file; never over an existing file unless ``force``.
     """
+    from pathlib import Path  # start-up: only a command that writes a file
+
     given = Path(path)
     where = str(given)
     target = given
@@ -742,7 +774,7 @@ def _json_form(data: bytes) -> bool:
     return not (sarif or json_schema)
 
 
-def write_disposable(path: Path, data: bytes) -> None:
+def write_disposable(path: str | os.PathLike[str], data: bytes) -> None:
     """Write a file of zero's own that can always be made again (a cache entry): complete in a
     temporary file beside it (this process's ID in its name), then renamed over ``path`` in one
     step, so a reader sees the old file or the new one, never half of one; of two writers racing
@@ -763,12 +795,15 @@ def write_disposable(path: Path, data: bytes) -> None:
         raise
 
 
-def write_report(path: Path, data: bytes, inputs: tuple[Path, ...] = (), force: bool = True) -> None:
+def write_report(path: str | os.PathLike[str], data: bytes, inputs: tuple[str | os.PathLike[str], ...] = (),
+                 force: bool = True) -> None:
     """Write a report (``lint -o``, ``report -o``, ``schema -o``): over a previous report (only with
     ``force`` where the command asks for it), never over a list, a program, a structured form, a
     configuration file, an input, a file with another hard link, or a file whose content reads like
     a list or a list's JSON form, whatever the name, and whether named directly or through a link.
     The one decision of what a report may replace."""
+    from pathlib import Path  # start-up: only a command that writes a report
+
     given = Path(path)
     real = Path(os.path.realpath(given))
     where = str(given)
@@ -793,7 +828,7 @@ def write_report(path: Path, data: bytes, inputs: tuple[Path, ...] = (), force: 
     write_atomic(given, data, force=True, inputs=inputs)
 
 
-def _create(tmp: Path, target: Path, force: bool, where: str) -> None:
+def _create(tmp: str, target: Path, force: bool, where: str) -> None:
     """A new file: the default mode; claimed atomically unless ``force``."""
     umask = os.umask(0)
     os.umask(umask)
@@ -814,7 +849,7 @@ def _create(tmp: Path, target: Path, force: bool, where: str) -> None:
     os.unlink(tmp)
 
 
-def _exclusive(target: Path, where: str, tmp: Path) -> Path:
+def _exclusive(target: Path, where: str, tmp: str) -> Path:
     """Claim ``target`` with O_EXCL where hard links are not available; return it for the rename."""
     try:
         os.close(os.open(target, os.O_WRONLY | os.O_CREAT | os.O_EXCL | _O_BINARY, 0o600))
@@ -823,7 +858,7 @@ def _exclusive(target: Path, where: str, tmp: Path) -> Path:
     return target
 
 
-def _keeps_owner_in_place(tmp: Path, st: os.stat_result) -> bool:
+def _keeps_owner_in_place(tmp: str, st: os.stat_result) -> bool:
     """Give the (still empty) temporary file the mode, owner and group of the existing file; ``True``
     where the file must be rewritten in place instead: it has several hard links, or a rename would
     change its owner (the owner could not be given)."""
@@ -853,17 +888,17 @@ def _journal_for(target: Path, data: bytes) -> bytes:
     return _journal_bytes(now, target.name, old, data)
 
 
-def _rewrite_journaled(tmp: Path, target: Path, data: bytes, done: list[bool]) -> None:
+def _rewrite_journaled(tmp: str, target: Path, data: bytes, done: list[bool]) -> None:
     """Rewrite the file itself (every hard link and the owner stay): first a journal, complete and on
     disk, proving for which file and which old content the new content is meant; then, with Ctrl-C,
     SIGTERM and SIGHUP held, the disk blocks a longer content needs are claimed (a full disk: the
     file is as it was, the journal removed), the copy is made, and the journal removed. SIGKILL or a
     power cut at any point leaves the old file, the new one, or a prefix of the new over the old with
     the journal beside it: the next zero proves the journal and completes the copy."""
-    journal = tmp.with_name(tmp.name[: -len(".tmp")] + ".journal")
+    journal = tmp[: -len(".tmp")] + ".journal"
     with _signals_held():
         os.replace(tmp, journal)
-        _fsync_directory(target.parent if str(target.parent) else Path("."))
+        _fsync_directory(os.path.dirname(tmp) or ".")
         try:  # a full disk fails here, with the file as it was and nothing left to complete later
             _claim_blocks(target, len(data))
         except OSError as exc:
@@ -874,6 +909,6 @@ def _rewrite_journaled(tmp: Path, target: Path, data: bytes, done: list[bool]) -
             _rewrite_in_place(target, data)
         except OSError as exc:
             raise ZeroError(f"not written completely: {exc.strerror or exc}; the next zero that reads or "
-                            f"writes it completes it from {journal.name}", str(target)) from None
+                            f"writes it completes it from {os.path.basename(journal)}", str(target)) from None
         os.unlink(journal)
         done[0] = True

@@ -313,17 +313,17 @@ def test_the_folder_is_bounded(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) 
     for n in range(100):
         assert store.put(f"k{n:03d}", ("value", n))
         os.utime(store.path(f"k{n:03d}"), ns=(n * 10**9, n * 10**9))
-    kept = sorted(p.name for p in store.entries.iterdir())
+    kept = sorted(p.name for p in Path(store.entries).iterdir())
     assert len(kept) <= 40 + 40 // 4  # pruned as it is written: at most a quarter beyond the bound
     assert kept[0] >= "k050" and kept[-1] == "k099"  # the oldest went first
     assert store.get("k099") == ("value", 99)
     for n in range(100, 105):
         store.put(f"k{n:03d}", ("value", n))
     store.prune()
-    assert len(list(store.entries.iterdir())) == 30
+    assert len(list(Path(store.entries).iterdir())) == 30
     monkeypatch.setattr(cache_module, "MAX_BYTES", 200)
     store.prune()
-    assert sum(p.stat().st_size for p in store.entries.iterdir()) <= 150
+    assert sum(p.stat().st_size for p in Path(store.entries).iterdir()) <= 150
 
 
 def test_older_generations_go(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
@@ -462,9 +462,9 @@ def test_the_cache_folder_is_at_the_project_root(tmp_path: Path, monkeypatch: py
     (tmp_path / "zero.toml").write_text("")
     (tmp_path / "sub").mkdir()
     monkeypatch.chdir(tmp_path / "sub")
-    assert cache_folder(Project(load_registry)) == tmp_path / FOLDER
+    assert cache_folder(Project(load_registry)) == str(tmp_path / FOLDER)
     monkeypatch.setenv("ZERO_CACHE_DIR", "elsewhere")
-    assert cache_folder(Project(load_registry)) == tmp_path / "sub" / "elsewhere"
+    assert cache_folder(Project(load_registry)) == str(tmp_path / "sub" / "elsewhere")
 
 
 def test_a_result_of_many_files_keeps_the_line_a_finding_ends_on_too() -> None:

@@ -9,21 +9,22 @@ description once per process and hands the registry down.
 from __future__ import annotations
 
 import io
+import os
 import sys
 from collections.abc import Callable, Iterable, Iterator, Sequence
-from pathlib import Path
 
 from zero.cli import exits
 from zero.diagnostics import Severity
 from zero.engine.commands import Echo, LintRequest, parse_kind, run_lint
 from zero.engine.results import LintResult, Totals, tallied
 from zero.errors import ZeroError
-from zero.files import max_file_bytes, read_stream, write_report
+from zero.files import max_file_bytes, path_str, read_stream, write_report
 from zero.output.formats import FORMATS, OUTPUT_FORMATS, STREAMED_FORMATS, emitter
 from zero.output.text import ProgressBar, printable, render_text, statistics, statistics_json
 
 TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (mypy and ruff read it alike)
 if TYPE_CHECKING:  # start-up: the fleet only for zero diff --fleet
+    from pathlib import Path  # (and pathlib only where a command needs it: zero lint names files by their text)
     from typing import TextIO
 
     from zero.catalog.registry import Registry
@@ -48,6 +49,8 @@ def fleet_diff(golden: str, machines: Sequence[str], output_format: str = "text"
                param_desc: str | None = None) -> int:
     """``zero diff --fleet GOLDEN MACHINE...`` as the lean path parses it (:func:`zero.cli.options.parse_fleet_args`):
     the report on standard output, and its exit code."""
+    from pathlib import Path  # start-up: only with --fleet (whose modules import it)
+
     from zero.engine.fleet import FleetRequest  # start-up: only with --fleet
 
     desc = Path(param_desc) if param_desc else None  # as typer gives it
@@ -57,17 +60,19 @@ def fleet_diff(golden: str, machines: Sequence[str], output_format: str = "text"
 
 
 class RegistryCache:
-    """Parameter description path (``None``: built-in) → its registry, loaded once."""
+    """Parameter description path (``None``: built-in) → its registry, loaded once (a path is known by
+    its text as a ``Path`` prints it: ``./desc.xml`` and ``desc.xml`` share one)."""
 
     def __init__(self) -> None:
-        self._loaded: dict[Path | None, Registry] = {}
+        self._loaded: dict[str | None, Registry] = {}
 
-    def __call__(self, desc: Path | None) -> Registry:
-        registry = self._loaded.get(desc)
+    def __call__(self, desc: str | os.PathLike[str] | None) -> Registry:
+        key = path_str(desc) if desc is not None else None
+        registry = self._loaded.get(key)
         if registry is None:
             from zero.catalog.registry import load_registry  # start-up: a cached run loads no catalogue
 
-            registry = self._loaded[desc] = load_registry(desc)
+            registry = self._loaded[key] = load_registry(key)
         return registry
 
 
@@ -153,7 +158,7 @@ def files_to_check(paths: Sequence[str | Path], config: str | Path | Sequence[st
     if [str(p) for p in paths] in ([], ["-"]):
         return ["-"]
     project = open_project(REGISTRIES, common_of(config, isolated, param_desc))
-    return [str(f) for f in lint_files([Path(p) for p in paths], project, force_exclude)]
+    return lint_files(paths, project, force_exclude)
 
 
 def _noted(results: Iterable[LintResult], err: TextIO) -> Iterator[LintResult]:
@@ -249,8 +254,6 @@ WATCH_INTERVAL = 0.5  # seconds between two looks at the files (--watch)
 
 def _snapshot(paths: Sequence[str | Path]) -> dict[str, tuple[int, int]]:
     """Every file below ``paths`` (hidden folders left out) with its modification time and size."""
-    import os  # start-up: only for --watch
-
     out: dict[str, tuple[int, int]] = {}
 
     def look(name: str) -> None:
@@ -320,7 +323,7 @@ def lint(paths: Sequence[str | Path] = (), output_format: str = "text", output_f
     if watch:
         again = {k: v for k, v in locals().items() if k != "watch"}
         return watch_loop(lambda: lint(**again), paths)
-    config = [*([config] if isinstance(config, (str, Path)) else (config or ())),
+    config = [*([config] if isinstance(config, (str, os.PathLike)) else (config or ())),
               *command_line_config(exclude, extend_exclude, respect_gitignore, kernel)]
     fix = fix or fix_only
     if add_noqa and (fix or show_diff):
@@ -339,7 +342,7 @@ def lint(paths: Sequence[str | Path] = (), output_format: str = "text", output_f
     if not paths and stdin_filename is None and machine is None:
         raise ZeroError("give list files or directories (or - with --stdin-filename)")
     quiet = quiet or silent
-    request = LintRequest([str(p) for p in paths], tuple(select), tuple(ignore), kind, param_desc, jobs,
+    request = LintRequest([path_str(p) for p in paths], tuple(select), tuple(ignore), kind, param_desc, jobs,
                           config, isolated, fix, show_diff, unsafe_fixes, stdin_filename, machine,
                           tuple(extend_select), add_noqa, force_exclude is not False, ignore_noqa,
                           stream=output_file is None and output_format in STREAMED_FORMATS and not show_fixes,
@@ -361,8 +364,8 @@ def lint(paths: Sequence[str | Path] = (), output_format: str = "text", output_f
     if fix_only or show_statistics:  # the counts alone, or nothing: the findings are counted, not shown
         counted = list(tallied(shown, totals))
         if show_statistics and output_file is not None:  # the counts are the report
-            inputs = tuple(Path(r.path) for r in counted if r.path != "-")
-            write_report(Path(output_file), statistics_report(totals, output_format).encode("utf-8"), inputs)
+            inputs = tuple(r.path for r in counted if r.path != "-")
+            write_report(output_file, statistics_report(totals, output_format).encode("utf-8"), inputs)
         elif show_statistics and not silent:
             sys.stdout.write(statistics_report(totals, output_format))
         if show_fixes and not silent:
@@ -376,8 +379,8 @@ def lint(paths: Sequence[str | Path] = (), output_format: str = "text", output_f
         results = list(shown)
         buffer = io.StringIO()
         render_lint(results, output_format, buffer, totals, color=False, summary_stream=summary, fail_on=fail_on)
-        inputs = tuple(Path(r.path) for r in results if r.path != "-")
-        write_report(Path(output_file), buffer.getvalue().encode("utf-8", "surrogateescape"), inputs)
+        inputs = tuple(r.path for r in results if r.path != "-")
+        write_report(output_file, buffer.getvalue().encode("utf-8", "surrogateescape"), inputs)
     else:
         report = io.StringIO() if silent else sys.stderr if run.findings_to_stderr else sys.stdout
         render_lint(shown, output_format, report, totals, color=None if not silent else False,

@@ -52,8 +52,7 @@ import marshal
 import os
 import sys
 import time
-from collections.abc import Callable, Iterable, Iterator
-from pathlib import Path
+from collections.abc import Callable, Iterable, Iterator, Sequence
 
 from zero import __version__
 from zero.diagnostics import Diagnostic, Edit, Fix, Related, Severity, Span
@@ -65,11 +64,13 @@ from zero.lists.model import Document, Excerpt
 from zero.records import fields
 
 TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (mypy and ruff read it alike)
-if TYPE_CHECKING:  # start-up: a plain lint loads no machine model
-    from typing import Any
+if TYPE_CHECKING:  # start-up: a plain lint loads no machine model (nor pathlib: files are named by their text)
+    from typing import Any, TypeAlias
 
     from zero.engine.project import Project
     from zero.machine.model import Machine
+
+    FileName: TypeAlias = str | os.PathLike[str]  # a file as the engine names it (a Path from the library)
 
 FOLDER = ".zero_cache"
 FORMAT = 1  # of an entry; a new one makes every entry of the old one a miss
@@ -126,7 +127,8 @@ def generation() -> str:
         return _generation[0]
     package = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
     parts: list[object] = [FORMAT, __version__, sys.implementation.cache_tag, sys.version, package]
-    if not any(p in ("site-packages", "dist-packages") for p in Path(package).parts):
+    parts_of_package = package.replace(os.altsep, os.sep).split(os.sep) if os.altsep else package.split(os.sep)
+    if not any(p in ("site-packages", "dist-packages") for p in parts_of_package):
         files: list[tuple[str, int, int]] = []
         with contextlib.suppress(OSError):
             _source_files(package, files)
@@ -190,7 +192,7 @@ def fingerprint(value: object) -> str:
 _fingerprints: dict[object, str] = {}
 
 
-def catalogue_id(param_desc: Path | None) -> tuple[str, ...]:
+def catalogue_id(param_desc: FileName | None) -> tuple[str, ...]:
     """The identity of a catalogue: the built-in table (part of zero, so in :func:`generation`),
     or a parameter description by its absolute path and the hash of its content."""
     if param_desc is None:
@@ -199,13 +201,15 @@ def catalogue_id(param_desc: Path | None) -> tuple[str, ...]:
     return ("description", os.path.abspath(param_desc), digest(data).hex())
 
 
-def cache_folder(project: Project) -> Path:
+def cache_folder(project: Project) -> str:
     """``$ZERO_CACHE_DIR``, else ``.zero_cache`` in the folder of the configuration that applies to the
-    current directory (the project's root, as ruff's ``.ruff_cache``), else in the current directory."""
+    current directory (the project's root, as ruff's ``.ruff_cache``), else in the current directory
+    (absolute)."""
     given = os.environ.get("ZERO_CACHE_DIR", "").strip()
     if given:
-        return Path(os.path.abspath(given))
-    return Path(os.path.abspath(project.config(None).root)) / FOLDER
+        return os.path.abspath(given)
+    own = project.config(None).path  # Config.root without pathlib
+    return os.path.join(os.path.abspath(os.path.dirname(own) if own is not None else os.curdir), FOLDER)
 
 
 # ----------------------------------------------------------------------------- the folder
@@ -214,19 +218,19 @@ def cache_folder(project: Project) -> Path:
 class Store:
     """The cache folder: entries by name, each a checksummed :mod:`marshal` payload."""
 
-    def __init__(self, folder: Path) -> None:
-        self.folder = folder
-        self.entries = folder / generation()[:20]
+    def __init__(self, folder: FileName) -> None:
+        self.folder = os.fspath(folder)
+        self.entries = os.path.join(self.folder, generation()[:20])
         self.ready: bool | None = None  # None: not yet made; False: cannot be written
         self.written = 0
 
-    def path(self, key: str) -> Path:
-        return self.entries / key
+    def path(self, key: str) -> str:
+        return os.path.join(self.entries, key)
 
     def get(self, key: str) -> Any:
         """The value stored under ``key``; ``None`` when there is none, or it is torn or garbage."""
         try:
-            with open(self.entries / key, "rb") as f:
+            with open(os.path.join(self.entries, key), "rb") as f:
                 data = f.read()
         except OSError:
             return None
@@ -249,7 +253,7 @@ class Store:
         if self.written % max(1, MAX_ENTRIES // 4) == 0 and (self.written or self._due()):
             self.prune()
         try:
-            write_disposable(self.entries / key, _MAGIC + digest(payload) + payload)
+            write_disposable(os.path.join(self.entries, key), _MAGIC + digest(payload) + payload)
         except OSError:
             return False
         self.written += 1
@@ -258,12 +262,12 @@ class Store:
     def _ready(self) -> bool:
         if self.ready is None:
             try:
-                if not self.entries.is_dir():  # a new zero (or an edited one): the oldest others' go
-                    self.entries.mkdir(parents=True, exist_ok=True)
+                if not os.path.isdir(self.entries):  # a new zero (or an edited one): the oldest others' go
+                    os.makedirs(self.entries, exist_ok=True)
                     self._drop_generations()
                 for name, text in ((".gitignore", _IGNORE), ("CACHEDIR.TAG", _TAG)):
-                    if not os.path.lexists(self.folder / name):
-                        write_disposable(self.folder / name, text)
+                    if not os.path.lexists(os.path.join(self.folder, name)):
+                        write_disposable(os.path.join(self.folder, name), text)
                 self.ready = os.access(self.entries, os.W_OK)
             except OSError:
                 self.ready = False
@@ -272,7 +276,7 @@ class Store:
     def _due(self) -> bool:
         """Is the folder's size to be checked (at most every :data:`PRUNE_EVERY` seconds, so that a run
         that keeps one entry does not list them all)? Marks it checked."""
-        marker = self.folder / ".pruned"
+        marker = os.path.join(self.folder, ".pruned")
         try:
             if time.time() - os.stat(marker).st_mtime < PRUNE_EVERY:
                 return False
@@ -289,7 +293,7 @@ class Store:
 
         with contextlib.suppress(OSError):
             others = sorted((e.stat(follow_symlinks=False).st_mtime_ns, e.path) for e in os.scandir(self.folder)
-                            if e.is_dir(follow_symlinks=False) and e.path != str(self.entries))
+                            if e.is_dir(follow_symlinks=False) and e.path != self.entries)
             for _, path in others[:max(0, len(others) - (GENERATIONS - 1))]:
                 shutil.rmtree(path, ignore_errors=True)
 
@@ -328,7 +332,7 @@ class Store:
                 removed += 1
             count, total = count - 1, total - size
         for g in generations:
-            if g != str(self.entries):
+            if g != self.entries:
                 with contextlib.suppress(OSError):
                     os.rmdir(g)  # an older zero's folder, once empty
         return removed
@@ -351,7 +355,7 @@ Dep = tuple["Any", ...]  # (a string: typing is not imported at run time)
 class Checker:
     """Checks stored dependencies against the file system, each path once per run."""
 
-    def __init__(self, encoding: Callable[[Path], str | None]) -> None:
+    def __init__(self, encoding: Callable[[str], str | None]) -> None:
         self.encoding = encoding
         self._stat: dict[str, os.stat_result | None] = {}
         self._codecs: dict[str, str | None] = {}
@@ -365,7 +369,7 @@ class Checker:
         return self._stat[path]
 
     def _codec(self, path: str) -> str | None:
-        codec = self._codecs[path] = self.encoding(Path(path))
+        codec = self._codecs[path] = self.encoding(path)
         return codec
 
     def holds(self, deps: Iterable[Dep]) -> bool:
@@ -394,7 +398,7 @@ def settled(deps: Iterable[Dep], started: int) -> bool:
     return all(dep[0] == "e" or dep[3 if dep[0] == "f" else 2] < started - RACY_NS for dep in deps)
 
 
-def machine_deps(machine: Machine, encoding: Callable[[Path], str | None]) -> tuple[Dep, ...]:
+def machine_deps(machine: Machine, encoding: Callable[[str], str | None]) -> tuple[Dep, ...]:
     """What a machine depends on: every list it read or looked for (the start-up list, each list it
     names, found or not; for a start-up list that is no list file, every file of its folder), the
     folders that hold them (a file added or removed), the places its working directory is looked
@@ -415,19 +419,20 @@ def machine_deps(machine: Machine, encoding: Callable[[Path], str | None]) -> tu
         folders[os.path.dirname(f)] = None
         try:
             st = os.stat(f)
-            out.append(("f", f, st.st_size, st.st_mtime_ns, encoding(Path(f))))
+            out.append(("f", f, st.st_size, st.st_mtime_ns, encoding(f)))
         except OSError:
-            out.append(("f", f, -1, -1, encoding(Path(f))))
+            out.append(("f", f, -1, -1, encoding(f)))
     for d in folders:
         try:
             out.append(("d", d, os.stat(d).st_mtime_ns))
         except OSError:
             out.append(("e", d, False))
-    base = Path(os.path.dirname(os.path.abspath(startup)))
     raws = [r for r in (n.raw.strip().strip('"').replace("\\", "/") for n in machine.named)
             if r and not controller_absolute(r)]
-    for n, above in enumerate((base, *base.parents)):
-        d = str(above)
+    above = [os.path.dirname(os.path.abspath(startup))]  # the start-up list's folder and every one above it
+    while os.path.dirname(above[-1]) != above[-1]:
+        above.append(os.path.dirname(above[-1]))
+    for n, d in enumerate(above):
         if n <= MAX_ANCESTORS + 1:
             out.extend(("e", os.path.join(d, r), os.path.exists(os.path.join(d, r))) for r in raws)
         out.extend(("e", os.path.join(d, m), os.path.exists(os.path.join(d, m))) for m in (".git", *CONFIG_NAMES))
@@ -518,8 +523,8 @@ class LintCache:
         self.started = time.time_ns()  # before anything is read
         self.cwd = os.getcwd()
         # file → (entry name, its machine's name, its stat before it was read, the hash of its content)
-        self._keys: dict[Path, tuple[str, str | None, tuple[int, int, int, int], str]] = {}
-        self._catalogues: dict[Path | None, tuple[str, ...]] = {}
+        self._keys: dict[FileName, tuple[str, str | None, tuple[int, int, int, int], str]] = {}
+        self._catalogues: dict[FileName | None, tuple[str, ...]] = {}
         self._fingerprints: dict[int, tuple[object, str]] = {}
         self._holds: dict[str, bool] = {}  # a machine's name → do its files hold
         self._deps: dict[str, tuple[Dep, ...] | None] = {}  # a machine's name → its files (None: not settled)
@@ -530,7 +535,7 @@ class LintCache:
         self.hits = 0
         self.on = _records_known()
 
-    def _options(self, path: Path, options: LintOptions | None = None) -> str:
+    def _options(self, path: FileName, options: LintOptions | None = None) -> str:
         """The fingerprint of a file's options (``options``: as its settings give them), found once per
         options object (the files of a folder share one; the object is kept with it, so its identity is
         not another's)."""
@@ -541,13 +546,13 @@ class LintCache:
             hit = self._fingerprints[id(options)] = (options, fingerprint(options))
         return hit[1]
 
-    def _catalogue(self, desc: Path | None) -> tuple[str, ...]:
+    def _catalogue(self, desc: FileName | None) -> tuple[str, ...]:
         hit = self._catalogues.get(desc)
         if hit is None:
             hit = self._catalogues[desc] = catalogue_id(desc)
         return hit
 
-    def _machine_part(self, path: Path) -> tuple[object, ...] | None:
+    def _machine_part(self, path: FileName) -> tuple[object, ...] | None:
         """What of a machine decides a list's findings (its files are checked from the entry)."""
         startup = self.project.startup(path)
         if startup is None:
@@ -558,7 +563,7 @@ class LintCache:
                 _canonical(cfg.machine), _canonical(cfg.machine_lists), _canonical(cfg.machine_workdir),
                 _canonical(cfg.machine_roots))
 
-    def key(self, path: Path, data: bytes | str) -> tuple[str, str | None]:
+    def key(self, path: FileName, data: bytes | str) -> tuple[str, str | None]:
         """The entry name of a file as read now (``data``: its bytes, or the hex hash of them), and
         that of its machine (``None``: it has none). :class:`TypeError` where the options cannot be
         fingerprinted, :class:`ZeroError` where the catalogue cannot be read."""
@@ -574,7 +579,7 @@ class LintCache:
         # fingerprint(parts), without walking them (`test_the_entry_name_is_the_fingerprint_of_its_parts`)
         return digest(repr(parts).encode("utf-8", "surrogateescape")).hex(), machine_key
 
-    def _open_index(self, files: list[Path]) -> None:
+    def _open_index(self, files: Sequence[FileName]) -> None:
         self._index_key = "run-" + fingerprint((generation(), "index", self.cwd, tuple(str(f) for f in files)))
         value = self.disk.get(self._index_key)
         if type(value) is dict:
@@ -588,9 +593,9 @@ class LintCache:
             return None
         return rec
 
-    def lookup(self, files: Iterable[Path]) -> dict[Path, LintResult]:
+    def lookup(self, files: Iterable[FileName]) -> dict[FileName, LintResult]:
         """The files whose results are kept and still hold, with them."""
-        out: dict[Path, LintResult] = {}
+        out: dict[FileName, LintResult] = {}
         if not self.on:
             return out
         files = list(files)
@@ -637,7 +642,7 @@ class LintCache:
         if before is None or before[5] != record[5] or before[6] is not record[6]:
             self._index_same = False
 
-    def store(self, path: Path, result: LintResult) -> None:
+    def store(self, path: FileName, result: LintResult) -> None:
         """Keep a file's result (the one reported: its machine's findings included), unless it is one
         never kept, or the file (or a list of its machine) changed while the run read it or too
         recently to tell; a failure to keep it is silent (the next run lints the file again)."""
@@ -678,7 +683,7 @@ class LintCache:
         yield from results
         self.finish()
 
-    def _machine_deps(self, path: Path, machine_key: str) -> tuple[Dep, ...] | None:
+    def _machine_deps(self, path: FileName, machine_key: str) -> tuple[Dep, ...] | None:
         if machine_key not in self._deps:
             try:
                 machine = self.project.machine(path)
@@ -688,7 +693,7 @@ class LintCache:
             self._deps[machine_key] = deps if deps is not None and settled(deps, self.started) else None
         return self._deps[machine_key]
 
-    def merged(self, files: list[Path], hits: dict[Path, LintResult],
+    def merged(self, files: Sequence[FileName], hits: dict[FileName, LintResult],
                made: Iterator[LintResult]) -> Iterator[LintResult]:
         """The results in the order of ``files``: kept ones from ``hits``, the others from ``made``
         (made in the order of the files not in ``hits``)."""
@@ -716,13 +721,13 @@ class FleetCache:
         self.checker = Checker(project.encoding)
         self.started = time.time_ns()  # before anything is read
         self.cwd = os.getcwd()
-        start = Path(os.path.abspath(golden))
+        start = os.path.abspath(golden)
         self.common = (generation(), self.cwd, catalogue_id(project.param_desc(start)), fingerprint(options),
                        project.cli.kind)
         self.golden_key = fingerprint(("golden", str(start), golden, self._layout(start), *self.common))
         self.golden_id: str | None = None  # the fingerprint of the golden machine's files, once known
 
-    def _layout(self, startup: Path) -> object:
+    def _layout(self, startup: FileName) -> object:
         cfg = self.project.config(startup)
         return _canonical((cfg.machine, cfg.machine_lists, cfg.machine_workdir, cfg.machine_roots))
 
@@ -750,7 +755,7 @@ class FleetCache:
             self.disk.put(self.golden_key, (deps, tuple(scopes), tuple(defaults)))
 
     def _key(self, startup: str) -> str:
-        start = Path(os.path.abspath(startup))
+        start = os.path.abspath(startup)
         return fingerprint(("machine", self.golden_id, str(start), startup, self._layout(start), *self.common))
 
     def machine(self, startup: str) -> Any:

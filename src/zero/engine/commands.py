@@ -9,9 +9,9 @@ works (a patch, "3 fixes applied") goes through an :class:`Echo`.
 
 from __future__ import annotations
 
+import os
 from collections import Counter
 from collections.abc import Callable, Iterable, Sequence
-from pathlib import Path
 
 from zero.diagnostics import Diagnostic, Severity
 from zero.engine.config import one_resolution
@@ -20,13 +20,17 @@ from zero.engine.project import Project, Registries, common_of, open_project
 from zero.engine.results import LintOptions, LintResult, is_unreadable
 from zero.engine.selection import known_code, rule_table
 from zero.errors import ZeroError
-from zero.files import read_file, switched_on, write_atomic
+from zero.files import path_str, read_file, switched_on, write_atomic
 from zero.forms import PROJECT_ROOTS, TWINCAT_ROOT, is_list, is_program, is_update, is_xml, walked_names
 from zero.records import field, record, replace
 
 TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (mypy and ruff read it alike)
 if TYPE_CHECKING:
+    from typing import TypeAlias
+
     from zero.catalog.registry import Registry
+
+    FileName: TypeAlias = str | os.PathLike[str]  # a file as the engine names it (a Path from the library)
 
 Progress = Callable[[int, int], None]
 
@@ -77,15 +81,15 @@ class LintRequest:
     select: Sequence[str] = ()
     ignore: Sequence[str] = ()
     kind: str | None = None
-    param_desc: str | Path | None = None
+    param_desc: FileName | None = None
     jobs: int | None = None
-    config: str | Path | Sequence[str] | None = None
+    config: FileName | Sequence[str] | None = None
     isolated: bool = False
     fix: bool = False
     show_diff: bool = False
     unsafe_fixes: bool = False
     stdin_filename: str | None = None
-    machine: str | Path | None = None
+    machine: FileName | None = None
     extend_select: Sequence[str] = ()
     add_noqa: bool = False
     force_exclude: bool = True  # `exclude` drops files named on the command line too (--no-force-exclude: not)
@@ -111,8 +115,8 @@ class LintRun:
     fixed: list[tuple[str, dict[str, int]]] = field(default_factory=list)  # per file written: fixes by code
 
 
-def lint_files(named: Sequence[Path], project: Project, force_exclude: bool = True,
-               skipped: dict[str, int] | None = None) -> list[Path]:
+def lint_files(named: Sequence[FileName], project: Project, force_exclude: bool = True,
+               skipped: dict[str, int] | None = None) -> list[str]:
     """The files ``zero lint`` checks (``--show-files`` lists them): those named, and the list files
     below the directories, as each file's or directory's configuration includes and excludes them
     (a file named is excluded too unless ``force_exclude`` is false); ``skipped`` counts what a
@@ -139,9 +143,9 @@ def _run_lint(request: LintRequest, registries: Registries, echo: Echo,
         return LintRun(_lint_machine(request, project))
     if request.reads_stdin:
         return _lint_stdin(request, project, echo, read_stdin())
-    named = [Path(p) for p in request.paths]
+    named = [path_str(p) for p in request.paths]  # files named as a Path prints them (./a.lis: a.lis)
     files = lint_files(named, project, request.force_exclude)
-    if not files and any(p.is_dir() for p in named):
+    if not files and any(os.path.isdir(p) for p in named):
         skipped: dict[str, int] = {}  # counted only here: walking an excluded folder costs a run nothing else
         lint_files(named, project, request.force_exclude, skipped)
         raise ZeroError(f"no list files or NC programs found (looked for {walked_names()}, XML files only where "
@@ -153,14 +157,14 @@ def _run_lint(request: LintRequest, registries: Registries, echo: Echo,
         cache = open_lint_cache(project)
     kept = cache.lookup(files) if cache is not None else {}
     todo = [f for f in files if f not in kept] if kept else files
-    groups: dict[Path | None, list[Path]] = {}
+    groups: dict[FileName | None, list[str]] = {}
     for f in todo:  # files sharing a parameter description share a registry
         groups.setdefault(project.settings(f).param_desc, []).append(f)
     bar = progress(len(files)) if progress is not None else None
 
     across: dict[int, dict[str, list[Diagnostic]]] = {}  # the X findings of each machine, found once
 
-    def finish(f: Path, r: LintResult) -> LintResult:
+    def finish(f: str, r: LintResult) -> LintResult:
         r = _with_machine(f, r, project, found=across)
         if cache is not None:
             cache.store(f, r)
@@ -176,7 +180,7 @@ def _run_lint(request: LintRequest, registries: Registries, echo: Echo,
         if cache is None:
             return LintRun(made)
         return LintRun(cache.finishing(cache.merged(files, kept, made) if kept else made))
-    by_file: dict[Path, LintResult] = {}
+    by_file: dict[str, LintResult] = {}
     done = 0
     for desc, members in groups.items():
         from zero.engine.parallel import lint_many  # start-up: not for a cached run
@@ -217,7 +221,7 @@ def _lint_machine(request: LintRequest, project: Project) -> list[LintResult]:
     machine = project.machine(required=True)
     assert machine is not None and project.machine_given is not None
     results = lint_machine(machine, project.settings(project.machine_given).registry, project.options)
-    for f in collect_files([Path(p) for p in request.paths], exclude=project.excluded,
+    for f in collect_files(request.paths, exclude=project.excluded,
                              respect_gitignore=project.respects_gitignore):
         settings = project.settings(f)
         if is_program(f):
@@ -236,7 +240,7 @@ def _lint_machine(request: LintRequest, project: Project) -> list[LintResult]:
     return results
 
 
-def _with_machine(path: Path, result: LintResult, project: Project, data: bytes | None = None,
+def _with_machine(path: str, result: LintResult, project: Project, data: bytes | None = None,
                   found: dict[int, dict[str, list[Diagnostic]]] | None = None) -> LintResult:
     """A file of a project whose configuration names its machine, checked against it: an NC program
     (N003/N004), and a list the machine reads as ``zero lint --machine`` checks it (its kind, the X
@@ -282,11 +286,11 @@ def _lint_stdin(request: LintRequest, project: Project, echo: Echo, data: bytes)
 
     name = request.stdin_filename or "-"
     passthrough = request.fix and not request.show_diff
-    if name != "-" and project.excluded(Path(name)):
+    if name != "-" and project.excluded(path_str(name)):
         if passthrough:
             echo.out_bytes(data)
         return LintRun(report=False)
-    settings = project.settings(Path(name))
+    settings = project.settings(path_str(name))
     options, registry = settings.options, settings.registry
     if (request.fix or request.show_diff) and is_list(name):
         from zero.engine.fixes import fix_bytes, unified_diff  # start-up: only with --fix/--diff
@@ -300,13 +304,13 @@ def _lint_stdin(request: LintRequest, project: Project, echo: Echo, data: bytes)
         echo.out_bytes(fixed.fixed)
         return LintRun([fixed.result], findings_to_stderr=True, changed=int(fixed.fixed != data))
     result = lint_data(data, name, registry, options)
-    result = _with_machine(Path(name), result, project, data)
+    result = _with_machine(path_str(name), result, project, data)
     if passthrough:
         echo.out_bytes(data)  # nothing to fix in an NC program or a structured file
     return LintRun([result], findings_to_stderr=request.fix or request.show_diff)
 
 
-def _fix_one(path: Path, result: LintResult, options: LintOptions, registry: Registry, request: LintRequest,
+def _fix_one(path: str, result: LintResult, options: LintOptions, registry: Registry, request: LintRequest,
              echo: Echo, run: LintRun) -> LintResult:
     """Fix one list file: write it (``--fix``) or only show the patch (``--diff``, which never
     writes); return the findings that are left (with ``--diff``, the findings as they are)."""
@@ -329,7 +333,7 @@ def _fix_one(path: Path, result: LintResult, options: LintOptions, registry: Reg
     return fixed.result
 
 
-def _add_noqa(path: Path, result: LintResult, options: LintOptions, registry: Registry, echo: Echo,
+def _add_noqa(path: str, result: LintResult, options: LintOptions, registry: Registry, echo: Echo,
               run: LintRun) -> LintResult:
     """Record a list's findings as ``noqa`` directives; return what is still reported."""
     if not is_list(str(path)) or is_unreadable(result) or not result.diagnostics:
@@ -351,7 +355,7 @@ def _add_noqa(path: Path, result: LintResult, options: LintOptions, registry: Re
     return lint_bytes(baseline.data, registry, str(path), options)
 
 
-def _add_noqa_xml(path: Path, data: bytes, result: LintResult, options: LintOptions, registry: Registry,
+def _add_noqa_xml(path: str, data: bytes, result: LintResult, options: LintOptions, registry: Registry,
                   echo: Echo, run: LintRun) -> LintResult:
     """``--add-noqa`` on XML: the lists of a TwinCAT export get their directives inside their CDATA
     sections (every other byte kept); an XML list has no list comments to hold them and is left as it is."""

@@ -19,7 +19,6 @@ import functools
 import os
 import re
 from collections.abc import Callable, Iterator
-from pathlib import Path
 
 from zero.diagnostics import Severity
 from zero.engine.results import LintOptions
@@ -31,17 +30,23 @@ from zero.records import field, record, replace
 
 TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (mypy and ruff read it alike)
 if TYPE_CHECKING:
-    from typing import Any
+    from pathlib import Path  # start-up: pathlib only where a configuration file is read
+    from typing import Any, TypeAlias
+
+    FileName: TypeAlias = str | os.PathLike[str]  # a file as the engine names it (a Path from the library)
 
 
 MAX_CONFIG_BYTES = 1 << 20  # a configuration larger than 1 MiB is no configuration
 MAX_EXTEND_DEPTH = 8  # `extend` chains longer than this are a loop or a mistake
 
 
-def _resolved(file: Path) -> Path:
+def _resolved(file: FileName) -> Path:
     """The absolute path of a file under its own name: its directory resolved, the name kept (a
     link named `m.lis` is matched as `m.lis`, whatever it points to)."""
-    return file.parent.resolve() / file.name
+    from pathlib import Path  # start-up: only on Windows (Config.relative)
+
+    path = Path(file)
+    return path.parent.resolve() / path.name
 
 
 # While a command runs (:func:`one_resolution`): a folder as named → the folder resolved, so that
@@ -75,15 +80,16 @@ def _cwd() -> str:
     return hit
 
 
-def _resolved_folder(folder: str | Path) -> str:
-    """``str(Path(folder).resolve())``, once per folder within :func:`one_resolution`."""
+def _resolved_folder(folder: FileName) -> str:
+    """``str(Path(folder).resolve())`` (``os.path.realpath``: absolute, links followed, normalised as a
+    ``Path`` prints it), once per folder within :func:`one_resolution`."""
     name = os.fspath(folder)
     if not _RESOLVED:
-        return str(Path(name).resolve())
+        return os.path.realpath(name)
     memo = _RESOLVED[-1]
     hit = memo.get(name)
     if hit is None:
-        hit = memo[name] = str(Path(name).resolve())
+        hit = memo[name] = os.path.realpath(name)
     return hit
 
 
@@ -134,9 +140,11 @@ class Config:
 
     @property
     def root(self) -> Path:
+        from pathlib import Path  # start-up: not on the lint path (its files ask relative())
+
         return self.path.parent if self.path is not None else Path.cwd()
 
-    def relative(self, file: Path) -> str | None:
+    def relative(self, file: FileName) -> str | None:
         if os.sep != "/" or os.altsep is not None:  # pragma: no cover - Windows: its paths' own rules
             try:
                 return _resolved(file).relative_to(self.root.resolve()).as_posix()
@@ -158,13 +166,13 @@ class Config:
             return None
         return rel + "/" + name if name else rel
 
-    def _matches(self, globs: tuple[str, ...], file: Path) -> bool:
+    def _matches(self, globs: tuple[str, ...], file: FileName) -> bool:
         """gitignore's meaning: a pattern with a `/` is anchored at the configuration's
         directory, one without matches a name at any depth; `dir/` matches what is below it."""
         if not globs:
             return False
         rel = self.relative(file)
-        name = rel if rel is not None else file.name
+        name = rel if rel is not None else os.path.basename(os.fspath(file))
         suffixes = _suffixes(globs)
         if suffixes is not None and "\n" not in name and not name.startswith("/"):
             return any(part.endswith(suffixes) for part in name.split("/"))
@@ -176,47 +184,47 @@ class Config:
         """Does this file decide ``key`` (set here, or nothing inherited)?"""
         return key in self.given or self.parent is None
 
-    def excluded(self, file: Path) -> bool:
+    def excluded(self, file: FileName) -> bool:
         """``exclude`` (this file's, else the inherited one's), or any ``extend-exclude`` of the chain."""
         return self._excluded(file) or self._extend_excluded(file)
 
-    def _excluded(self, file: Path) -> bool:
+    def _excluded(self, file: FileName) -> bool:
         if not self._own("exclude") and self.parent is not None:
             return self.parent._excluded(file)
         return bool(self.exclude) and self._matches(self.exclude, file)
 
-    def _extend_excluded(self, file: Path) -> bool:
+    def _extend_excluded(self, file: FileName) -> bool:
         return (bool(self.extend_exclude) and self._matches(self.extend_exclude, file)) or (
             self.parent is not None and self.parent._extend_excluded(file))
 
-    def included(self, file: Path) -> bool:
+    def included(self, file: FileName) -> bool:
         if not self._own("include") and self.parent is not None:
             return self.parent.included(file)
         return self._matches(self.include, file)
 
-    def encoding_for(self, file: Path) -> str | None:
+    def encoding_for(self, file: FileName) -> str | None:
         """The codec the configuration declares for a list (the first pattern that matches), else
         ``None``: the list's encoding is detected."""
         if not self._own("encoding") and self.parent is not None:
             return self.parent.encoding_for(file)
         return next((codec for glob, codec in self.encoding if self._matches((glob,), file)), None)
 
-    def kind_for(self, file: Path) -> str | None:
+    def kind_for(self, file: FileName) -> str | None:
         if not self._own("kind") and self.parent is not None:
             return self.parent.kind_for(file)
         return next((k for glob, k in self.kind if self._matches((glob,), file)), None)
 
-    def ignored_for(self, file: Path) -> tuple[str, ...]:
+    def ignored_for(self, file: FileName) -> tuple[str, ...]:
         """The codes the per-file ignores drop for one file (``per-file-ignores``, this file's or the
         inherited one's, and every ``extend-per-file-ignores`` of the chain)."""
         return (*self._ignored(file), *self._extended_ignores(file))
 
-    def _ignored(self, file: Path) -> list[str]:
+    def _ignored(self, file: FileName) -> list[str]:
         if not self._own("per-file-ignores") and self.parent is not None:
             return self.parent._ignored(file)
         return [c for glob, codes in self.per_file_ignores if self._matches((glob,), file) for c in codes]
 
-    def _extended_ignores(self, file: Path) -> list[str]:
+    def _extended_ignores(self, file: FileName) -> list[str]:
         out = [c for glob, codes in self.extend_per_file_ignores if self._matches((glob,), file) for c in codes]
         return out + (self.parent._extended_ignores(file) if self.parent is not None else [])
 
@@ -227,7 +235,7 @@ class Config:
         below = self.parent.layers if self.parent is not None else ()
         return (*below, (self.select, self.extend_select, self.ignore))
 
-    def options_for(self, file: Path, cli: LintOptions) -> LintOptions:
+    def options_for(self, file: FileName, cli: LintOptions) -> LintOptions:
         """The lint options for one file: the command line as the last layer over this configuration
         (and the one it extends), as ruff resolves them; the file's per-file ignores drop what they
         match whatever selected it."""
@@ -272,13 +280,15 @@ class Config:
 _TOML_AT = r"\s*\(at line (\d+), column (\d+)\)\s*$"  # compiled at its first use: a file tomllib refuses
 
 
-def parse_config(path: Path, text: str | None = None, _chain: tuple[Path, ...] = (),
+def parse_config(file: FileName, text: str | None = None, _chain: tuple[Path, ...] = (),
                  over: Config | None = None) -> Config | None:
     """Read one configuration file; ``None`` for a pyproject.toml without ``[tool.zero]``. With
     ``extend = "other.toml"`` the other file is read first and this one is laid over it; ``over``
     lays ``text`` over a configuration already read (``--config KEY=VALUE``)."""
     import tomllib  # start-up: only when a configuration file exists
+    from pathlib import Path  # start-up: as above (a configuration names its file as a Path)
 
+    path = Path(file)
     if text is None:
         try:
             # a regular file only (a FIFO or device is refused), and no larger than a configuration is
@@ -339,6 +349,8 @@ def _extended(cfg: Config, value: Any, path: Path, chain: tuple[Path, ...],
               fail: Callable[..., ZeroError]) -> Config:
     """``extend = "../zero.toml"``: the inherited configuration under ``cfg`` (its settings where this
     file sets none; its rule selection a layer below this file's), as ruff's ``extend``."""
+    from pathlib import Path  # start-up: only where a configuration file is read
+
     if not isinstance(value, str) or not value:
         raise fail("extend", "expected the path of another configuration file (zero.toml or pyproject.toml)")
     target = Path(os.path.expanduser(os.path.expandvars(value)))
@@ -368,7 +380,7 @@ def inline_config(text: str, over: Config) -> Config:
     and paths relative to the current directory where nothing else applies."""
     if text.split("=", 1)[0].strip().strip("\"'") in ("extend", "tool.zero.extend"):
         raise ZeroError(f"--config {text!r}: `extend` names a file; use --config FILE")
-    cfg = parse_config(Path("--config"), text, over=over)
+    cfg = parse_config("--config", text, over=over)
     assert cfg is not None  # only a pyproject.toml may hold no [tool.zero]
     return cfg
 
@@ -381,7 +393,8 @@ def is_inline(value: str) -> bool:
 class ConfigFinder:
     """Finds (and caches) the configuration that applies to each file."""
 
-    def __init__(self, explicit: Path | None = None, isolated: bool = False, overrides: tuple[str, ...] = ()) -> None:
+    def __init__(self, explicit: FileName | None = None, isolated: bool = False,
+                 overrides: tuple[str, ...] = ()) -> None:
         self.isolated = isolated
         self.overrides = overrides  # `--config KEY=VALUE`, in order: over whatever configuration applies
         self._overlaid: dict[int, tuple[Config, Config]] = {}
@@ -391,7 +404,7 @@ class ConfigFinder:
             if cfg is None:
                 raise ZeroError("has no [tool.zero] table", str(explicit))
             self.explicit = cfg
-        self._by_dir: dict[Path, Config] = {}
+        self._by_dir: dict[str, Config] = {}  # a folder resolved → the configuration that applies in it
         self._by_name: dict[str, Config] = {}  # the absolute directory → its configuration
         self._by_path: dict[tuple[object, ...], Config] = {}  # a path's text (and the directory if relative)
         self._default = Config()
@@ -410,7 +423,7 @@ class ConfigFinder:
             hit = self._overlaid[id(cfg)] = (cfg, out)  # the original kept: its id stays unique
         return hit[1]
 
-    def for_path(self, path: Path, directory: bool | None = None) -> Config:
+    def for_path(self, path: FileName, directory: bool | None = None) -> Config:
         """The configuration of a file (found from its directory up) or of a directory (found from
         the directory itself up). ``directory`` says which ``path`` is; ``None`` asks the file system.
         Cached by the absolute directory the search starts from (links not resolved, which costs
@@ -421,7 +434,7 @@ class ConfigFinder:
             return self._overlay(self.explicit)
         name = os.fspath(path)  # a Path's text is made once; hashing the text is cheaper than the Path
         if directory is None:
-            directory = path.is_dir()
+            directory = os.path.isdir(name)
         given = (name, directory) if os.path.isabs(name) else (name, directory, _cwd())
         hit = self._by_path.get(given)  # the files of a run are asked about several times each
         if hit is not None:
@@ -429,16 +442,17 @@ class ConfigFinder:
         key = os.path.abspath(name if directory else os.path.dirname(name) or ".")
         hit = self._by_name.get(key)
         if hit is None:
-            start = Path(_resolved_folder(path if directory else path.parent))
+            start = _resolved_folder(name if directory else os.path.dirname(name) or ".")
             hit = self._by_name[key] = self._overlay(self._lookup(start))
         if len(self._by_path) > 65536:
             self._by_path.clear()
         self._by_path[given] = hit
         return hit
 
-    def _lookup(self, start: Path) -> Config:
-        walked: list[Path] = []
-        d: Path | None = start
+    def _lookup(self, start: str) -> Config:
+        """The configuration nearest ``start`` (a folder resolved: absolute, normalised), from it up."""
+        walked: list[str] = []
+        d: str | None = start
         found = self._default
         while d is not None:
             hit = self._by_dir.get(d)
@@ -446,12 +460,13 @@ class ConfigFinder:
                 found = hit
                 break
             walked.append(d)
-            cfg = next((c for c in (parse_config(d / n) for n in CONFIG_NAMES if os.path.lexists(d / n))
-                        if c is not None), None)
+            cfg = next((c for c in (parse_config(os.path.join(d, n)) for n in CONFIG_NAMES
+                                    if os.path.lexists(os.path.join(d, n))) if c is not None), None)
             if cfg is not None:
                 found = cfg
                 break
-            d = d.parent if d.parent != d else None
+            parent = os.path.dirname(d)
+            d = parent if parent != d else None
         for w in walked:
             self._by_dir[w] = found
         return found

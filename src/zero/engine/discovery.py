@@ -7,14 +7,19 @@ from __future__ import annotations
 import os
 import sys
 from collections.abc import Callable, Iterable
-from pathlib import Path
 
 from zero.errors import ZeroError
-from zero.files import check_regular, read_file
+from zero.files import check_regular, path_str, read_file
 from zero.forms import WALKED_SUFFIXES, is_project, is_xml_name, xml_form
 
+TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (mypy and ruff read it alike)
+if TYPE_CHECKING:
+    from typing import TypeAlias
 
-def git_visible(directory: Path, note: Callable[[str], None] | None = None) -> set[str] | None:
+    FileName: TypeAlias = str | os.PathLike[str]
+
+
+def git_visible(directory: FileName, note: Callable[[str], None] | None = None) -> set[str] | None:
     """Files below ``directory`` that git does not ignore, as paths relative to it
     (``os.sep``-separated); ``None`` outside a git work tree, without git, or where git gives no
     answer (:func:`zero.engine.git.visible_files`: then ``note`` is told why, in one line: the walk
@@ -34,11 +39,11 @@ def _stderr(text: str) -> None:
 _WALKED = WALKED_SUFFIXES
 
 
-def holds_lists(path: Path) -> bool:
+def holds_lists(path: FileName) -> bool:
     """Does a walked file hold parameter lists? Always, but for XML, which is a list only by its
     content: a kernel XML list or a TwinCAT export (every other XML file of a project is skipped in
     silence). An XML file that cannot be read is kept, so that the lint reports it."""
-    if is_project(path.name):  # a TwinCAT project: one that holds a `<Data>` block
+    if is_project(os.path.basename(path)):  # a TwinCAT project: one that holds a `<Data>` block
         try:
             check_regular(path)
             return b"<Data " in read_file(path)
@@ -67,12 +72,19 @@ def skipped_note(skipped: dict[str, int]) -> str:
     return "; " + "; ".join(parts) if parts else ""
 
 
-def collect_files(paths: Iterable[str | Path], include: Callable[[Path], bool] | None = None,
-                  exclude: Callable[[Path], bool] | None = None,
-                  respect_gitignore: bool | Callable[[Path], bool] = True,
+def joined(folder: str, name: str) -> str:
+    """``str(Path(folder) / name)`` for a folder as :func:`zero.files.path_str` gives it and a name of
+    a directory listing (no ``/``, never ``.``): how a walk names what it finds."""
+    return name if folder == "." else folder + name if folder.endswith("/") else folder + "/" + name
+
+
+def collect_files(paths: Iterable[FileName], include: Callable[[str], bool] | None = None,
+                  exclude: Callable[[str], bool] | None = None,
+                  respect_gitignore: bool | Callable[[str], bool] = True,
                   note: Callable[[str], None] | None = None, force_exclude: bool = True,
-                  skipped: dict[str, int] | None = None) -> list[Path]:
-    """Files named explicitly, plus list files below named directories (sorted).
+                  skipped: dict[str, int] | None = None) -> list[str]:
+    """Files named explicitly, plus list files below named directories (sorted), each named as a
+    ``Path`` prints it (:func:`zero.files.path_str`: ``./a.lis`` is ``a.lis``).
 
     ``include`` decides which files a directory walk picks up (default: lists ``*.lis``,
     ``*.lst``, NC programs ``*.nc``, ``*.mpf``, ``*.spf`` and ``*.xml`` that hold lists, by their
@@ -86,25 +98,23 @@ def collect_files(paths: Iterable[str | Path], include: Callable[[Path], bool] |
     (:data:`GITIGNORE`, :data:`EXCLUDE`), for a message that says why nothing was found.
     """
     tally = skipped if skipped is not None else {}
-    out: list[Path] = []
+    out: list[str] = []
     for raw in paths:
-        p = Path(raw)
-        if p.is_dir():
+        p = path_str(raw)
+        if os.path.isdir(p):
             respect = respect_gitignore(p) if callable(respect_gitignore) else respect_gitignore
             visible = git_visible(p, note) if respect else None
-            found: list[Path] = []
+            found: list[str] = []
             for root, dirs, files in os.walk(p):
-                folder = Path(root)
-                # pathlib's own join of one name, as its iterdir() uses (3.11, 3.12): a sixth of parsing a path
-                child = getattr(folder, "_make_child_relpath", None) or folder.joinpath
+                folder = path_str(root)
                 kept_dirs = [d for d in dirs if not d.startswith(".")]
-                dirs[:] = sorted(d for d in kept_dirs if not (exclude and exclude(child(d))))
+                dirs[:] = sorted(d for d in kept_dirs if not (exclude and exclude(joined(folder, d))))
                 if skipped is not None:
                     for d in set(kept_dirs) - set(dirs):  # an excluded folder: what it holds counts as skipped
-                        tally[EXCLUDE] = tally.get(EXCLUDE, 0) + _walkable(child(d), include)
+                        tally[EXCLUDE] = tally.get(EXCLUDE, 0) + _walkable(joined(folder, d), include)
                 rel_root = os.path.relpath(root, p)
                 for f in files:
-                    path = child(f)
+                    path = joined(folder, f)
                     wanted = include(path) if include else f.lower().endswith(_WALKED)
                     if visible is not None and os.path.normpath(os.path.join(rel_root, f)) not in visible:
                         if wanted:
@@ -114,7 +124,7 @@ def collect_files(paths: Iterable[str | Path], include: Callable[[Path], bool] |
                         tally[EXCLUDE] = tally.get(EXCLUDE, 0) + 1
                     elif wanted and holds_lists(path):
                         found.append(path)
-            out.extend(sorted(found, key=str))
+            out.extend(sorted(found))
         elif os.path.lexists(p):
             if not (force_exclude and exclude and exclude(p)):
                 check_regular(p)  # a FIFO, device, dangling link or loop named here: refused at once
@@ -124,11 +134,12 @@ def collect_files(paths: Iterable[str | Path], include: Callable[[Path], bool] |
     return out
 
 
-def _walkable(directory: Path, include: Callable[[Path], bool] | None) -> int:
+def _walkable(directory: str, include: Callable[[str], bool] | None) -> int:
     """How many files below ``directory`` a walk would pick up by their names (for the count of
     what ``exclude`` skipped; hidden folders are never walked)."""
     n = 0
     for root, dirs, files in os.walk(directory):
         dirs[:] = [d for d in dirs if not d.startswith(".")]
-        n += sum(1 for f in files if (include(Path(root) / f) if include else f.lower().endswith(_WALKED)))
+        folder = path_str(root)
+        n += sum(1 for f in files if (include(joined(folder, f)) if include else f.lower().endswith(_WALKED)))
     return n

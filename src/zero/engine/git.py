@@ -25,16 +25,19 @@ from __future__ import annotations
 import os
 import stat
 from collections.abc import Callable, Iterator
-from pathlib import Path
 
 from zero.errors import ZeroError
-from zero.files import describe
+from zero.files import describe, path_str
 from zero.forms import split_part
 from zero.records import record
 
 TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (mypy and ruff read it alike)
-if TYPE_CHECKING:  # start-up: subprocess only when git is asked
+if TYPE_CHECKING:  # start-up: subprocess only when git is asked (and pathlib never: folders are strings)
     import subprocess
+    from pathlib import Path
+    from typing import TypeAlias
+
+    FileName: TypeAlias = str | os.PathLike[str]  # a file as the engine names it (a Path from the library)
 
 TIMEOUT = 30.0  # seconds for one git call
 # Every setting through which a repository's configuration (or the user's) could make git start a
@@ -93,7 +96,7 @@ def available() -> bool:
     return shutil.which("git") is not None
 
 
-def run(folder: Path, *args: str, timeout: float = TIMEOUT) -> subprocess.CompletedProcess[bytes]:
+def run(folder: FileName, *args: str, timeout: float = TIMEOUT) -> subprocess.CompletedProcess[bytes]:
     """Run git in ``folder`` with every protection; :class:`OSError` or ``subprocess.SubprocessError``
     (a time-out) when it cannot be run or answer in time."""
     import subprocess  # start-up: only when git is asked
@@ -114,29 +117,33 @@ class Visible:
     reason: str = ""
 
 
-def _ignore_sources(directory: Path, top: Path, git_dir: Path, excludes: str) -> Iterator[Path]:
-    """Every file git reads ignore rules from for a walk of ``directory``: ``.gitignore`` in it and
-    below it and in each folder from the work tree's top down to it, ``info/exclude`` and the
-    configured (or default) ``core.excludesFile``."""
-    yield git_dir / "info" / "exclude"
+def _ignore_sources(directory: str, top: str, git_dir: str, excludes: str) -> Iterator[str]:
+    """Every file git reads ignore rules from for a walk of ``directory`` (absolute): ``.gitignore`` in
+    it and below it and in each folder from the work tree's top down to it, ``info/exclude`` and the
+    configured (or default) ``core.excludesFile`` (each named as a ``Path`` prints it)."""
+    yield path_str(os.path.join(git_dir, "info", "exclude"))
     if excludes:
-        yield Path(os.path.expanduser(excludes))
+        yield path_str(os.path.expanduser(excludes))
     else:
         xdg = os.environ.get("XDG_CONFIG_HOME") or os.path.join(os.path.expanduser("~"), ".config")
-        yield Path(xdg) / "git" / "ignore"
-    here = Path(os.path.abspath(directory))
-    for d in (here, *here.parents):
+        yield path_str(os.path.join(xdg, "git", "ignore"))
+    here = path_str(os.path.abspath(directory))
+    top = path_str(top)
+    d = here
+    while True:
         if d != here:
-            yield d / ".gitignore"
-        if d == top or d.parent == d:
+            yield os.path.join(d, ".gitignore")
+        parent = os.path.dirname(d)
+        if d == top or parent == d:
             break
+        d = parent
     for root, dirs, files in os.walk(directory):
         dirs[:] = [d for d in dirs if d != ".git"]
         if ".gitignore" in files:
-            yield Path(root) / ".gitignore"
+            yield os.path.join(path_str(root), ".gitignore")
 
 
-def _not_readable(path: Path) -> str | None:
+def _not_readable(path: str) -> str | None:
     """Why git would hang on, or cannot read, an ignore file (``None``: a regular file, or none)."""
     try:
         st = os.stat(path)
@@ -147,23 +154,27 @@ def _not_readable(path: Path) -> str | None:
     return f"{path} is {describe(st.st_mode)}, which git would wait on"
 
 
-def may_be_in_repository(folder: Path) -> bool:
+def may_be_in_repository(folder: FileName) -> bool:
     """Could git find a repository for ``folder`` (absolute)? Not where neither it nor a folder above
     it holds a ``.git`` (a work tree's, or a file naming one) or is itself a repository's folder (a
     ``HEAD`` in it: a bare repository, which git also finds): git looks nowhere else, since every
     ``GIT_*`` variable is cleared (:func:`environment`)."""
-    for d in (str(folder), *map(str, folder.parents)):
+    d = path_str(folder)
+    while True:
         if os.path.lexists(os.path.join(d, ".git")) or os.path.lexists(os.path.join(d, "HEAD")):
             return True
-    return False
+        parent = os.path.dirname(d)
+        if parent == d:
+            return False
+        d = parent
 
 
-def visible_files(directory: Path) -> Visible:
+def visible_files(directory: FileName) -> Visible:
     """The files below ``directory`` that git does not ignore (``ls-files --cached --others
     --exclude-standard``). No answer, with the reason, where an ignore file is no regular file (a FIFO
     would stall git), where git refuses the repository (owned by another user: git's
     ``safe.directory``), fails or takes too long; no answer and no reason outside a work tree."""
-    folder = Path(os.path.abspath(directory))
+    folder = path_str(os.path.abspath(directory))
     if not may_be_in_repository(folder):
         return Visible(None)  # what git would say, without starting it (15 ms)
     import subprocess  # start-up: only when git is asked
@@ -181,7 +192,7 @@ def visible_files(directory: Path) -> Visible:
         lines = where.stdout.decode("utf-8", "surrogateescape").splitlines()
         if len(lines) < 2:
             return Visible(None)
-        top, git_dir = Path(lines[0]), Path(lines[1])
+        top, git_dir = lines[0], lines[1]
         excludes = run(folder, "config", "--get", "core.excludesFile")
         for source in _ignore_sources(folder, top, git_dir, excludes.stdout.decode("utf-8", "replace").strip()):
             why = _not_readable(source)
@@ -200,10 +211,10 @@ def visible_files(directory: Path) -> Visible:
 
 # ---------------------------------------------------------------------------- revisions
 
-Reader = Callable[[Path], bytes]
+Reader = Callable[["Path"], bytes]  # (a string: pathlib is imported where a machine is read)
 
 
-def revision_reader(startup: Path, revision: str, label: str = "--against") -> tuple[str, Reader]:
+def revision_reader(startup: FileName, revision: str, label: str = "--against") -> tuple[str, Reader]:
     """A reader of the files of ``revision`` in the git work tree ``startup`` lies in: each file's
     bytes as that commit has them (``cat-file blob``: no filter, no text conversion). The commit's
     short name, and the reader. A file the revision does not have is "no such file"; a blob the
@@ -212,7 +223,7 @@ def revision_reader(startup: Path, revision: str, label: str = "--against") -> t
 
     if revision.startswith("-") or not revision.strip():
         raise ZeroError(f"{label} {revision!r}: not a start-up list, nor a git revision")
-    folder = Path(os.path.abspath(split_part(startup)[0])).parent
+    folder = os.path.dirname(path_str(os.path.abspath(split_part(startup)[0])))
 
     def git(*args: str) -> subprocess.CompletedProcess[bytes]:
         try:

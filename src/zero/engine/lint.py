@@ -13,7 +13,6 @@ from __future__ import annotations
 import os
 import re
 from collections.abc import Callable, Sequence
-from pathlib import Path
 
 from zero.catalog.registry import Registry, kind_from_name
 from zero.diagnostics import Diagnostic, Severity, Span
@@ -42,6 +41,8 @@ from zero.rules.suppress import parse_comment_directives
 
 TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (mypy and ruff read it alike)
 if TYPE_CHECKING:  # start-up: linting a list loads neither the machine model nor the structured forms
+    from pathlib import Path  # (nor pathlib: the lint path names files by their text)
+
     from zero.catalog.values import ListValues
     from zero.machine.model import ListFile, Machine
     from zero.structured.common import Found
@@ -250,7 +251,7 @@ def unreadable(path: str, error: ZeroError, options: LintOptions | None = None) 
     return LintResult(path, Document(path, "utf-8", [], [], []), None, found)
 
 
-def lint_file(path: str | Path, registry: Registry, options: LintOptions | None = None) -> LintResult:
+def lint_file(path: str | os.PathLike[str], registry: Registry, options: LintOptions | None = None) -> LintResult:
     """Lint a file by its suffix; a file that cannot be read is one F001 finding."""
     try:
         data = read_file(path)

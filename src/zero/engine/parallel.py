@@ -9,8 +9,7 @@ of such a file differ from its twin's only in the path they name.
 from __future__ import annotations
 
 import os
-from collections.abc import Callable, Iterator
-from pathlib import Path
+from collections.abc import Callable, Iterator, Sequence
 
 from zero.catalog.registry import Registry
 from zero.engine.lint import LintOptions, LintResult, lint_data, lint_file
@@ -28,7 +27,12 @@ SHARED_MAX_BYTES = 1 << 20
 # How many distinct files' results a run keeps to share (a window, oldest out first): a fleet's
 # machines follow each other, each with its twenty or so lists.
 SHARED_KEPT = 512
-OptionsFor = Callable[[Path], LintOptions]
+TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (mypy and ruff read it alike)
+if TYPE_CHECKING:
+    from typing import TypeAlias
+
+    FileName: TypeAlias = str | os.PathLike[str]  # a file as the engine names it (a Path from the library)
+    OptionsFor: TypeAlias = Callable[[FileName], LintOptions]
 _worker_state: tuple[Registry, OptionsFor] | None = None
 
 
@@ -71,7 +75,7 @@ class SameFiles:
         self.shared = 0  # files whose result was a twin's
 
     @staticmethod
-    def key(path: Path, options: LintOptions, registry: Registry) -> tuple[tuple[bytes, str | None, int, int],
+    def key(path: FileName, options: LintOptions, registry: Registry) -> tuple[tuple[bytes, str | None, int, int],
                                                                             bytes] | None:
         """The key of a list file and its bytes; ``None``: linted on its own (not a plain list, too big,
         or unreadable: :func:`lint_file` says why)."""
@@ -86,7 +90,7 @@ class SameFiles:
             return None
         return (content_digest(data), kind_hint(name), id(options), id(registry)), data
 
-    def twin(self, key: tuple[bytes, str | None, int, int], path: Path, options: LintOptions,
+    def twin(self, key: tuple[bytes, str | None, int, int], path: FileName, options: LintOptions,
              registry: Registry) -> LintResult | None:
         """The result of a file linted earlier in the run with ``key``, moved to ``path``."""
         hit = self._kept.get(key)
@@ -105,7 +109,7 @@ class SameFiles:
             self._kept[key] = (options, registry, slim)
         return slim
 
-    def lint(self, path: Path, registry: Registry, options: LintOptions) -> LintResult:
+    def lint(self, path: FileName, registry: Registry, options: LintOptions) -> LintResult:
         """A file's result (slim): its twin's, or linted now."""
         found = self.key(path, options, registry)
         if found is None:
@@ -117,7 +121,7 @@ class SameFiles:
         return self.keep(key, options, registry, lint_data(data, str(path), registry, options))
 
 
-def _lint_keyed(path: Path, registry: Registry, options: LintOptions) -> tuple[bytes | None, LintResult]:
+def _lint_keyed(path: FileName, registry: Registry, options: LintOptions) -> tuple[bytes | None, LintResult]:
     """A file's (slim) result, and the hash of the bytes it was made from (``None``: not a file
     :class:`SameFiles` shares)."""
     found = SameFiles.key(path, options, registry)
@@ -127,7 +131,7 @@ def _lint_keyed(path: Path, registry: Registry, options: LintOptions) -> tuple[b
     return key[0], _slim(lint_data(data, str(path), registry, options))
 
 
-def _lint_in_worker(path: Path) -> tuple[bytes | None, LintResult] | ZeroError:
+def _lint_in_worker(path: FileName) -> tuple[bytes | None, LintResult] | ZeroError:
     assert _worker_state is not None
     registry, options_for = _worker_state
     try:
@@ -136,7 +140,7 @@ def _lint_in_worker(path: Path) -> tuple[bytes | None, LintResult] | ZeroError:
         return exc
 
 
-def lint_many(files: list[Path], registry: Registry,
+def lint_many(files: Sequence[FileName], registry: Registry,
               options: LintOptions | OptionsFor | None = None, jobs: int | None = None,
               progress: Callable[[int, int], None] | None = None) -> list[LintResult]:
     """Lint files, in parallel across ``jobs`` processes (default: all cores) when there are
@@ -145,7 +149,7 @@ def lint_many(files: list[Path], registry: Registry,
     return list(iter_lint_many(files, registry, options, jobs, progress))
 
 
-def iter_lint_many(files: list[Path], registry: Registry,
+def iter_lint_many(files: Sequence[FileName], registry: Registry,
                    options: LintOptions | OptionsFor | None = None, jobs: int | None = None,
                    progress: Callable[[int, int], None] | None = None) -> Iterator[LintResult]:
     """:func:`lint_many` as a stream: each result as soon as it and those before it are done,
@@ -170,7 +174,7 @@ def iter_lint_many(files: list[Path], registry: Registry,
         return
     # many files: the twins are told apart first (their bytes hashed, then let go), and only the
     # first of each is linted, across processes where those are still many
-    plan: list[tuple[Path, LintOptions, tuple[bytes, str | None, int, int] | None, bool]] = []
+    plan: list[tuple[FileName, LintOptions, tuple[bytes, str | None, int, int] | None, bool]] = []
     seen: set[tuple[bytes, str | None, int, int]] = set()
     for f in files:
         opts = options_for(f)
@@ -195,7 +199,7 @@ def iter_lint_many(files: list[Path], registry: Registry,
             progress(n, len(files))
 
 
-def _made(files: list[Path], registry: Registry, options_for: OptionsFor,
+def _made(files: Sequence[FileName], registry: Registry, options_for: OptionsFor,
           jobs: int) -> Iterator[tuple[bytes | None, LintResult]]:
     """:func:`_lint_keyed` of ``files``, in their order: in ``jobs`` processes when there are many."""
     global _worker_state

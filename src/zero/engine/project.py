@@ -34,35 +34,44 @@ from __future__ import annotations
 import os
 from collections import OrderedDict
 from collections.abc import Callable, Hashable, Sequence
-from pathlib import Path
 
 from zero.engine.config import Config, ConfigFinder, is_inline
 from zero.engine.results import LintOptions
 from zero.errors import ZeroError
-from zero.files import read_file, resolve
+from zero.files import path_str, read_file, resolve
 from zero.records import field, record
 
 TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (mypy and ruff read it alike)
-if TYPE_CHECKING:  # start-up: `zero lint` of lists loads no machine model
+if TYPE_CHECKING:  # start-up: `zero lint` of lists loads no machine model (nor pathlib: its files are strings)
+    from pathlib import Path
+    from typing import TypeAlias
+
     from zero.catalog.registry import Registry
     from zero.lists.model import Document
     from zero.machine.model import Machine
 
-Registries = Callable[[Path | None], "Registry"]  # (a string: the catalogue is imported where it is loaded)
-Reader = Callable[[Path], bytes]
+    FileName: TypeAlias = str | os.PathLike[str]  # a file as the engine names it (a Path from the library)
+    Reader: TypeAlias = Callable[[Path], bytes]
+    Layout: TypeAlias = tuple[dict[str, Path], Path | None, tuple[tuple[str, Path], ...]]  # overrides, workdir, roots
+
+# (strings: the catalogue is imported where it is loaded, pathlib where a machine is)
+Registries = Callable[["str | os.PathLike[str] | None"], "Registry"]
 Signature = tuple[tuple[str, int, int, str | None], ...]  # path, mtime, size, declared codec
-Layout = tuple[dict[str, Path], Path | None, tuple[tuple[str, Path], ...]]  # overrides, working directory, roots
 
 
-def absolute(path: str | Path) -> Path:
+def absolute(path: FileName) -> Path:
     """``path`` made absolute against the current directory, links and ``..`` kept as written."""
+    from pathlib import Path  # start-up: only for a machine
+
     return Path(os.path.abspath(path))
 
 
-def shown_path(path: str | Path, base: Path | None) -> Path:
+def shown_path(path: FileName, base: FileName | None) -> Path:
     """How messages name a file: relative to ``base`` (the current directory of the run) when it lies
     below it, else absolute (ruff's ``relativize_path``); ``base`` ``None``: always absolute (the
     language server, whose current directory is nobody's)."""
+    from pathlib import Path  # start-up: only for a machine
+
     full = absolute(path)
     if base is not None:
         try:
@@ -81,7 +90,7 @@ class Common:
 
     config: tuple[str, ...] = ()
     isolated: bool = False
-    param_desc: Path | None = None
+    param_desc: str | Path | None = None  # a str as a Path prints it (zero.files.path_str) where common_of made it
     kernel: str | None = None
 
     @property
@@ -93,12 +102,12 @@ class Common:
         return (*self.config, f'kernel = "{escaped}"')
 
 
-def common_of(config: str | Path | Sequence[str] | None, isolated: bool = False,
-              param_desc: str | Path | None = None, kernel: str | None = None) -> Common:
+def common_of(config: FileName | Sequence[str] | None, isolated: bool = False,
+              param_desc: FileName | None = None, kernel: str | None = None) -> Common:
     """The common options as a library function is given them (``config``: one file, or files and
     ``KEY = VALUE`` overrides)."""
-    given = [config] if isinstance(config, (str, Path)) else list(config or ())
-    return Common(tuple(str(c) for c in given), isolated, Path(param_desc) if param_desc else None, kernel)
+    given = [config] if isinstance(config, (str, os.PathLike)) else list(config or ())
+    return Common(tuple(str(c) for c in given), isolated, path_str(param_desc) if param_desc else None, kernel)
 
 
 @record(frozen=True, eq=False)
@@ -108,10 +117,10 @@ class Settings:
     the catalogue it is read against, and (lazily) the machine it belongs to. Every command and the
     language server read a file's answers from here, never from the configuration or the loaders."""
 
-    path: Path | None  # the file (None: standard input without a name, or the current directory's)
+    path: FileName | None  # the file (None: standard input without a name, or the current directory's)
     config: Config
     options: LintOptions
-    param_desc: Path | None  # the parameter description of the catalogue (None: the built-in table)
+    param_desc: str | Path | None  # the parameter description of the catalogue (None: the built-in table)
     project: Project = field(repr=False)
 
     @property
@@ -150,7 +159,7 @@ class Settings:
         return self.project.machine(self.path, required=required, reader=reader, reader_key=reader_key)
 
 
-def _signature(machine: Machine, encoding: Callable[[Path], str | None]) -> Signature:
+def _signature(machine: Machine, encoding: Callable[[FileName], str | None]) -> Signature:
     """What a machine was read from: every named file's size and modification time, and the code
     page the configuration declares for it."""
     paths = [machine.startup.path, *(n.path for n in machine.named if n.path is not None)]
@@ -167,83 +176,83 @@ def _signature(machine: Machine, encoding: Callable[[Path], str | None]) -> Sign
 class Project:
     """The answers of one run (or one editor workspace) to "what applies to this file"."""
 
-    def __init__(self, registries: Registries, *, config: str | Path | Sequence[str] | None = None,
-                 isolated: bool = False, param_desc: str | Path | None = None, cli: LintOptions | None = None,
-                 machine: str | Path | None = None, shown_from: Path | None = None) -> None:
+    def __init__(self, registries: Registries, *, config: FileName | Sequence[str] | None = None,
+                 isolated: bool = False, param_desc: FileName | None = None, cli: LintOptions | None = None,
+                 machine: FileName | None = None, shown_from: FileName | None = None) -> None:
         self.registries = registries
         self.shown_from = shown_from  # messages name a machine's files relative to it (None: absolutely)
-        given = [config] if isinstance(config, (str, Path)) else list(config or ())
-        files = [Path(c) for c in given if not is_inline(str(c))]
+        given = [config] if isinstance(config, (str, os.PathLike)) else list(config or ())
+        files = [path_str(c) for c in given if not is_inline(str(c))]
         if len(files) > 1:
             raise ZeroError(f"--config names {len(files)} files; one file, and any number of KEY=VALUE")
         self.finder = ConfigFinder(files[0] if files else None, isolated,
                                    tuple(str(c) for c in given if is_inline(str(c))))
-        self.param_desc_given = Path(param_desc) if param_desc else None
+        self.param_desc_given = path_str(param_desc) if param_desc else None
         self.cli = cli or LintOptions()
         self.machine_given = absolute(machine) if machine is not None else None
         self.machine_shown = shown_path(machine, shown_from) if machine is not None else None
-        self._settings: dict[Path | None, Settings] = {}
+        self._settings: dict[FileName | None, Settings] = {}
         self._machines: dict[Hashable, tuple[Signature, Machine]] = {}
         self._shaped: OrderedDict[Hashable, Machine] = OrderedDict()  # read with an editor's unsaved text
 
-    def shown(self, path: str | Path) -> Path:
+    def shown(self, path: FileName) -> Path:
         """How messages of this run name a file (:func:`shown_path`)."""
         return shown_path(path, self.shown_from)
 
     # ----------------------------------------------------------------- settings
 
-    def settings(self, path: Path | None) -> Settings:
+    def settings(self, path: FileName | None) -> Settings:
         """The finished settings of one file: its configuration with the command line laid over it
         once (cached by the path; :meth:`forget` drops them)."""
         hit = self._settings.get(path)
         if hit is None:
             cfg = self.config(path)
-            options = cfg.options_for(path if path is not None else Path("-"), self.cli)
+            options = cfg.options_for(path if path is not None else "-", self.cli)
             hit = self._settings[path] = Settings(path, cfg, options, self.param_desc_given or cfg.param_desc, self)
         return hit
 
     # ----------------------------------------------------------------- configuration
 
-    def config(self, path: Path | None, directory: bool = False) -> Config:
+    def config(self, path: FileName | None, directory: bool = False) -> Config:
         """The configuration of a file (or of a directory, ``directory=True``: ``zero config DIR``);
         the current directory's for ``None`` (standard input without a name, ``zero limits``)."""
         if path is None:
-            return self.finder.for_path(Path.cwd(), directory=True)
+            return self.finder.for_path(os.getcwd(), directory=True)
         return self.finder.for_path(path, directory)
 
-    def options(self, path: Path | None) -> LintOptions:
+    def options(self, path: FileName | None) -> LintOptions:
         """The options of one file: the command line over its configuration (:meth:`settings`)."""
         return self.settings(path).options
 
-    def encoding(self, path: Path | None) -> str | None:
+    def encoding(self, path: FileName | None) -> str | None:
         """The codec the configuration declares for a list (``[tool.zero] encoding``), else ``None``:
         detected from the bytes. Standard input without a name has none."""
         return self.config(path).encoding_for(path) if path is not None else None  # asked per file of a machine
 
-    def excluded(self, path: Path) -> bool:
+    def excluded(self, path: FileName) -> bool:
         """Excluded by the configuration of the directory that holds it (a file or a directory)."""
         return self.config(path).excluded(path)
 
-    def included(self, path: Path) -> bool:
+    def included(self, path: FileName) -> bool:
         return self.config(path).included(path)
 
-    def respects_gitignore(self, directory: Path) -> bool:
+    def respects_gitignore(self, directory: FileName) -> bool:
         """Does a walk of ``directory`` skip what git ignores (``respect-gitignore``, default true)?"""
         return self.config(directory, directory=True).respect_gitignore
 
     # ----------------------------------------------------------------- catalogue
 
-    def param_desc(self, path: Path | None) -> Path | None:
+    def param_desc(self, path: FileName | None) -> FileName | None:
         """The parameter description of a file: the command line's, else its configuration's."""
         return self.settings(path).param_desc
 
-    def registry(self, path: Path | None) -> Registry:
+    def registry(self, path: FileName | None) -> Registry:
         """The catalogue a file is checked against (:class:`ZeroError` when a description cannot be read)."""
         return self.settings(path).registry
 
     # ----------------------------------------------------------------- machine
 
-    def startup(self, path: Path | None = None) -> Path | None:
+    def startup(self, path: FileName | None = None) -> Path | None:
         """The start-up list of the machine a file belongs to (absolute): ``--machine``, else the
         configuration's ``[tool.zero.machine] startup``."""
         if self.machine_given is not None:
@@ -251,7 +260,7 @@ class Project:
         named = self.config(path).machine
         return absolute(named) if named is not None else None
 
-    def machine(self, path: Path | None = None, *, required: bool = False, startup: str | Path | None = None,
+    def machine(self, path: FileName | None = None, *, required: bool = False, startup: FileName | None = None,
                 reader: Reader | None = None, reader_key: Hashable = None) -> Machine | None:
         """The machine ``path`` belongs to (or the one of ``startup``), as the controller builds it.
 
@@ -345,13 +354,13 @@ def require_startup(machine: Machine, registry: Registry) -> Machine:
 
 
 def open_project(registries: Registries, common: Common | None = None, *, cli: LintOptions | None = None,
-                 machine: str | Path | None = None, shown_from: Path | bool | None = True) -> Project:
+                 machine: FileName | None = None, shown_from: FileName | bool | None = True) -> Project:
     """The resolver of one run (ruff's ``resolve``: isolated defaults, one ``--config``, or the
     configuration found per file): the one place a :class:`Project` is made. ``shown_from``: the
     folder messages name a machine's files relative to (``True``: the current directory; ``None``:
     absolutely, as the language server does)."""
     common = common or Common()
-    base = Path(os.path.abspath(os.curdir)) if shown_from is True else shown_from or None
+    base = os.path.abspath(os.curdir) if shown_from is True else shown_from or None
     return Project(registries, config=common.configs, isolated=common.isolated, param_desc=common.param_desc,
                    cli=cli, machine=machine, shown_from=base)
 
@@ -360,7 +369,7 @@ __all__ = ["Common", "Project", "Registries", "Settings", "absolute", "common_of
            "shown_path"]
 
 
-def _no_catalogue(_desc: Path | None) -> Registry:
+def _no_catalogue(_desc: FileName | None) -> Registry:
     raise ZeroError("no catalogue is resolved here")  # pragma: no cover - only configurations are asked
 
 
