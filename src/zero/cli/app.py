@@ -22,7 +22,7 @@ from zero import __version__
 from zero.catalog.registry import KINDS, ParamSpec, Registry
 from zero.cli import PYTHON_GC_THRESHOLDS, exits
 from zero.cli.help import ZeroCommand, ZeroGroup
-from zero.cli.options import COMMON_OPTIONS, LINT_OPTIONS, PATHS_HELP, Option, close_matches
+from zero.cli.options import COMMON_OPTIONS, LINT_OPTIONS, PATHS_HELP, Option, PathOption, close_matches
 from zero.cli.run import (
     REGISTRIES,
     check_kind,
@@ -207,7 +207,7 @@ def _typer_parameter(option: Option) -> inspect.Parameter:
         annotation = str | None  # read by count(): a plain message for a bad number
         extra.update(count(option.minimum or 0))
     else:
-        annotation = option.type | None
+        annotation = (Path if option.type is PathOption else option.type) | None
     if option.dest in _CODE_OPTIONS:
         extra["autocompletion"] = complete_codes
     elif option.dest == "kind":

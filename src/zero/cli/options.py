@@ -12,8 +12,8 @@ from __future__ import annotations
 
 import os
 from collections.abc import Iterable, Mapping
-from pathlib import Path
 
+from zero.files import path_str
 from zero.forms import LIST_SUFFIXES, PROGRAM_SUFFIXES, XML_SUFFIX
 from zero.output.formats import OUTPUT_FORMATS
 from zero.output.formats import help_text as format_help
@@ -24,13 +24,19 @@ if TYPE_CHECKING:
     from typing import Literal
 
 
+class PathOption:
+    """The ``type`` of an option whose value names a file: a ``str`` to the lean parser, as a ``Path``
+    prints it (:func:`zero.files.path_str`: pathlib with urllib.parse and ipaddress is 7% of a lint's
+    start-up), a ``pathlib.Path`` to typer (:mod:`zero.cli.app`, which completes file names for it)."""
+
+
 @record(frozen=True)
 class Option:
     dest: str  # the keyword of zero.cli.run.lint
     flags: tuple[str, ...]  # long name first
     help: str
     kind: Literal["flag", "value", "multi"] = "value"
-    type: type = str  # str, int or Path
+    type: type = str  # str, int or PathOption
     choices: tuple[str, ...] = ()
     minimum: int | None = None
     negative: str | None = None  # the flag that sets a "flag" option back to False
@@ -63,14 +69,14 @@ KERNEL = Option("kernel", ("--kernel", "--target-version"),
                 "The kernel release the machines run (as `kernel` in the configuration), e.g. V3.1.3079.",
                 metavar="RELEASE")
 PARAM_DESC = Option("param_desc", ("--param-desc",), "Use this CncParaDesc.xml instead of the built-in table.",
-                    type=Path, metavar="FILE")
+                    type=PathOption, metavar="FILE")
 COMMON_OPTIONS: tuple[Option, ...] = (CONFIG, ISOLATED, PARAM_DESC, KERNEL)
 
 LINT_OPTIONS: tuple[Option, ...] = (
     Option("output_format", ("--output-format",), format_help(), choices=OUTPUT_FORMATS, default="text",
            metavar="FORMAT", envvar="ZERO_OUTPUT_FORMAT"),
     Option("output_file", ("--output-file", "-o"),
-           "Write the report to this file (atomically) instead of stdout.", type=Path, metavar="FILE"),
+           "Write the report to this file (atomically) instead of stdout.", type=PathOption, metavar="FILE"),
     Option("show_statistics", ("--statistics",),
            "Print the number of findings per code instead of the findings (as ruff).", "flag", default=False),
     Option("exit_zero", ("--exit-zero",), "Exit 0 even when there are findings (usage errors still exit 2).",
@@ -131,7 +137,7 @@ LINT_OPTIONS: tuple[Option, ...] = (
     PARAM_DESC,
     Option("machine", ("--machine",),
            "Lint every list a start-up list (hochlauf.lis) names, plus the checks across them (X rules).",
-           type=Path, metavar="STARTUP"),
+           type=PathOption, metavar="STARTUP"),
 )
 
 
@@ -161,7 +167,7 @@ def _value(option: Option, text: str) -> object | None:
             return None
         number = int(text)
         return None if option.minimum is not None and number < option.minimum else number
-    return Path(text) if option.type is Path else text
+    return path_str(text) if option.type is PathOption else text
 
 
 FLEET_FORMATS = ("text", "json", "csv")
@@ -221,7 +227,7 @@ def parse_lint_args(args: list[str], environ: Mapping[str, str] | None = None) -
     ``os.environ``), as typer does."""
     by_name = {name: o for o in LINT_OPTIONS for name in o.names}
     out: dict[str, object] = {o.dest: [] if o.kind == "multi" else o.default for o in LINT_OPTIONS}
-    paths: list[Path] = []
+    paths: list[str] = []
     given: set[str] = set()
     i = 0
     only_paths = False
@@ -229,7 +235,7 @@ def parse_lint_args(args: list[str], environ: Mapping[str, str] | None = None) -
         a = args[i]
         i += 1
         if only_paths or not a.startswith("-") or a == "-":
-            paths.append(Path(a))
+            paths.append(path_str(a))  # as typer's Path prints it (./a.lis: a.lis)
             continue
         if a == "--":
             only_paths = True
