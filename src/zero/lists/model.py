@@ -12,7 +12,7 @@ import re
 from array import array
 from collections.abc import Iterator
 from functools import cache
-from itertools import accumulate
+from itertools import accumulate, pairwise
 
 from zero.forms import XML_ROOTS, root_of
 from zero.records import Field, record
@@ -33,9 +33,43 @@ def key_form() -> re.Pattern[str]:
     return re.compile(r"[A-Za-z0-9_]+(?:\[[0-9]+\])*(?:\.[A-Za-z0-9_]+(?:\[[0-9]+\])*)*")
 
 
-@cache
-def _index_re() -> re.Pattern[str]:
-    return re.compile(r"\[([0-9]+)\]")
+_WORD_CHARS = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789_"
+
+
+def is_key(text: str) -> bool:
+    """``key_form().fullmatch(text)``, without the pattern (start-up: compiling it cost more than a list's keys
+    take to check): names of ``[A-Za-z0-9_]`` joined by dots, each followed by any ``[digits]``."""
+    for segment in text.split("."):
+        cut = segment.find("[")
+        head = segment if cut < 0 else segment[:cut]
+        if not head or head.strip(_WORD_CHARS):
+            return False
+        if cut >= 0:
+            rest = segment[cut:]
+            if rest[-1] != "]":
+                return False
+            for digits in rest[1:-1].split("]["):
+                if not digits or not digits.isascii() or not digits.isdigit():
+                    return False
+    return True
+
+
+def _indices(text: str) -> list[tuple[int, int]]:
+    """Where ``\\[([0-9]+)\\]`` matches in ``text`` (as ``re.finditer`` finds them, left to right, none
+    overlapping): the span of each one's digits."""
+    out = []
+    at = text.find("[")
+    while at >= 0:
+        close = text.find("]", at + 1)
+        if close < 0:
+            break
+        digits = text[at + 1:close]
+        if digits and digits.isascii() and digits.isdigit():
+            out.append((at + 1, close))
+            at = text.find("[", close + 1)
+        else:
+            at = text.find("[", at + 1)
+    return out
 
 
 class ValueKind(enum.Enum):
@@ -92,10 +126,16 @@ def _part(text: str) -> tuple[str, tuple[int, ...]]:
         return text, ()
     got = _part_cache.get(text)
     if got is None:
-        index = _index_re()
-        digits = index.findall(text)
-        got = (index.sub("[]", text) if digits else text,
-               tuple(int(d) if len(d) <= MAX_INDEX_DIGITS else HUGE_INDEX for d in digits))
+        spans = _indices(text)
+        if spans:
+            parts = [text[:spans[0][0]]]
+            parts.extend(text[end:start] for (_, end), (start, _) in pairwise(spans))  # "][", "].x["
+            parts.append(text[spans[-1][1]:])
+            digits = [text[start:end] for start, end in spans]
+            pattern = "".join(parts)
+        else:
+            digits, pattern = [], text
+        got = (pattern, tuple(int(d) if len(d) <= MAX_INDEX_DIGITS else HUGE_INDEX for d in digits))
         if len(_part_cache) < _CACHE_LIMIT and len(text) < 512:
             _part_cache[text] = got
     return got
@@ -110,7 +150,7 @@ def parse_key(text: str, trusted: bool = False) -> Key | None:
     got = _keys.get(text)
     if got is not None:
         return got
-    if not trusted and not key_form().fullmatch(text):
+    if not trusted and not is_key(text):
         return None
     cut = text.find("]") + 1
     if not cut:

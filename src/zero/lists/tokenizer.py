@@ -36,7 +36,7 @@ from zero.lists.model import (
     Problem,
     ValueKind,
     _singles,
-    key_form,
+    is_key,
     parse_key,
     row_readers,
     scanned_key,
@@ -90,13 +90,67 @@ def _fast_entry_re() -> re.Pattern[str]:
 
 @cache
 def _kind_re() -> re.Pattern[str]:
-    """The lexical kinds of a value that are a number or a reference, by the name of the group that matches."""
+    """The lexical kinds of a value that are a number or a reference, by the name of the group that matches: what
+    :func:`value_kind` tells without it (the tests hold the two alike)."""
     return re.compile(
         r"(?P<int>[+-]?[0-9]+)|(?P<hex>[+-]?0[xX][0-9A-Fa-f]+)|(?P<ref>P-[A-Z]{4}-[0-9]{5}(?:\.[0-9]+)?)"
         r"|(?P<real>[+-]?(?:[0-9]+\.[0-9]*|\.[0-9]+|[0-9]+(?=[eE]))(?:[eE][+-]?[0-9]+)?)")
 
 
 _KIND_OF = {"int": ValueKind.INT, "hex": ValueKind.HEX, "ref": ValueKind.REF, "real": ValueKind.REAL}
+_HEX_DIGITS = "0123456789ABCDEFabcdef"
+
+
+def _digits(text: str) -> bool:
+    """``[0-9]+``."""
+    return text.isdigit() and text.isascii()
+
+
+def value_kind(value: str) -> ValueKind:
+    """The lexical kind of an unquoted value that holds no `|`: what ``_kind_re().fullmatch`` tells (an int, a
+    hex number, a reference or a real), else a word; without compiling that pattern (start-up: it cost more
+    than a list's values take to tell)."""
+    if value[:2] == "P-":  # P-[A-Z]{4}-[0-9]{5}(?:\.[0-9]+)?
+        letters = value[2:6]
+        if (len(value) >= 12 and value[6] == "-" and letters.isascii() and letters.isalpha() and letters.isupper()
+                and _digits(value[7:12]) and (len(value) == 12 or (value[12] == "." and _digits(value[13:])))):
+            return ValueKind.REF
+        return ValueKind.WORD
+    unsigned = value[1:] if value[:1] in ("+", "-") else value
+    if _digits(unsigned):
+        return ValueKind.INT
+    if unsigned[:2] in ("0x", "0X"):
+        digits = unsigned[2:]
+        return ValueKind.HEX if digits and not digits.strip(_HEX_DIGITS) else ValueKind.WORD
+    # (?:[0-9]+\.[0-9]*|\.[0-9]+|[0-9]+(?=[eE]))(?:[eE][+-]?[0-9]+)?
+    mantissa, e, exponent = unsigned.replace("E", "e").partition("e")
+    if e:
+        exponent = exponent[1:] if exponent[:1] in ("+", "-") else exponent
+        if not _digits(exponent):
+            return ValueKind.WORD
+        if _digits(mantissa):
+            return ValueKind.REAL
+    whole, point, fraction = mantissa.partition(".")
+    if point and (whole or fraction) and (not whole or _digits(whole)) and (not fraction or _digits(fraction)):
+        return ValueKind.REAL
+    return ValueKind.WORD
+
+
+def annotation_at(comment: str) -> int:
+    """Where the ID of the annotation a comment holds starts (``_annotation_re().search(comment).start(1)``:
+    `( P-TOOL-00005 …`), -1 where it holds none; without compiling that pattern."""
+    at = comment.find("(")
+    while at >= 0:
+        start = at + 1
+        rest = comment[start:]
+        start += len(rest) - len(rest.lstrip())  # \s*
+        pid = comment[start:start + 12]
+        letters = pid[2:6]
+        if (len(pid) == 12 and pid[:2] == "P-" and pid[6] == "-" and letters.isascii() and letters.isalpha()
+                and letters.isupper() and _digits(pid[7:])):
+            return start
+        at = comment.find("(", at + 1)
+    return -1
 _STYLE_OF = {"#": CommentStyle.HASH, "(": CommentStyle.PAREN}
 
 
@@ -125,10 +179,8 @@ _NOT_CONTROL_LATIN1 = _NOT_CONTROL + bytes(range(0xA0, 0x100))
 
 def classify_value(value: str) -> ValueKind:
     """The lexical kind of an unquoted value."""
-    km = _kind_re().fullmatch(value)  # an int, hex, reference or real never holds a `|`
-    if km is not None and km.lastgroup:
-        return _KIND_OF[km.lastgroup]
-    return ValueKind.FLAGS if "|" in value else ValueKind.WORD
+    kind = value_kind(value)  # an int, hex, reference or real never holds a `|`
+    return ValueKind.FLAGS if kind is ValueKind.WORD and "|" in value else kind
 
 
 def comment_style(comment: str) -> CommentStyle:
@@ -221,11 +273,10 @@ def scan_entry(s: str, start: int, line: int, problems: list[Problem] | None) ->
         entry.comment = comment
         entry.comment_start = cs
         entry.comment_style = comment_style(comment)
-        if "P-" in comment:
-            m = _annotation_re().search(comment)
-            if m:
-                entry.annotation = m.group(1)
-                entry.annotation_start = cs + m.start(1)
+        at = annotation_at(comment) if "P-" in comment else -1
+        if at >= 0:
+            entry.annotation = comment[at:at + 12]
+            entry.annotation_start = cs + at
     return entry
 
 
@@ -415,9 +466,9 @@ def _fast_entry(m: re.Match[str], number: int, value: str, kind: ValueKind | Non
         return Entry(number, key_text, key_text, key, ks, ke, value, kind, vs, ve)
     known = notes.get(comment) if notes is not None else None
     if known is None:
-        am = _annotation_re().search(comment) if "P-" in comment else None
-        known = (comment, _STYLE_OF.get(comment[0]) or comment_style(comment),
-                 am.group(1) if am is not None else None, am.start(1) if am is not None else -1)
+        at = annotation_at(comment) if "P-" in comment else -1
+        known = (comment, _STYLE_OF.get(comment[0]) or comment_style(comment), comment[at:at + 12] if at >= 0 else None,
+                 at)
         if notes is not None and len(notes) < 4096:
             notes[comment] = known
     comment, style, note, at = known
@@ -436,8 +487,7 @@ _comment_table: dict[str, tuple[CommentStyle, str | None, int]] = {}
 def _value_kind(value: str) -> ValueKind:
     got = _kinds.get(value)
     if got is None:
-        km = _kind_re().fullmatch(value)
-        got = _KIND_OF[km.lastgroup] if km is not None and km.lastgroup else ValueKind.WORD
+        got = value_kind(value)
         if len(_kinds) < _TABLE_LIMIT and len(value) < 256:
             _kinds[value] = got
     return got
@@ -447,12 +497,10 @@ def _value_kinds(values: list[str]) -> list[ValueKind]:
     """:func:`_value_kind` of each of ``values``, in one call (a big list holds thousands of distinct values)."""
     got: list[Any] = list(map(_kinds.get, values))
     if None in got:
-        match = _kind_re().fullmatch
         room = len(_kinds) < _TABLE_LIMIT
         for at, value in enumerate(values):
             if got[at] is None:
-                km = match(value)
-                kind = got[at] = _KIND_OF[km.lastgroup] if km is not None and km.lastgroup else ValueKind.WORD
+                kind = got[at] = value_kind(value)
                 if room and len(value) < 256:
                     _kinds[value] = kind
     return got
@@ -462,9 +510,8 @@ def _comment_parts(comment: str) -> tuple[CommentStyle, str | None, int]:
     """A comment's style, the annotation it holds (`( P-TOOL-00005 …`) and where in it."""
     got = _comment_table.get(comment)
     if got is None:
-        am = _annotation_re().search(comment) if "P-" in comment else None
-        got = (_STYLE_OF.get(comment[0]) or comment_style(comment), am.group(1) if am is not None else None,
-               am.start(1) if am is not None else -1)
+        at = annotation_at(comment) if "P-" in comment else -1
+        got = (_STYLE_OF.get(comment[0]) or comment_style(comment), comment[at:at + 12] if at >= 0 else None, at)
         if len(_comment_table) < _TABLE_LIMIT and len(comment) < 512:
             _comment_table[comment] = got
     return got
@@ -586,7 +633,7 @@ def _shape_of(key: tuple[str, str]) -> _ShapeInfo | None:
     first index, or ``""``) stand for, if they are a key: names `a.b`, then `[n]`s and `.name[n]`s."""
     name, tail = key
     info: _ShapeInfo | None = None
-    if (key_form().fullmatch(f"{name}[0{tail}") if tail
+    if (is_key(f"{name}[0{tail}") if tail
             else ".." not in name and name[-1] != "." and name != END_KEYWORD):
         info = (name, bool(tail), tail[1:], *shape_parts(name, bool(tail), tail[1:]))
     if len(_shape_info) < _TABLE_LIMIT:
@@ -930,7 +977,6 @@ def _tokenize_items(text: str, path: str = "-", encoding: str = "utf-8", bom: bo
     end_line: int | None = None
     after_end_reported = False
     fast = _fast_entry_re().match if use_fast else None
-    kind_match = _kind_re().fullmatch
     # Values repeat ("0", "1"), and comments too (`( P-TOOL-00005 : …`): each is classified once and
     # kept once, whatever the number of entries that share it. A big list repeats a few dozen
     # comments: one string each instead of 114,000 (17 MB of a 14 MB tool list).
@@ -951,8 +997,7 @@ def _tokenize_items(text: str, path: str = "-", encoding: str = "utf-8", bom: bo
                 if seen is not None:
                     value, kind = seen
                 else:
-                    km = kind_match(value)
-                    kind = _KIND_OF[km.lastgroup] if km is not None and km.lastgroup else ValueKind.WORD
+                    kind = value_kind(value)
                     if len(values) < 4096:
                         values[value] = (value, kind)
                 ks, ke = m.span(1)
@@ -963,9 +1008,9 @@ def _tokenize_items(text: str, path: str = "-", encoding: str = "utf-8", bom: bo
                     continue
                 known = notes.get(comment)
                 if known is None:
-                    am = _annotation_re().search(comment) if "P-" in comment else None
+                    at = annotation_at(comment) if "P-" in comment else -1
                     known = (comment, _STYLE_OF.get(comment[0]) or comment_style(comment),
-                             am.group(1) if am is not None else None, am.start(1) if am is not None else -1)
+                             comment[at:at + 12] if at >= 0 else None, at)
                     if len(notes) < 4096:
                         notes[comment] = known
                 comment, style, note, at = known

@@ -1,0 +1,84 @@
+"""The hand-written matchers of the lists (start-up: no pattern compiled for them) answer as the patterns
+they stand for: a value's lexical kind, a comment's annotation, a key's form and its indices."""
+
+from __future__ import annotations
+
+import re
+
+import pytest
+from hypothesis import example, given, settings
+from hypothesis import strategies as st
+
+from zero.lists.model import MAX_INDEX_DIGITS, ValueKind, _indices, _part, is_key, key_form
+from zero.lists.tokenizer import _KIND_OF, _annotation_re, _kind_re, annotation_at, value_kind
+
+_VALUE_CHARS = "0123456789+-.eExXaAfFgP_-Z |\n\u0661\u00b2 "
+_KEY_CHARS = "ab_9.[]0123 \u0661x"
+_COMMENT_CHARS = "( \t\u00a0\u2003P-AXISTOL0123456789#x)"
+
+_VALUES = ["0", "-1", "+7", "12", "0x1F", "-0X1e5", "0x", "0xg", "1.", ".5", "+.5", "1.5e3", "1e5", "1E-5",
+           "1e", "e5", ".", "+", "-", "", "1.2.3", "1e5e3", ".5e", "1.e5", "P-AXIS-00016", "P-AXIS-00016.2",
+           "P-AXIS-00016.", "P-AXIS-0001", "P-AxIS-00016", "-P-AXIS-00016", "P-AXIS-000161", "\u0661", "1\u00b2",
+           "1_000", "1\n", "ABSOLUT", "./listen/x.lis", "REPORT|MOS", "2e+5", "2e-", "0x1.5"]
+
+
+def _kind_by_pattern(value: str) -> ValueKind:
+    m = _kind_re().fullmatch(value)
+    return _KIND_OF[m.lastgroup] if m is not None and m.lastgroup else ValueKind.WORD
+
+
+@pytest.mark.parametrize("value", _VALUES)
+def test_value_kind_as_the_pattern(value: str) -> None:
+    assert value_kind(value) is _kind_by_pattern(value)
+
+
+@settings(max_examples=400, deadline=None)
+@given(st.text(_VALUE_CHARS, max_size=14))
+@example("P-CHAN-00001.12")
+def test_value_kind_as_the_pattern_any(value: str) -> None:
+    assert value_kind(value) is _kind_by_pattern(value)
+
+
+def _annotation_by_pattern(comment: str) -> int:
+    m = _annotation_re().search(comment)
+    return m.start(1) if m is not None else -1
+
+
+@pytest.mark.parametrize("comment", ["( P-AXIS-00016 : logical", "(P-AXIS-00016", "(  \tP-TOOL-00005 x",
+                                     "# ( P-AXIS-0016 ( P-AXIS-00017", "(\u2003P-CHAN-00001", "( P-AXIs-00016",
+                                     "P-AXIS-00016", "((P-AXIS-00016", "( (P-AXIS-00016", "(", ""])
+def test_annotation_as_the_pattern(comment: str) -> None:
+    assert annotation_at(comment) == _annotation_by_pattern(comment)
+
+
+@settings(max_examples=400, deadline=None)
+@given(st.text(_COMMENT_CHARS, max_size=30))
+def test_annotation_as_the_pattern_any(comment: str) -> None:
+    assert annotation_at(comment) == _annotation_by_pattern(comment)
+
+
+@pytest.mark.parametrize("key", ["a", "a.b", "a[1]", "a[1][2].b[3]", "a[]", "a[1]b", "a[1]]", "a.", ".a", "",
+                                 "a..b", "a[1].[2]", "a[\u0661]", "a\n", "a[1", "[1]", "wz[01].x"])
+def test_key_form_as_the_pattern(key: str) -> None:
+    assert is_key(key) is (key_form().fullmatch(key) is not None)
+
+
+@settings(max_examples=400, deadline=None)
+@given(st.text(_KEY_CHARS, max_size=16))
+def test_key_form_as_the_pattern_any(key: str) -> None:
+    assert is_key(key) is (key_form().fullmatch(key) is not None)
+
+
+def _part_by_pattern(text: str) -> tuple[str, tuple[int, ...]]:
+    digits = re.findall(r"\[([0-9]+)\]", text)
+    return (re.sub(r"\[([0-9]+)\]", "[]", text),
+            tuple(int(d) if len(d) <= MAX_INDEX_DIGITS else 10**MAX_INDEX_DIGITS for d in digits))
+
+
+@settings(max_examples=400, deadline=None)
+@given(st.text(_KEY_CHARS, max_size=16))
+@example("a[[12]]")
+@example("a[1234567890123456789]")
+def test_indices_as_the_pattern_any(text: str) -> None:
+    assert [text[s:e] for s, e in _indices(text)] == re.findall(r"\[([0-9]+)\]", text)
+    assert _part(text) == _part_by_pattern(text)
