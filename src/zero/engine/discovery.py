@@ -75,7 +75,7 @@ def skipped_note(skipped: dict[str, int]) -> str:
 def joined(folder: str, name: str) -> str:
     """``str(Path(folder) / name)`` for a folder as :func:`zero.files.path_str` gives it and a name of
     a directory listing (no ``/``, never ``.``): how a walk names what it finds."""
-    return name if folder == "." else folder + name if folder.endswith("/") else folder + "/" + name
+    return name if folder == "." else folder + name if folder.endswith(os.sep) else folder + os.sep + name
 
 
 def collect_files(paths: Iterable[FileName], include: Callable[[str], bool] | None = None,

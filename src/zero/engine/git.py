@@ -128,13 +128,13 @@ def _ignore_sources(directory: str, top: str, git_dir: str, excludes: str) -> It
         xdg = os.environ.get("XDG_CONFIG_HOME") or os.path.join(os.path.expanduser("~"), ".config")
         yield path_str(os.path.join(xdg, "git", "ignore"))
     here = path_str(os.path.abspath(directory))
-    top = path_str(top)
+    top = os.path.normcase(path_str(top))  # as Paths compare (without regard to case on Windows)
     d = here
     while True:
         if d != here:
             yield os.path.join(d, ".gitignore")
         parent = os.path.dirname(d)
-        if d == top or parent == d:
+        if os.path.normcase(d) == top or parent == d:
             break
         d = parent
     for root, dirs, files in os.walk(directory):
