@@ -14,6 +14,7 @@ line keeps a process-wide registry.
 from __future__ import annotations
 
 import importlib
+import marshal
 from collections import Counter
 from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
 from operator import itemgetter
@@ -224,18 +225,24 @@ class TableRows(Mapping[str, "tuple[Any, ...] | dict[str, Any]"]):
 
     def __init__(self, kinds: Mapping[str, int], columns: tuple[str, ...] = (),
                  seeds: Mapping[str, dict[str, Any]] | None = None) -> None:
-        self._kinds = kinds  # the kinds that have rows (a kind's: _kind_table(kind).IDS, DATA)
+        self._kinds = kinds  # the kinds that have rows (a kind's: _kind_table(kind).IDS, PACKED)
         self._columns = columns
         self._seeds = seeds or {}
         self._seeded: dict[str, dict[str, Any]] = {}
 
     def table_row(self, pid: object) -> tuple[Any, ...] | None:
-        """The table's own row of ``pid`` (``None``: none), its kind's module read at the first."""
+        """The table's own row of ``pid`` (``None``: none), its kind's module read at the first, the row
+        unmarshalled at its first look-up (``PACKED``: written so by tools/gen_registry.py) and kept."""
         if type(pid) is not str or pid[2:6] not in self._kinds:
             return None
-        table = _kind_table(pid[2:6])
-        at = _position(table.IDS, pid)
-        return table.DATA[at] if at >= 0 else None
+        got = _TABLE_ROWS.get(pid)
+        if got is None:
+            table = _kind_table(pid[2:6])
+            at = _position(table.IDS, pid)
+            if at < 0:
+                return None
+            got = _TABLE_ROWS[pid] = marshal.loads(table.PACKED[at])
+        return got
 
     def get(self, pid: str, default: Any = None) -> Any:
         if pid in self._seeds:
@@ -820,10 +827,11 @@ def _table_key(rows: TableRows, pid: str, seeded_keys: Mapping[str, str | None] 
 
 
 _KIND_TABLES: dict[str, Any] = {}
+_TABLE_ROWS: dict[str, tuple[Any, ...]] = {}  # the built-in table's rows unmarshalled, by ID (shared, never changed)
 
 
 def _kind_table(kind: str) -> Any:
-    """The module of one kind's rows of the built-in table (``data/table_axis.py``: IDS, DATA, KEYS, KEY_IDS),
+    """The module of one kind's rows of the built-in table (``data/table_axis.py``: IDS, PACKED, KEYS, KEY_IDS),
     imported at the kind's first row."""
     got = _KIND_TABLES.get(kind)
     if got is None:
