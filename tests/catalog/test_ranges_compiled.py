@@ -17,10 +17,28 @@ def _generator() -> ModuleType:
     return script_module(ROOT / "tools" / "gen_ranges.py")
 
 
-def test_the_generated_module_is_up_to_date() -> None:
+def test_the_generated_modules_are_up_to_date() -> None:
     """Run ``python tools/gen_ranges.py`` after regenerating table.py or seeds.py."""
-    written = (ROOT / "src" / "zero" / "catalog" / "data" / "ranges_compiled.py").read_text(encoding="utf-8")
-    assert written == _generator().render()  # type: ignore[attr-defined]
+    data = ROOT / "src" / "zero" / "catalog" / "data"
+    rendered = _generator().render()  # type: ignore[attr-defined]
+    assert sorted(rendered) == sorted(p.name for p in data.glob("ranges_compiled*.py"))
+    for name, text in rendered.items():
+        assert (data / name).read_text(encoding="utf-8") == text, name
+
+
+def test_a_lint_reads_the_ranges_of_its_kind_alone() -> None:
+    """Each kind's ranges in a module of their own (issue 40: start-up): a kind without ranges, or an ID that
+    names no kind, has none written; every written range is in its kind's module."""
+    import importlib
+
+    from zero.catalog.data import ranges_compiled
+    from zero.catalog.registry import _written_range
+
+    assert _written_range("P-HWCF-00001") is None and _written_range("P-a.b-00001") is None
+    for pid, written in RANGES.items():
+        assert pid[2:6] in ranges_compiled.KINDS and _written_range(pid) == written
+        module = importlib.import_module(f"zero.catalog.data.ranges_compiled_{pid[2:6].lower()}")
+        assert all(p[2:6] == pid[2:6] for p in module.RANGES)
 
 
 def test_each_written_range_is_what_its_text_parses_to() -> None:

@@ -525,7 +525,7 @@ class Registry:
             if not text:
                 rng = None
             else:
-                written = _compiled_ranges().get(spec.id)
+                written = _written_range(spec.id)
                 rng = decode_range(written[1]) if written is not None and written[0] == text else \
                     parse_range(text, spec.id)
             self._ranges[spec.id] = rng
@@ -537,7 +537,7 @@ class Registry:
         binds, and reads the range of half of them)."""
         rng = self._ranges.get(spec.id, _ABSENT)
         if rng is _ABSENT and spec.range_text:
-            written = _compiled_ranges().get(spec.id)
+            written = _written_range(spec.id)
             if written is not None and written[0] == spec.range_text:
                 return encoded_refers(written[1])
             rng = self.range_of(spec)
@@ -690,18 +690,24 @@ def _counts(registry: Registry) -> dict[str, tuple[tuple[str, int], ...]]:
     return out
 
 
-_COMPILED_RANGES: dict[str, tuple[str, Any]] = {}
+_COMPILED_RANGES: dict[str, dict[str, tuple[str, Any]]] = {}
 
 
-def _compiled_ranges() -> dict[str, tuple[str, Any]]:
-    """ID → (range text, that text parsed, encoded by :func:`~zero.catalog.ranges.encode_range`) of
-    the built-in catalogue, written by ``tools/gen_ranges.py``."""
-    if not _COMPILED_RANGES:
-        from zero.catalog.data.ranges_compiled import RANGES  # start-up: written at build time, at the first range
-
-        _COMPILED_RANGES.update(RANGES)
-        _COMPILED_RANGES.setdefault("", ("", None))  # never empty once read
-    return _COMPILED_RANGES
+def _written_range(pid: str) -> tuple[str, Any] | None:
+    """(range text, that text parsed, encoded by :func:`~zero.catalog.ranges.encode_range`) of ``pid`` in
+    the built-in catalogue, written by ``tools/gen_ranges.py`` (``None``: none written): its kind's module
+    (``data/ranges_compiled_axis.py``) imported at the kind's first range (an axis list's lint reads no
+    channel range)."""
+    kind = pid[2:6]
+    got = _COMPILED_RANGES.get(kind)
+    if got is None:
+        try:  # start-up: written at build time, imported at the kind's first range
+            got = importlib.import_module(f"zero.catalog.data.ranges_compiled_{kind.lower()}").RANGES \
+                if kind.isascii() and kind.isalnum() else {}
+        except ModuleNotFoundError:  # a kind without ranges
+            got = {}
+        _COMPILED_RANGES[kind] = got
+    return got.get(pid)
 
 
 # The fields of a row a ParamSpec is made of, in the order _spec_from_fields reads them.
