@@ -72,14 +72,18 @@ def test_a_lint_and_a_fleet_diff_import_no_typing(tmp_path: Path, command: str, 
     assert "typing" not in modules
 
 
+@pytest.mark.parametrize("config", [None, 'select = ["R"]\nignore = ["R009"]\n'])
 @pytest.mark.parametrize("cache", [False, True])
 @pytest.mark.parametrize("named", ["lists/achse.lis", "./lists/", "lists"])
-def test_a_lint_imports_no_pathlib(tmp_path: Path, named: str, cache: bool) -> None:
+def test_a_lint_imports_no_pathlib(tmp_path: Path, named: str, cache: bool, config: str | None) -> None:
     """pathlib, with the urllib.parse and ipaddress it imports, is 7% of one list's lint at start-up: the lint
     path names files by their text (zero.files.path_str prints them as a Path would), so neither a list nor a
-    folder (walked, .gitignore asked), cold or from the cache, loads it; the names printed are a Path's."""
+    folder (walked, .gitignore asked), cold or from the cache, with a configuration file or without, loads
+    it; the names printed are a Path's. (A configuration's pattern imports pathspec, which imports it.)"""
     lists = tmp_path / "lists"
     lists.mkdir()
+    if config is not None:
+        (tmp_path / "zero.toml").write_text(config, encoding="utf-8")
     (lists / "achse.lis").write_text("kopf.achs_nr 1\nkenngr.swe_pos 5000000000\nEnde\n", encoding="utf-8")
     old = 10**9 * 1_600_000_000  # long settled: the cache keeps its result
     os.utime(lists / "achse.lis", ns=(old, old))
@@ -93,4 +97,5 @@ def test_a_lint_imports_no_pathlib(tmp_path: Path, named: str, cache: bool) -> N
     assert {d["path"] for d in json.loads(report)} == {os.path.join("lists", "achse.lis")}
     assert "zero.engine.discovery" in modules
     assert ("zero.engine.cache" in modules) == cache
+    assert ("zero.engine.config_file" in modules) == (config is not None)
     assert not {"pathlib", "urllib.parse", "ipaddress"} & modules

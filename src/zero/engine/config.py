@@ -24,13 +24,13 @@ from zero.diagnostics import Severity
 from zero.engine.results import LintOptions
 from zero.engine.selection import layered_selection
 from zero.errors import ZeroError
-from zero.files import read_file
+from zero.files import path_str, read_file
 from zero.forms import CONFIG_NAMES, DEFAULT_INCLUDE
 from zero.records import field, record, replace
 
 TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (mypy and ruff read it alike)
 if TYPE_CHECKING:
-    from pathlib import Path  # start-up: pathlib only where a configuration file is read
+    from pathlib import Path  # start-up: pathlib only where a configuration names a file (param-desc, machine)
     from typing import Any, TypeAlias
 
     FileName: TypeAlias = str | os.PathLike[str]  # a file as the engine names it (a Path from the library)
@@ -113,7 +113,7 @@ _OPTIONS: dict[tuple[object, ...], tuple[Config, LintOptions, LintOptions]] = {}
 
 @record
 class Config:
-    path: Path | None = None  # the file it came from; None: defaults
+    path: str | None = None  # the file it came from, as a Path prints it (zero.files.path_str); None: defaults
     select: tuple[str, ...] = ()
     extend_select: tuple[str, ...] = ()
     ignore: tuple[str, ...] = ()
@@ -142,7 +142,7 @@ class Config:
     def root(self) -> Path:
         from pathlib import Path  # start-up: not on the lint path (its files ask relative())
 
-        return self.path.parent if self.path is not None else Path.cwd()
+        return Path(self.path).parent if self.path is not None else Path.cwd()
 
     def relative(self, file: FileName) -> str | None:
         if os.sep != "/" or os.altsep is not None:  # pragma: no cover - Windows: its paths' own rules
@@ -262,7 +262,7 @@ class Config:
         """The effective configuration as TOML (``zero config --show``), each option as it declares."""
         from zero.engine.config_file import OPTIONS  # start-up: only for `zero config --show`
 
-        table = "[tool.zero]" if self.path is None or self.path.name == "pyproject.toml" else None
+        table = "[tool.zero]" if self.path is None or os.path.basename(self.path) == "pyproject.toml" else None
         prefix = "tool.zero." if table else ""
         source = f"# from {self.path}" if self.path else "# no configuration file: defaults"
         if self.parent is not None and self.parent.path is not None:
@@ -280,15 +280,14 @@ class Config:
 _TOML_AT = r"\s*\(at line (\d+), column (\d+)\)\s*$"  # compiled at its first use: a file tomllib refuses
 
 
-def parse_config(file: FileName, text: str | None = None, _chain: tuple[Path, ...] = (),
+def parse_config(file: FileName, text: str | None = None, _chain: tuple[str, ...] = (),
                  over: Config | None = None) -> Config | None:
     """Read one configuration file; ``None`` for a pyproject.toml without ``[tool.zero]``. With
     ``extend = "other.toml"`` the other file is read first and this one is laid over it; ``over``
     lays ``text`` over a configuration already read (``--config KEY=VALUE``)."""
     import tomllib  # start-up: only when a configuration file exists
-    from pathlib import Path  # start-up: as above (a configuration names its file as a Path)
 
-    path = Path(file)
+    path = path_str(file)
     if text is None:
         try:
             # a regular file only (a FIFO or device is refused), and no larger than a configuration is
@@ -316,7 +315,7 @@ def parse_config(file: FileName, text: str | None = None, _chain: tuple[Path, ..
 
     table: tuple[str, ...] = ()
     tool = data.get("tool", {})
-    if path.name == "pyproject.toml":
+    if os.path.basename(path) == "pyproject.toml":
         if not isinstance(tool, dict) or "zero" not in tool:
             return None
         data = tool["zero"]
@@ -345,18 +344,16 @@ def parse_config(file: FileName, text: str | None = None, _chain: tuple[Path, ..
     return cfg
 
 
-def _extended(cfg: Config, value: Any, path: Path, chain: tuple[Path, ...],
+def _extended(cfg: Config, value: Any, path: str, chain: tuple[str, ...],
               fail: Callable[..., ZeroError]) -> Config:
     """``extend = "../zero.toml"``: the inherited configuration under ``cfg`` (its settings where this
     file sets none; its rule selection a layer below this file's), as ruff's ``extend``."""
-    from pathlib import Path  # start-up: only where a configuration file is read
-
     if not isinstance(value, str) or not value:
         raise fail("extend", "expected the path of another configuration file (zero.toml or pyproject.toml)")
-    target = Path(os.path.expanduser(os.path.expandvars(value)))
-    target = target if target.is_absolute() else path.parent / target
-    here = Path(os.path.abspath(path))
-    if Path(os.path.abspath(target)) in (*chain, here) or len(chain) >= MAX_EXTEND_DEPTH:
+    target = path_str(os.path.expanduser(os.path.expandvars(value)))
+    target = target if os.path.isabs(target) else path_str(os.path.join(os.path.dirname(path), target))
+    here = os.path.abspath(path)
+    if os.path.abspath(target) in (*chain, here) or len(chain) >= MAX_EXTEND_DEPTH:
         raise fail("extend", f"{value!r} extends in a circle (or more than {MAX_EXTEND_DEPTH} deep)")
     try:
         parent = parse_config(target, None, (*chain, here))
@@ -367,7 +364,7 @@ def _extended(cfg: Config, value: Any, path: Path, chain: tuple[Path, ...],
     return _layered(parent, path, cfg.given)
 
 
-def _layered(parent: Config, path: Path | None, given: frozenset[str]) -> Config:
+def _layered(parent: Config, path: str | None, given: frozenset[str]) -> Config:
     """A configuration over ``parent``: its settings until the keys in ``given`` replace them, its
     rule selection and its extending keys (``extend-*``) a layer of their own."""
     return replace(parent, path=path, given=given, parent=parent, select=(), extend_select=(), ignore=(),

@@ -14,7 +14,6 @@ import functools
 import os
 import re
 from collections.abc import Callable
-from pathlib import Path
 
 from zero.diagnostics import Severity
 from zero.engine.selection import known_code, rule_table
@@ -25,7 +24,8 @@ from zero.lists.model import parse_key
 from zero.records import record
 
 TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (mypy and ruff read it alike)
-if TYPE_CHECKING:
+if TYPE_CHECKING:  # (pathlib only for the keys that name files: param-desc, [tool.zero.machine])
+    from pathlib import Path
     from typing import Any
 
     from pathspec import GitIgnoreSpec
@@ -69,6 +69,8 @@ def patterns(globs: tuple[str, ...]) -> GitIgnoreSpec:
 
 def project_root(folder: Path) -> Path:
     """The project a configuration belongs to: the git work tree that holds its folder, else the folder."""
+    from pathlib import Path  # start-up: only a configuration that names a machine
+
     return nearest_holding(folder, (".git",)) or Path(os.path.abspath(folder))
 
 
@@ -81,7 +83,7 @@ def _is_reference(key: str) -> bool:
     return ref is not None and len(parsed.indices) == ref.key.count("[]")  # type: ignore[union-attr]
 
 
-def _roots(value: Any, path: Path, root: Path,
+def _roots(value: Any, folder: Path, root: Path,
            fail: Callable[[str | None, str, tuple[str, ...]], ZeroError]) -> tuple[tuple[str, Path], ...]:
     """``roots = {"C:/TwinCAT/3.1/Components/Mc/CNC" = "."}``: an absolute folder of the controller
     and the folder of the project that holds what lies below it (inside the project)."""
@@ -93,9 +95,9 @@ def _roots(value: Any, path: Path, root: Path,
         if not controller_absolute(k.rstrip("/\\") + "/"):
             raise fail("roots", f"{k!r} is no absolute path of the controller (`C:/…`, `/…` or `CncKernelRootDir/…`)",
                        ("machine",))
-        if not within(path.parent / v, root):
+        if not within(folder / v, root):
             raise fail("roots", f"{v!r} lies outside the project {root}", ("machine",))
-        out.append((k, path.parent / v))
+        out.append((k, folder / v))
     return tuple(out)
 
 
@@ -128,8 +130,15 @@ class _Reading:
 
     __slots__ = ("cfg", "path", "table", "text")
 
-    def __init__(self, cfg: Config, path: Path, text: str, table: tuple[str, ...]) -> None:
+    def __init__(self, cfg: Config, path: str, text: str, table: tuple[str, ...]) -> None:
         self.cfg, self.path, self.text, self.table = cfg, path, text, table
+
+    @property
+    def folder(self) -> Path:
+        """The folder of the file, which the paths it names are relative to."""
+        from pathlib import Path  # start-up: only a configuration that names a file (param-desc, machine)
+
+        return Path(self.path).parent
 
     def fail(self, key: str | None, message: str, sub: tuple[str, ...] = ()) -> ZeroError:
         """An error naming the file, the line of ``key`` and the key in full (``tool.zero.kind.*.lis``)."""
@@ -217,7 +226,7 @@ def _read_respect_gitignore(r: _Reading, value: Any) -> None:
 def _read_param_desc(r: _Reading, value: Any) -> None:
     if not isinstance(value, str) or not value:
         raise r.fail("param-desc", "expected the path of a CncParaDesc.xml")
-    r.cfg.param_desc = r.path.parent / value
+    r.cfg.param_desc = r.folder / value
 
 
 def _read_kernel(r: _Reading, value: Any) -> None:
@@ -235,24 +244,24 @@ def _read_kernel(r: _Reading, value: Any) -> None:
 def _read_machine(r: _Reading, value: Any) -> None:
     if not isinstance(value, dict):
         raise r.fail("machine", "expected a table: startup = \"listen/hochlauf.lis\" and list overrides")
-    path, cfg = r.path, r.cfg
-    root = project_root(path.parent)
+    folder, cfg = r.folder, r.cfg
+    root = project_root(folder)
     for mk, mv in value.items():
         if mk == "roots":
-            cfg.machine_roots = _roots(mv, path, root, r.fail)
+            cfg.machine_roots = _roots(mv, folder, root, r.fail)
             continue
         if not isinstance(mv, str) or not mv:
             raise r.fail(mk, "expected a path", ("machine",))
-        if not within(path.parent / mv, root):
+        if not within(folder / mv, root):
             raise r.fail(mk, f"{mv!r} lies outside the project {root}: a configuration names only the "
                          "project's own files (give a path inside it, or --machine on the command line)",
                          ("machine",))
         if mk == "startup":
-            cfg.machine = path.parent / mv
+            cfg.machine = folder / mv
         elif mk == "working-directory":
-            cfg.machine_workdir = path.parent / mv
+            cfg.machine_workdir = folder / mv
         elif _is_reference(mk):
-            cfg.machine_lists[mk] = path.parent / mv
+            cfg.machine_lists[mk] = folder / mv
         else:
             raise r.fail(mk, "expected `startup`, `working-directory`, `roots` or a key of the start-up list "
                          "that names a list, such as `achs_mds[0]` or `hand_mds`", ("machine",))
