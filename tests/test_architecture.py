@@ -49,8 +49,8 @@ MODULES = {module_name(p): p for p in (SRC / "zero").rglob("*.py")}
 
 def component(module: str) -> str:
     parts = module.split(".")
-    if len(parts) == 1 or parts[1] in ("errors", "records", "record_inits", "record_inits_rest", "hints", "diagnostics", "files", "forms",
-                                       "__main__"):
+    if len(parts) == 1 or parts[1] in ("errors", "records", "record_inits", "record_inits_rest", "hints",
+                                       "diagnostics", "files", "forms", "__main__"):
         return FOUNDATION if parts[-1] != "__main__" else "cli"
     return parts[1]
 
