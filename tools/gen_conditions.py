@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """Write the K rules' conditions (``src/zero/catalog/data/startup_errors.py``) as Python functions to
-``startup_compiled.py``, and the prose ranges' (``prose_ranges.py``) to ``prose_compiled.py``: read from
+``startup_compiled_<kind>.py`` (one module per list kind, ``startup_compiled.py`` their index), and the prose
+ranges' (``prose_ranges.py``) to ``prose_compiled.py``: read from
 bytecode at start-up instead of parsed and compiled at each run (issue 40). A row whose condition text
 differs from the one written here is compiled at run time, so a stale module is slower, never wrong; a
 test fails while it is stale. tools/gen_startup.py runs it after writing the rows.
@@ -35,27 +36,54 @@ def _functions(defs: list[str], name: str, condition: str, when: str) -> Node:
     return node
 
 
-def render() -> str:
-    """The module's text, from the rows as they are now."""
+def render() -> dict[str, str]:
+    """The modules' texts by file name, from the rows as they are now: one module per list kind
+    (``startup_compiled_axis.py``: the K rules of that kind, imported at its first check; a lint of an axis
+    list reads no channel rule: issue 40, start-up) and ``startup_compiled.py``, their index (the kinds, and
+    COMPILED of every kind, built on first use, for tools and tests)."""
     from zero.catalog.condition_source import HELPERS
     from zero.catalog.conditions import ref_elements, refs
     from zero.catalog.data.startup_errors import ERRORS
 
-    defs: list[str] = []
-    table: list[str] = []
+    defs: dict[str, list[str]] = {}
+    table: dict[str, list[str]] = {}
     for row in ERRORS:
         condition, when = str(row.get("condition", "")), str(row.get("when", ""))
         if not condition:
             continue
-        code = str(row["code"])
-        node = _functions(defs, f"_{code}", condition, when)
-        table.append(f"    {code!r}: ({condition!r}, {when!r}, _{code}, {f'_{code}_when' if when else 'None'},\n"
-                     f"             {tuple(refs(node))!r}, {tuple(ref_elements(node))!r}),")
-    head = ('"""The K rules\' conditions of startup_errors.toml as Python, written by tools/gen_conditions.py.\n\n'
-            'Generated: do not edit."""\n\n'
-            "# ruff: noqa\n# mypy: ignore-errors\n"
-            f"from zero.catalog.condition_helpers import {', '.join(HELPERS)}\n\n\n")
-    return head + "\n\n".join(defs) + "\n\nCOMPILED = {\n" + "\n".join(table) + "\n}\n"
+        code, kind = str(row["code"]), str(row["list"])
+        node = _functions(defs.setdefault(kind, []), f"_{code}", condition, when)
+        table.setdefault(kind, []).append(
+            f"    {code!r}: ({condition!r}, {when!r}, _{code}, {f'_{code}_when' if when else 'None'},\n"
+            f"             {tuple(refs(node))!r}, {tuple(ref_elements(node))!r}),")
+    kinds = tuple(sorted(table))
+    out = {"startup_compiled.py": (
+        '"""The K rules\' conditions of startup_errors.toml as Python, written by tools/gen_conditions.py: each list\n'
+        "kind's in a module of its own (``startup_compiled_axis.py``: COMPILED, code -> (condition, guard, the\n"
+        "condition's function, the guard's or None, the parameters it reads, the elements it shows)), imported at\n"
+        "the first check of that kind; here the kinds, and COMPILED of every kind (built on first use, for tools\n"
+        "and tests).\n\n"
+        'Generated: do not edit."""\n\n'
+        "# ruff: noqa\n# mypy: ignore-errors\n"
+        "import importlib\n\n"
+        f"KINDS = {kinds!r}\n"
+        "_COMPILED = {}\n\n\n"
+        "def __getattr__(name):\n"
+        "    if name != \"COMPILED\":\n"
+        "        raise AttributeError(f\"module {__name__!r} has no attribute {name!r}\")\n"
+        "    if not _COMPILED:\n"
+        "        for kind in KINDS:\n"
+        "            _COMPILED.update(importlib.import_module(f\"{__name__}_{kind.lower()}\").COMPILED)\n"
+        "    return _COMPILED\n")}
+    for kind in kinds:
+        head = (f'"""The {kind} K rules\' conditions of startup_errors.toml as Python (see startup_compiled.py),\n'
+                'written by tools/gen_conditions.py.\n\n'
+                'Generated: do not edit."""\n\n'
+                "# ruff: noqa\n# mypy: ignore-errors\n"
+                f"from zero.catalog.condition_helpers import {', '.join(HELPERS)}\n\n\n")
+        out[f"startup_compiled_{kind.lower()}.py"] = \
+            head + "\n\n".join(defs[kind]) + "\n\nCOMPILED = {\n" + "\n".join(table[kind]) + "\n}\n"
+    return out
 
 
 def render_prose() -> str:
@@ -84,7 +112,9 @@ def render_prose() -> str:
 
 
 def main() -> None:
-    for name, text in (("startup_compiled.py", render()), ("prose_compiled.py", render_prose())):
+    for stale in DATA.glob("startup_compiled_*.py"):  # a kind that has no K rule any more
+        stale.unlink()
+    for name, text in (*render().items(), ("prose_compiled.py", render_prose())):
         target = DATA / name
         target.write_text(text, encoding="utf-8")
         print(f"wrote {target}")

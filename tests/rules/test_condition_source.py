@@ -27,10 +27,21 @@ def _generator() -> object:
     return script_module(ROOT / "tools" / "gen_conditions.py")
 
 
-def test_the_generated_module_is_up_to_date() -> None:
+def test_the_generated_modules_are_up_to_date() -> None:
     """Run ``python tools/gen_conditions.py`` after editing startup_errors.toml (and gen_startup.py)."""
-    written = (ROOT / "src" / "zero" / "catalog" / "data" / "startup_compiled.py").read_text(encoding="utf-8")
-    assert written == _generator().render()  # type: ignore[attr-defined]
+    data = ROOT / "src" / "zero" / "catalog" / "data"
+    rendered = _generator().render()  # type: ignore[attr-defined]
+    assert sorted(rendered) == sorted(p.name for p in data.glob("startup_compiled*.py"))
+    for name, text in rendered.items():
+        assert (data / name).read_text(encoding="utf-8") == text, name
+
+
+def test_each_kind_reads_its_own_written_conditions() -> None:
+    """Each kind's K conditions in a module of their own (issue 40: start-up): every check's is in its
+    kind's, and a kind without any has none."""
+    for err in startup.CHECKS:
+        assert startup._written_of(err.kind).get(err.code) is COMPILED[err.code]
+    assert startup._written_of("HWCF") == {} and startup._written_of("a.b") == {}
 
 
 def test_the_generated_prose_module_is_up_to_date() -> None:
@@ -99,7 +110,7 @@ def test_compiled_takes_the_written_function_and_its_reads() -> None:
 
 def test_a_stale_row_is_compiled_from_its_text(monkeypatch: pytest.MonkeyPatch) -> None:
     err = startup.CHECKS[0]
-    monkeypatch.setitem(sys.modules["zero.catalog.data.startup_compiled"].COMPILED, err.code,
+    monkeypatch.setitem(startup._written_of(err.kind), err.code,
                         ("something else", "", lambda _lookup: True, None, (), ()))
     monkeypatch.setattr(startup, "_compiled", {})
     got = startup.compiled(err)

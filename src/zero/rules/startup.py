@@ -12,6 +12,7 @@ does, the message says so.
 
 from __future__ import annotations
 
+import importlib
 import itertools
 import os
 import re
@@ -64,7 +65,22 @@ class _Compiled:
 
 
 _compiled: dict[str, _Compiled] = {}
-_written: list[dict[str, tuple[Any, ...]]] = []  # startup_compiled.COMPILED, once read
+_written: dict[str, dict[str, tuple[Any, ...]]] = {}  # kind -> startup_compiled_<kind>.COMPILED, once read
+
+
+def _written_of(kind: str) -> dict[str, tuple[Any, ...]]:
+    """The K conditions of one list kind written at build time (``data/startup_compiled_axis.py``, ...),
+    imported at the kind's first check (an axis list's lint reads no channel rule); empty for a kind
+    that has none."""
+    got = _written.get(kind)
+    if got is None:
+        try:  # start-up: written at build time, imported at the kind's first check
+            got = importlib.import_module(f"zero.catalog.data.startup_compiled_{kind.lower()}").COMPILED \
+                if kind.isascii() and kind.isalnum() else {}
+        except ModuleNotFoundError:  # a kind without K rules written
+            got = {}
+        _written[kind] = got
+    return got
 
 
 def compiled(err: StartupError) -> _Compiled:
@@ -72,11 +88,7 @@ def compiled(err: StartupError) -> _Compiled:
     needs the axis checks)."""
     hit = _compiled.get(err.code)
     if hit is None:
-        if not _written:
-            from zero.catalog.data.startup_compiled import COMPILED  # start-up: written at build time, first check
-
-            _written.append(COMPILED)
-        pre = _written[0].get(err.code)
+        pre = _written_of(err.kind).get(err.code)
         if pre is not None and pre[:2] == (err.condition_text, err.when_text):  # else stale: compiled here
             hit = _compiled[err.code] = _Compiled(*pre[2:])
             return hit
