@@ -14,6 +14,7 @@ with its location, which :mod:`zero.rules.syntax` turns into a finding.
 from __future__ import annotations
 
 import re
+import sys
 from array import array
 from collections.abc import Iterable, Sequence
 from functools import cache
@@ -439,12 +440,32 @@ def _row_pattern(binary: bool, crlf: bool, widths: bool) -> re.Pattern[Any]:
     of a str pattern does: spelt out."""
     got = _ROW_PATTERNS.get((binary, crlf, widths))
     if got is None:
-        source = _ROW_AT if widths else _ROW
-        if not crlf:  # after a comment, the line's end: no test of it
-            source = source.replace(r"(?:([^\s|][^\r\n]*+)|)(?:\r?+(?=\n)|\Z)", r"(?:([^\s|][^\n]*+)|(?=\n|\Z))")
-        got = re.compile(source.replace(r"\s", r" \t\n\r\f\v\x1c-\x1f").encode("ascii") if binary else source)
-        _ROW_PATTERNS[binary, crlf, widths] = got
+        source = row_source(binary, crlf, widths)
+        got = _ROW_PATTERNS[binary, crlf, widths] = _written_pattern(source) or re.compile(source)
     return got
+
+
+def row_source(binary: bool, crlf: bool, widths: bool) -> str | bytes:
+    """The source of :func:`_row_pattern`'s pattern."""
+    source = _ROW_AT if widths else _ROW
+    if not crlf:  # after a comment, the line's end: no test of it
+        source = source.replace(r"(?:([^\s|][^\r\n]*+)|)(?:\r?+(?=\n)|\Z)", r"(?:([^\s|][^\n]*+)|(?=\n|\Z))")
+    return source.replace(r"\s", r" \t\n\r\f\v\x1c-\x1f").encode("ascii") if binary else source
+
+
+def _written_pattern(source: str | bytes) -> re.Pattern[Any] | None:
+    """The pattern of ``source`` from the code ``re`` compiled it to at build time (``row_codes.py``, written by
+    tools/gen_row_codes.py): the same pattern (``==``: the same code), without parsing and compiling it again
+    (start-up: the row pattern was a twentieth of a short list's lint). ``None`` where that module was written
+    by another Python or regular expression engine, or for another source: then it is compiled here."""
+    from zero.lists import row_codes  # start-up: the written code only with the first list read
+
+    sre = sys.modules.get("_sre")  # the engine of re (loaded with it): its compile takes the code
+    written = row_codes.CODES.get(source)
+    if written is None or sre is None or (*sys.version_info[:2], sre.MAGIC, sre.CODESIZE) != row_codes.BUILT:
+        return None
+    flags, code, groups, indexgroup = written
+    return sre.compile(source, flags, list(code), groups, {}, indexgroup)  # type: ignore[no-any-return]
 
 
 _CHUNK = 1 << 18  # characters of text read per pattern call: bounded memory for the match tuples
