@@ -202,7 +202,7 @@ def check_repository(data: bytes) -> None:
     (root / ".git" / "info").mkdir(parents=True, exist_ok=True)
     (root / ".git" / "info" / "exclude").write_bytes(parts[1])
     (root / "zero.toml").write_bytes(parts[2])
-    made: set[Path] = set()
+    made: set[str] = set()  # collect_files names files by their text, as a Path prints it
     for raw in parts[3].split(b"\n")[:40]:
         name = bytes(c for c in raw if c in _SAFE_NAME or c == ord("/")).decode("ascii").strip("/ ")
         if not name or any(seg in ("", ".", "..", ".git") for seg in name.split("/")):
@@ -213,7 +213,7 @@ def check_repository(data: bytes) -> None:
             path.write_bytes(b"kanal_anzahl 1\n")
         except OSError:  # a name that is a folder already, or too long
             continue
-        made.add(path)
+        made.add(str(path))
     exclude = None
     try:
         cfg = parse_config(root / "zero.toml", parts[2].decode("utf-8", "replace"))
@@ -221,9 +221,10 @@ def check_repository(data: bytes) -> None:
     except ZeroError:
         pass
     found = collect_files([root], exclude=exclude, note=lambda _text: None)
-    for f in found:
-        assert f in made or f.suffix != ".lis", (f, made)
-        assert f.is_file() and not f.is_symlink() and f.resolve().is_relative_to(root.resolve()), f
+    for name in found:
+        f = Path(name)
+        assert name in made or f.suffix != ".lis", (name, made)
+        assert f.is_file() and not f.is_symlink() and f.resolve().is_relative_to(root.resolve()), name
 
 
 _XML_HEAD = b'<?xml version="1.0" encoding="utf-8"?>\n'

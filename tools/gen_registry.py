@@ -139,7 +139,8 @@ def _kind_module(kind: str, rows: list[dict[str, object]], columns: list[str]) -
     keys = sorted(first)
     lines = [KIND_HEAD.replace("{kind}", kind), _constant("IDS", "tuple[str, ...]", tuple(str(r["id"]) for r in rows)),
              "PACKED: tuple[bytes, ...] = ("]
-    lines.extend(f"    {marshal.dumps(tuple(_tupled(r.get(c)) for c in columns), 2)!r},  # {r['id']}" for r in rows)
+    lines.extend(f"    {marshal.dumps(tuple(_tupled(r.get(c)) for c in columns), 2)!r},  # {r['id']}"  # type: ignore[misc]
+                 for r in rows)
     lines.append(")")
     lines.append(_constant("KEYS", "tuple[str, ...]", tuple(keys)))
     lines.append(_constant("KEY_IDS", "tuple[str, ...]", tuple(first[k] for k in keys)))

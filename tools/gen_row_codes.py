@@ -21,7 +21,7 @@ TARGET = Path(__file__).resolve().parent.parent / "src" / "zero" / "lists" / "ro
 
 def render() -> str:
     """The module's text, from the patterns as they are now and this Python's engine."""
-    import _sre
+    import _sre  # type: ignore[import-not-found]
     from re import _compiler, _parser  # type: ignore[attr-defined]
 
     from zero.lists.tokenizer import row_source

@@ -462,7 +462,8 @@ def _written_pattern(source: str | bytes) -> re.Pattern[Any] | None:
 
     sre = sys.modules.get("_sre")  # the engine of re (loaded with it): its compile takes the code
     written = row_codes.CODES.get(source)
-    if written is None or sre is None or (*sys.version_info[:2], sre.MAGIC, sre.CODESIZE) != row_codes.BUILT:
+    if (written is None or sre is None or sys.implementation.name != "cpython"  # (another Python's engine is its own)
+            or (*sys.version_info[:2], sre.MAGIC, sre.CODESIZE) != row_codes.BUILT):
         return None
     flags, code, groups, indexgroup = written
     return sre.compile(source, flags, list(code), groups, {}, indexgroup)  # type: ignore[no-any-return]
