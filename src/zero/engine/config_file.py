@@ -16,6 +16,7 @@ import re
 from collections.abc import Callable
 
 from zero.diagnostics import Severity
+from zero.engine.globs import GlobSpec
 from zero.engine.selection import known_code, rule_table
 from zero.errors import ZeroError
 from zero.files import nearest_holding, within
@@ -28,8 +29,6 @@ if TYPE_CHECKING:  # (pathlib only for the keys that name files: param-desc, [to
     from pathlib import Path
     from typing import Any
 
-    from pathspec import GitIgnoreSpec
-
     # The configuration being read (zero.engine.config's Config) is `Any` here: that module imports
     # this one where a file is read, and the layers allow no circle, not even through annotations.
     Config = Any
@@ -39,7 +38,7 @@ MAX_PATTERN_LENGTH = 512
 
 
 @functools.lru_cache(maxsize=512)
-def patterns(globs: tuple[str, ...]) -> GitIgnoreSpec:
+def patterns(globs: tuple[str, ...]) -> GlobSpec:
     """Patterns with gitignore's meaning (``old/``, ``/old/**``, ``**/nullp*.lis``, ``[n]*``),
     relative to the configuration's directory (a leading ``./`` is allowed); :class:`ZeroError`
     for a pattern that cannot be read."""
@@ -52,17 +51,15 @@ def patterns(globs: tuple[str, ...]) -> GitIgnoreSpec:
         stars = max((len(re.findall(r"\*+", s)) for s in segments if s != "**"), default=0)
         deep = sum(1 for s in segments if s == "**")
         if len(text) > MAX_PATTERN_LENGTH or stars > MAX_PATTERN_WILDCARDS or deep > MAX_PATTERN_WILDCARDS:
-            # pathspec matches with a backtracking regular expression: the time a name takes grows as
-            # its length to the power of the wildcards in one segment (100: 12 s per file, 8: 20 s on
-            # a 60-character name); 3 keep the worst name of 255 characters below 30 ms
+            # a pattern is matched with a backtracking regular expression (zero.engine.globs', pathspec's):
+            # the time a name takes grows as its length to the power of the wildcards in one segment (100:
+            # 12 s per file, 8: 20 s on a 60-character name); 3 keep the worst name of 255 characters below 30 ms
             raise ZeroError(f"pattern {g[:40]!r}{'…' if len(g) > 40 else ''}: too complex (at most "
                             f"{MAX_PATTERN_WILDCARDS} `*` in one path segment, {MAX_PATTERN_WILDCARDS} `**` "
                             f"and {MAX_PATTERN_LENGTH} characters)")
         lines.append(text)
-    import pathspec  # start-up: only where a pattern is matched (not for files named with the defaults)
-
-    try:
-        return pathspec.GitIgnoreSpec.from_lines(lines)
+    try:  # GitIgnoreSpec's answers without importing pathspec (but for what zero.engine.globs leaves to it)
+        return GlobSpec(lines)
     except (ValueError, TypeError) as exc:
         raise ZeroError(f"a pattern cannot be read: {exc}") from None
 
