@@ -583,7 +583,7 @@ def check_values(ctx: Context) -> Iterator[Diagnostic]:
     cols = ctx.doc.columns
     texts = cols.values
     rows: list[int] = []  # rows to visit
-    by_value: dict[str, bool] = registry.memo.get("by_value", {})
+    by_value: dict[str, bool] = registry.memo.setdefault("by_value", {})  # _by_value's, kept per registry
     pattern_shapes, shape_rows, value, valueless = ctx.pattern_shapes, ctx.shape_rows, cols.value, ctx.valueless
     for pattern, hit in ctx.bound.items():
         if hit is None:
@@ -665,10 +665,11 @@ def _ref_plan(registry: Registry, spec: ParamSpec) -> RefPlan | None:
     plan = None
     if spec.id not in _prose_rows() and spec.range_text and not spec.enum:
         rng = registry.range_of(spec)
-        if rng is not None and rng.allowed is None and rng.refs:
-            unpaired = {r.id for r in rng.refs if r.index is None and not _same_indices(registry, spec, r.id)}
-            if not any(r.id in unpaired and r.index is not None for r in rng.refs):  # else: as each entry
-                plan = (tuple((r.id, r.index) for r in rng.refs if r.id not in unpaired), tuple(sorted(unpaired)))
+        refs = rng.refs if rng is not None and rng.allowed is None else None  # walked once
+        if refs:
+            unpaired = {r.id for r in refs if r.index is None and not _same_indices(registry, spec, r.id)}
+            if not any(r.id in unpaired and r.index is not None for r in refs):  # else: as each entry
+                plan = (tuple((r.id, r.index) for r in refs if r.id not in unpaired), tuple(sorted(unpaired)))
     memo[spec.id] = plan
     return plan
 
