@@ -440,13 +440,12 @@ class Registry:
     def by_pattern(self, pattern: str, kind: str | None) -> ParamSpec | None:
         """The spec for a key pattern (``np_grp[].achse[].versch``) in a list kind."""
         slot = (kind, pattern)
-        try:
-            return self._pattern_specs[slot]
-        except KeyError:
+        spec = self._pattern_specs.get(slot, _ABSENT)  # not try/except: a list's first look-ups all miss
+        if spec is _ABSENT:
             spec = self._by_pattern(pattern, kind)
             if len(self._pattern_specs) < 100_000:
                 self._pattern_specs[slot] = spec
-            return spec
+        return spec  # type: ignore[no-any-return]
 
     def _by_pattern(self, pattern: str, kind: str | None) -> ParamSpec | None:
         if kind is not None:
@@ -518,9 +517,8 @@ class Registry:
         """The parsed formal range of a spec (parsed once, cached). The built-in catalogue's ranges
         are parsed at build time (``tools/gen_ranges.py``); a text that differs from the one parsed
         there (a user's catalogue, or a stale module) is parsed here."""
-        try:
-            return self._ranges[spec.id]
-        except KeyError:
+        rng = self._ranges.get(spec.id, _ABSENT)  # not try/except: a list's first look-ups all miss
+        if rng is _ABSENT:
             text = spec.range_text
             if not text:
                 rng = None
@@ -529,7 +527,7 @@ class Registry:
                 rng = decode_range(written[1]) if written is not None and written[0] == text else \
                     parse_range(text, spec.id)
             self._ranges[spec.id] = rng
-            return rng
+        return rng  # type: ignore[no-any-return]
 
     def range_refers(self, spec: ParamSpec) -> bool:
         """Whether ``spec``'s formal range refers to other parameters (``range_of(spec).refs``), read from the
@@ -571,10 +569,9 @@ class Registry:
         hint = kind_hint(path)
         memo: dict[tuple[str | None, tuple[tuple[str, int], ...]], str | None] = self.memo.setdefault("kinds", {})
         slot = (hint, tuple(counts.items()))
-        try:
-            return memo[slot]
-        except KeyError:
-            pass
+        got = memo.get(slot, _ABSENT)
+        if got is not _ABSENT:
+            return got  # type: ignore[no-any-return]
         votes: dict[str, int] = {}
         kinds_of = self._kinds_of
         for p, n in counts.items():

@@ -300,6 +300,7 @@ _NO_KEY: tuple[str, tuple[int, ...], bool] = ("", (), False)
 # a key without a first index (`kenngr.swe_pos`) -> its shape key (pattern, indices, False), or None where
 # it is no key: parsed once per run (a fleet's lists repeat their keys)
 _UNINDEXED: dict[str, tuple[str, tuple[int, ...], bool] | None] = {}
+_MISSING: Any = object()  # what a memo's .get gives for a key it does not hold
 
 
 def _rows_by_shape(shape: Sequence[int], count: int) -> list[Sequence[int]]:
@@ -342,14 +343,13 @@ def take(column: Sequence[int], rows: Sequence[int]) -> Sequence[int]:
 
 def _unindexed(text: str) -> tuple[str, tuple[int, ...], bool] | None:
     """``ListValues.shape_keys``'s entry of a shape without a first index, from its key text."""
-    try:
-        return _UNINDEXED[text]
-    except KeyError:
+    got = _UNINDEXED.get(text, _MISSING)  # not try/except: a list's first look-ups all miss
+    if got is _MISSING:
         key = parse_key(text)
         got = (key.pattern, key.indices, False) if key is not None else None
         if len(_UNINDEXED) < 65_536:
             _UNINDEXED[text] = got
-        return got
+    return got  # type: ignore[no-any-return]
 
 
 @record
@@ -423,9 +423,8 @@ class ListValues:
         memo: dict[str, tuple[ParamSpec, bool] | None] = registry.memo.setdefault(f"bound:{kind}", {})
         bound = out.bound
         for pattern in pattern_shapes:
-            try:
-                hit = memo[pattern]
-            except KeyError:
+            hit = memo.get(pattern, _MISSING)  # not try/except: a list's first look-ups all miss
+            if hit is _MISSING:
                 hit = bind(registry, pattern, kind)
                 if len(memo) < 65_536:
                     memo[pattern] = hit

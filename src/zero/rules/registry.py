@@ -141,9 +141,8 @@ def check_keys(ctx: Context) -> Iterator[Diagnostic]:
     known_specs: dict[str, ParamSpec | None] = reg.memo.setdefault(f"key_specs:{ctx.kind}", {})
     shape_rows, shape_keys = ctx.shape_rows, ctx.shape_keys
     for pattern, shapes in ctx.pattern_shapes.items():
-        try:
-            spec = known_specs[pattern]
-        except KeyError:
+        spec = known_specs.get(pattern, _MISSING)  # not try/except: a list's first look-ups all miss
+        if spec is _MISSING:
             spec = reg.by_pattern(pattern, ctx.kind)
             if len(known_specs) < 65_536:
                 known_specs[pattern] = spec
@@ -658,10 +657,9 @@ def _ref_plan(registry: Registry, spec: ParamSpec) -> RefPlan | None:
     then, where that refuses the value, their other elements). ``None``: each entry is judged on its
     own. Kept per registry."""
     memo: dict[str, RefPlan | None] = registry.memo.setdefault("ref_plan", {})
-    try:
-        return memo[spec.id]
-    except KeyError:
-        pass
+    got = memo.get(spec.id, _MISSING)  # not try/except: a list's first look-ups all miss
+    if got is not _MISSING:
+        return got  # type: ignore[no-any-return]
     plan = None
     if spec.id not in _prose_rows() and spec.range_text and not spec.enum:
         rng = registry.range_of(spec)
@@ -840,6 +838,7 @@ def _check_value(ctx: Context, res: Resolved) -> Iterator[Diagnostic]:
 
 _defaults: dict[int, tuple[ParamSpec, Number | None]] = {}
 _constant: dict[int, tuple[Range, Bounds | None]] = {}
+_MISSING: Any = object()  # what a memo's .get gives for a key it does not hold
 
 
 def _default_of(spec: ParamSpec) -> Number | None:
