@@ -299,19 +299,23 @@ class KeyIndex(Mapping[tuple[str, str], str]):
     bisects its kind's keys, no dictionary of every key is built at start-up. Iterated in the order of the
     IDs (the order of the rows, the first row of each key)."""
 
-    __slots__ = ("_keys_of", "_kinds", "_order")
+    __slots__ = ("_keys_of", "_kinds", "_order", "_tables")
 
     def __init__(self, kinds: Mapping[str, Any], keys_of: Callable[[str], tuple[Sequence[str], Sequence[str]]]) -> None:
         self._kinds = kinds  # the kinds that have keys
         self._keys_of = keys_of  # a kind's keys sorted, and the ID of each
         self._order: list[tuple[str, str]] | None = None  # every pair in the IDs' order, once iterated
+        self._tables: dict[str, tuple[Sequence[str], Sequence[str]]] = {}  # keys_of's answers, by kind
 
     def get(self, pair: tuple[str, str], default: Any = None) -> Any:
         try:
             kind, key = pair
-            if kind not in self._kinds:
-                return default
-            keys, ids = self._keys_of(kind)
+            table = self._tables.get(kind)
+            if table is None:
+                if kind not in self._kinds:
+                    return default
+                table = self._tables[kind] = self._keys_of(kind)
+            keys, ids = table
             at = bisect_left(keys, key)
         except (TypeError, ValueError):  # no (kind, key) pair
             return default
@@ -356,7 +360,9 @@ class SpecTable(Mapping[str, "ParamSpec"]):
     def __getitem__(self, param_id: str) -> ParamSpec:
         spec = self._built.get(param_id)
         if spec is None:
-            row = self._rows[param_id]
+            row = self._rows.get(param_id)  # TableRows.get: not its __getitem__ over it
+            if row is None:
+                raise KeyError(param_id)
             if isinstance(row, tuple):
                 spec = self._built[param_id] = _spec_from_fields(self._pick((*row, None)), self._index_base)
             else:
