@@ -583,12 +583,15 @@ def check_values(ctx: Context) -> Iterator[Diagnostic]:
     texts = cols.values
     rows: list[int] = []  # rows to visit
     by_value: dict[str, bool] = registry.memo.setdefault("by_value", {})  # _by_value's, kept per registry
+    read: dict[tuple[str, str], Value] = registry.memo.setdefault("values", {})  # ListValues.value_of_text's
+    kinds = cols.kinds
     pattern_shapes, shape_rows, value, valueless = ctx.pattern_shapes, ctx.shape_rows, cols.value, ctx.valueless
     for pattern, hit in ctx.bound.items():
         if hit is None:
             continue
         spec = hit[0]
-        if not (by_value.get(spec.id) or _by_value(registry, spec)):  # each entry's own verdict (entry built if fails)
+        # each entry's own verdict (entry built if fails)
+        if not (by_value.get(spec.id) or _by_value(registry, spec, by_value)):
             plan = _ref_plan(registry, spec)
             if plan is None:
                 rows.extend(r for r in ctx.value_rows(pattern) if not _passes(ctx, ctx.sketch_at(r), True))
@@ -604,7 +607,8 @@ def check_values(ctx: Context) -> Iterator[Diagnostic]:
                 slot = (spec.id, texts[vid])
                 verdict = passed.get(slot) or verdicts.get(slot)
                 if verdict is None:
-                    verdict = verdicts[slot] = _value_passes(ctx, spec, vid, group[0])
+                    verdict = verdicts[slot] = _value_passes(ctx, spec, read.get(slot) or ctx.value_of_text(
+                        spec, slot[1], kinds[vid]), group[0])
                     if verdict and len(passed) < 65_536:
                         passed[slot] = True
                 if not verdict:
@@ -621,7 +625,8 @@ def check_values(ctx: Context) -> Iterator[Diagnostic]:
                 if verdict is None:
                     if first is None:
                         first = dict(zip(reversed(ids), reversed(group), strict=True))  # each value's first row
-                    verdict = verdicts[slot] = _value_passes(ctx, spec, vid, first[vid])
+                    verdict = verdicts[slot] = _value_passes(ctx, spec, read.get(slot) or ctx.value_of_text(
+                        spec, slot[1], kinds[vid]), first[vid])
                     if verdict and len(passed) < 65_536:
                         passed[slot] = True
                 if not verdict:
@@ -635,10 +640,10 @@ def check_values(ctx: Context) -> Iterator[Diagnostic]:
             yield from _check_value(ctx, res)
 
 
-def _by_value(registry: Registry, spec: ParamSpec) -> bool:
+def _by_value(registry: Registry, spec: ParamSpec, memo: dict[str, bool]) -> bool:
     """Whether the findings on a value of ``spec`` depend on the value alone (not on the entry's
-    indices or the list's other values): then a value is checked once. Kept per registry."""
-    memo: dict[str, bool] = registry.memo.setdefault("by_value", {})
+    indices or the list's other values): then a value is checked once. Kept per registry (``memo``: its
+    ``registry.memo["by_value"]``)."""
     got = memo.get(spec.id)
     if got is None:
         got = memo[spec.id] = spec.id not in _prose_rows() and not registry.range_refers(spec)  # prose reads others
@@ -708,11 +713,10 @@ def _ref_failures(ctx: Context, spec: ParamSpec, pattern: str, plan: RefPlan) ->
     return out
 
 
-def _value_passes(ctx: Context, spec: ParamSpec, vid: int, row: int) -> bool:
-    """Whether value ``vid`` (at ``row``, the first of it) of a parameter of :func:`_by_value` passes:
+def _value_passes(ctx: Context, spec: ParamSpec, v: Value, row: int) -> bool:
+    """Whether value ``v`` (read at ``row``, the first of it) of a parameter of :func:`_by_value` passes:
     :func:`_range_verdict` where it tells, else the entry's own verdict."""
-    cols = ctx.doc.columns
-    got = _range_verdict(ctx.registry, spec, ctx.value_of_text(spec, cols.values[vid], cols.kinds[vid]), {})
+    got = _range_verdict(ctx.registry, spec, v, _NO_READ)
     return _passes(ctx, ctx.sketch_at(row)) if got is None else got
 
 
@@ -839,6 +843,7 @@ def _check_value(ctx: Context, res: Resolved) -> Iterator[Diagnostic]:
 _defaults: dict[int, tuple[ParamSpec, Number | None]] = {}
 _constant: dict[int, tuple[Range, Bounds | None]] = {}
 _MISSING: Any = object()  # what a memo's .get gives for a key it does not hold
+_NO_READ: dict[tuple[str, int | None], Number | None] = {}  # _range_verdict's values read: none (never written)
 
 
 def _default_of(spec: ParamSpec) -> Number | None:
