@@ -83,3 +83,25 @@ def test_one_resolution_ends_with_its_block(tmp_path: Path, monkeypatch: pytest.
     with one_resolution():
         assert cfg.relative(link / "m.lis") == "m.lis"
     assert os.path.islink(link)
+
+
+
+def test_the_toml_guard_is_asked_where_a_key_could_be_too_long(tmp_path: Path) -> None:
+    """parse_config asks guard_toml only of a text of MAX_NESTING dots or more (a key of more than
+    MAX_NESTING parts, which it refuses, holds as many): a usual configuration loads no zero.structured.toml."""
+    from zero.engine.config import _GUARDED_DOTS, parse_config
+    from zero.errors import ZeroError
+    from zero.structured.common import MAX_NESTING
+    from zero.structured.toml import guard_toml
+
+    assert _GUARDED_DOTS == MAX_NESTING
+    cfg = tmp_path / "zero.toml"
+    cfg.write_text("x." + ".".join(["k"] * 64) + " = 1\n", encoding="utf-8")  # 65 parts, 64 dots
+    with pytest.raises(ZeroError, match="more than 64 dotted parts"):
+        parse_config(cfg)
+    most = ".".join(["k"] * 64) + " = 1\n"  # 64 parts, 63 dots: read, as guard_toml reads it
+    assert most.count(".") == _GUARDED_DOTS - 1
+    guard_toml(most)
+    pyproject = tmp_path / "pyproject.toml"
+    pyproject.write_text('[tool.zero]\nselect = ["R"]\n\n[tool.other]\n' + most, encoding="utf-8")
+    assert parse_config(pyproject) is not None
