@@ -60,8 +60,11 @@ _OPS: dict[str, Callable[[Number, Number], _Value]] = {
 def _member(v: _Value, choices: tuple[Number | str, ...], negated: bool) -> _Value:
     if v is None:
         return None
-    hit = any(v == c for c in choices if isinstance(v, str) == isinstance(c, str))
-    return hit != negated
+    text = isinstance(v, str)
+    for c in choices:  # any(): a loop, not a generator left unfinished
+        if isinstance(c, str) == text and v == c:
+            return not negated
+    return negated
 
 
 def _not(v: _Value) -> _Value:

@@ -174,6 +174,8 @@ def parse_int(text: str) -> int | None:
     try:
         if len(body) > 1000:  # beyond every type (reported as too large); shown as a number of its size
             return sign * 10**1000
+        if "." in body:  # what int() refuses: said without raising its ValueError (a real's default, `0.5`)
+            return None
         if body.lower().startswith("0x"):
             return sign * int(body, 16)
         return sign * int(body)
@@ -203,13 +205,24 @@ def default_number(spec: ParamSpec, values: ListValues | None = None, depth: int
         return None
 
 
+def _has_number(symbols: tuple[tuple[str, int | None], ...], n: int) -> bool:
+    """Whether a symbol's number is ``n`` (not any() over a generator: one it leaves unfinished is closed
+    by raising GeneratorExit in it)."""
+    return n in [val for _, val in symbols]
+
+
+def _no_numbers(symbols: tuple[tuple[str, int | None], ...]) -> bool:
+    """Whether no symbol has a number (not all() over a generator: see _has_number)."""
+    return [val for _, val in symbols].count(None) == len(symbols)
+
+
 def _symbol_number(spec: ParamSpec, word: str) -> tuple[bool, int | None]:
     """Is ``word`` an allowed symbol (or its number)? And its numeric value."""
     for name, val in spec.symbols:
         if name == word:
             return True, val
     n = parse_int(word)
-    if n is not None and (any(val == n for _, val in spec.symbols) or (spec.bits and spec.bits_allow(n))):
+    if n is not None and (_has_number(spec.symbols, n) or (spec.bits and spec.bits_allow(n))):
         return True, n  # a symbol's number, or (bit-coded symbols) a combination of their bits: 7 = VEL|ACC|JERK
     return False, None
 
@@ -245,7 +258,7 @@ def read_text(spec: ParamSpec, raw: str, kind: ValueKind | None) -> Value:
             text = text.rstrip(" ")
         else:
             text = raw
-        if spec.symbols and kind in (ValueKind.INT, ValueKind.HEX) and all(v is None for _, v in spec.symbols):
+        if spec.symbols and kind in (ValueKind.INT, ValueKind.HEX) and _no_numbers(spec.symbols):
             # A number for names whose numbers the catalogue does not give (the vendor writes
             # `0x00000000` for "none of them"): the catalogue is silent, nothing to say.
             return Value(number=parse_int(raw), text=text)

@@ -175,7 +175,7 @@ class Check(Generic[C]):
     run: Callable[[C], Iterator[Diagnostic]]
 
     def wanted(self, severities: dict[str, Severity]) -> bool:
-        return any(code in severities for code in self.codes)
+        return not severities.keys().isdisjoint(self.codes)  # no generator left unfinished (GeneratorExit)
 
 
 class Family(Generic[C]):

@@ -372,7 +372,9 @@ def _drive_types_said(err: StartupError) -> str:
 def _text(spec: ParamSpec | None) -> bool:
     """Is the value text (a STRING that is a name, or whose symbols have no numbers: `homing_type
     TORQ`), not a number or a symbol's number (`achs_typ ACHSTYP_ROTATOR` is 2)?"""
-    return spec is not None and spec.type == "STRING" and all(n is None for _, n in spec.symbols)
+    # not all() over a generator: one it leaves unfinished is closed by raising GeneratorExit in it
+    return spec is not None and spec.type == "STRING" and \
+        [n for _, n in spec.symbols].count(None) == len(spec.symbols)
 
 
 def _shown(value: float | int | str | None) -> str:
