@@ -249,8 +249,9 @@ class TableRows(Mapping[str, "tuple[Any, ...] | dict[str, Any]"]):
             seeded = self._seeded.get(pid)
             if seeded is None:
                 old = self.table_row(pid)
-                seeded = self._seeded[pid] = _seeded(pid, None if old is None else dict(_fields(self._columns, old)),
-                                                     self._seeds[pid])
+                given = None if old is None else \
+                    {c: v for c, v in zip(self._columns, old, strict=True) if v is not None}  # dict(_fields(...))
+                seeded = self._seeded[pid] = _seeded(pid, given, self._seeds[pid])
             return seeded
         got = self.table_row(pid)
         return default if got is None else got
@@ -741,27 +742,13 @@ def _spec_from_row(row: dict[str, Any], index_base: dict[str, int]) -> ParamSpec
     if key:
         first = key.split("[", 1)[0].split(".", 1)[0]
         base = index_base.get(f"{row['kind']}:{first}", 0)
-    return ParamSpec(
-        id=row["id"],
-        kind=row["kind"],
-        key=key,
-        type=row.get("type", "STRING"),
-        default=row.get("default"),
-        range_text=row.get("range"),
-        range_note=row.get("range_note"),
-        dims=tuple(row.get("dims", ())),
-        symbols=tuple((s[0], s[1]) for s in row.get("symbols", ())),
-        units=tuple(row.get("units", ())),
-        quantity=row.get("quantity"),
-        max_len=row.get("max_len"),
-        restart=bool(row.get("restart", False)),
-        description=row.get("description") or row.get("vendor_text"),
-        source=row.get("source", "CncParaDesc.xml"),
-        index_base=base,
-        enum=tuple(row.get("enum", ())),
-        enum_flags=bool(row.get("enum_flags", False)),
-        bits=bool(row.get("bits", False)),
-        enum_labels=tuple(row.get("enum_labels", ())),
+    get = row.get
+    return ParamSpec(  # by position, in ParamSpec's order: id, kind, key, type, default, range_text, ...
+        row["id"], row["kind"], key, get("type", "STRING"), get("default"), get("range"), get("range_note"),
+        tuple(get("dims", ())), tuple([(s[0], s[1]) for s in get("symbols", ())]), tuple(get("units", ())),
+        get("quantity"), get("max_len"), bool(get("restart", False)), get("description") or get("vendor_text"),
+        get("source", "CncParaDesc.xml"), base, tuple(get("enum", ())), bool(get("enum_flags", False)),
+        bool(get("bits", False)), tuple(get("enum_labels", ())),
     )
 
 
