@@ -112,8 +112,9 @@ def _binary(op: str, a: _Value, b: _Value) -> _Value:
         return None
     if isinstance(a, str) or isinstance(b, str):  # text compares with text, for equality only
         return _OPS[op](a, b) if op in ("==", "!=") and isinstance(a, str) and isinstance(b, str) else None  # type: ignore[arg-type]
-    try:
-        return _OPS[op](_num(a), _num(b))
+    try:  # _num of each, inline (a number's type tested first: most are int or float already)
+        return _OPS[op](a if type(a) is float or type(a) is int else _num(a),
+                        b if type(b) is float or type(b) is int else _num(b))
     except OverflowError:  # an integer beyond a float's range in arithmetic with a float: not known
         return None
 
