@@ -236,10 +236,12 @@ class TableRows(Mapping[str, "tuple[Any, ...] | dict[str, Any]"]):
         if type(pid) is not str or pid[2:6] not in self._kinds:
             return None
         got = _TABLE_ROWS.get(pid)
-        if got is None:
-            table = _kind_table(pid[2:6])
-            at = _position(table.IDS, pid)
-            if at < 0:
+        if got is None:  # _kind_table and _position, inline (pid a str, as the IDs are)
+            kind = pid[2:6]
+            table = _KIND_TABLES.get(kind) or _kind_table(kind)
+            ids = table.IDS
+            at = bisect_left(ids, pid)
+            if at == len(ids) or ids[at] != pid:
                 return None
             got = _TABLE_ROWS[pid] = marshal.loads(table.PACKED[at])
         return got

@@ -582,16 +582,21 @@ def check_values(ctx: Context) -> Iterator[Diagnostic]:
     cols = ctx.doc.columns
     texts = cols.values
     rows: list[int] = []  # rows to visit
-    by_value: dict[str, bool] = registry.memo.setdefault("by_value", {})  # _by_value's, kept per registry
+    by_value: dict[str, bool] = registry.memo.setdefault("by_value", {})  # parameter -> judged by value alone
     read: dict[tuple[str, str], Value] = registry.memo.setdefault("values", {})  # ListValues.value_of_text's
     kinds = cols.kinds
+    prose = _prose_rows()
     pattern_shapes, shape_rows, value, valueless = ctx.pattern_shapes, ctx.shape_rows, cols.value, ctx.valueless
     for pattern, hit in ctx.bound.items():
         if hit is None:
             continue
         spec = hit[0]
-        # each entry's own verdict (entry built if fails)
-        if not (by_value.get(spec.id) or _by_value(registry, spec, by_value)):
+        # Whether the findings on a value of the parameter depend on the value alone (not on the entry's indices
+        # or the list's other values; prose reads others): then a value is checked once. Kept per registry.
+        alone = by_value.get(spec.id)
+        if alone is None:
+            alone = by_value[spec.id] = spec.id not in prose and not registry.range_refers(spec)
+        if not alone:  # each entry's own verdict (entry built if fails)
             plan = _ref_plan(registry, spec)
             if plan is None:
                 rows.extend(r for r in ctx.value_rows(pattern) if not _passes(ctx, ctx.sketch_at(r), True))
@@ -606,9 +611,10 @@ def check_values(ctx: Context) -> Iterator[Diagnostic]:
                     continue
                 slot = (spec.id, texts[vid])
                 verdict = passed.get(slot) or verdicts.get(slot)
-                if verdict is None:
-                    verdict = verdicts[slot] = _value_passes(ctx, spec, read.get(slot) or ctx.value_of_text(
-                        spec, slot[1], kinds[vid]), group[0])
+                if verdict is None:  # _value_passes, inline
+                    got = _range_verdict(registry, spec, read.get(slot) or ctx.value_of_text(
+                        spec, slot[1], kinds[vid]), _NO_READ)
+                    verdict = verdicts[slot] = _passes(ctx, ctx.sketch_at(group[0])) if got is None else got
                     if verdict and len(passed) < 65_536:
                         passed[slot] = True
                 if not verdict:
@@ -638,16 +644,6 @@ def check_values(ctx: Context) -> Iterator[Diagnostic]:
         res = ctx.resolved_at(row)
         if not not_configured(ctx, res):
             yield from _check_value(ctx, res)
-
-
-def _by_value(registry: Registry, spec: ParamSpec, memo: dict[str, bool]) -> bool:
-    """Whether the findings on a value of ``spec`` depend on the value alone (not on the entry's
-    indices or the list's other values): then a value is checked once. Kept per registry (``memo``: its
-    ``registry.memo["by_value"]``)."""
-    got = memo.get(spec.id)
-    if got is None:
-        got = memo[spec.id] = spec.id not in _prose_rows() and not registry.range_refers(spec)  # prose reads others
-    return got
 
 
 # A range's references as check_values reads them: those read at the entry's element (or at the element
@@ -714,7 +710,7 @@ def _ref_failures(ctx: Context, spec: ParamSpec, pattern: str, plan: RefPlan) ->
 
 
 def _value_passes(ctx: Context, spec: ParamSpec, v: Value, row: int) -> bool:
-    """Whether value ``v`` (read at ``row``, the first of it) of a parameter of :func:`_by_value` passes:
+    """Whether value ``v`` (read at ``row``, the first of it) of a parameter judged by value alone passes:
     :func:`_range_verdict` where it tells, else the entry's own verdict."""
     got = _range_verdict(ctx.registry, spec, v, _NO_READ)
     return _passes(ctx, ctx.sketch_at(row)) if got is None else got
@@ -754,7 +750,7 @@ def _range_verdict(registry: Registry, spec: ParamSpec, v: Value,
 
 def _passes(ctx: Context, res: Resolved, configured: bool = False) -> bool:
     """Whether ``res``'s value passes (no finding; ``configured``: or its element is not configured);
-    for a parameter of :func:`_by_value`, every entry of that value then passes."""
+    for a parameter judged by value alone (check_values), every entry of that value then passes."""
     if configured and not_configured(ctx, res):
         return True
     return next(iter(_check_value(ctx, res)), None) is None
