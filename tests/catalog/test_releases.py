@@ -256,3 +256,11 @@ def test_the_compiled_table_is_the_toml() -> None:
     """tools/gen_startup.py was run after the last edit of releases.toml (zero builds the table from the
     compiled module: no TOML parser for a list's first unknown key)."""
     assert read_table(releases.DATA) == TABLE
+
+
+def test_no_rename_keeps_its_key() -> None:
+    """A rename (or prefix) leads to another key than the one it renames: check_keys reads a pattern bound to
+    a parameter whose key it is as the catalogue's own key (never a rename's), so this must hold."""
+    table = releases.table()
+    assert all(r.old != r.new for r in table.renames)
+    assert all(p.old != p.new for p in table.prefixes)

@@ -255,8 +255,19 @@ class TableRows(Mapping[str, "tuple[Any, ...] | dict[str, Any]"]):
                     {c: v for c, v in zip(self._columns, old, strict=True) if v is not None}  # dict(_fields(...))
                 seeded = self._seeded[pid] = _seeded(pid, given, self._seeds[pid])
             return seeded
-        got = self.table_row(pid)
-        return default if got is None else got
+        # table_row, inline (a call per row costs as much as its work)
+        if type(pid) is not str or pid[2:6] not in self._kinds:
+            return default
+        got = _TABLE_ROWS.get(pid)
+        if got is None:
+            kind = pid[2:6]
+            table = _KIND_TABLES.get(kind) or _kind_table(kind)
+            ids = table.IDS
+            at = bisect_left(ids, pid)
+            if at == len(ids) or ids[at] != pid:
+                return default
+            got = _TABLE_ROWS[pid] = marshal.loads(table.PACKED[at])
+        return got
 
     def __getitem__(self, pid: str) -> tuple[Any, ...] | dict[str, Any]:
         got = self.get(pid)

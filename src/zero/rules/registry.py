@@ -139,11 +139,13 @@ def check_keys(ctx: Context) -> Iterator[Diagnostic]:
     cols = ctx.doc.columns
     rows: list[int] = []  # rows to visit
     known_specs: dict[str, ParamSpec | None] = reg.memo.setdefault(f"key_specs:{ctx.kind}", {})
-    shape_rows, shape_keys = ctx.shape_rows, ctx.shape_keys
+    shape_rows, shape_keys, bound = ctx.shape_rows, ctx.shape_keys, ctx.bound
     for pattern, shapes in ctx.pattern_shapes.items():
         spec = known_specs.get(pattern, _MISSING)  # not try/except: a list's first look-ups all miss
         if spec is _MISSING:
-            spec = reg.by_pattern(pattern, ctx.kind)
+            hit = bound.get(pattern)  # bind's answer: by_pattern's where it is not an alias or another spelling
+            spec = hit[0] if hit is not None and not hit[1] and hit[0].key == pattern else \
+                reg.by_pattern(pattern, ctx.kind)
             if len(known_specs) < 65_536:
                 known_specs[pattern] = spec
         if spec is None:
