@@ -462,7 +462,11 @@ class Registry:
         slot = (kind, pattern)
         spec = self._pattern_specs.get(slot, _ABSENT)  # not try/except: a list's first look-ups all miss
         if spec is _ABSENT:
-            spec = self._by_pattern(pattern, kind)
+            if kind is not None:  # _by_pattern, inline for a known kind (a list's, each pattern once)
+                pid = self._by_key.get((kind, pattern))
+                spec = self.specs[pid] if pid is not None else None
+            else:
+                spec = self._by_pattern(pattern, kind)
             if len(self._pattern_specs) < 100_000:
                 self._pattern_specs[slot] = spec
         return spec  # type: ignore[no-any-return]

@@ -438,7 +438,8 @@ class ListValues:
         for pattern in pattern_shapes:
             hit = memo.get(pattern, _MISSING)  # not try/except: a list's first look-ups all miss
             if hit is _MISSING:
-                hit = bind(registry, pattern, kind)
+                spec = registry.by_pattern(pattern, kind)  # bind's first answer, without its call
+                hit = (spec, False) if spec is not None else bind(registry, pattern, kind)
                 if len(memo) < 65_536:
                     memo[pattern] = hit
             bound[pattern] = hit
