@@ -193,7 +193,7 @@ def default_number(spec: ParamSpec, values: ListValues | None = None, depth: int
         return v
     if d in ("TRUE", "FALSE") and spec.type == "BOOLEAN":
         return 1 if d == "TRUE" else 0
-    n = parse_int(d)
+    n = int(d) if d.isdigit() and d.isascii() and len(d) <= 40 else parse_int(d)  # its first case inline
     if n is not None:
         return n
     if values is not None and d.startswith("P-") and len(d) >= 12:
@@ -275,7 +275,8 @@ def read_text(spec: ParamSpec, raw: str, kind: ValueKind | None) -> Value:
 
     if t in INTEGER_TYPES:
         if kind in (ValueKind.INT, ValueKind.HEX):
-            n = parse_int(raw)
+            # parse_int's first case inline (most values: plain digits)
+            n = int(raw) if raw.isdigit() and raw.isascii() and len(raw) <= 40 else parse_int(raw)
             assert n is not None
             lo, hi = TYPE_LIMITS.get(t, (None, None))
             if t == "BOOLEAN" and n not in (0, 1):
