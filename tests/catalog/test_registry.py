@@ -259,3 +259,11 @@ def test_a_lint_reads_the_rows_of_its_lists_kind_only(tmp_path: Path) -> None:
     reg = load_registry()
     assert len(reg.specs) == 1766 and len(list(reg.specs)) == 1766 and "P-AXIS-00001" in reg.specs
     assert "P-AXIS-99999" not in reg.specs and "P-NOPE-00001" not in reg.specs and reg.get("P-AXIS") is None
+
+
+def test_sorted_index_get_each_is_get_of_each() -> None:
+    from zero.catalog.registry import SortedIndex
+
+    index = SortedIndex(("a", "c", "e"), (1, 2, 3))
+    keys = ["c", "b", "a", "z", 5, "e", ""]
+    assert index.get_each(keys, ()) == [index.get(k, ()) for k in keys]

@@ -197,6 +197,19 @@ class SortedIndex(Mapping["Any", "Any"]):
             raise KeyError(key)
         return got
 
+    def get_each(self, keys: Iterable[Any], default: Any = None) -> list[Any]:
+        """``[self.get(k, default) for k in keys]`` in one call (a list's kind detection asks for each pattern)."""
+        own, values, n = self._keys, self._values, len(self._keys)
+        out = []
+        for key in keys:
+            try:
+                at = bisect_left(own, key)
+            except TypeError:
+                out.append(default)
+                continue
+            out.append(values[at] if at < n and own[at] == key else default)
+        return out
+
     def __contains__(self, key: object) -> bool:
         return _position(self._keys, key) >= 0
 
@@ -598,8 +611,10 @@ class Registry:
             return got  # type: ignore[no-any-return]
         votes: dict[str, int] = {}
         kinds_of = self._kinds_of
-        for p, n in counts.items():
-            for k in kinds_of.get(p, ()):
+        each = kinds_of.get_each(counts, ()) if isinstance(kinds_of, SortedIndex) else \
+            [kinds_of.get(p, ()) for p in counts]  # the built-in index: one call, not one per pattern
+        for kinds, n in zip(each, counts.values(), strict=True):
+            for k in kinds:
                 votes[k] = votes.get(k, 0) + n
         got = self._leader(votes, hint)
         if len(memo) < 4096 and len(counts) <= 4096:
