@@ -10,7 +10,15 @@ from hypothesis import example, given, settings
 from hypothesis import strategies as st
 
 from zero.lists.model import MAX_INDEX_DIGITS, ValueKind, _indices, _part, is_key, key_form
-from zero.lists.tokenizer import _KIND_OF, _annotation_re, _kind_re, annotation_at, value_kind
+from zero.lists.tokenizer import (
+    _KIND_OF,
+    _annotation_re,
+    _comment_parts,
+    _comment_table,
+    _kind_re,
+    annotation_at,
+    value_kind,
+)
 
 _VALUE_CHARS = "0123456789+-.eExXaAfFgP_-Z |\n\u0661\u00b2 "
 _KEY_CHARS = "ab_9.[]0123 \u0661x"
@@ -55,6 +63,18 @@ def test_annotation_as_the_pattern(comment: str) -> None:
 @given(st.text(_COMMENT_CHARS, max_size=30))
 def test_annotation_as_the_pattern_any(comment: str) -> None:
     assert annotation_at(comment) == _annotation_by_pattern(comment)
+
+
+@settings(max_examples=400, deadline=None)
+@given(st.text(_COMMENT_CHARS, min_size=1, max_size=30))
+@example("( P-AXIS-00016 : logical")
+@example("( P-AXIs-00016 ( P-AXIS-00017")
+@example("( P-AXIS-0016")
+def test_comment_parts_annotation_as_the_pattern(comment: str) -> None:
+    """_comment_parts' own reading of the usual `( P-XXXX-nnnnn` gives what the pattern finds."""
+    _comment_table.pop(comment, None)
+    at = _annotation_by_pattern(comment)
+    assert _comment_parts(comment)[1:] == ((comment[at:at + 12], at) if at >= 0 else (None, -1))
 
 
 @pytest.mark.parametrize("key", ["a", "a.b", "a[1]", "a[1][2].b[3]", "a[]", "a[1]b", "a[1]]", "a.", ".a", "",

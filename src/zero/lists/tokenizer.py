@@ -532,7 +532,16 @@ def _comment_parts(comment: str) -> tuple[CommentStyle, str | None, int]:
     """A comment's style, the annotation it holds (`( P-TOOL-00005 …`) and where in it."""
     got = _comment_table.get(comment)
     if got is None:
-        at = annotation_at(comment) if "P-" in comment else -1
+        # annotation_at, its usual case inline (`( P-AXIS-00178 …` at the start): a call per comment costs as much
+        at = -1
+        if "P-" in comment:
+            pid = comment[2:14]
+            if comment[:2] == "( " and pid[:2] == "P-" and pid[6:7] == "-" and comment[2:3] != " ":
+                letters = pid[2:6]
+                at = 2 if (len(pid) == 12 and letters.isascii() and letters.isalpha() and letters.isupper()
+                           and _digits(pid[7:])) else annotation_at(comment)
+            else:
+                at = annotation_at(comment)
         got = (_STYLE_OF.get(comment[0]) or comment_style(comment), comment[at:at + 12] if at >= 0 else None, at)
         if len(_comment_table) < _TABLE_LIMIT and len(comment) < 512:
             _comment_table[comment] = got
