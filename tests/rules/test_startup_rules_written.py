@@ -66,3 +66,21 @@ def test_a_rows_module_of_another_size_is_declared_from_its_rows(monkeypatch: py
     declared = list(startup._declared())
     assert declared == list(DECLARED.values())  # the same, from the rows (facts(), and said() where they differ)
     assert [f for f, _ in declared] == [startup.facts(r) for r in rows]
+
+
+def test_a_rows_check_is_made_where_a_list_needs_it() -> None:
+    """Importing the K rules makes no :class:`StartupError` (``CHECKS`` is made at its first use); a list's
+    lint without a K finding makes those it checks only, and ``CHECKS`` then holds every row's, in the rules' order."""
+    code = ("from zero.catalog.registry import load_registry\n"
+            "from zero.lists.tokenizer import tokenize_text\n"
+            "from zero.rules import check_document, startup\n"
+            "from zero.rules.families import RULES\n"
+            "made = 'CHECKS' in vars(startup) or bool(startup._ERRORS)\n"
+            "doc = tokenize_text('getriebe[0].dynamik.vb_max 1000\\n')\n"
+            "found = check_document(doc, load_registry(), 'AXIS', {'K037': RULES['K037'].severity})[1]\n"
+            "kinds = sorted({e.code for e in startup._ERRORS.values()}), found\n"
+            "codes = [e.code for e in startup.CHECKS]\n"
+            "print(made, kinds, codes == [c for c in RULES if c.startswith('K')])\n")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout
+    assert out.strip() == "False (['K037'], []) True"  # K037 (P-AXIS-00212 != 0) checked, and holds
+    assert [e.code for e in startup.CHECKS] == [f[0] for f, _ in DECLARED.values()]

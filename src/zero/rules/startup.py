@@ -87,17 +87,22 @@ def compiled(err: StartupError) -> _Compiled:
     """An error's condition compiled at its first check (not at start-up: a zero-offset list never
     needs the axis checks)."""
     hit = _compiled.get(err.code)
+    return hit if hit is not None else _compiled_of(err.code, err.kind, err.condition_text, err.when_text)
+
+
+def _compiled_of(code: str, kind: str, condition: str, when: str) -> _Compiled:
+    """:func:`compiled` of the error declared with these facts (its :class:`StartupError` not needed)."""
+    hit = _compiled.get(code)
     if hit is None:
-        pre = _written_of(err.kind).get(err.code)
-        if pre is not None and pre[:2] == (err.condition_text, err.when_text):  # else stale: compiled here
-            hit = _compiled[err.code] = _Compiled(*pre[2:])
+        pre = _written_of(kind).get(code)
+        if pre is not None and pre[:2] == (condition, when):  # else stale: compiled here
+            hit = _compiled[code] = _Compiled(*pre[2:])
             return hit
         from zero.catalog.conditions import compile_condition, parse, ref_elements, refs  # start-up: a stale row only
 
-        node = parse(err.condition_text)
-        hit = _compiled[err.code] = _Compiled(compile_condition(node),
-                                              compile_condition(parse(err.when_text)) if err.when_text else None,
-                                              tuple(refs(node)), tuple(ref_elements(node)))
+        node = parse(condition)
+        hit = _compiled[code] = _Compiled(compile_condition(node), compile_condition(parse(when)) if when else None,
+                                          tuple(refs(node)), tuple(ref_elements(node)))
     return hit
 
 
@@ -182,16 +187,45 @@ def _declared() -> Iterable[tuple[Facts, Said]]:
     return out
 
 
-def _declare() -> list[StartupError]:
-    """Each row's rule and check (:func:`_declared`)."""
-    out = []
+def _declare() -> dict[str, list[Facts]]:
+    """Each row's rule (:func:`_declared`), and its facts by list kind, in order: a row's
+    :class:`StartupError` is made where a check needs it (:func:`_error`), not here (an axis list's lint
+    checks some sixty of the 125: issue 40, start-up)."""
+    out: dict[str, list[Facts]] = {"": []}  # (never empty once built)
     for f, (letter, name, summary, explanation, reads) in _declared():
         FAMILY.rule(f[0], name, W if letter == "W" else E, summary, explanation, reads=reads)
-        out.append(StartupError(*f[:11]))
+        got = out.get(f[2])
+        if got is None:
+            out[f[2]] = [f]
+        else:
+            got.append(f)
     return out
 
 
-CHECKS = _declare()
+_BY_KIND: dict[str, list[Facts]] = _declare()  # list kind -> its rows' facts, in order
+_ERRORS: dict[str, StartupError] = {}  # code -> its check, made once
+
+
+def _error(f: Facts) -> StartupError:
+    """The :class:`StartupError` of a row's facts (made once)."""
+    err = _ERRORS.get(f[0])
+    if err is None:
+        err = _ERRORS[f[0]] = StartupError(*f[:11])
+    return err
+
+
+CHECKS: list[StartupError]  # every row's check, in order: made at its first use (__getattr__ below)
+
+
+def __getattr__(name: str) -> list[StartupError]:
+    """``CHECKS``: every row's :class:`StartupError`, in order (made at the first use: a list's lint
+    makes only those of its kind that it checks)."""
+    if name != "CHECKS":
+        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+    order = {code: n for n, code in enumerate(FAMILY.rules)}
+    checks = sorted((_error(f) for facts in _BY_KIND.values() for f in facts), key=lambda e: order[e.code])
+    globals()["CHECKS"] = checks
+    return checks
 
 
 @FAMILY.check(*FAMILY.rules.values())
@@ -202,33 +236,23 @@ def check_startup(ctx: Context) -> Iterator[Diagnostic]:
     by_line: dict[int, list[tuple[bool, Diagnostic]]] = {}
     by_id = ctx.by_id
     severities = ctx.severities
-    for err in _of_kind(ctx.kind):
-        if err.code not in severities:
+    for f in _BY_KIND.get(ctx.kind or "", ()):
+        code = f[0]
+        if code not in severities:
             continue  # not selected
-        c = compiled(err)
+        c = _compiled.get(code) or _compiled_of(code, f[2], f[4], f[5])
         for p in c.read:
             if p in by_id:
                 break
         else:
             continue  # the list sets nothing the condition reads
+        err = _ERRORS.get(code) or _error(f)
         for d, own in _check(ctx, err, c):
             by_line.setdefault(d.span.line, []).append((own, d))
     for line in sorted(by_line):
         found = by_line[line]
         primary = [d for own, d in found if own] or [found[0][1]]
         yield primary[0]
-
-
-_BY_KIND: dict[str | None, list[StartupError]] = {}
-
-
-def _of_kind(kind: str | None) -> list[StartupError]:
-    """The checks of one list kind, in order (found once: a fleet asks for each of its lists)."""
-    if not _BY_KIND:
-        for err in CHECKS:
-            _BY_KIND.setdefault(err.kind, []).append(err)
-        _BY_KIND.setdefault("", [])  # never empty once built
-    return _BY_KIND.get(kind, [])
 
 
 def _facts(ctx: Context, pid: str) -> tuple[ParamSpec | None, bool, int]:
