@@ -9,7 +9,8 @@ import pickle
 import subprocess
 import sys
 from pathlib import Path
-from typing import ClassVar
+from types import CodeType, FunctionType, ModuleType
+from typing import Any, ClassVar
 
 import pytest
 
@@ -187,25 +188,27 @@ def test_the_ahead_of_time_inits_are_current() -> None:
 
 def test_a_record_of_zero_takes_its_init_from_the_table_and_behaves_as_compiled() -> None:
     from zero.diagnostics import Span
-    from zero.record_inits import INITS
+    from zero.record_inits import RECORDS
 
     span = Span(3, 4, 3, 9)
     init = type(span).__init__
-    assert init.__code__ in INITS.values()
+    assert init.__code__ is RECORDS["zero.diagnostics"]["Span"][-1]
     assert init.__code__.co_filename.endswith("record_inits.py")
     assert (span.line, span.column, span.end_line, span.end_column) == (3, 4, 3, 9)
     assert init.__globals__ is not vars(sys.modules["zero.record_inits"])  # its own scope, not the table's
+    assert [f.name for f in fields(span)] == ["line", "column", "end_line", "end_column"]
 
 
 def test_a_record_of_the_second_table_takes_its_init_from_there() -> None:
     """The records of modules a list's lint does not load are in ``record_inits_rest``, read at the first of them."""
     from zero.machine.limits import LimitRow
-    from zero.record_inits import INITS
-    from zero.record_inits_rest import INITS as REST
+    from zero.record_inits import RECORDS, REST_MODULES
+    from zero.record_inits_rest import RECORDS as REST
 
     limits = LimitRow(1, 2, 3, "X", 4, "mm", -1.0, 1.0, 0.0, False, -1.0, 1.0)
     code = type(limits).__init__.__code__
-    assert code in REST.values() and code not in INITS.values()
+    assert code is REST["zero.machine.limits"]["LimitRow"][-1] and "zero.machine.limits" not in RECORDS
+    assert "zero.machine.limits" in REST_MODULES
     assert (limits.axis_name, limits.pcs_pos, limits.note) == ("X", 1.0, "")
 
 
@@ -237,16 +240,258 @@ def test_a_record_the_table_does_not_hold_is_compiled_with_its_defaults() -> Non
         made.with_default = "x"  # type: ignore[misc]
 
 
-def test_every_ahead_of_time_init_is_the_code_its_text_compiles_to() -> None:
-    """The table's functions are compiled from the text with its defaults replaced: the code is the same."""
-    from types import CodeType
+def _tables() -> tuple[dict[str, dict[str, tuple[Any, ...]]], dict[str, Any]]:
+    from zero.record_inits import INITS, RECORDS
+    from zero.record_inits_rest import INITS as REST_INITS
+    from zero.record_inits_rest import RECORDS as REST
 
-    from zero.record_inits import INITS
-    from zero.record_inits_rest import INITS as REST
+    assert not RECORDS.keys() & REST.keys() and not INITS.keys() & REST_INITS.keys()
+    return RECORDS | REST, INITS | REST_INITS
 
-    assert len(INITS) > 20 and len(REST) > 20 and not INITS.keys() & REST.keys()
-    for source, code in (INITS | REST).items():
-        assert isinstance(code, CodeType)
-        ref = next(c for c in compile(source, "<string>", "exec").co_consts if isinstance(c, CodeType))
-        assert (code.co_code, code.co_names, code.co_varnames, code.co_argcount, code.co_consts) == (
-            ref.co_code, ref.co_names, ref.co_varnames, ref.co_argcount, ref.co_consts), source
+
+def test_every_ahead_of_time_record_is_what_its_class_declares() -> None:
+    """Each entry of the tables is its record as worked out the slow way, its ``__init__`` the code its text
+    compiles to (with its defaults replaced): taken from the table, a record of zero is the one it declares."""
+    import importlib
+
+    from zero.records import MISSING, init_source
+
+    listed, by_text = _tables()
+    assert sum(len(v) for v in listed.values()) > 100 and len(by_text) >= 1
+    for module, records in listed.items():
+        for qualname, (declared, flags, valued, given, without, names, shown, compared, code) in records.items():
+            cls = importlib.import_module(module)
+            for part in qualname.split("."):
+                cls = getattr(cls, part)
+            got = fields(cls)
+            assert tuple(f.name for f in got) == names == cls.__match_args__, qualname
+            ns = cls.__dict__
+            assert ns.get("__annotations__") == declared
+            assert tuple(f.name for f in got if f.repr) == shown == cls.__record_shown__
+            assert tuple(f.name for f in got if f.compare) == compared
+            assert valued + without == names or set(valued) | set(without) == set(names)
+            kinds = dict(given)
+            assert [f.name for f in got if f.default is MISSING and f.default_factory is MISSING] == [
+                n for n in names if n in without or kinds.get(valued.index(n), (True, True))[:2] == (False, False)]
+            source = init_source(got, flags[0], flags[3])[0]
+            assert _same_code(code, _gen().code_of(source)), qualname
+            if "__init__" not in vars(cls):
+                continue
+            assert vars(cls)["__init__"].__code__ is code, qualname  # what the record took
+    for source, code in by_text.items():
+        assert _same_code(code, _gen().code_of(source)), source
+
+
+def _same_code(code: CodeType, ref: CodeType) -> bool:
+    return bool((code.co_code, code.co_names, code.co_varnames, code.co_argcount, code.co_consts)
+                == (ref.co_code, ref.co_names, ref.co_varnames, ref.co_argcount, ref.co_consts))
+
+
+def _gen() -> ModuleType:
+    from conftest import script_module
+
+    return script_module(ROOT / "tools" / "gen_record_inits.py")
+
+
+# Every case of this module, declared in one module of its own: the slow way, then from a table of them.
+CASES = """
+from __future__ import annotations
+from typing import ClassVar
+from zero.hints import Generic
+from zero.records import field, record
+
+@record
+class Point:
+    x: int
+    y: int = 0
+    tags: list[str] = field(default_factory=list)
+    note: str | None = field(default=None, compare=False)
+    hidden: int = field(default=0, repr=False)
+    LIMIT: ClassVar[int] = 3
+
+@record(frozen=True)
+class Span:
+    line: int
+    column: int
+
+@record(frozen=True, eq=False)
+class Opaque:
+    data: list[int] = field(default_factory=list)
+
+@record(eq=False)
+class Node:
+    name: str
+
+@record(unsafe_hash=True)
+class Key:
+    text: str
+    indices: tuple[int, ...] = ()
+
+@record
+class Checked:
+    low: int
+    high: int
+    width: int = 0
+
+    def __post_init__(self) -> None:
+        self.width = self.high - self.low
+
+@record
+class Custom:
+    value: int
+
+    def __repr__(self) -> str:
+        return f"<{self.value}>"
+
+class Plain:
+    __slots__ = ("extra",)
+
+@record
+class OnPlain(Plain, Generic):
+    first: int
+    hidden: int = field(repr=False)
+    later: str = ""
+
+@record
+class Empty:
+    pass
+"""
+
+
+def _declare(table: dict[str, tuple[Any, ...]] | None, monkeypatch: pytest.MonkeyPatch,
+             text: str = CASES) -> tuple[dict[str, Any], list[str]]:
+    """The records of ``text``, declared in module ``zero_records_case`` with ``table`` as its entry in
+    ``RECORDS``, and the records worked out the slow way."""
+    import zero.record_inits as record_inits
+    import zero.records as records
+
+    slow: list[str] = []
+    build_slow = records._build_slow
+
+    def counted(cls: type, frozen: bool, eq: bool, unsafe_hash: bool) -> type:
+        slow.append(cls.__qualname__)
+        return build_slow(cls, frozen, eq, unsafe_hash)
+
+    scope: dict[str, Any] = {"__name__": "zero_records_case"}
+    with monkeypatch.context() as patch:
+        patch.setattr(records, "_build_slow", counted)
+        if table is not None:
+            patch.setitem(record_inits.RECORDS, "zero_records_case", table)  # the dict records reads
+        exec(compile(text, "<cases>", "exec"), scope)
+    return scope, slow
+
+
+def _table_of(monkeypatch: pytest.MonkeyPatch, text: str = CASES) -> dict[str, tuple[Any, ...]]:
+    """The table's entry for the records of ``text``, as the generator writes it."""
+    import zero.records as records
+
+    gen = _gen()
+    seen: list[tuple[type, type, bool, bool, bool]] = []
+    build_slow = records._build_slow
+
+    def capture(cls: type, frozen: bool, eq: bool, unsafe_hash: bool) -> type:
+        made = build_slow(cls, frozen, eq, unsafe_hash)
+        seen.append((cls, made, frozen, eq, unsafe_hash))
+        return made
+
+    with monkeypatch.context() as patch:
+        patch.setattr(records, "_build", capture)
+        exec(compile(text, "<cases>", "exec"), {"__name__": "zero_records_case"})
+    table = {}
+    for cls, made, frozen, eq, unsafe_hash in seen:
+        source, spec = gen.entry(cls, made, frozen, eq, unsafe_hash)
+        table[cls.__qualname__] = (*spec, gen.code_of(source))
+    return table
+
+
+def _shape(cls: type) -> tuple[Any, ...]:
+    """All a record class is made of (but its ``__init__``'s code and identities)."""
+    from zero.records import init_source
+
+    skip = {"__init__", "__record_fields__", "__record_key__", "__dict__", "__weakref__", "__module__", "__doc__"}
+    own = {k: v for k, v in vars(cls).items() if k not in skip and not k.startswith("__record_fields")}
+    own = {k: (f"{v.__module__}.{v.__qualname__}" if isinstance(v, FunctionType)
+               else type(v).__name__ if type(v).__name__ == "member_descriptor" else v) for k, v in own.items()}
+    init = cls.__dict__["__init__"]
+    if init.__code__.co_flags & 0x04:  # not made yet (the slow way: at the first instance): what it will be
+        _, scope, defaults = init_source(fields(cls), "__record_frozen__" in vars(cls), hasattr(cls, "__post_init__"))
+        made: tuple[Any, ...] = (defaults or None, sorted(k for k in scope if k.startswith("__factory")))
+    else:
+        made = (init.__defaults__, sorted(k for k in init.__globals__ if k.startswith("__factory")))
+    return (cls.__name__, cls.__qualname__, [b.__qualname__ for b in cls.__bases__],
+            sorted(own.items(), key=lambda kv: kv[0]),
+            [(f.name, f.default, f.default_factory, f.repr, f.compare) for f in fields(cls)], made,
+            "__record_key__" in vars(cls))
+
+
+def test_a_record_the_table_describes_is_the_one_worked_out_the_slow_way(monkeypatch: pytest.MonkeyPatch) -> None:
+    slow_made, slow = _declare(None, monkeypatch)
+    table = _table_of(monkeypatch)
+    fast_made, fast_slow = _declare(table, monkeypatch)
+    assert len(slow) == len(table) == 9 and fast_slow == []  # all taken from the table
+    p, q = slow_made["Point"], fast_made["Point"]
+    for made in (q(1), q(2, 3, ["a"], "n", 4)):
+        twin = p(made.x, made.y, list(made.tags), made.note, made.hidden)
+        assert repr(made) == repr(twin) and made.tags is not q(1).tags
+    assert q(1) == q(1, note="b") and q(1) != q(2) and q.__hash__ is None and q.LIMIT == 3
+    assert [f.name for f in fields(q)] == ["x", "y", "tags", "note", "hidden"] and q.__match_args__ == p.__match_args__
+    assert not hasattr(q(1), "__dict__")
+    s = fast_made["Span"](1, 2)
+    with pytest.raises(AttributeError):
+        s.line = 3
+    with pytest.raises(AttributeError):
+        del s.line
+    assert hash(s) == hash(fast_made["Span"](1, 2)) and copy.deepcopy(s) == s and copy.copy(s) == s
+    t = object.__new__(fast_made["Span"])
+    t.__setstate__(s.__getstate__())  # what pickle does (the module here cannot be imported)
+    assert t == s
+    o = fast_made["Opaque"]()
+    assert o.data == [] and o != fast_made["Opaque"]() and o.__hash__ is not None and repr(o) == "Opaque(data=[])"
+    n = fast_made["Node"]
+    assert n("a") != n("a") and len({n("a"), n("a")}) == 2
+    k = fast_made["Key"]
+    assert k("k", (1,)) == k("k", (1,)) and len({k("k", (1,)), k("k", (1,))}) == 1 and k("k").indices == ()
+    assert fast_made["Checked"](2, 7).width == 5 and repr(fast_made["Custom"](3)) == "<3>"
+    on = fast_made["OnPlain"](1, 2)
+    assert (on.first, on.hidden, on.later) == (1, 2, "") and repr(on) == "OnPlain(first=1, later='')"
+    assert fast_made["OnPlain"].__slots__ == ("first", "hidden", "later")
+    assert on.__class__.__mro__[1].__name__ == "Plain"
+    on.extra = 5
+    assert repr(fast_made["Empty"]()) == "Empty()" and fast_made["Empty"]() == fast_made["Empty"]()
+    for name in table:
+        assert _shape(slow_made[name]) == _shape(fast_made[name]), name
+
+
+@pytest.mark.parametrize(("old", "new"), [
+    ("    y: int = 0\n", "    y: int\n    z: int = 0\n"),  # a field more (annotations)
+    ("    x: int\n", "    x: int = 5\n"),  # a required field given a default
+    ("    y: int = 0\n", "    y: int = field(default=0, compare=False)\n"),  # a plain default now a field()
+    ("    note: str | None = field(default=None, compare=False)\n", "    note: str | None = None\n"),
+    ("    hidden: int = field(default=0, repr=False)\n", "    hidden: int = field(default_factory=int, repr=False)\n"),
+    ("    hidden: int = field(default=0, repr=False)\n", "    hidden: int = field(default=0)\n"),
+    ("@record\nclass Point:", "@record(frozen=True)\nclass Point:"),
+    ("@record\nclass Point:", "@record(unsafe_hash=True)\nclass Point:"),
+    ("    LIMIT: ClassVar[int] = 3\n", "    LIMIT: ClassVar[int] = 3\n\n    def __post_init__(self) -> None:\n"
+                                       "        self.y = 9\n"),
+    ("    LIMIT: ClassVar[int] = 3\n", "    LIMIT: int = 3\n"),  # a class variable become a field
+    ("class Point:", "class Point(Key):"),  # a record base
+])
+def test_a_record_the_table_no_longer_describes_is_worked_out_the_slow_way(
+        monkeypatch: pytest.MonkeyPatch, old: str, new: str) -> None:
+    """A table not regenerated after a record changed: the record is as declared, never the table's."""
+    from zero.records import MISSING
+
+    table = _table_of(monkeypatch)
+    changed = CASES.replace(old, new, 1)
+    if "(Key)" in new:  # the base must come first
+        changed = changed.replace("@record(unsafe_hash=True)\nclass Key:", "@record(unsafe_hash=True)\nclass Key0:")
+        changed = changed.replace("from zero.records import field, record\n",
+                                  "from zero.records import field, record\n\n@record(unsafe_hash=True)\n"
+                                  "class Key:\n    text: str\n")
+    assert changed != CASES
+    fast_made, slow = _declare(table, monkeypatch, changed)
+    assert "Point" in slow
+    reference, _ = _declare(None, monkeypatch, changed)
+    assert _shape(fast_made["Point"]) == _shape(reference["Point"])
+    args = [1] * sum(f.default is MISSING and f.default_factory is MISSING for f in fields(reference["Point"]))
+    assert repr(fast_made["Point"](*args)) == repr(reference["Point"](*args))

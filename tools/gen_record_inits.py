@@ -1,17 +1,20 @@
 #!/usr/bin/env python3
-"""Write the ``__init__`` of every record zero declares, compiled ahead of time, to ``src/zero/record_inits.py``.
+"""Write what declaring each record of zero takes, worked out ahead of time, to ``src/zero/record_inits.py``.
 
-:func:`zero.records.record` writes each record's ``__init__`` as Python text and, without this table,
-compiles it when the record is first instantiated: some forty compiles in a ``zero lint`` of one list,
-5 ms of its 60 (issue 40, start-up). The table holds each distinct text's function, compiled with the
-module, keyed by that text; records take its code with their own globals and defaults. A record whose
-text is not in the table (a test's, or a table not regenerated after a record changed) compiles its own,
-as before: slower, never wrong; a test fails while the table is stale. Run it after adding, removing or
-changing a record's fields.
+:func:`zero.records.record` works out a record's fields (annotations, defaults, factories, which show and
+compare) and writes its ``__init__`` as Python text, compiled when the record is first instantiated: some
+forty records in a ``zero lint`` of one list, most of the cost of declaring them (issue 40, start-up). The
+table holds, by module and qualified name, what that gives for each record of zero with no record base (its
+field names, those shown and compared, its ``__init__`` compiled with the table) together with what it was
+worked out from (the class's own annotations, its flags, which fields have values and of which kind), which
+:func:`zero.records._build` checks against the class before taking the rest. A record the table does not
+describe (a test's, a record with a record base, or a table not regenerated after a record changed) is
+worked out as before: slower, never wrong; a test fails while the table is stale. The ``__init__`` of a
+record with a record base is kept by its text. Run it after adding, removing or changing a record.
 
 Two tables: ``record_inits.py`` holds the records of the modules a list's lint loads (it is imported with
 :mod:`zero.records`), ``record_inits_rest.py`` every other record's (imported at the first record it holds:
-a list's lint never reads its 90 functions).
+a list's lint never reads it).
 
 Usage: python tools/gen_record_inits.py [--check]   (--check: exit 1 if a table is stale, write nothing)
 """
@@ -26,6 +29,7 @@ import subprocess
 import sys
 import tempfile
 from pathlib import Path
+from types import CodeType
 
 sys.path.insert(0, str(Path(__file__).resolve().parent.parent / "src"))
 
@@ -69,23 +73,20 @@ def lint_modules() -> set[str]:
     return loaded
 
 
-def sources() -> dict[str, str]:
-    """The ``__init__`` text of every record of every zero module, each once, with the module it is in."""
+def declared() -> list[tuple[type, type, bool, bool, bool]]:
+    """Every record of every zero module as declared (the class its body made, the record made of it,
+    and its flags), each built the slow way (:func:`zero.records._build_slow`), whatever the tables hold."""
     import zero.records as records
 
-    seen: dict[str, str] = {}
-    first_init = records._first_init
+    seen: list[tuple[type, type, bool, bool, bool]] = []
 
-    def capture(all_fields: tuple[records.Field, ...], frozen: bool, post_init: bool,
-                owner: list[type]) -> object:
-        frame = sys._getframe(1)
-        while frame.f_back is not None and frame.f_globals.get("__name__") == "zero.records":
-            frame = frame.f_back
-        module = frame.f_globals.get("__name__", "")  # the module that declares the record
-        seen.setdefault(records.init_source(all_fields, frozen, post_init)[0], module)
-        return first_init(all_fields, frozen, post_init, owner)
+    def capture(cls: type, frozen: bool, eq: bool, unsafe_hash: bool) -> type:
+        made = records._build_slow(cls, frozen, eq, unsafe_hash)
+        seen.append((cls, made, frozen, eq, unsafe_hash))
+        return made
 
-    records._first_init = capture  # type: ignore[assignment]
+    build = records._build
+    records._build = capture
     try:
         import zero
 
@@ -98,14 +99,65 @@ def sources() -> dict[str, str]:
                 if not info.name.startswith(_OPTIONAL):
                     raise
     finally:
-        records._first_init = first_init
+        records._build = build
     return seen
 
 
-def render(texts: list[str], which: str) -> str:
-    """A table's module text."""
-    out = [f'"""The ``__init__`` of every record {which}, compiled with this module and keyed by its text:',
-           "written by tools/gen_record_inits.py (see :func:`zero.records._compiled_init`).",
+def _listable(cls: type) -> bool:
+    """Whether :func:`zero.records._build` can take ``cls`` from the table: no record base, declared once
+    by its module (not in a function), annotations as text."""
+    import zero.records as records
+
+    ns = cls.__dict__
+    annotations = ns.get("__annotations__") or {}
+    return (not any(records._FIELDS in base.__dict__ for base in cls.__mro__[1:-1])
+            and "<locals>" not in cls.__qualname__ and all(isinstance(a, str) for a in annotations.values()))
+
+
+def entry(cls: type, made: type, frozen: bool, eq: bool, unsafe_hash: bool) -> tuple[str, tuple[object, ...]]:
+    """A record's ``__init__`` text and its entry in the table but for the code (see
+    :func:`zero.records._build`): the class its body made, the record made of it (the slow way), its flags."""
+    import zero.records as records
+
+    ns = cls.__dict__
+    all_fields = records.fields(made)
+    post_init = "__post_init__" in ns or any(hasattr(b, "__post_init__") for b in cls.__mro__[1:-1])
+    valued = tuple(f.name for f in all_fields if f.name in ns)
+    declared = tuple((at, (f.default is not records.MISSING, f.default_factory is not records.MISSING, f.repr,
+                           f.compare))
+                     for at, f in enumerate(f for f in all_fields if f.name in ns)
+                     if ns[f.name].__class__ is records.Field)
+    required = tuple(f.name for f in all_fields if f.name not in ns)
+    names = tuple(f.name for f in all_fields)
+    compared = tuple(f.name for f in all_fields if f.compare)
+    source = records.init_source(all_fields, frozen, post_init)[0]
+    return source, (ns.get("__annotations__"), (frozen, eq, unsafe_hash, post_init), valued, declared, required,
+                    names, made.__dict__["__record_shown__"], compared)
+
+
+def code_of(source: str) -> CodeType:
+    """The code of an ``__init__`` text as the table holds it: compiled with its defaults named ``None``."""
+    head, _, body = source.partition("\n")
+    compiled = compile(_DEFAULT.sub("=None", head) + "\n" + body, "<table>", "exec")
+    return next(c for c in compiled.co_consts if isinstance(c, CodeType))
+
+
+def _function(source: str) -> list[str]:
+    head, _, body = source.partition("\n")
+    return [_DEFAULT.sub("=None", head), body if body else "    pass"]
+
+
+def render(found: list[tuple[type, type, bool, bool, bool]], which: str, rest_modules: list[str] | None) -> str:
+    """A table's module text: the ``__init__`` code of its records, each distinct text once, the records
+    :func:`zero.records._build` takes from it by module and qualified name, and by its text the ``__init__``
+    of the others (a record with a record base)."""
+    out = [f'"""The records {which}, worked out ahead of time: written by tools/gen_record_inits.py',
+           "(see :func:`zero.records._build`).",
+           "",
+           "``RECORDS``: by module and qualified name, what declaring the record takes (its own annotations and",
+           "flags, the fields with values, which of them are field()s and of which kind, the fields without: all",
+           "checked; all names, those shown and compared; its ``__init__`` code). ``INITS``: by its text, the",
+           "``__init__`` code of a record that is not in ``RECORDS``.",
            "",
            'Generated: do not edit."""',
            "",
@@ -117,24 +169,49 @@ def render(texts: list[str], which: str) -> str:
            "",
            "INITS: dict[str, CodeType] = {}",
            ""]
-    for source in texts:
-        head, _, body = source.partition("\n")
-        out.append(_DEFAULT.sub("=None", head))
-        out.append(body if body else "    pass")
+    codes: dict[str, str] = {}
+    listed: dict[str, dict[str, str]] = {}
+    by_text: list[str] = []
+    for cls, made, frozen, eq, unsafe_hash in found:
+        source, spec = entry(cls, made, frozen, eq, unsafe_hash)
+        if not _listable(cls):
+            if source not in by_text:
+                by_text.append(source)
+            continue
+        if source not in codes:
+            codes[source] = f"_{len(codes)}"
+            out.extend(_function(source))
+            out.append(f"{codes[source]} = __init__.__code__")
+            out.append("")
+        listed.setdefault(cls.__module__, {})[cls.__qualname__] = f"{repr(spec)[:-1]}, {codes[source]})"
+    for source in sorted(by_text):
+        out.extend(_function(source))
         out.append(f"INITS[{source!r}] = __init__.__code__")
         out.append("")
-    out.append("del __init__")
+    out.append("RECORDS: dict[str, dict[str, tuple]] = {")
+    for module in sorted(listed):
+        out.append(f"    {module!r}: {{")
+        for qualname in sorted(listed[module]):
+            out.append(f"        {qualname!r}: {listed[module][qualname]},")
+        out.append("    },")
+    out.append("}")
+    if rest_modules is not None:
+        out.append("# the modules whose records are in record_inits_rest")
+        out.append(f"REST_MODULES = frozenset({tuple(sorted(rest_modules))!r})")
+    if codes or by_text:
+        out.append("del __init__")
     return "\n".join(out) + "\n"
 
 
 def tables() -> dict[Path, str]:
     """Each table's file and text."""
     hot = lint_modules()
-    found = sources()
-    first = sorted(text for text, module in found.items() if module in hot)
-    rest = sorted(text for text, module in found.items() if module not in hot)
-    return {SRC / "record_inits.py": render(first, "of the modules a list's lint loads"),
-            SRC / "record_inits_rest.py": render(rest, "of the other modules")}
+    found = declared()
+    first = [r for r in found if r[0].__module__ in hot]
+    rest = [r for r in found if r[0].__module__ not in hot]
+    rest_modules = sorted({r[0].__module__ for r in rest})
+    return {SRC / "record_inits.py": render(first, "of the modules a list's lint loads", rest_modules),
+            SRC / "record_inits_rest.py": render(rest, "of the other modules", None)}
 
 
 def main() -> None:

@@ -3,10 +3,14 @@
 ``dataclasses`` imports :mod:`inspect` (and with it ``ast``, ``dis`` and ``tokenize``: about
 10 ms) and compiles each method of each class. ``zero lint`` declares some forty records
 before it reads the first line, so a pre-commit run spent a third of its start-up there.
-:func:`record` compiles only ``__init__`` (which must be as fast as a dataclass's: a big list
-builds one record per line), at the first instance (a run builds fewer than half of the records it
-imports), and makes the other methods closures. It is marked
-``dataclass_transform``, so type checkers read a record exactly as they read a dataclass.
+:func:`record` writes only ``__init__`` (which must be as fast as a dataclass's: a big list
+builds one record per line); ``__repr__``, ``__eq__`` and ``__hash__`` are shared by all records.
+For the records of zero, what the fields are and their ``__init__`` compiled are worked out ahead
+of time (:mod:`zero.record_inits`, by ``tools/gen_record_inits.py``): declaring one checks that the
+table still describes the class and takes the rest from there. Any other record (a test's, or one
+with a record base) is worked out as it is declared, its ``__init__`` compiled at its first
+instance. It is marked ``dataclass_transform``, so type checkers read a record exactly as they
+read a dataclass.
 
 What it builds, as ``@dataclass(slots=True, ...)`` does: ``__slots__`` (always),
 ``__init__`` (calling ``__post_init__`` when the class has one), ``__repr__``, ``__eq__``
@@ -24,7 +28,7 @@ from operator import attrgetter
 from types import FunctionType
 
 from zero.hints import dataclass_transform, overload
-from zero.record_inits import INITS
+from zero.record_inits import INITS, RECORDS, REST_MODULES
 
 __all__ = ["Field", "field", "fields", "record", "replace"]
 
@@ -153,7 +157,143 @@ def _no_values(_: object) -> tuple[()]:
     return ()
 
 
+_NO_VALUES = staticmethod(_no_values)  # a record comparing no field (a plain function would bind to self)
+
+
+_SCOPE: dict[str, Any] = {"MISSING": MISSING, "__set": object.__setattr__}  # an __init__'s globals: no factory
+
+
+class _LazyFields(tuple):  # type: ignore[type-arg]  # (Any is for type checkers only)
+    """A listed record's ``__record_fields__`` until first read, ``(names, valued, values)`` (the table's
+    names and those of the fields with values, the values the class body gave): then its :class:`Field`
+    tuple, put in its place. Made by ``tuple`` (no ``__init__`` to run: declaring a record stays cheap);
+    a run reads the fields of few records."""
+
+    __slots__ = ()
+
+    def __get__(self, obj: object, objtype: type | None = None) -> tuple[Field, ...]:
+        names, valued, values = self
+        given = dict(zip(valued, values, strict=True))
+        made: list[Field] = []
+        for name in names:
+            declared = given.get(name, MISSING)
+            f = declared if declared.__class__ is Field else Field(declared)
+            f.name = name
+            made.append(f)
+        out = tuple(made)
+        for owner in (objtype or obj.__class__).__mro__:
+            if owner.__dict__.get(_FIELDS) is self:
+                type.__setattr__(owner, _FIELDS, out)
+                break
+        return out
+
+
 def _build(cls: type, frozen: bool, eq: bool, unsafe_hash: bool) -> type:
+    """``cls`` made a record: from what ``tools/gen_record_inits.py`` worked out ahead of time for it, kept in
+    :mod:`zero.record_inits` (or ``record_inits_rest``) by module and qualified name, where that still
+    describes the class (its own annotations, flags, which fields have values and of which kind); else by
+    :func:`_build_slow`. Working fields, defaults and ``__init__`` out was most of declaring a record (issue 40)."""
+    module = cls.__module__
+    listed = RECORDS.get(module)
+    if listed is None:
+        if module not in REST_MODULES:
+            return _build_slow(cls, frozen, eq, unsafe_hash)
+        from zero.record_inits_rest import RECORDS as rest  # start-up: the records a list's lint does not load
+
+        listed = rest.get(module)
+        if listed is None:
+            return _build_slow(cls, frozen, eq, unsafe_hash)
+    spec = listed.get(cls.__qualname__)
+    ns = cls.__dict__
+    if spec is None:
+        return _build_slow(cls, frozen, eq, unsafe_hash)
+    annotations, flags, valued, declared, without, names, shown, compared, code = spec
+    mro = cls.__mro__
+    post_init = "__post_init__" in ns
+    if len(mro) > 2:
+        bases = mro[1:-1]
+        for base in bases:
+            if _FIELDS in base.__dict__:  # fields of a record base: worked out as it is
+                return _build_slow(cls, frozen, eq, unsafe_hash)
+        post_init = post_init or any(hasattr(b, "__post_init__") for b in bases)
+    if (ns.get("__annotations__") != annotations or flags != (frozen, eq, unsafe_hash, post_init)
+            or not ns.keys().isdisjoint(without)):
+        return _build_slow(cls, frozen, eq, unsafe_hash)
+    body = ns.copy()  # the class dict itself, copied (dict(ns) reads a mappingproxy key by key)
+    try:
+        values = list(map(body.pop, valued))  # the fields' values, out of the body
+    except KeyError:  # a field the table says has one has none
+        return _build_slow(cls, frozen, eq, unsafe_hash)
+    scope = _SCOPE
+    if list(map(type, values)).count(Field) != len(declared):  # not the fields the table says are field()s
+        return _build_slow(cls, frozen, eq, unsafe_hash)
+    defaults = values
+    if declared:
+        defaults = values.copy()
+        required = False
+        for at, kind in declared:
+            f = values[at]
+            if f.__class__ is not Field or kind != (f.default is not MISSING, f.default_factory is not MISSING,
+                                                     f.repr, f.compare):
+                return _build_slow(cls, frozen, eq, unsafe_hash)
+            if kind[1]:
+                if scope is _SCOPE:
+                    scope = dict(_SCOPE)
+                scope["__factory_" + valued[at]] = f.default_factory
+                defaults[at] = MISSING  # what the table's __init__ takes for "not given"
+            elif kind[0]:
+                defaults[at] = f.default
+            else:  # a field() with neither: a parameter without a default
+                defaults[at] = _Missing
+                required = True
+        if required:
+            defaults = [d for d in defaults if d is not _Missing]
+    body.pop("__dict__", None)
+    body.pop("__weakref__", None)
+    if len(mro) > 2:
+        inherited = {s for base in mro[1:-1] for s in base.__dict__.get("__slots__", ())}
+        body["__slots__"] = tuple(n for n in names if n not in inherited)
+    else:
+        body["__slots__"] = names
+    body[_FIELDS] = _LazyFields((names, valued, values))
+    body["__match_args__"] = names
+    if "__init__" not in ns:
+        body["__init__"] = FunctionType(code, scope, "__init__", tuple(defaults) or None)
+    body["__record_shown__"] = shown
+    if "__repr__" not in ns:
+        body["__repr__"] = _record_repr
+    explicit_hash = "__hash__" in ns and not (ns["__hash__"] is None and "__eq__" in ns)
+    hashed = not explicit_hash and (unsafe_hash or (eq and frozen))
+    if eq or hashed:
+        body["__record_key__"] = attrgetter(*compared) if compared else _NO_VALUES
+    if eq and "__eq__" not in ns:
+        body["__eq__"] = _record_eq
+    if hashed:
+        body["__hash__"] = _record_hash
+    elif eq and not explicit_hash:
+        body["__hash__"] = None
+    if frozen:
+        if "__getstate__" not in ns:
+            body["__getstate__"] = _frozen_getstate
+        if "__setstate__" not in ns:
+            body["__setstate__"] = _frozen_setstate
+        if "__setattr__" not in ns:
+            body["__setattr__"] = _frozen_setattr
+        if "__delattr__" not in ns:
+            body["__delattr__"] = _frozen_delattr
+        body["__record_frozen__"] = True
+        body["__record_names__"] = frozenset(names)
+    body["__qualname__"] = cls.__qualname__
+    return type(cls)(cls.__name__, cls.__bases__, body)
+
+
+def _own_fields(cls: type) -> tuple[Field, ...]:
+    """The fields ``cls`` itself holds (none for a class that is no record)."""
+    got = cls.__dict__.get(_FIELDS, ())
+    return got.__get__(None, cls) if got.__class__ is _LazyFields else got
+
+
+def _build_slow(cls: type, frozen: bool, eq: bool, unsafe_hash: bool) -> type:
     # The class's own annotations (strings: every zero module imports annotations from __future__;
     # 3.10 and later answer for the class alone); inspect is what this module avoids.
     ns = cls.__dict__
@@ -162,11 +302,11 @@ def _build(cls: type, frozen: bool, eq: bool, unsafe_hash: bool) -> type:
                      if not (annotation.startswith(_CLASSVAR) if annotation.__class__ is str
                              else _is_classvar(annotation))]
     bases = cls.__mro__[1:-1]
-    body = dict(ns)
+    body = ns.copy()  # the class dict itself, copied (dict(ns) reads a mappingproxy key by key)
     if any(_FIELDS in base.__dict__ for base in bases):
         by_name: dict[str, Field] = {}
         for base in reversed(bases):
-            for f in base.__dict__.get(_FIELDS, ()):
+            for f in _own_fields(base):
                 by_name[f.name] = f
     else:
         by_name = {}
@@ -209,7 +349,7 @@ def _build(cls: type, frozen: bool, eq: bool, unsafe_hash: bool) -> type:
     hashed = not explicit_hash and (unsafe_hash or (eq and frozen))
     if eq or hashed:
         compared = tuple(f.name for f in all_fields if f.compare)
-        body["__record_key__"] = attrgetter(*compared) if compared else _no_values
+        body["__record_key__"] = attrgetter(*compared) if compared else _NO_VALUES
     if eq:
         put("__eq__", _record_eq)
     if hashed:
