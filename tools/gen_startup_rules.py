@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """Write what each K rule declares (its severity, name, summary, explanation and the parameters it reads)
-to ``src/zero/catalog/data/startup_rules.py``, each with the facts of its row of startup_errors.toml: read
+to ``src/zero/catalog/data/startup_rules.py``, each with the facts of its row of startup_errors.toml (and the
+facts alone to ``startup_facts.py``: a start-up declares the rules from them, the texts read at first use): read
 from bytecode at start-up instead of written out at each run (issue 40). With them the size of the
 ``startup_errors.py`` they were written from: while that file has it, a start-up declares the rules from
 this module alone (without importing the rows); else each row whose facts differ from the ones written
@@ -43,10 +44,28 @@ def render() -> str:
             "DECLARED: dict[str, Any] = {\n" + "\n".join(lines) + "\n}\n")
 
 
+def render_facts() -> str:
+    """``startup_facts.py``: each rule's facts alone (what a start-up declares the K rules from; their
+    texts, in ``startup_rules.py``, are imported where something reads them), with the same size."""
+    from zero.catalog.data.startup_errors import ERRORS
+    from zero.rules.startup import facts
+
+    lines = [f"    {f[0]!r}: {f!r}," for f in (facts(row) for row in ERRORS if row.get("condition"))]
+    return ('"""The facts of each K rule\'s row of startup_errors.toml, written by tools/gen_startup_rules.py:\n'
+            'code -> facts (what the K rules are declared from at start-up; what each declares, its texts, is in\n'
+            'startup_rules.py); ERRORS_SIZE: the size of the startup_errors.py written from.\n\n'
+            'Generated: do not edit."""\n\n'
+            "# ruff: noqa\n"
+            + "\n".join(TYPING_FOR_CHECKERS) + "\n\n"
+            f"ERRORS_SIZE: int = {(DATA / 'startup_errors.py').stat().st_size}\n"
+            "FACTS: dict[str, Any] = {\n" + "\n".join(lines) + "\n}\n")
+
+
 def main() -> None:
-    target = DATA / "startup_rules.py"
-    target.write_text(render(), encoding="utf-8")
-    print(f"wrote {target}")
+    for name, text in (("startup_rules.py", render()), ("startup_facts.py", render_facts())):
+        target = DATA / name
+        target.write_text(text, encoding="utf-8")
+        print(f"wrote {target}")
 
 
 if __name__ == "__main__":

@@ -10,9 +10,10 @@ from types import ModuleType
 import pytest
 
 from conftest import script_module
-from zero.catalog.data import startup_rules
+from zero.catalog.data import startup_facts, startup_rules
 from zero.catalog.data.startup_errors import ERRORS
 from zero.catalog.data.startup_rules import DECLARED
+from zero.records import replace
 from zero.rules import startup
 
 ROOT = Path(__file__).resolve().parents[2]
@@ -26,6 +27,8 @@ def test_the_generated_module_is_up_to_date() -> None:
     """Run ``python tools/gen_startup_rules.py`` after tools/gen_startup.py or a change to ``said``."""
     written = (ROOT / "src" / "zero" / "catalog" / "data" / "startup_rules.py").read_text(encoding="utf-8")
     assert written == _generator().render()  # type: ignore[attr-defined]
+    facts = (ROOT / "src" / "zero" / "catalog" / "data" / "startup_facts.py").read_text(encoding="utf-8")
+    assert facts == _generator().render_facts()  # type: ignore[attr-defined]
 
 
 def test_each_rule_is_declared_as_its_row_says() -> None:
@@ -53,15 +56,39 @@ def test_a_row_whose_facts_differ_from_the_written_ones_is_declared_from_its_own
 
 def test_the_written_rules_are_taken_without_the_rows_while_the_rows_module_has_its_size() -> None:
     rows_module = ROOT / "src" / "zero" / "catalog" / "data" / "startup_errors.py"
-    assert rows_module.stat().st_size == startup_rules.ERRORS_SIZE
+    assert rows_module.stat().st_size == startup_rules.ERRORS_SIZE == startup_facts.ERRORS_SIZE
     assert list(startup._declared()) == list(DECLARED.values())
-    code = "import sys, zero.rules; print('zero.catalog.data.startup_errors' in sys.modules)"
+    assert list(startup._facts_declared()) == [f for f, _ in DECLARED.values()]
+    code = ("import sys, zero.rules; print('zero.catalog.data.startup_errors' in sys.modules,"
+            " 'zero.catalog.data.startup_rules' in sys.modules)")
     out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout
-    assert out.strip() == "False"  # a lint's start-up reads the written module only
+    assert out.strip() == "False False"  # a lint's start-up reads the written facts only, no rule's texts
+
+
+def test_a_kernel_rules_texts_are_read_at_their_first_use() -> None:
+    """A K rule is declared without its summary, explanation and what it reads; each reads its row's (and
+    replace() makes a rule of every field, as a record)."""
+    code = ("from zero.rules.startup import FAMILY, _SLOTS\n"
+            "r = FAMILY.rules['K037']\n"
+            "def unset(name):\n"
+            "    try:\n"
+            "        _SLOTS[name].__get__(r)\n"
+            "    except AttributeError:\n"
+            "        return True\n"
+            "    return False\n"
+            "print(sorted(n for n in _SLOTS if unset(n)), r.reads, r.summary)\n")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True, check=True).stdout
+    _, said = DECLARED["K037"]
+    assert out.strip() == f"['explanation', 'reads', 'summary'] {said[4]!r} {said[2]}"
+    rule = startup.FAMILY.rules["K037"]
+    assert (rule.name, rule.summary, rule.explanation, rule.reads) == said[1:]
+    changed = replace(rule, explanation="another")
+    assert (changed.explanation, changed.summary, changed == rule) == ("another", said[2], False)
+    assert replace(rule) == rule and hash(replace(rule)) == hash(rule)
 
 
 def test_a_rows_module_of_another_size_is_declared_from_its_rows(monkeypatch: pytest.MonkeyPatch) -> None:
-    monkeypatch.setattr(startup_rules, "ERRORS_SIZE", -2)
+    monkeypatch.setattr(startup_facts, "ERRORS_SIZE", -2)
     rows = [r for r in ERRORS if r.get("condition")]
     declared = list(startup._declared())
     assert declared == list(DECLARED.values())  # the same, from the rows (facts(), and said() where they differ)

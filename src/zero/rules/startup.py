@@ -19,20 +19,21 @@ import re
 from collections.abc import Iterable, Iterator
 
 from zero.catalog.condition_helpers import DEFAULT_LIST, ELSEWHERE, UNIQUE, supported_drive_types
-from zero.catalog.data import startup_rules
+from zero.catalog.data import startup_facts
 from zero.catalog.ranges import format_number
 from zero.catalog.registry import ParamSpec
 from zero.catalog.values import Resolved, default_number, parse_int
-from zero.diagnostics import Diagnostic, Span
+from zero.diagnostics import Diagnostic, Severity, Span
 from zero.lists.model import Entry, format_key
 from zero.records import record
-from zero.rules.base import Context, E, Family, W
+from zero.rules.base import Context, E, Family, Rule, W
 
 TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (mypy and ruff read it alike)
 if TYPE_CHECKING:
     from typing import Any
 
     from zero.catalog.condition_helpers import Compiled
+    from zero.rules.base import Scope
 
 FAMILY: Family[Context] = Family("K", "kernel start-up checks", "list")
 
@@ -146,8 +147,8 @@ def facts(row: dict[str, object]) -> Facts:
 def said(f: Facts) -> Said:
     """A row's rule as declared: a documented warning without a reaction, or a documented message whose
     reaction no page gives, is a warning; it reads the reported parameters and the condition's."""
-    _, number, _, params, condition, when, correction, title, source, _, reported, severity = f
-    letter = "W" if correction == "none" or severity == "warning" else "E"
+    _, number, _, params, condition, when, correction, title, source, _, reported, _ = f
+    letter = _letter(f)
     guard = f" (checked where {when} holds)" if when else ""
     said_when = "" if reported == "at start-up" else f" ({reported})"
     explanation = f"""
@@ -162,38 +163,112 @@ Fix: change the values so that `{condition}` holds. Source: {source}
     return letter, f"kernel-{number}", f"P-ERR-{number}: {title}", explanation, reads
 
 
-def _declared() -> Iterable[tuple[Facts, Said]]:
-    """Each row's facts and what it declares, in order (the rows with a condition). Written at build time
-    (tools/gen_startup_rules.py: its explanation and the parameters it reads, about a third of this module's
-    import): taken as written while ``startup_errors.py`` has the size it was written from (the rows are
-    then not imported at all), else each row whose facts differ from the ones written is declared from its
-    own (a stale module: slower, never wrong)."""
-    written = startup_rules.DECLARED
+def _letter(f: Facts) -> str:
+    """A row's severity letter: a documented warning without a reaction, or a documented message whose
+    reaction no page gives, is a warning ("W"); else an error ("E")."""
+    return "W" if f[6] == "none" or f[11] == "warning" else "E"
+
+
+def _facts_declared() -> Iterable[Facts]:
+    """Each row's facts, in order (the rows with a condition). Written at build time (tools/gen_startup_rules.py:
+    data/startup_facts.py): taken as written while ``startup_errors.py`` has the size they were written from
+    (the rows are then not imported at all), else read from the rows (slower, never wrong)."""
     try:
-        size = os.stat(os.path.join(os.path.dirname(startup_rules.__file__), "startup_errors.py")).st_size
+        size = os.stat(os.path.join(os.path.dirname(startup_facts.__file__), "startup_errors.py")).st_size
     except OSError:
         size = -1
-    if size == getattr(startup_rules, "ERRORS_SIZE", None):  # (none: a module written before it said its size)
+    if size == startup_facts.ERRORS_SIZE:
+        written: dict[str, Facts] = startup_facts.FACTS
         return written.values()
     from zero.catalog.data.startup_errors import ERRORS  # start-up: only where the module written from them is stale
 
-    out = []
-    for row in ERRORS:
-        if not row.get("condition"):
-            continue  # documented, but not as a condition zero can evaluate (said in the table)
-        f = facts(row)
-        pre = written.get(f[0])
-        out.append((f, pre[1] if pre is not None and pre[0] == f else said(f)))
-    return out
+    return [facts(row) for row in ERRORS if row.get("condition")]  # (a row without: documented, not evaluable)
+
+
+def _said(f: Facts) -> Said:
+    """What the rule of a row's facts declares (:func:`said`), as written at build time
+    (data/startup_rules.py, imported where a rule's summary, explanation or what it reads is first read:
+    a lint prints none of them) where the facts it was written from are these, else worded here."""
+    from zero.catalog.data.startup_rules import DECLARED  # start-up: a rule's texts only where something reads them
+
+    pre = DECLARED.get(f[0])
+    return pre[1] if pre is not None and pre[0] == f else said(f)
+
+
+def _declared() -> list[tuple[Facts, Said]]:
+    """Each row's facts and what it declares, in order."""
+    return [(f, _said(f)) for f in _facts_declared()]
+
+
+_SLOTS = {name: Rule.__dict__[name] for name in ("summary", "explanation", "reads")}  # Rule's own fields
+_set = object.__setattr__  # a frozen record's fields, as its own __init__ sets them
+_ROWS: dict[str, Facts] = {}  # code -> its row's facts
+
+
+class _KernelRule(Rule):
+    """A K rule whose summary, explanation and the parameters it reads are its row's (:func:`_said`), read
+    at their first use (declared unset): a list's lint reads none of them (issue 40, start-up)."""
+
+    __slots__ = ()
+
+    def __init__(self, code: str, name: str, severity: Severity, summary: str = "", explanation: str = "",
+                 scope: Scope = "list", opt_in: bool = False, reads: tuple[str, ...] = ()) -> None:
+        _set(self, "code", code)
+        _set(self, "name", name)
+        _set(self, "severity", severity)
+        _set(self, "scope", scope)
+        _set(self, "opt_in", opt_in)
+        if summary or explanation:  # given (replace() gives every field): else read at their first use
+            for field, value in (("summary", summary), ("explanation", explanation), ("reads", reads)):
+                _SLOTS[field].__set__(self, value)
+
+    def _field(self, name: str) -> Any:
+        try:
+            return _SLOTS[name].__get__(self, Rule)
+        except AttributeError:  # not read yet
+            pass
+        _, _, summary, explanation, reads = _said(_ROWS[self.code])
+        for field, value in (("summary", summary), ("explanation", explanation), ("reads", reads)):
+            _SLOTS[field].__set__(self, value)
+        return _SLOTS[name].__get__(self, Rule)
+
+    @property
+    def summary(self) -> str:
+        return str(self._field("summary"))
+
+    @summary.setter
+    def summary(self, value: str) -> None:
+        _SLOTS["summary"].__set__(self, value)
+
+    @property
+    def explanation(self) -> str:
+        return str(self._field("explanation"))
+
+    @explanation.setter
+    def explanation(self, value: str) -> None:
+        _SLOTS["explanation"].__set__(self, value)
+
+    @property
+    def reads(self) -> tuple[str, ...]:
+        return tuple(self._field("reads"))
+
+    @reads.setter
+    def reads(self, value: tuple[str, ...]) -> None:
+        _SLOTS["reads"].__set__(self, value)
 
 
 def _declare() -> dict[str, list[Facts]]:
-    """Each row's rule (:func:`_declared`), and its facts by list kind, in order: a row's
-    :class:`StartupError` is made where a check needs it (:func:`_error`), not here (an axis list's lint
-    checks some sixty of the 125: issue 40, start-up)."""
+    """Each row's rule (its texts read at their first use: :class:`_KernelRule`), and its facts by list
+    kind, in order: a row's :class:`StartupError` is made where a check needs it (:func:`_error`), not
+    here (an axis list's lint checks some sixty of the 125: issue 40, start-up)."""
     out: dict[str, list[Facts]] = {"": []}  # (never empty once built)
-    for f, (letter, name, summary, explanation, reads) in _declared():
-        FAMILY.rule(f[0], name, W if letter == "W" else E, summary, explanation, reads=reads)
+    rules = FAMILY.rules
+    for f in _facts_declared():
+        code = f[0]
+        if not code.startswith("K") or code in rules:
+            raise ValueError(f"rule {code} does not belong to family K or is declared twice")
+        _ROWS[code] = f
+        rules[code] = _KernelRule(code, f"kernel-{f[1]}", W if _letter(f) == "W" else E)
         got = out.get(f[2])
         if got is None:
             out[f[2]] = [f]
@@ -222,8 +297,7 @@ def __getattr__(name: str) -> list[StartupError]:
     makes only those of its kind that it checks)."""
     if name != "CHECKS":
         raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
-    order = {code: n for n, code in enumerate(FAMILY.rules)}
-    checks = sorted((_error(f) for facts in _BY_KIND.values() for f in facts), key=lambda e: order[e.code])
+    checks = [_error(f) for f in _ROWS.values()]
     globals()["CHECKS"] = checks
     return checks
 
