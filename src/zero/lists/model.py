@@ -7,7 +7,6 @@ findings are made from them with :meth:`zero.diagnostics.Span.on_line`.
 
 from __future__ import annotations
 
-import enum
 import re
 from array import array
 from collections.abc import Iterator
@@ -19,7 +18,7 @@ from zero.records import Field, record
 
 TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (mypy and ruff read it alike)
 if TYPE_CHECKING:
-    from typing import Any
+    from typing import Any, ClassVar
 
 # An index with more digits than this is not converted to an int: it is clamped
 # to HUGE_INDEX, which lies beyond every array size, and reported as such.
@@ -72,23 +71,67 @@ def _indices(text: str) -> list[tuple[int, int]]:
     return out
 
 
-class ValueKind(enum.Enum):
+class Member:
+    """A member of one of the two enumerations below, as :class:`enum.Enum` gives one: ``name``, ``value``,
+    its ``repr`` and ``str``; compared by identity, hashed by it (in C), pickled and copied as itself (by name).
+    Without enum's class machinery: creating the two classes was a fiftieth of a list's lint, and every
+    hash of a member (each dictionary or set it keys) a call of Python."""
+
+    __slots__ = ("name", "value")
+
+    def __init__(self, name: str, value: str) -> None:
+        self.name = name
+        self.value = value
+
+    def __repr__(self) -> str:
+        return f"<{type(self).__name__}.{self.name}: {self.value!r}>"
+
+    def __str__(self) -> str:
+        return f"{type(self).__name__}.{self.name}"
+
+    def __reduce__(self) -> str:
+        return f"{type(self).__qualname__}.{self.name}"  # pickle and copy: the member itself, looked up by name
+
+    def __setattr__(self, name: str, value: object) -> None:
+        if hasattr(self, "value"):  # set once, in __init__
+            raise AttributeError(f"cannot change {self!r}")
+        object.__setattr__(self, name, value)
+
+
+class ValueKind(Member):
     """What a value looks like, before the registry says what it should be."""
 
-    INT = "int"  # -12, +7, 0
-    HEX = "hex"  # 0x400001
-    REAL = "real"  # 1.5, 1e-6
-    REF = "ref"  # P-AXIS-00212.0: the value of another parameter
-    FLAGS = "flags"  # PLC_INFO | MOS
-    WORD = "word"  # ABSOLUT, X_Achse, ./listen/achsmds1.lis, 20804,20805
-    QUOTED = "quoted"  # "text with ( # spaces"
+    __slots__ = ()
+    INT: ClassVar[ValueKind]  # -12, +7, 0
+    HEX: ClassVar[ValueKind]  # 0x400001
+    REAL: ClassVar[ValueKind]  # 1.5, 1e-6
+    REF: ClassVar[ValueKind]  # P-AXIS-00212.0: the value of another parameter
+    FLAGS: ClassVar[ValueKind]  # PLC_INFO | MOS
+    WORD: ClassVar[ValueKind]  # ABSOLUT, X_Achse, ./listen/achsmds1.lis, 20804,20805
+    QUOTED: ClassVar[ValueKind]  # "text with ( # spaces"
 
 
-class CommentStyle(enum.Enum):
-    HASH = "#"
-    PAREN = "("
-    BLOCK = "/*"
-    TEXT = "text"  # plain words after a value
+ValueKind.INT = ValueKind("INT", "int")
+ValueKind.HEX = ValueKind("HEX", "hex")
+ValueKind.REAL = ValueKind("REAL", "real")
+ValueKind.REF = ValueKind("REF", "ref")
+ValueKind.FLAGS = ValueKind("FLAGS", "flags")
+ValueKind.WORD = ValueKind("WORD", "word")
+ValueKind.QUOTED = ValueKind("QUOTED", "quoted")
+
+
+class CommentStyle(Member):
+    __slots__ = ()
+    HASH: ClassVar[CommentStyle]
+    PAREN: ClassVar[CommentStyle]
+    BLOCK: ClassVar[CommentStyle]
+    TEXT: ClassVar[CommentStyle]  # plain words after a value
+
+
+CommentStyle.HASH = CommentStyle("HASH", "#")
+CommentStyle.PAREN = CommentStyle("PAREN", "(")
+CommentStyle.BLOCK = CommentStyle("BLOCK", "/*")
+CommentStyle.TEXT = CommentStyle("TEXT", "text")
 
 
 @record(unsafe_hash=True)
