@@ -248,17 +248,27 @@ def _build(cls: type, frozen: bool, eq: bool, unsafe_hash: bool) -> type:
                 required = True
         if required:
             defaults = [d for d in defaults if d is not _Missing]
+    init = ns.get("__init__") or FunctionType(code, scope, "__init__", tuple(defaults) or None)
+    return _finish(cls, body, mro[1:-1], names, _LazyFields((names, valued, values)), init, shown, compared,
+                   frozen, eq, unsafe_hash)
+
+
+def _finish(cls: type, body: dict[str, Any], bases: tuple[type, ...], names: tuple[str, ...], fields: Any,
+            init: Any, shown: tuple[str, ...], compared: tuple[str, ...], frozen: bool, eq: bool,
+            unsafe_hash: bool) -> type:
+    """The record made of ``cls``'s ``body``: its slots, fields, ``__init__`` and the shared methods, each
+    where the class does not define its own (both ways of declaring a record end here)."""
+    ns = cls.__dict__
     body.pop("__dict__", None)
     body.pop("__weakref__", None)
-    if len(mro) > 2:
-        inherited = {s for base in mro[1:-1] for s in base.__dict__.get("__slots__", ())}
+    if bases:
+        inherited = {s for base in bases for s in base.__dict__.get("__slots__", ())}
         body["__slots__"] = tuple(n for n in names if n not in inherited)
     else:
         body["__slots__"] = names
-    body[_FIELDS] = _LazyFields((names, valued, values))
+    body[_FIELDS] = fields
     body["__match_args__"] = names
-    if "__init__" not in ns:
-        body["__init__"] = FunctionType(code, scope, "__init__", tuple(defaults) or None)
+    body["__init__"] = init
     body["__record_shown__"] = shown
     if "__repr__" not in ns:
         body["__repr__"] = _record_repr
@@ -273,6 +283,7 @@ def _build(cls: type, frozen: bool, eq: bool, unsafe_hash: bool) -> type:
     elif eq and not explicit_hash:
         body["__hash__"] = None
     if frozen:
+        # in the body, not set on the class made: assigning a special method to a class updates its slots again
         if "__getstate__" not in ns:
             body["__getstate__"] = _frozen_getstate
         if "__setstate__" not in ns:
@@ -326,47 +337,11 @@ def _build_slow(cls: type, frozen: bool, eq: bool, unsafe_hash: bool) -> type:
         else:
             seen_default = True
 
-    body.pop("__dict__", None)
-    body.pop("__weakref__", None)
-    if bases:
-        inherited = {s for base in bases for s in base.__dict__.get("__slots__", ())}
-        body["__slots__"] = tuple(n for n in names if n not in inherited)
-    else:
-        body["__slots__"] = names
-    body[_FIELDS] = all_fields
-    body["__match_args__"] = names
-
-    def put(name: str, value: Any) -> None:
-        if name not in ns:
-            body[name] = value
-
     owner: list[type] = []  # the class built below, whose __init__ the first call makes
     post_init = "__post_init__" in body or any(hasattr(b, "__post_init__") for b in bases)
-    put("__init__", _first_init(all_fields, frozen, post_init, owner))
-    body["__record_shown__"] = tuple(f.name for f in all_fields if f.repr)
-    put("__repr__", _record_repr)
-    explicit_hash = "__hash__" in ns and not (ns["__hash__"] is None and "__eq__" in ns)
-    hashed = not explicit_hash and (unsafe_hash or (eq and frozen))
-    if eq or hashed:
-        compared = tuple(f.name for f in all_fields if f.compare)
-        body["__record_key__"] = attrgetter(*compared) if compared else _NO_VALUES
-    if eq:
-        put("__eq__", _record_eq)
-    if hashed:
-        body["__hash__"] = _record_hash
-    elif eq and not explicit_hash:
-        body["__hash__"] = None
-    if frozen:
-        put("__getstate__", _frozen_getstate)
-        put("__setstate__", _frozen_setstate)
-        # in the body, not set on the class made: assigning a special method to a class updates its slots again
-        body["__record_frozen__"] = True
-        body["__record_names__"] = frozenset(names)
-        put("__setattr__", _frozen_setattr)
-        put("__delattr__", _frozen_delattr)
-    body["__qualname__"] = cls.__qualname__
-
-    new = type(cls)(cls.__name__, cls.__bases__, body)
+    init = ns.get("__init__") or _first_init(all_fields, frozen, post_init, owner)
+    new = _finish(cls, body, bases, names, all_fields, init, tuple(f.name for f in all_fields if f.repr),
+                  tuple(f.name for f in all_fields if f.compare), frozen, eq, unsafe_hash)
     owner.append(new)
     return new
 
