@@ -8,26 +8,39 @@ from pathlib import Path
 
 import pathspec
 import pytest
-from hypothesis import given, settings
+from hypothesis import example, given, settings
 from hypothesis import strategies as st
 
 from zero.engine.config import Config, _resolved, _suffixes, one_resolution
 from zero.engine.config_file import patterns
+from zero.files import path_str
 from zero.forms import DEFAULT_INCLUDE
 
 _PARTS = st.lists(st.sampled_from(["a", ".lis", "x.lis", ".nc", "nc", "*", "[", "\\", " ", "ü", ".", "..", "",
                                    ".XML", ".xml", "lis", "#", "!"]), max_size=6)
 
 
+_ROOT = "/zero-fast-path-root"  # a configuration's folder that does not exist: nothing in it is a link
+
+
 @given(st.lists(_PARTS, max_size=4))
+@example([["."], [], [".lis"]])  # `.//.lis`: pathspec reads `/.lis` (one `./` stripped), no; zero names it `.lis`
+@example([["x.lis"], ["a"]])  # a folder's suffix matches what is below it
 @settings(max_examples=400)
 def test_suffix_patterns_match_as_pathspec(parts: list[list[str]]) -> None:
-    name = "/".join("".join(p) for p in parts)
-    if name.startswith("/") or "\n" in name:  # left to pathspec by _matches
-        return
-    suffixes = _suffixes(DEFAULT_INCLUDE)
+    """Every name zero matches a file by (``Config.relative`` of a path as ``collect_files`` gives it:
+    its folder resolved, so no empty, ``.`` or ``..`` folder and no leading ``./``; else the file's own name)
+    is matched by the ``*.suffix`` fast path as pathspec matches it. A text such as ``.//.lis`` never
+    reaches the matcher (pathspec and the fast path differ on it)."""
+    file = path_str(_ROOT + "/" + "/".join("".join(p) for p in parts))
+    cfg = Config(path=_ROOT + "/zero.toml")
+    rel = cfg.relative(file)
+    name = rel if rel is not None else os.path.basename(file)
+    assert "//" not in name and not name.startswith(("./", "/")) and "\n" not in name  # the fast path's domain
+    suffixes = _suffixes(cfg.include)
     assert suffixes is not None
     spec = pathspec.GitIgnoreSpec.from_lines(list(DEFAULT_INCLUDE))
+    assert cfg.included(file) == spec.match_file(name)
     assert any(part.endswith(suffixes) for part in name.split("/")) == spec.match_file(name)
 
 
@@ -53,7 +66,7 @@ def test_matching_is_the_same_inside_and_outside_one_resolution(tmp_path: Path, 
     files = [Path("a.lis"), Path("sub.lis/x.txt"), Path("link/m.lis"), Path("real/m.nc"), Path("real/m.txt"),
              tmp_path / "elsewhere" / "o.lis", tmp_path / "elsewhere" / "o.txt", Path("../elsewhere/o.xml"),
              Path(str(tmp_path / "proj") + "//real/./m.lis")]
-    for cfg in (Config(path=cfg_file), Config()):
+    for cfg in (Config(path=str(cfg_file)), Config()):
         expected = []
         for f in files:
             try:
@@ -74,7 +87,7 @@ def test_one_resolution_ends_with_its_block(tmp_path: Path, monkeypatch: pytest.
     (tmp_path / "b" / "zero.toml").write_text("")
     link = tmp_path / "l"
     link.symlink_to(tmp_path / "a")
-    cfg = Config(path=tmp_path / "b" / "zero.toml")
+    cfg = Config(path=str(tmp_path / "b" / "zero.toml"))
     with one_resolution():
         assert cfg.relative(link / "m.lis") is None
     link.unlink()
