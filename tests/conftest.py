@@ -185,7 +185,7 @@ def generated_lists(draw: st.DrawFn) -> bytes:
         lines.append(end)
         lines.extend(draw(st.lists(st.sampled_from(["", " "]), max_size=2)))
     newline = draw(st.sampled_from(["\n", "\r\n"]))
-    text = newline.join(lines) + (newline if lines and draw(st.booleans()) else "")
+    text = newline.join(lines) + (newline if bool(lines) and draw(st.booleans()) else "")
     encoding = draw(st.sampled_from(["utf-8", "cp1252"]))
     return text.encode(encoding)
 
