@@ -6,7 +6,7 @@ bytecode at start-up instead of parsed and compiled at each run (issue 40). A ro
 differs from the one written here is compiled at run time, so a stale module is slower, never wrong; a
 test fails while it is stale. tools/gen_startup.py runs it after writing the rows.
 
-Usage: python tools/gen_conditions.py
+Usage: python tools/gen_conditions.py [--check]   (--check: exit 1 if a module is stale, write nothing)
 """
 
 from __future__ import annotations
@@ -14,7 +14,10 @@ from __future__ import annotations
 import sys
 from pathlib import Path
 
+sys.path.insert(0, str(Path(__file__).resolve().parent))
 sys.path.insert(0, str(Path(__file__).resolve().parent.parent / "src"))
+
+import _gen
 
 TYPE_CHECKING = False
 if TYPE_CHECKING:
@@ -111,13 +114,15 @@ def render_prose() -> str:
     return head + "\n\n".join(defs) + "\n\nCOMPILED = {\n" + "\n".join(table) + "\n}\n"
 
 
-def main() -> None:
-    for stale in DATA.glob("startup_compiled_*.py"):  # a kind that has no K rule any more
-        stale.unlink()
-    for name, text in (*render().items(), ("prose_compiled.py", render_prose())):
-        target = DATA / name
-        target.write_text(text, encoding="utf-8")
-        print(f"wrote {target}")
+def files() -> dict[Path, str | None]:
+    """The modules' texts, and ``None`` for the module of a kind that has no K rule any more."""
+    texts: dict[Path, str | None] = {path: None for path in sorted(DATA.glob("startup_compiled_*.py"))}
+    texts.update((DATA / name, text) for name, text in (*render().items(), ("prose_compiled.py", render_prose())))
+    return texts
+
+
+def main(argv: list[str] | None = None) -> None:
+    _gen.run("gen_conditions.py", files, argv)
 
 
 if __name__ == "__main__":

@@ -4,7 +4,7 @@
 and the option reference of ``docs/configuration.md`` (between its two ``options`` markers). Run it
 after adding or changing an option; ``tests/test_declarations.py`` fails while they differ.
 
-Usage: python tools/gen_config.py
+Usage: python tools/gen_config.py [--check]   (--check: exit 1 if either is stale, write nothing)
 """
 
 from __future__ import annotations
@@ -13,7 +13,10 @@ import sys
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
+sys.path.insert(0, str(ROOT / "tools"))
 sys.path.insert(0, str(ROOT / "src"))
+
+import _gen  # noqa: E402
 
 from zero.engine.config_file import config_schema_text, options_reference  # noqa: E402
 
@@ -34,9 +37,12 @@ def page_text(page: str) -> str:
     return f"{head}{BEGIN}\n\n{options_reference()}\n{END}{tail}"
 
 
-def main() -> None:
-    SCHEMA.write_text(schema_text(), encoding="utf-8")
-    PAGE.write_text(page_text(PAGE.read_text(encoding="utf-8")), encoding="utf-8")
+def files() -> dict[Path, str | None]:
+    return {SCHEMA: schema_text(), PAGE: page_text(PAGE.read_text(encoding="utf-8"))}
+
+
+def main(argv: list[str] | None = None) -> None:
+    _gen.run("gen_config.py", files, argv)
 
 
 if __name__ == "__main__":

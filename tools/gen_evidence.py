@@ -4,7 +4,7 @@ its source) to ``evidence_table.py`` (imported at the first finding: no TOML par
 the drive-type facts of ``drive_types.toml`` (the one table of them) as its ``DRIVES``, each row by its
 catalogue key. Run it after every edit of either TOML; a test fails while they differ.
 
-Usage: python tools/gen_evidence.py
+Usage: python tools/gen_evidence.py [--check]   (--check: exit 1 if evidence_table.py is stale, write nothing)
 """
 
 from __future__ import annotations
@@ -17,7 +17,8 @@ from typing import Any
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 sys.path.insert(0, str(Path(__file__).resolve().parent.parent / "src"))
 
-from pydata import write_module
+import _gen
+from pydata import module_text
 
 DATA = Path(__file__).resolve().parent.parent / "src" / "zero" / "catalog" / "data"
 
@@ -38,15 +39,17 @@ def drives(rows: list[dict[str, Any]]) -> list[dict[str, Any]]:
     return out
 
 
-def main() -> None:
+def files() -> dict[Path, str | None]:
     evidence = tomllib.loads((DATA / "evidence.toml").read_text(encoding="utf-8"))
     types = tomllib.loads((DATA / "drive_types.toml").read_text(encoding="utf-8"))["drive"]
-    write_module(DATA / "evidence_table.py",
-                 "The claims of evidence.toml (what the controller does, and the source), compiled; DRIVES from "
-                 "drive_types.toml.",
-                 {"CLAIMS": evidence["claim"], "RULES": evidence["rules"], "DRIVES": drives(types)},
-                 rows_name="CLAIMS")
-    print(f"wrote {DATA / 'evidence_table.py'}: {len(evidence['claim'])} claims, {len(types)} drive-type rows")
+    return {DATA / "evidence_table.py": module_text(
+        "The claims of evidence.toml (what the controller does, and the source), compiled; DRIVES from "
+        "drive_types.toml.",
+        {"CLAIMS": evidence["claim"], "RULES": evidence["rules"], "DRIVES": drives(types)}, rows_name="CLAIMS")}
+
+
+def main(argv: list[str] | None = None) -> None:
+    _gen.run("gen_evidence.py", files, argv)
 
 
 if __name__ == "__main__":

@@ -6,7 +6,7 @@ written with its text; a range whose text differs from the one written here (a u
 stale module) is parsed at run time, so a stale module is slower, never wrong; a test fails while it is
 stale. Run it after tools/gen_registry.py and tools/gen_seeds.py.
 
-Usage: python tools/gen_ranges.py
+Usage: python tools/gen_ranges.py [--check]   (--check: exit 1 if a module is stale, write nothing)
 """
 
 from __future__ import annotations
@@ -14,7 +14,10 @@ from __future__ import annotations
 import sys
 from pathlib import Path
 
+sys.path.insert(0, str(Path(__file__).resolve().parent))
 sys.path.insert(0, str(Path(__file__).resolve().parent.parent / "src"))
+
+import _gen
 
 DATA = Path(__file__).resolve().parent.parent / "src" / "zero" / "catalog" / "data"
 
@@ -67,12 +70,15 @@ def render() -> dict[str, str]:
     return out
 
 
-def main() -> None:
-    for stale in DATA.glob("ranges_compiled_*.py"):  # a kind that has no range any more
-        stale.unlink()
-    for name, text in render().items():
-        (DATA / name).write_text(text, encoding="utf-8")
-        print(f"wrote {DATA / name}")
+def files() -> dict[Path, str | None]:
+    """The modules' texts, and ``None`` for the module of a kind that has no range any more."""
+    texts: dict[Path, str | None] = {path: None for path in sorted(DATA.glob("ranges_compiled_*.py"))}
+    texts.update((DATA / name, text) for name, text in render().items())
+    return texts
+
+
+def main(argv: list[str] | None = None) -> None:
+    _gen.run("gen_ranges.py", files, argv)
 
 
 if __name__ == "__main__":

@@ -31,7 +31,10 @@ import tempfile
 from pathlib import Path
 from types import CodeType
 
+sys.path.insert(0, str(Path(__file__).resolve().parent))
 sys.path.insert(0, str(Path(__file__).resolve().parent.parent / "src"))
+
+import _gen
 
 SRC = Path(__file__).resolve().parent.parent / "src" / "zero"
 # Parameter defaults the text names from its scope; the table's functions get theirs from the record.
@@ -214,15 +217,12 @@ def tables() -> dict[Path, str]:
             SRC / "record_inits_rest.py": render(rest, "of the other modules", None)}
 
 
-def main() -> None:
-    if sys.argv[1:] == ["--check"]:  # the texts do not depend on the tables: they only serve them
-        stale = [path.name for path, text in tables().items()
-                 if not path.is_file() or path.read_text(encoding="utf-8") != text]
-        print(f"{', '.join(stale)} stale: run tools/gen_record_inits.py" if stale else "the record tables are current")
-        raise SystemExit(1 if stale else 0)
-    for path, text in tables().items():
-        path.write_text(text, encoding="utf-8")
-        print(f"wrote {path}")
+def files() -> dict[Path, str | None]:
+    return dict(tables())  # the texts do not depend on the tables: they only serve them
+
+
+def main(argv: list[str] | None = None) -> None:
+    _gen.run("gen_record_inits.py", files, argv)
 
 
 if __name__ == "__main__":

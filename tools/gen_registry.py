@@ -2,7 +2,8 @@
 """Regenerate ``src/zero/catalog/data/table.py`` (and its modules of each kind's rows, ``table_axis.py``, ...)
 from a ``CncParaDesc.xml``.
 
-Usage: python tools/gen_registry.py [PATH/TO/CncParaDesc.xml]
+Usage: python tools/gen_registry.py [PATH/TO/CncParaDesc.xml] [--check]
+(--check: exit 1 if a module is stale, write nothing)
 
 Only facts are written (IDs, keys, types, defaults, formal ranges, sizes,
 symbols, units, restart flags); the vendor's description texts are not.
@@ -16,7 +17,10 @@ import sys
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parent.parent
+sys.path.insert(0, str(ROOT / "tools"))
 sys.path.insert(0, str(ROOT / "src"))
+
+import _gen  # noqa: E402
 
 from zero.catalog.paramdesc import read_param_desc  # noqa: E402
 
@@ -147,34 +151,41 @@ def _kind_module(kind: str, rows: list[dict[str, object]], columns: list[str]) -
     return "\n".join(lines) + "\n"
 
 
-def write_table(rows: list[dict[str, object]], out: Path = OUT) -> None:
+def table_files(rows: list[dict[str, object]], out: Path = OUT) -> dict[Path, str | None]:
     """``rows`` (compact: no empty field, sorted by ID) as ``table.py`` (COLUMNS and the index) and one module
-    per kind beside it (``table_axis.py``: its rows, PACKED one marshalled tuple per row)."""
+    per kind beside it (``table_axis.py``: its rows, PACKED one marshalled tuple per row): the texts by file."""
     columns: list[str] = []
     for r in rows:
         columns.extend(k for k in r if k not in columns)
     assert [r["id"] for r in rows] == sorted(r["id"] for r in rows)  # type: ignore[type-var]  # what bisection needs
     lines = [HEAD, f"GENERATED_FROM: str = {GENERATED_FROM!r}", f"COLUMNS: tuple[str, ...] = {tuple(columns)!r}"]
     lines.extend(_index(rows))
-    out.write_text("\n".join(lines) + "\n" + TAIL, encoding="utf-8")
+    texts: dict[Path, str | None] = {out: "\n".join(lines) + "\n" + TAIL}
     by_kind: dict[str, list[dict[str, object]]] = {}
     for r in rows:
         by_kind.setdefault(str(r["kind"]), []).append(r)
     for kind, kind_rows in by_kind.items():
-        (out.parent / f"{out.stem}_{kind.lower()}.py").write_text(_kind_module(kind, kind_rows, columns),
-                                                                   encoding="utf-8")
+        texts[out.parent / f"{out.stem}_{kind.lower()}.py"] = _kind_module(kind, kind_rows, columns)
+    return texts
 
 
 def main(argv: list[str]) -> int:
-    xml = Path(argv[1]) if len(argv) > 1 else DEFAULT_XML
+    """``argv``: the program's name, then an optional XML file and ``--check``, in any order."""
+    check = _gen.CHECK in argv[1:]
+    named = [a for a in argv[1:] if a != _gen.CHECK]
+    if len(named) > 1 or any(a.startswith("-") for a in named):
+        _gen.checking(["?"], "python tools/gen_registry.py [PATH/TO/CncParaDesc.xml]")  # says how, exit 2
+    xml = Path(named[0]) if named else DEFAULT_XML
     rows = [compact(r) for r in read_param_desc(xml)]
     for r in rows:
         r.pop("source", None)  # always the same; the loader fills it in
         if "default" not in r:
             r["default"] = ""
     rows.sort(key=lambda r: str(r["id"]))
-    write_table(rows)
-    print(f"wrote {len(rows)} parameters to {OUT.relative_to(ROOT)}")
+    found = _gen.update("gen_registry.py", table_files(rows), check)
+    if not check:
+        print(f"wrote {len(rows)} parameters to {OUT.relative_to(ROOT)}")
+    _gen.done("gen_registry.py", found, check)
     return 0
 
 

@@ -7,7 +7,7 @@ size of every module of ``src/zero/rules/``; while one differs, :func:`zero.engi
 imports the rules instead (a stale table: slower, never wrong), and a test fails. Run it after adding,
 removing or re-grading a rule.
 
-Usage: python tools/gen_rule_codes.py
+Usage: python tools/gen_rule_codes.py [--check]   (--check: exit 1 if the table is stale, write nothing)
 """
 
 from __future__ import annotations
@@ -15,7 +15,10 @@ from __future__ import annotations
 import sys
 from pathlib import Path
 
+sys.path.insert(0, str(Path(__file__).resolve().parent))
 sys.path.insert(0, str(Path(__file__).resolve().parent.parent / "src"))
+
+import _gen
 
 SRC = Path(__file__).resolve().parent.parent / "src" / "zero"
 
@@ -36,10 +39,12 @@ def render() -> str:
             f"CODES: tuple[tuple[str, str, bool], ...] = ({codes}\n)\n")
 
 
-def main() -> None:
-    target = SRC / "catalog" / "data" / "rule_codes.py"
-    target.write_text(render(), encoding="utf-8")
-    print(f"wrote {target}")
+def files() -> dict[Path, str | None]:
+    return {SRC / "catalog" / "data" / "rule_codes.py": render()}
+
+
+def main(argv: list[str] | None = None) -> None:
+    _gen.run("gen_rule_codes.py", files, argv)
 
 
 if __name__ == "__main__":

@@ -6,7 +6,7 @@ names, severities, texts) stays complete while a list's lint imports neither mod
 differs is imported (a stale module: slower, never wrong in that case), and a test fails while the written
 rules differ from the declared ones. Run it after changing a rule of rules/machine.py or rules/program.py.
 
-Usage: python tools/gen_rules.py
+Usage: python tools/gen_rules.py [--check]   (--check: exit 1 if the module is stale, write nothing)
 """
 
 from __future__ import annotations
@@ -14,7 +14,10 @@ from __future__ import annotations
 import sys
 from pathlib import Path
 
+sys.path.insert(0, str(Path(__file__).resolve().parent))
 sys.path.insert(0, str(Path(__file__).resolve().parent.parent / "src"))
+
+import _gen
 
 RULES_DIR = Path(__file__).resolve().parent.parent / "src" / "zero" / "rules"
 
@@ -45,10 +48,12 @@ def render() -> str:
             "DECLARED: dict[str, Any] = {\n" + "\n".join(out) + "\n}\n")
 
 
-def main() -> None:
-    target = RULES_DIR.parent / "catalog" / "data" / "rules_declared.py"
-    target.write_text(render(), encoding="utf-8")
-    print(f"wrote {target}")
+def files() -> dict[Path, str | None]:
+    return {RULES_DIR.parent / "catalog" / "data" / "rules_declared.py": render()}
+
+
+def main(argv: list[str] | None = None) -> None:
+    _gen.run("gen_rules.py", files, argv)
 
 
 if __name__ == "__main__":

@@ -8,7 +8,7 @@ this module alone (without importing the rows); else each row whose facts differ
 here is declared from its own, so a stale module is slower, never wrong; a test fails while it is stale.
 Run it after tools/gen_startup.py (and after changing how ``zero.rules.startup.said`` words a rule).
 
-Usage: python tools/gen_startup_rules.py
+Usage: python tools/gen_startup_rules.py [--check]   (--check: exit 1 if a module is stale, write nothing)
 """
 
 from __future__ import annotations
@@ -19,6 +19,7 @@ from pathlib import Path
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 sys.path.insert(0, str(Path(__file__).resolve().parent.parent / "src"))
 
+import _gen
 from pydata import TYPING_FOR_CHECKERS
 
 DATA = Path(__file__).resolve().parent.parent / "src" / "zero" / "catalog" / "data"
@@ -61,11 +62,12 @@ def render_facts() -> str:
             "FACTS: dict[str, Any] = {\n" + "\n".join(lines) + "\n}\n")
 
 
-def main() -> None:
-    for name, text in (("startup_rules.py", render()), ("startup_facts.py", render_facts())):
-        target = DATA / name
-        target.write_text(text, encoding="utf-8")
-        print(f"wrote {target}")
+def files() -> dict[Path, str | None]:
+    return {DATA / "startup_rules.py": render(), DATA / "startup_facts.py": render_facts()}
+
+
+def main(argv: list[str] | None = None) -> None:
+    _gen.run("gen_startup_rules.py", files, argv)
 
 
 if __name__ == "__main__":
