@@ -19,6 +19,8 @@ import time
 from pathlib import Path
 
 import pytest
+from hypothesis import given
+from hypothesis import strategies as st
 
 from conftest import FIXTURES, zero_cli
 from zero.errors import ZeroError
@@ -723,3 +725,16 @@ def test_a_file_that_says_it_has_no_size_is_read_whole() -> None:
     """/proc files (and some FUSE files) say st_size 0: reading stops at the size limit, not at the size."""
     data = read_file("/proc/self/status")
     assert b"Name:" in data and len(data) > 100
+
+
+@given(st.sampled_from(["x.lis", "a.b", "x.lis.zero-1"]), st.sampled_from(["tmp", "journal"]),
+       st.text(alphabet="x.lisabcdef0123456789-zero٣ \n", max_size=30))
+def test_a_leftover_is_recognised_as_the_pattern_it_replaced_did(target: str, suffix: str, name: str) -> None:
+    """``_leftover_pid`` (start-up: without re) reads a name as ``\\.{target}\\.zero-([0-9]+)-[0-9a-f]+\\.{suffix}``."""
+    import re
+
+    from zero.files import _leftover_pid
+
+    for candidate in (name, f".{target}.zero-{name}.{suffix}", f".{target}.zero-{name}"):
+        m = re.fullmatch(r"\." + re.escape(target) + r"\.zero-([0-9]+)-[0-9a-f]+\." + suffix, candidate)
+        assert _leftover_pid(candidate, f".{target}.zero-", f".{suffix}") == (int(m.group(1)) if m else None)

@@ -33,7 +33,6 @@ import contextlib
 import errno
 import io
 import os
-import re
 import stat
 import sys
 import time
@@ -41,6 +40,7 @@ from collections.abc import Callable, Iterator
 
 from zero.errors import ZeroError
 from zero.forms import CONFIG_NAMES, NOT_A_REPORT, split_part, xml_form
+from zero.patterns import compiled
 
 TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (mypy and ruff read it alike)
 if TYPE_CHECKING:
@@ -87,7 +87,7 @@ def path_str(path: str | os.PathLike[str]) -> str:
 
 def parse_size(text: str) -> int:
     """``"256MiB"``, ``"64M"``, ``"1000000"`` → bytes; :class:`ZeroError` for anything else."""
-    m = re.fullmatch(_SIZE, text)
+    m = compiled(_SIZE).fullmatch(text)
     unit = m.group(2).upper() if m else ""
     if m is None or unit not in _UNITS or int(m.group(1)) <= 0:
         raise ZeroError(f"{text!r} is not a size (e.g. 256MiB, 64M, 1000000)", "ZERO_MAX_FILE_SIZE")
@@ -308,22 +308,32 @@ def temp_name(target: str | os.PathLike[str]) -> str:
     return os.path.join(folder, f".{name}.zero-{os.getpid()}-{os.urandom(4).hex()}.tmp")
 
 
+def _leftover_pid(name: str, prefix: str, end: str) -> int | None:
+    """The process ID in a file name ``{prefix}{pid}-{hex}{end}`` (``[0-9]+-[0-9a-f]+`` between the two), else None."""
+    if not (name.startswith(prefix) and name.endswith(end)) or len(name) < len(prefix) + len(end):
+        return None
+    pid, dash, tag = name[len(prefix):len(name) - len(end)].partition("-")
+    if not (dash and pid.isascii() and pid.isdigit() and tag and not tag.strip("0123456789abcdef")):
+        return None
+    return int(pid)
+
+
 def _stale(target: Path, suffix: str) -> list[Path]:
     """Files a killed zero left beside ``target`` (``.tmp``: incomplete, ``.journal``: complete)."""
-    pattern = re.compile(r"\." + re.escape(target.name) + r"\.zero-([0-9]+)-[0-9a-f]+\." + suffix)
     out: list[Path] = []
     try:
         names = os.listdir(target.parent if str(target.parent) else ".")
     except OSError:
         return out
+    prefix, end = f".{target.name}.zero-", f".{suffix}"
     for name in sorted(names):
-        m = pattern.fullmatch(name)
-        if m is None or int(m.group(1)) == os.getpid():
+        pid = _leftover_pid(name, prefix, end)
+        if pid is None or pid == os.getpid():
             continue
         path = target.parent / name
         stale = False
         if os.name == "posix":
-            stale = not _pid_alive(int(m.group(1)))
+            stale = not _pid_alive(pid)
         else:  # no safe way to ask whether a process lives: only old leftovers go
             with contextlib.suppress(OSError):
                 stale = time.time() - path.stat().st_mtime > _STALE_SECONDS
@@ -743,7 +753,7 @@ def _looks_like_a_list(path: Path) -> bool:
                 text = line.strip()
                 if not text or text.startswith(_COMMENT_STARTS):
                     continue
-                if re.match(_LIST_LINE, text) or text == b"Ende":
+                if compiled(_LIST_LINE).match(text) or text == b"Ende":
                     return True
                 seen += 1
                 if seen >= 20:

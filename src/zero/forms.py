@@ -10,7 +10,8 @@ written with ``-o`` never replaces a file of these kinds.
 from __future__ import annotations
 
 import os
-import re
+
+from zero.patterns import compiled
 
 LIST, PROGRAM, STRUCTURED = "list", "program", "structured"
 LIST_SUFFIXES = (".lis", ".lst")
@@ -156,8 +157,8 @@ def root_of(data: bytes) -> str | None:
             if end < 0:
                 return None
             i = end + 3
-        elif head.startswith(b"<", i) and re.compile(_NAME_START).match(head, i + 1):
-            stop = re.compile(_NAME_END).search(head, i + 2)
+        elif head.startswith(b"<", i) and compiled(_NAME_START).match(head, i + 1):
+            stop = compiled(_NAME_END).search(head, i + 2)
             return head[i + 1: stop.start() if stop else n].decode("ascii", "replace")
         else:
             return None

@@ -7,8 +7,9 @@ lint that reads the written functions imports no parser.
 
 from __future__ import annotations
 
-import re
 from collections.abc import Callable
+
+from zero.patterns import compiled
 
 __all__ = ["DEFAULT_LIST", "DRIVE_TYPE", "ELSEWHERE", "HELPERS", "UNIQUE", "Compiled", "Lookup", "Number",
            "supported_drive_types"]
@@ -84,7 +85,7 @@ def _len(v: _Value) -> _Value:
 
 
 def _isname(v: _Value) -> _Value:
-    return re.fullmatch(_NAME, v) is not None if isinstance(v, str) and v else None
+    return compiled(_NAME).fullmatch(v) is not None if isinstance(v, str) and v else None
 
 
 def _startswith(a: _Value, b: _Value) -> _Value:

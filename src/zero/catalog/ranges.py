@@ -19,9 +19,9 @@ from the other values of the same list (or the referenced parameter's default).
 
 from __future__ import annotations
 
-import re
 from collections.abc import Callable
 
+from zero.patterns import VERBOSE, compiled
 from zero.records import record
 
 TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (mypy and ruff read it alike)
@@ -209,10 +209,10 @@ _CMP = {"<": ("<", True), "≤": ("<", False), "<=": ("<", False),
 
 
 def _tokenize(text: str) -> list[tuple[str, str]] | None:
-    text = re.sub(r"°|%", "", text).strip()
-    token = re.compile(_TOKEN_TEXT, re.VERBOSE)
+    text = compiled(r"°|%").sub("", text).strip()
+    token = compiled(_TOKEN_TEXT, VERBOSE)
     # A note in parentheses after the formal part: `0 ... 96 (number of groups: 97)`.
-    cut = re.sub(r"(?:MIN|MAX)\s*\(\s*[A-Z0-9]+\s*\)", lambda m: "#" * len(m.group()), text)
+    cut = compiled(r"(?:MIN|MAX)\s*\(\s*[A-Z0-9]+\s*\)").sub(lambda m: "#" * len(m.group()), text)
     if "(" in cut:
         text = text[: cut.index("(")].rstrip()
     tokens: list[tuple[str, str]] = []

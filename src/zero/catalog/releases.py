@@ -22,16 +22,16 @@ built at the first question, once per process: nothing of it runs at start-up.
 
 from __future__ import annotations
 
-import re
 from collections.abc import Callable
-from pathlib import Path
 
 from zero.errors import ZeroError
 from zero.lists.model import format_key
+from zero.patterns import compiled
 from zero.records import record
 
 TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (mypy and ruff read it alike)
 if TYPE_CHECKING:
+    from pathlib import Path
     from typing import Any, TypeVar
 
     from zero.catalog.registry import Registry
@@ -44,9 +44,9 @@ CATALOGUE_RELEASE: tuple[int, ...] = (4, 13)
 
 VENDOR_SOURCE = "isg-sdk "  # a row's source that names a file of the vendor's SDK (lists, XML templates)
 UNKNOWN_RELEASE = "unknown"  # a row whose source does not say which release wrote the spelling
-DATA = Path(__file__).parent / "data" / "releases.toml"
+DATA: Path  # data/releases.toml (a pathlib.Path made at the first use: below)
 
-_RELEASE_RE = re.compile(r"[Vv]?\s*(\d+(?:\.\d+)*)")
+_RELEASE_RE = compiled(r"[Vv]?\s*(\d+(?:\.\d+)*)")
 
 
 def parse_release(text: str) -> tuple[int, ...]:
@@ -242,3 +242,12 @@ def removed(pattern: str, kind: str | None) -> Removal | None:
     if kind is not None:
         return _removals.get((kind, pattern))
     return next((r for r in t.removals if r.old == pattern), None)
+
+
+def __getattr__(name: str) -> Path:
+    """``DATA``, made where it is read (start-up: a lint that names a release imports no pathlib)."""
+    if name != "DATA":
+        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+    from pathlib import Path  # start-up: see above
+
+    return Path(__file__).parent / "data" / "releases.toml"

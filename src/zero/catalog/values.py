@@ -11,7 +11,6 @@ and ``zero diff`` all read values through this module.
 from __future__ import annotations
 
 import math
-import re
 import sys
 from array import array
 from collections.abc import Iterator, Mapping, Sequence
@@ -22,6 +21,7 @@ from zero.catalog.ranges import TYPE_LIMITS, Number
 from zero.catalog.registry import INTEGER_TYPES, NO_DEFAULT, ParamSpec, Registry
 from zero.hints import overload
 from zero.lists.model import HUGE_INDEX, MAX_INDEX_DIGITS, Document, Entry, ValueKind, format_key, parse_key
+from zero.patterns import compiled
 from zero.records import field, record
 
 TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (mypy and ruff read it alike)
@@ -102,7 +102,7 @@ def canonical_key(registry: Registry, kind: str | None, entry: Entry) -> str:
         pattern = hit[0].key if hit is not None and hit[0].key else key.pattern
         if len(patterns) < 100_000:
             patterns[(kind, key.pattern)] = pattern
-    if pattern == key.pattern and ("[0" not in key.text or re.search(_LEADING_ZERO, key.text) is None):
+    if pattern == key.pattern and ("[0" not in key.text or compiled(_LEADING_ZERO).search(key.text) is None):
         return key.text  # written as documented (the usual case): as it is
     return format_key(pattern, key.indices)
 

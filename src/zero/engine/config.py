@@ -17,7 +17,6 @@ from __future__ import annotations
 import contextlib
 import functools
 import os
-import re
 from collections.abc import Callable, Iterator
 
 from zero.diagnostics import Severity
@@ -26,6 +25,7 @@ from zero.engine.selection import layered_selection
 from zero.errors import ZeroError
 from zero.files import path_str, read_file
 from zero.forms import CONFIG_NAMES, DEFAULT_INCLUDE
+from zero.patterns import compiled
 from zero.records import field, record, replace
 
 TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (mypy and ruff read it alike)
@@ -307,7 +307,7 @@ def parse_config(file: FileName, text: str | None = None, _chain: tuple[str, ...
     try:
         data = tomllib.loads(text)
     except tomllib.TOMLDecodeError as exc:
-        at = re.search(_TOML_AT, str(exc))  # tomllib says where only in its message
+        at = compiled(_TOML_AT).search(str(exc))  # tomllib says where only in its message
         if at is None:
             raise ZeroError(f"not valid TOML: {exc}", str(path)) from None
         raise ZeroError(f"not valid TOML: {str(exc)[:at.start()].rstrip()}", str(path),

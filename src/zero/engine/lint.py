@@ -11,7 +11,6 @@ passed in.
 from __future__ import annotations
 
 import os
-import re
 from collections.abc import Callable, Sequence
 
 from zero.catalog.registry import Registry, kind_from_name
@@ -25,6 +24,7 @@ from zero.forms import is_program, is_update, is_xml, structured_format
 from zero.lists.encoding import decode
 from zero.lists.model import Document
 from zero.lists.tokenizer import read_as_bytes, tokenize, tokenize_text
+from zero.patterns import compiled
 from zero.records import replace
 from zero.rules import (
     MACHINE_CHECKS,
@@ -41,6 +41,7 @@ from zero.rules.suppress import parse_comment_directives
 
 TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (mypy and ruff read it alike)
 if TYPE_CHECKING:  # start-up: linting a list loads neither the machine model nor the structured forms
+    import re
     from pathlib import Path  # (nor pathlib: the lint path names files by their text)
 
     from zero.catalog.values import ListValues
@@ -118,7 +119,7 @@ def lint_tree(tree: Tree, registry: Registry, options: LintOptions | None = None
             message = f"(list line {d.span.line}) {d.message}"
         else:
             span = source_span(leaf, doc, d.span)  # a key rule's finding on the key, any other on the value
-            message = f"{structured_path(leaf.path)}: " + re.sub(r"\bline (\d+)", relocate, d.message)
+            message = f"{structured_path(leaf.path)}: " + compiled(r"\bline (\d+)").sub(relocate, d.message)
         out.append(replace(d, span=span, message=message, fix=None, related=()))
     out.sort(key=lambda d: d.sort_key())
     return LintResult(tree.path, shown, result.kind, out)
@@ -138,8 +139,8 @@ def list_form(tree: Tree, registry: Registry) -> bool:
         return True  # an empty form: an empty list
     heads: dict[str, bool] = registry.memo.setdefault("key-heads", {})
     if not heads:
-        heads.update((re.split(r"[.\[]", s.key, maxsplit=1)[0], True) for s in registry.specs.values() if s.key)
-    ours = sum(1 for k in top if k in heads or re.fullmatch(_P_ID, k) is not None)
+        heads.update((compiled(r"[.\[]").split(s.key, maxsplit=1)[0], True) for s in registry.specs.values() if s.key)
+    ours = sum(1 for k in top if k in heads or compiled(_P_ID).fullmatch(k) is not None)
     return ours > 0 and 2 * ours >= len(top)  # most of them: `a`, `tool`, `path` are parameters' too
 
 
@@ -355,8 +356,9 @@ def _in_context(doc: Document, target: ListFile, registry: Registry, kind: str |
         line = where.get(d.span.line)
         if line is None or (d.code, line) in alone:
             continue
-        message = re.sub(r"\bline (\d+)\b", lambda m: (f"line {where[int(m.group(1))]}" if int(m.group(1)) in where
-                                                         else f"{target.path}:{m.group(1)}"), d.message)
+        message = compiled(r"\bline (\d+)\b").sub(lambda m: (f"line {where[int(m.group(1))]}"
+                                                              if int(m.group(1)) in where
+                                                              else f"{target.path}:{m.group(1)}"), d.message)
         span = Span(line, d.span.column, line, d.span.end_column)
         out.append(replace(d, span=span, message=f"with the update applied to {target.path}: {message}",
                            fix=None, related=()))

@@ -7,17 +7,18 @@ findings are made from them with :meth:`zero.diagnostics.Span.on_line`.
 
 from __future__ import annotations
 
-import re
 from array import array
 from collections.abc import Iterator
 from functools import cache
 from itertools import accumulate, pairwise
 
 from zero.forms import XML_ROOTS, root_of
+from zero.patterns import compiled
 from zero.records import Field, record
 
 TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (mypy and ruff read it alike)
 if TYPE_CHECKING:
+    import re
     from typing import Any, ClassVar
 
 # An index with more digits than this is not converted to an int: it is clamped
@@ -29,7 +30,7 @@ HUGE_INDEX = 10**MAX_INDEX_DIGITS
 @cache
 def key_form() -> re.Pattern[str]:
     """The form of a key, ``name[n].name...`` (compiled when first used, as every pattern of the lists)."""
-    return re.compile(r"[A-Za-z0-9_]+(?:\[[0-9]+\])*(?:\.[A-Za-z0-9_]+(?:\[[0-9]+\])*)*")
+    return compiled(r"[A-Za-z0-9_]+(?:\[[0-9]+\])*(?:\.[A-Za-z0-9_]+(?:\[[0-9]+\])*)*")
 
 
 _WORD_CHARS = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789_"

@@ -13,8 +13,6 @@ with its location, which :mod:`zero.rules.syntax` turns into a finding.
 
 from __future__ import annotations
 
-import re
-import sys
 from array import array
 from collections.abc import Iterable, Sequence
 from functools import cache
@@ -43,9 +41,11 @@ from zero.lists.model import (
     scanned_key,
     shape_parts,
 )
+from zero.patterns import DOTALL, compiled
 
 TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (mypy and ruff read it alike)
 if TYPE_CHECKING:
+    import re
     from typing import Any
 
 END_KEYWORD = "Ende"
@@ -62,13 +62,13 @@ _KEY_START = frozenset("ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123
 # compiles the few its lines need, a third of what this module cost to import).
 @cache
 def _annotation_re() -> re.Pattern[str]:
-    return re.compile(r"\(\s*(P-[A-Z]{4}-[0-9]{5})")
+    return compiled(r"\(\s*(P-[A-Z]{4}-[0-9]{5})")
 
 
 @cache
 def _key_continuation_re() -> re.Pattern[str]:
     """A token that continues a key after whitespace: `.member`, `[n]` or a lone `]`."""
-    return re.compile(r"(?:\.[A-Za-z_][A-Za-z0-9_]*(?:\[[0-9]*\]?)*|\[[0-9]*\]?)(?:\.[A-Za-z0-9_]+(?:\[[0-9]+\])*)*|\]")
+    return compiled(r"(?:\.[A-Za-z_][A-Za-z0-9_]*(?:\[[0-9]*\]?)*|\[[0-9]*\]?)(?:\.[A-Za-z0-9_]+(?:\[[0-9]+\])*)*|\]")
 
 
 _MAX_KEY_JOINS = 8
@@ -82,18 +82,18 @@ def _fast_entry_re() -> re.Pattern[str]:
     scan_line, which gives the same result for what it does match. Groups: 1 the key, as 2 its names up to
     the first index, 3 that index (if any) and 4 the rest (what model.scanned_key reads); 5 the value; 6 the
     comment."""
-    return re.compile(
+    return compiled(
         r"[ \t]*(([A-Za-z_][A-Za-z0-9_]*(?:\.[A-Za-z0-9_]+)*)(?:\[([0-9]+)\])?"
         r"((?:\[[0-9]+\])*(?:\.[A-Za-z0-9_]+(?:\[[0-9]+\])*)*))"
         r"[ \t]+((?!\.[A-Za-z_])[^\s\"|\[\]][^\s|]*)(?:[ \t]+([^\s|].*)|[ \t]*)\Z",
-        re.DOTALL)
+        DOTALL)
 
 
 @cache
 def _kind_re() -> re.Pattern[str]:
     """The lexical kinds of a value that are a number or a reference, by the name of the group that matches: what
     :func:`value_kind` tells without it (the tests hold the two alike)."""
-    return re.compile(
+    return compiled(
         r"(?P<int>[+-]?[0-9]+)|(?P<hex>[+-]?0[xX][0-9A-Fa-f]+)|(?P<ref>P-[A-Z]{4}-[0-9]{5}(?:\.[0-9]+)?)"
         r"|(?P<real>[+-]?(?:[0-9]+\.[0-9]*|\.[0-9]+|[0-9]+(?=[eE]))(?:[eE][+-]?[0-9]+)?)")
 
@@ -158,14 +158,14 @@ _STYLE_OF = {"#": CommentStyle.HASH, "(": CommentStyle.PAREN}
 @cache
 def _control_re() -> re.Pattern[str]:
     """Control characters other than tab; \r only counts when it is not a CRLF ending."""
-    return re.compile(r"[\x00-\x08\x0b-\x1f\x7f-\x9f\udc80-\udcff]")
+    return compiled(r"[\x00-\x08\x0b-\x1f\x7f-\x9f\udc80-\udcff]")
 
 
 @cache
 def _c1_re() -> re.Pattern[str]:
     """The C1 controls: what a byte above 0x7F becomes when a list written in another code page (CP850's 0x81
     `ü`) is read as Latin-1. In a comment the controller never reads it."""
-    return re.compile(r"[\x80-\x9f]")
+    return compiled(r"[\x80-\x9f]")
 
 
 _MARKED_COMMENTS = (CommentStyle.HASH, CommentStyle.PAREN, CommentStyle.BLOCK)
@@ -441,7 +441,7 @@ def _row_pattern(binary: bool, crlf: bool, widths: bool) -> re.Pattern[Any]:
     got = _ROW_PATTERNS.get((binary, crlf, widths))
     if got is None:
         source = row_source(binary, crlf, widths)
-        got = _ROW_PATTERNS[binary, crlf, widths] = _written_pattern(source) or re.compile(source)
+        got = _ROW_PATTERNS[binary, crlf, widths] = compiled(source)  # pattern computed: row_source
     return got
 
 
@@ -451,22 +451,6 @@ def row_source(binary: bool, crlf: bool, widths: bool) -> str | bytes:
     if not crlf:  # after a comment, the line's end: no test of it
         source = source.replace(r"(?:([^\s|][^\r\n]*+)|)(?:\r?+(?=\n)|\Z)", r"(?:([^\s|][^\n]*+)|(?=\n|\Z))")
     return source.replace(r"\s", r" \t\n\r\f\v\x1c-\x1f").encode("ascii") if binary else source
-
-
-def _written_pattern(source: str | bytes) -> re.Pattern[Any] | None:
-    """The pattern of ``source`` from the code ``re`` compiled it to at build time (``row_codes.py``, written by
-    tools/gen_row_codes.py): the same pattern (``==``: the same code), without parsing and compiling it again
-    (start-up: the row pattern was a twentieth of a short list's lint). ``None`` where that module was written
-    by another Python or regular expression engine, or for another source: then it is compiled here."""
-    from zero.lists import row_codes  # start-up: the written code only with the first list read
-
-    sre = sys.modules.get("_sre")  # the engine of re (loaded with it): its compile takes the code
-    written = row_codes.CODES.get(source)
-    if (written is None or sre is None or sys.implementation.name != "cpython"  # (another Python's engine is its own)
-            or (*sys.version_info[:2], sre.MAGIC, sre.CODESIZE) != row_codes.BUILT):
-        return None
-    flags, code, groups, indexgroup = written
-    return sre.compile(source, flags, list(code), groups, {}, indexgroup)  # type: ignore[no-any-return]
 
 
 _CHUNK = 1 << 18  # characters of text read per pattern call: bounded memory for the match tuples

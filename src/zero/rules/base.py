@@ -16,7 +16,6 @@ an NC program (:class:`ProgramContext`).
 
 from __future__ import annotations
 
-import re
 from collections.abc import Callable, Iterator, Sequence
 
 from zero.catalog.evidence import Claim, rule_claim
@@ -25,6 +24,7 @@ from zero.catalog.registry import Registry
 from zero.catalog.values import ListValues
 from zero.diagnostics import Diagnostic, Fix, Related, Severity, Span
 from zero.hints import Generic, TypeVar
+from zero.patterns import compiled
 from zero.records import field, record
 
 TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (mypy and ruff read it alike)
@@ -33,6 +33,7 @@ if TYPE_CHECKING:  # start-up: a list's lint does not load the machine and progr
     from zero.nc.program import Program
 
 if TYPE_CHECKING:
+    import re
     from typing import Literal
 
     Scope = Literal["list", "machine", "program", "suppression", "file"]
@@ -89,7 +90,7 @@ class Reporter:
         severity is the most its findings can be. Whether it is reported, and with the severity the
         run gives its code (the user's word wins), is decided by the funnel alone."""
         if len(message) > 300:
-            message = re.sub(_LONG_WORD, _shorten_word, re.sub(_LONG_QUOTED, _shorten, message))
+            message = compiled(_LONG_WORD).sub(_shorten_word, compiled(_LONG_QUOTED).sub(_shorten, message))
         default = _defaults.get(code, Severity.ERROR)
         c = claim if isinstance(claim, Claim) else \
             evidence_claim(claim, self.list_kind) if claim is not None else rule_claim(code, self.list_kind)

@@ -12,12 +12,12 @@ own templates hold such elements.
 
 from __future__ import annotations
 
-import re
 from collections.abc import Iterator
 
 from zero.catalog.registry import KINDS
 from zero.diagnostics import Diagnostic, Span
 from zero.lists.model import Comment
+from zero.patterns import compiled
 from zero.rules.base import INFO, Context, E, W
 from zero.rules.syntax import FAMILY
 
@@ -101,8 +101,8 @@ def check_elements(ctx: Context) -> Iterator[Diagnostic]:
         text = doc.lines[item.line - 1]
         if not text.startswith("# ") or "<P-" not in text:
             continue
-        for m in re.finditer(_ELEMENT_RE, text):
-            value = re.compile(_VALUE_RE).match(text, m.end())
+        for m in compiled(_ELEMENT_RE).finditer(text):
+            value = compiled(_VALUE_RE).match(text, m.end())
             if value is not None and not (value.group(1) or value.group(2)):
                 continue  # an empty Value: nothing to check, nothing known to say
             span = Span.on_line(item.line, m.start(1), m.end(2))

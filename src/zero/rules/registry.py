@@ -4,7 +4,6 @@ from __future__ import annotations
 
 import functools
 import os
-import re
 from collections.abc import Callable, Iterator
 
 from zero.catalog.evidence import Claim, claim, drive_types
@@ -15,6 +14,7 @@ from zero.catalog.values import Resolved, Value, default_number, take
 from zero.diagnostics import Diagnostic, Edit, Fix, Related, Span
 from zero.errors import ZeroError
 from zero.lists.model import HUGE_INDEX, Comment, Entry, ValueKind, format_key
+from zero.patterns import compiled
 from zero.records import replace
 from zero.rules.base import INFO, Context, E, Family, W
 
@@ -268,7 +268,7 @@ def _kernel_of(ctx: Context) -> tuple[int, ...] | None:
     if text is None:
         for item in ctx.doc.items[:40]:
             if type(item) is Comment:
-                m = re.search(_HEADER_RELEASE, ctx.doc.lines[item.line - 1])
+                m = compiled(_HEADER_RELEASE).search(ctx.doc.lines[item.line - 1])
                 if m is not None:
                     text = m.group(1)
                     break
@@ -301,7 +301,7 @@ def _other_release(ctx: Context, e: Entry, known: dict[str, Any], propose: bool 
     row, gone = rows[e.key.pattern]
     source = row.source if row is not None else ""
     if row is None and e.comment is not None:  # the line's own annotation names today's parameter
-        m = re.match(_ANNOTATED_ID, e.comment.strip())
+        m = compiled(_ANNOTATED_ID).match(e.comment.strip())
         spec = ctx.registry.get(m.group(1)) if m is not None else None
         last = e.key.pattern.rsplit(".", 1)[-1]
         if spec is not None and spec.key and spec.kind == (ctx.kind or spec.kind) and \
@@ -527,7 +527,7 @@ def _range_claim(ctx: Context, e: Entry, spec: ParamSpec, name: str = "out-of-ra
             return replace(c, source=hit[1], says=(
                 f"the documentation gives `{e.key.pattern}` for drive type {types} only, and this axis has drive "
                 f"type {format_number(drive)} ({origin}, P-AXIS-00020): the kernel does not use the value"))
-    if spec.range_text and re.search(_APPLICATION_SPECIFIC, spec.range_text):
+    if spec.range_text and compiled(_APPLICATION_SPECIFIC).search(spec.range_text):
         return claim("application-specific", kind)
     return claim(name, kind)
 
@@ -938,7 +938,7 @@ def _check_range(ctx: Context, e: Entry, spec: ParamSpec, v: Value) -> Iterator[
             f"{_range_claim(ctx, e, spec, 'relation').says}",
             param_id=spec.id, claim=_range_claim(ctx, e, spec, "relation"),
         )
-    elif spec.range_text and not spec.units and (unit := re.search(_PHYSICAL_UNIT, spec.range_text)):
+    elif spec.range_text and not spec.units and (unit := compiled(_PHYSICAL_UNIT).search(spec.range_text)):
         yield ctx.report("R012", span, f"{e.value} is outside {text} for `{e.key_text}` if it is in "
                          f"{unit.group()}, as the catalogue writes the range; the catalogue gives no unit for the "
                          "value itself, so whether it lies inside is not known", param_id=spec.id)
@@ -1126,7 +1126,7 @@ def check_duplicates(ctx: Context) -> Iterator[Diagnostic]:
         assert key is not None  # a row of a group
         # the element's key as written without leading zeros; most keys are written so already
         slot = key.text
-        if ("[0" in slot and re.search(_LEADING_ZERO, slot)) or HUGE_INDEX in key.indices:
+        if ("[0" in slot and compiled(_LEADING_ZERO).search(slot)) or HUGE_INDEX in key.indices:
             slot = format_key(key.pattern, key.indices)
         first = seen.get(slot)
         if first is None:

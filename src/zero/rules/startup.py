@@ -15,9 +15,9 @@ from __future__ import annotations
 import importlib
 import itertools
 import os
-import re
 from collections.abc import Iterable, Iterator
 
+from zero import patterns
 from zero.catalog.condition_helpers import DEFAULT_LIST, ELSEWHERE, UNIQUE, supported_drive_types
 from zero.catalog.data import startup_facts
 from zero.catalog.ranges import format_number
@@ -159,7 +159,7 @@ Why it matters on the machine: the message appears when the controller starts, a
 
 Fix: change the values so that `{condition}` holds. Source: {source}
 """
-    reads = tuple(dict.fromkeys([*params, *re.findall(r"P-[A-Z]{4}-\d{5}", f"{condition} {when}")]))
+    reads = tuple(dict.fromkeys([*params, *patterns.compiled(r"P-[A-Z]{4}-\d{5}").findall(f"{condition} {when}")]))
     return letter, f"kernel-{number}", f"P-ERR-{number}: {title}", explanation, reads
 
 
@@ -460,7 +460,7 @@ def _kind(err: StartupError) -> str:
 def _drive_types_said(err: StartupError) -> str:
     """For a condition on the drive type: which drive types (P-AXIS-00020) the parameter page lists."""
     said = []
-    for pid in re.findall(r"supports\((P-[A-Z]{4}-[0-9]{5})\)", err.condition_text):
+    for pid in patterns.compiled(r"supports\((P-[A-Z]{4}-[0-9]{5})\)").findall(err.condition_text):
         types = supported_drive_types(pid)
         if types is not None:
             said.append(f"the {pid} page lists drive types (P-AXIS-00020) {', '.join(str(t) for t in sorted(types))}")

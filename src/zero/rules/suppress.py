@@ -17,11 +17,11 @@ applies them to the findings of the other rules, so these rules have no check of
 
 from __future__ import annotations
 
-import re
 from collections.abc import Iterable
 
 from zero.diagnostics import Diagnostic, Severity, Span
 from zero.lists.model import Comment, Document, Entry
+from zero.patterns import IGNORECASE, compiled
 from zero.records import field, record
 from zero.rules.base import Context, Family, W
 
@@ -82,9 +82,9 @@ def _codes(text: str, known: set[str]) -> tuple[tuple[str, ...] | None, str | No
     text = text.split("--", 1)[0].strip().rstrip("*/").strip()
     if not text:
         return None, None
-    parts = [p.strip() for p in re.split(r"[,\s]+", text) if p.strip()]
+    parts = [p.strip() for p in compiled(r"[,\s]+").split(text) if p.strip()]
     for p in parts:
-        if not re.fullmatch(_CODE, p) or not any(k.startswith(p) for k in known):
+        if not compiled(_CODE).fullmatch(p) or not any(k.startswith(p) for k in known):
             return None, f"`{p}` is not a zero rule code or prefix"
     return tuple(parts), None
 
@@ -98,13 +98,13 @@ def _zero_directive(body: str, line: int, start: int, end: int, bad_end: int,
                     known: set[str]) -> Directive | Bad:
     """The text after ``zero:``: ``ignore[CODE, ...]`` (the next entry; its target is the caller's
     to set) or ``noqa[: CODE, ...]`` (the whole file)."""
-    im = re.fullmatch(_IGNORE, body, re.IGNORECASE)
+    im = compiled(_IGNORE, IGNORECASE).fullmatch(body)
     if im:
         codes, err = _codes(im.group("codes"), known)
         if err or codes is None:
             return (line, start, bad_end, err or "`ignore[...]` names no code")
         return Directive(line, start, end, codes, "next")
-    nm = re.fullmatch(_FILE_NOQA, body, re.IGNORECASE)
+    nm = compiled(_FILE_NOQA, IGNORECASE).fullmatch(body)
     if nm:
         codes, err = _codes(nm.group("codes") or "", known)
         if err:
@@ -138,10 +138,10 @@ def parse_directives(doc: Document, known: set[str]) -> tuple[list[Directive], l
     for item in others:
         # the item holds its line's text; `zero` in it (no other character folds to those letters) before the pattern
         if type(item) is not Comment or "zero" not in item.text.lower() or \
-                re.match(_ZERO, item.text, re.IGNORECASE) is None:
+                compiled(_ZERO, IGNORECASE).match(item.text) is None:
             continue
         text = doc.line_text(item.line)
-        m = re.match(_ZERO, text, re.IGNORECASE)
+        m = compiled(_ZERO, IGNORECASE).match(text)
         if m is None:
             continue
         got = _zero_directive(m.group("body"), item.line, m.start("body"), len(text.rstrip()), len(text), known)
@@ -161,7 +161,7 @@ def parse_directives(doc: Document, known: set[str]) -> tuple[list[Directive], l
     entries += [i for i in others if type(i) is Entry and i.comment is not None and "noqa" in i.comment.lower()]
     for entry in entries:
         assert entry.comment is not None
-        m = re.search(_NOQA, entry.comment, re.IGNORECASE)
+        m = compiled(_NOQA, IGNORECASE).search(entry.comment)
         if m is None:
             continue
         found.append((entry.line, _noqa_directive(m.group("rest"), entry.line, entry.comment_start + m.start(),
@@ -189,14 +189,14 @@ def parse_comment_directives(comments: Iterable[tuple[int, int, str]], code_line
             continue
         body_at = column + 1
         body = text[1:].rstrip(")") if text.startswith("(") else text[1:]
-        m = re.match(r"\s*zero\s*:\s*(?P<body>.*?)\s*$", body, re.IGNORECASE)
+        m = compiled(r"\s*zero\s*:\s*(?P<body>.*?)\s*$", IGNORECASE).match(body)
         if m is not None:
             end = body_at + len(body.rstrip())
             got = _zero_directive(m.group("body"), line, body_at + m.start("body"), end, end, known)
             if isinstance(got, Directive) and got.scope == "next":
                 got.target = next((n for n in code if n > line), None)
         else:
-            nq = re.search(_NOQA, body, re.IGNORECASE)
+            nq = compiled(_NOQA, IGNORECASE).search(body)
             if nq is None:
                 continue
             got = _noqa_directive(nq.group("rest"), line, body_at + nq.start(), body_at + nq.end(), known)

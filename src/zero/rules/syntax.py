@@ -6,7 +6,6 @@ below gives each kind of problem its rule and its message.
 
 from __future__ import annotations
 
-import re
 from collections.abc import Callable, Iterator
 
 from zero.catalog.evidence import claim
@@ -14,6 +13,7 @@ from zero.catalog.registry import ParamSpec
 from zero.catalog.values import bind
 from zero.diagnostics import Diagnostic, Edit, Fix, Span
 from zero.lists.model import Comment, CommentStyle, Problem, ValueKind
+from zero.patterns import compiled
 from zero.rules.base import INFO, Context, E, Family, W
 
 FAMILY: Family[Context] = Family("S", "syntax", "list")
@@ -290,7 +290,7 @@ def _hash_no_space(ctx: Context, p: Problem) -> Diagnostic | None:
         return ctx.report("S012", span, f"`{key}` is commented out without a space after `#`: the manual "
                           "asks for one; the vendor's own lists write it this way", fix=fix, hint=fix.title)
     rest = ctx.doc.line_text(p.line)[p.start:]
-    if re.match(_BANNER, rest) or re.match(_TAG, rest):
+    if compiled(_BANNER).match(rest) or compiled(_TAG).match(rest):
         return None
     return ctx.report("S005", span, "comment text glued to `#`: the manual requires a space after `#`, "
                       "and without it the controller may try to read the line as an entry", fix=fix,

@@ -8,8 +8,8 @@ from __future__ import annotations
 
 SOURCES: tuple[tuple[str, int], ...] = (
     ('__init__.py', 1425),
-    ('base.py', 9929),
-    ('elements.py', 7078),
+    ('base.py', 9980),
+    ('elements.py', 7107),
     ('families.py', 5891),
     ('files.py', 1211),
     ('funnel.py', 3909),
@@ -17,10 +17,10 @@ SOURCES: tuple[tuple[str, int], ...] = (
     ('machine.py', 55156),
     ('meaning.py', 13136),
     ('program.py', 31485),
-    ('registry.py', 62126),
-    ('startup.py', 25856),
-    ('suppress.py', 12316),
-    ('syntax.py', 16015),
+    ('registry.py', 62181),
+    ('startup.py', 25902),
+    ('suppress.py', 12386),
+    ('syntax.py', 16052),
     ('update.py', 4430),
 )
 
