@@ -135,19 +135,14 @@ def render() -> str:
             "CODES: dict[tuple[Any, int], Any] = {\n" + "\n".join(lines) + "\n}\n")
 
 
-def main() -> None:
-    text = render()
-    unread = patterns()[1]
-    for where in unread:
+def files() -> dict[Path, str | None]:
+    """The generated module's text; a call whose pattern cannot be read is said (it compiles with re)."""
+    for where in patterns()[1]:
         print(f"{where}: compiled() of a pattern that is not a literal (or a module's literal name): not written")
-    if sys.argv[1:] == ["--check"]:
-        if TARGET.read_text(encoding="utf-8") != text:
-            print(f"{TARGET} is stale: run python tools/gen_pattern_codes.py")
-            raise SystemExit(1)
-        return
-    TARGET.write_text(text, encoding="utf-8")
-    print(f"wrote {TARGET}")
+    return {TARGET: render()}
 
 
 if __name__ == "__main__":
-    main()
+    from _gen import run
+
+    run("gen_pattern_codes.py", files)
