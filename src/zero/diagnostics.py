@@ -7,31 +7,116 @@ character), so a span of width zero marks a position between two characters.
 
 from __future__ import annotations
 
-import enum
-
 from zero.records import field, record
 
+TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (mypy and ruff read it alike)
+if TYPE_CHECKING:
+    from collections.abc import Iterator
+    from typing import ClassVar
 
-class Severity(enum.IntEnum):
-    """How bad a finding is. Ordered so that ``max()`` gives the worst."""
 
-    INFO = 1
-    WARNING = 2
-    ERROR = 3
+class _SeverityType(type):
+    """The class of :class:`Severity`, for what enum's class gives: ``Severity[name]`` (:class:`KeyError`
+    otherwise), iteration in value order, ``len``, ``member in Severity`` and members that cannot be
+    reassigned."""
 
-    @property
-    def label(self) -> str:
-        return _LABELS[self]
+    def __getitem__(cls, name: str) -> Severity:
+        return _BY_NAME[name]
+
+    def __iter__(cls) -> Iterator[Severity]:
+        return iter(_MEMBERS)
+
+    def __reversed__(cls) -> Iterator[Severity]:
+        return reversed(_MEMBERS)
+
+    def __len__(cls) -> int:
+        return len(_MEMBERS)
+
+    def __contains__(cls, member: object) -> bool:
+        if isinstance(member, Severity):
+            return True
+        # as enum on Python 3.11: only a member can be asked about
+        raise TypeError(f"unsupported operand type(s) for 'in': {type(member).__qualname__!r} and 'EnumType'")
+
+    def __setattr__(cls, name: str, value: object) -> None:
+        if name in _BY_NAME:
+            raise AttributeError(f"cannot reassign member {name!r}")
+        super().__setattr__(name, value)
+
+    def __delattr__(cls, name: str) -> None:
+        if name in _BY_NAME:
+            raise AttributeError(f"cannot delete member {name!r}")
+        super().__delattr__(name)
+
+
+class Severity(int, metaclass=_SeverityType):
+    """How bad a finding is. Ordered so that ``max()`` gives the worst.
+
+    An :class:`int` (1, 2, 3: compared, hashed and written to JSON as one) that behaves as the member of
+    an ``enum.IntEnum`` it was: ``name``, ``value``, its ``repr`` (``<Severity.ERROR: 3>``), ``str`` and
+    ``format`` (the number), ``Severity[name]``, ``Severity(value)``, iteration in value order, pickled and
+    copied as itself, immutable. Without enum: importing it was a twentieth of a list's lint (issue 40,
+    start-up)."""
+
+    INFO: ClassVar[Severity]
+    WARNING: ClassVar[Severity]
+    ERROR: ClassVar[Severity]
+    if TYPE_CHECKING:  # read-only, as enum's (each member holds them in its own dictionary, set once)
+        @property
+        def name(self) -> str: ...
+
+        @property
+        def value(self) -> int: ...
+
+        @property
+        def label(self) -> str: ...  # the name in lower case: a report writes one per finding
+
+    def __new__(cls, value: int) -> Severity:
+        """The member of value ``value`` (a member gives itself); :class:`ValueError` for another value."""
+        try:
+            return _BY_VALUE[value]
+        except (KeyError, TypeError):  # TypeError: an unhashable value
+            raise ValueError(f"{value!r} is not a valid {cls.__qualname__}") from None
 
     @classmethod
     def parse(cls, text: str) -> Severity:
-        try:
-            return cls[text.strip().upper()]
-        except KeyError:
-            raise ValueError(f"unknown severity {text!r} (use error, warning or info)") from None
+        member = _BY_NAME.get(text.strip().upper())
+        if member is None:
+            raise ValueError(f"unknown severity {text!r} (use error, warning or info)")
+        return member
+
+    def __repr__(self) -> str:
+        return f"<{type(self).__name__}.{self.name}: {int.__repr__(self)}>"
+
+    __str__ = int.__repr__  # as IntEnum's: the number, also for format() and f-strings
+    __format__ = int.__format__
+
+    def __reduce_ex__(self, protocol: object) -> tuple[type[Severity], tuple[int]]:
+        return type(self), (self.value,)  # as enum's: Severity(3) when unpickled, the member itself
+
+    def __copy__(self) -> Severity:
+        return self
+
+    def __deepcopy__(self, memo: object) -> Severity:
+        return self
+
+    def __setattr__(self, name: str, value: object) -> None:
+        raise AttributeError(f"cannot change {self!r}")
+
+    def __delattr__(self, name: str) -> None:
+        raise AttributeError(f"cannot change {self!r}")
 
 
-_LABELS = {s: s.name.lower() for s in Severity}  # a report writes one per finding: `name` is slow to ask
+def _member(name: str, value: int) -> Severity:
+    member = int.__new__(Severity, value)
+    vars(member).update(name=name, value=value, label=name.lower())
+    type.__setattr__(Severity, name, member)
+    return member
+
+
+_MEMBERS = (_member("INFO", 1), _member("WARNING", 2), _member("ERROR", 3))  # in value order
+_BY_NAME = {m.name: m for m in _MEMBERS}
+_BY_VALUE: dict[object, Severity] = {m.value: m for m in _MEMBERS}
 
 
 @record(frozen=True)

@@ -47,7 +47,6 @@ The format is :mod:`marshal` of plain tuples (measured against :mod:`json`: load
 from __future__ import annotations
 
 import contextlib
-import enum
 import marshal
 import os
 import sys
@@ -163,7 +162,10 @@ def _canonical(value: object) -> object:
         return ("dict", tuple(sorted(((_canonical(k), _canonical(v)) for k, v in value.items()), key=repr)))
     if getattr(kind, "__record_fields__", None) is not None:
         return (kind.__qualname__, tuple((f.name, _canonical(getattr(value, f.name))) for f in fields(value)))
-    if isinstance(value, enum.Enum):
+    if isinstance(value, Severity):  # as the enum member it was: its class and name
+        return (kind.__name__, value.name)
+    enum = sys.modules.get("enum")  # start-up: a value is an enum only where enum was imported
+    if enum is not None and isinstance(value, enum.Enum):
         return (kind.__name__, value.name)
     if isinstance(value, os.PathLike):
         return ("path", os.fspath(value))
