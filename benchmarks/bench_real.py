@@ -15,6 +15,7 @@ from __future__ import annotations
 import argparse
 import os
 import shutil
+import statistics
 import subprocess
 import sys
 import tempfile
@@ -66,6 +67,26 @@ def measure(cmd: list[str], repeat: int = 1, cwd: Path | None = None,
     return best, peak
 
 
+def paired_start_up(axis: Path, pairs: int) -> str:
+    """The start-up ratio as ``pairs`` alternating runs give it: each lint divided by the faster of the
+    ``python -c pass`` just before and just after it, their median and quartiles. The machine's speed swings
+    within seconds on a shared host; the best of one command and the best of the other, taken minutes
+    apart, can then differ by a third, a ratio of neighbours far less."""
+    def once(cmd: list[str]) -> float:
+        out = subprocess.run([PY, "-c", _PEAK, *cmd], capture_output=True, text=True, check=False, env=_ENV)
+        return float(out.stdout.split()[-3])
+
+    ratios = []
+    before = once([PY, "-c", "pass"])
+    for _ in range(pairs):
+        lint = once([*ZERO, "lint", str(axis)])
+        after = once([PY, "-c", "pass"])
+        ratios.append(lint / min(before, after))
+        before = after
+    q1, median, q3 = statistics.quantiles(ratios, n=4)
+    return f"{'  the same, paired (each run by its neighbours)':<82}{median:>7.2f}×   quartiles {q1:.2f}–{q3:.2f}×"
+
+
 def entries(path: Path) -> int:
     with path.open("rb") as f:
         return sum(1 for line in f if line[:1] not in (b"#", b"\n", b"E"))
@@ -105,6 +126,7 @@ def main() -> None:
     lint_s, lint_m = measure([*ZERO, "lint", str(out / "axis.lis")], 10)
     row("start-up: zero lint axis.lis", lint_s, lint_m, f"python -c pass {pass_s * 1000:.1f} ms",
         lint_s / pass_s, "≤ 3×")
+    print(paired_start_up(out / "axis.lis", 20))
 
     # anchors at least twice: the first read of a cold page cache is not what they stand for
     toml_s, _ = measure([PY, "-c", f"import tomllib; tomllib.load(open({str(out / 'tools.toml')!r}, 'rb'))"],
