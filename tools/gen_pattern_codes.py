@@ -17,6 +17,7 @@ from __future__ import annotations
 
 import ast
 import itertools
+import marshal
 import sys
 from pathlib import Path
 
@@ -118,13 +119,15 @@ def render() -> str:
         indexgroup: list[str | None] = [None] * parsed.state.groups
         for name, i in groupindex.items():
             indexgroup[i] = name
-        lines.append(f"    ({source!r}, {flags}): ({flags | parsed.state.flags}, {code!r}, {parsed.state.groups - 1}, "
-                     f"{groupindex!r}, {tuple(indexgroup)!r}),")
+        # the code as marshal writes the tuple (format 2: no references, the same bytes from every run): a bytes
+        # constant costs nothing to load, where thousands of ints each cost an object (issue 40: start-up)
+        lines.append(f"    ({source!r}, {flags}): ({flags | parsed.state.flags}, {marshal.dumps(code, 2)!r}, "
+                     f"{parsed.state.groups - 1}, {groupindex!r}, {tuple(indexgroup)!r}),")
     built = (*sys.version_info[:2], _sre.MAGIC, _sre.CODESIZE)
     return ('"""The code the regular expression engine compiles zero\'s patterns to, by (source, flags): (all flags,\n'
-            "code, groups, group name -> index, index -> group name), written by tools/gen_pattern_codes.py with the\n"
-            "Python (major, minor) and engine (MAGIC, CODESIZE) of BUILT, and read only by that one\n"
-            "(:mod:`zero.patterns`).\n\n"
+            "code (its tuple as marshal.dumps(code, 2) writes it), groups, group name -> index, index -> group name),\n"
+            "written by tools/gen_pattern_codes.py with the Python (major, minor) and engine (MAGIC, CODESIZE) of\n"
+            "BUILT, and read only by that one (:mod:`zero.patterns`).\n\n"
             'Generated: do not edit."""\n\n'
             "# ruff: noqa\n"
             "from __future__ import annotations\n\n"

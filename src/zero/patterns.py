@@ -13,6 +13,7 @@ The flags are ``re``'s values, under the same names.
 
 from __future__ import annotations
 
+import marshal
 import sys
 
 TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (mypy and ruff read it alike)
@@ -27,7 +28,7 @@ VERBOSE = 64  # re.VERBOSE
 ASCII = 256  # re.ASCII
 
 _COMPILED: dict[tuple[Any, int], Any] = {}  # (source, flags) -> its pattern, compiled once
-_written: dict[tuple[Any, int], tuple[int, tuple[int, ...], int, dict[str, int], tuple[str | None, ...]]] | None = None
+_written: dict[tuple[Any, int], tuple[int, bytes, int, dict[str, int], tuple[str | None, ...]]] | None = None
 
 
 def compiled(source: AnyStr, flags: int = 0) -> Pattern[AnyStr]:
@@ -56,10 +57,10 @@ def _from_written(source: AnyStr, flags: int) -> Pattern[AnyStr] | None:
     import _sre  # type: ignore[import-not-found]  # start-up: built into CPython (what re.compile hands code to)
 
     all_flags, code, groups, groupindex, indexgroup = got
-    return _sre.compile(source, all_flags, list(code), groups, dict(groupindex), indexgroup)  # type: ignore[no-any-return]
+    return _sre.compile(source, all_flags, list(marshal.loads(code)), groups, dict(groupindex), indexgroup)  # type: ignore[no-any-return]
 
 
-def _codes() -> dict[tuple[Any, int], tuple[int, tuple[int, ...], int, dict[str, int], tuple[str | None, ...]]]:
+def _codes() -> dict[tuple[Any, int], tuple[int, bytes, int, dict[str, int], tuple[str | None, ...]]]:
     """The written codes, where they were written by this Python and engine; else none."""
     global _written
     if _written is None:
