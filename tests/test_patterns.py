@@ -6,7 +6,6 @@ from __future__ import annotations
 
 import itertools
 import re
-import subprocess
 import sys
 from pathlib import Path
 
@@ -75,19 +74,3 @@ def test_another_python_or_source_compiles_with_re(monkeypatch: pytest.MonkeyPat
     monkeypatch.setattr(pattern_codes, "BUILT", (sys.version_info[0], sys.version_info[1] + 1, 0, 0))
     assert _fresh(source) is None
     assert not patterns.written(source)
-
-
-def test_a_lint_of_a_list_does_not_import_re(tmp_path: Path) -> None:
-    """The point of the module: ``re`` (with ``enum``) was a third of a short lint's start-up."""
-    lst = tmp_path / "axis.lis"
-    lst.write_text("# axis\nkopf.achs_nr 1  ( P-AXIS-00016 : logical axis number\nkopf.log_achs_name X_Achse\n"
-                   "kenngr.swe_pos 15000000  # zero: noqa\nkenngr.swe_neg  -10000000 x\nEnde\n",
-                   encoding="utf-8")
-    probe = ("import os, sys; sys.argv = ['zero', 'lint', sys.argv[1]]\n"
-             "exit = os._exit\n"
-             "def end(code): print(sorted(m for m in ('re',) if m in sys.modules)); sys.stdout.flush(); exit(code)\n"
-             "os._exit = end\n"
-             "from zero.cli.lean import main; main()")
-    out = subprocess.run([sys.executable, "-c", probe, str(lst)], capture_output=True, text=True, check=False,
-                         env={"ZERO_NO_CACHE": "1", "PATH": "", "PYTHONPATH": str(ROOT / "src")})
-    assert out.stdout.strip().splitlines()[-1] == "[]", out.stdout + out.stderr

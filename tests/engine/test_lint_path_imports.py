@@ -99,3 +99,28 @@ def test_a_lint_imports_no_pathlib(tmp_path: Path, named: str, cache: bool, conf
     assert ("zero.engine.cache" in modules) == cache
     assert ("zero.engine.config_file" in modules) == (config is not None)
     assert not {"pathlib", "urllib.parse", "ipaddress"} & modules
+
+
+@pytest.mark.parametrize("cache", [False, True])
+def test_a_lint_imports_no_re_enum_or_math(tmp_path: Path, cache: bool) -> None:
+    """``re`` with ``enum`` (seven modules) was a third of the standard library a list's lint loaded, and ``math`` is
+    an extension module (a shared library to load): patterns come from the code written at build time
+    (zero.patterns), Severity is no enum, and no value needs math. A list with findings of the common kinds, the
+    text report, cold or answered from the cache (a cache written the first time: writing it may load more)."""
+    lists = tmp_path / "lists"
+    lists.mkdir()
+    (lists / "achse.lis").write_text(
+        "# axis\nkopf.achs_nr 1  ( P-AXIS-00016 : logical axis number\nkopf.log_achs_name X_Achse\n"
+        "kenngr.swe_pos 5000000000  # zero: noqa: R003\nkenngr.swe_neg  -1.5e400 x\nkenngr.homing_type 1\nEnde\n",
+        encoding="utf-8")
+    old = 10**9 * 1_600_000_000  # long settled: the cache keeps its result
+    os.utime(lists / "achse.lis", ns=(old, old))
+    env = {k: v for k, v in os.environ.items() if k != "ZERO_NO_CACHE"}
+    env["ZERO_CACHE_DIR"] = str(tmp_path / "cache")
+    if not cache:
+        env["ZERO_NO_CACHE"] = "1"
+    for _ in range(2 if cache else 1):  # the second run answers from the cache
+        report, modules, _ = zero_modules("lint", "--exit-zero", "lists", cwd=tmp_path, env=env)
+    assert "R00" in report and "checked" in report
+    assert ("zero.engine.cache" in modules) == cache
+    assert {"re", "enum", "math"} & modules == set()

@@ -8,7 +8,6 @@ named here once. Lengths and angles in the lists are integers in 0.1 µm and
 
 from __future__ import annotations
 
-import math
 from collections.abc import Sequence
 
 Number = int | float
@@ -77,13 +76,16 @@ TOOL_LENGTH_AXIS = 2  # the tool length acts along the third channel axis (Z in 
 IP247_LIMIT = 999_999_990
 
 
+_INF = float("inf")  # math.inf, without importing math (an extension module: start-up)
+
+
 def in_units(value: Number) -> float:
     """A length or angle in list units as mm or degrees (±inf beyond a float: a number no
     parameter holds, which the rules report; the caller shows it with :func:`fixed`)."""
     try:
         return value / LENGTH_UNIT
     except OverflowError:
-        return math.inf if value > 0 else -math.inf
+        return _INF if value > 0 else -_INF
 
 
 def _four_decimals(value: Number) -> str:

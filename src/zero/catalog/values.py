@@ -10,7 +10,6 @@ and ``zero diff`` all read values through this module.
 
 from __future__ import annotations
 
-import math
 import sys
 from array import array
 from collections.abc import Iterator, Mapping, Sequence
@@ -35,6 +34,7 @@ __all__ = ["NO_DEFAULT", "ListValues", "Resolved", "Slot", "Value", "bind", "can
 # catalogue does not know is its key pattern behind a `?` (``("?a.b[]", (1,))``). `[01]` and `[1]`
 # are one element, and so are an alias and the key it stands for.
 Slot = tuple[str, tuple[int, ...]]
+_INFINITE = (float("inf"), float("-inf"))  # math.isinf, without importing math (an extension module: start-up)
 _LEADING_ZERO = r"\[0[0-9]"  # `[01]`: an index written with a leading zero (compiled at its first use)
 
 
@@ -299,7 +299,7 @@ def read_text(spec: ParamSpec, raw: str, kind: ValueKind | None) -> Value:
                 r = float(raw)
             except ValueError:
                 return Value(problem="type", detail="number")
-            return Value(number=r, problem="overflow" if math.isinf(r) else None)
+            return Value(number=r, problem="overflow" if r in _INFINITE else None)
         if spec.symbols and kind is ValueKind.WORD:
             ok, val = _symbol_number(spec, raw)
             return Value(number=val) if ok else Value(problem="symbol", detail=raw)
