@@ -22,6 +22,9 @@ import sys
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent.parent / "src"))
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+
+from pydata import TYPING_FOR_CHECKERS
 
 SRC = Path(__file__).resolve().parent.parent / "src" / "zero"
 TARGET = SRC / "pattern_codes.py"
@@ -129,11 +132,7 @@ def render() -> str:
             "written by tools/gen_pattern_codes.py with the Python (major, minor) and engine (MAGIC, CODESIZE) of\n"
             "BUILT, and read only by that one (:mod:`zero.patterns`).\n\n"
             'Generated: do not edit."""\n\n'
-            "# ruff: noqa\n"
-            "from __future__ import annotations\n\n"
-            "TYPE_CHECKING = False\n"
-            "if TYPE_CHECKING:\n"
-            "    from typing import Any\n\n"
+            "# ruff: noqa\n" + "\n".join(TYPING_FOR_CHECKERS) + "\n\n"
             f"BUILT: tuple[int, ...] = {built!r}\n"
             "CODES: dict[tuple[Any, int], Any] = {\n" + "\n".join(lines) + "\n}\n")
 

@@ -21,6 +21,18 @@ def _run(folder: Path) -> tuple[str, set[str], int]:
     return report, modules, int(table)
 
 
+def _settled(lst: Path, cache_dir: Path, cache: bool) -> dict[str, str]:
+    """The environment of a run with the cache in ``cache_dir`` (or none), ``lst`` made long settled (the cache
+    keeps the result of a file that is not still being written)."""
+    old = 10**9 * 1_600_000_000
+    os.utime(lst, ns=(old, old))
+    env = {k: v for k, v in os.environ.items() if k != "ZERO_NO_CACHE"}
+    env["ZERO_CACHE_DIR"] = str(cache_dir)
+    if not cache:
+        env["ZERO_NO_CACHE"] = "1"
+    return env
+
+
 @pytest.mark.parametrize("config", [None, 'ignore = ["R"]\n'])
 def test_the_declarations_are_read_only_with_a_configuration(tmp_path: Path, config: str | None) -> None:
     lists = tmp_path / "lists"
@@ -85,12 +97,7 @@ def test_a_lint_imports_no_pathlib(tmp_path: Path, named: str, cache: bool, conf
     if config is not None:
         (tmp_path / "zero.toml").write_text(config, encoding="utf-8")
     (lists / "achse.lis").write_text("kopf.achs_nr 1\nkenngr.swe_pos 5000000000\nEnde\n", encoding="utf-8")
-    old = 10**9 * 1_600_000_000  # long settled: the cache keeps its result
-    os.utime(lists / "achse.lis", ns=(old, old))
-    env = {k: v for k, v in os.environ.items() if k != "ZERO_NO_CACHE"}
-    env["ZERO_CACHE_DIR"] = str(tmp_path / "cache")
-    if not cache:
-        env["ZERO_NO_CACHE"] = "1"
+    env = _settled(lists / "achse.lis", tmp_path / "cache", cache)
     for _ in range(2 if cache else 1):  # the second run answers from the cache
         report, modules, _ = zero_modules("lint", "--exit-zero", "--output-format", "json", named, cwd=tmp_path,
                                           env=env)
@@ -113,12 +120,7 @@ def test_a_lint_imports_no_re_enum_or_math(tmp_path: Path, cache: bool) -> None:
         "# axis\nkopf.achs_nr 1  ( P-AXIS-00016 : logical axis number\nkopf.log_achs_name X_Achse\n"
         "kenngr.swe_pos 5000000000  # zero: noqa: R003\nkenngr.swe_neg  -1.5e400 x\nkenngr.homing_type 1\nEnde\n",
         encoding="utf-8")
-    old = 10**9 * 1_600_000_000  # long settled: the cache keeps its result
-    os.utime(lists / "achse.lis", ns=(old, old))
-    env = {k: v for k, v in os.environ.items() if k != "ZERO_NO_CACHE"}
-    env["ZERO_CACHE_DIR"] = str(tmp_path / "cache")
-    if not cache:
-        env["ZERO_NO_CACHE"] = "1"
+    env = _settled(lists / "achse.lis", tmp_path / "cache", cache)
     for _ in range(2 if cache else 1):  # the second run answers from the cache
         report, modules, _ = zero_modules("lint", "--exit-zero", "lists", cwd=tmp_path, env=env)
     assert "R00" in report and "checked" in report
