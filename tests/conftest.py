@@ -8,10 +8,12 @@ basenames are unique across the tree and ``from conftest import ...`` works ever
 
 from __future__ import annotations
 
+import copy
 import functools
 import importlib.util
 import json
 import os
+import pickle
 import resource
 import shlex
 import subprocess
@@ -258,3 +260,12 @@ def zero_modules(*args: str, cwd: Path, env: dict[str, str], probe: str = "None"
     report, _, tail = out.stdout.rpartition("\nMODULES ")
     modules, _, probed = tail.partition("\nPROBE ")
     return report, set(modules.split()), probed.strip()
+
+
+def assert_stays_itself(member: object) -> None:
+    """A member of one of zero's enumerations (Severity, ValueKind, ...) is itself after pickling with every
+    protocol, a copy and a deep copy: compared by identity, as an enum's member is."""
+    for protocol in range(pickle.HIGHEST_PROTOCOL + 1):
+        assert pickle.loads(pickle.dumps(member, protocol)) is member
+    assert copy.copy(member) is member
+    assert copy.deepcopy({"m": [member]})["m"][0] is member

@@ -3,11 +3,11 @@ as the enum members they were wherever zero uses them: name, value, repr, str, i
 
 from __future__ import annotations
 
-import copy
 import pickle
 
 import pytest
 
+from conftest import assert_stays_itself
 from zero.lists.model import CommentStyle, Member, ValueKind
 from zero.lists.tokenizer import tokenize
 
@@ -32,10 +32,7 @@ MEMBERS = [*(getattr(ValueKind, n) for n in KINDS), *(getattr(CommentStyle, n) f
 
 @pytest.mark.parametrize("member", MEMBERS)
 def test_a_member_stays_itself_through_pickle_and_copy(member: Member) -> None:
-    for protocol in range(pickle.HIGHEST_PROTOCOL + 1):
-        assert pickle.loads(pickle.dumps(member, protocol)) is member
-    assert copy.copy(member) is member
-    assert copy.deepcopy({"m": [member]})["m"][0] is member
+    assert_stays_itself(member)
 
 
 def test_a_member_cannot_be_changed() -> None:
