@@ -126,3 +126,23 @@ def test_a_lint_imports_no_re_enum_or_math(tmp_path: Path, cache: bool) -> None:
     assert "R00" in report and "checked" in report
     assert ("zero.engine.cache" in modules) == cache
     assert {"re", "enum", "math"} & modules == set()
+
+
+_UNMADE = ("(__import__('zero.rules.families', fromlist=['x']).__dict__.get('RULES') is None, "
+           "[f.letter for f in __import__('zero.rules.families', fromlist=['x']).FAMILIES if f._later is not None])")
+
+
+@pytest.mark.parametrize("k_finding", [False, True])
+def test_a_lint_makes_no_k_x_or_n_rule(tmp_path: Path, k_finding: bool) -> None:
+    """The registry's K, X and N rules (their names and texts) are made at the first look at them (``zero
+    rule``, the docs, SARIF): a list's lint, K findings and all, reads only their codes and severities."""
+    lists = tmp_path / "lists"
+    lists.mkdir()
+    planted = (FIXTURES / "kernel" / "planted_spindle.lis").read_bytes()
+    (lists / "achse.lis").write_bytes(planted if k_finding else b"kopf.achs_nr 1\nkenngr.swe_pos 5000000000\nEnde\n")
+    env = {**os.environ, "ZERO_NO_CACHE": "1"}
+    report, _, unmade = zero_modules("lint", "--exit-zero", "--output-format", "json", "lists", cwd=tmp_path,
+                                     env=env, probe=_UNMADE)
+    assert ('"code": "K074"' in report) == k_finding
+    assert '"severity": "error"' in report
+    assert unmade == "(True, ['K', 'X', 'N'])"

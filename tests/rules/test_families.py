@@ -8,10 +8,13 @@ import ast
 import subprocess
 import sys
 
+import pytest
+
 from conftest import ROOT
+from zero.diagnostics import Severity
 from zero.rules import FAMILIES, RULES
 from zero.rules import families as registry_of_families
-from zero.rules.base import Family, declared_codes, default_severity
+from zero.rules.base import Family, Rule, declared_codes, default_severity
 
 RULES_DIR = ROOT / "src" / "zero" / "rules"
 
@@ -73,3 +76,40 @@ def test_a_family_declares_only_its_own_codes() -> None:
     else:
         raise AssertionError("a code declared twice")
     assert "Q001" not in declared_codes()  # declaring is not registering: only the registry registers
+
+
+def test_rules_declared_later_are_made_at_the_first_look() -> None:
+    made: list[int] = []
+
+    def make() -> list[Rule]:
+        made.append(1)
+        return [Rule("Q002", "later", Severity.INFO, "s", "e", "list")]
+
+    f: Family = Family("Q", "test", "list")  # type: ignore[type-arg]
+    f.rule("Q001", "q", Severity.ERROR, "s", "e")
+    f.declare_later(make, {"Q002": Severity.INFO})
+    assert f.severities() == {"Q001": Severity.ERROR, "Q002": Severity.INFO} and made == []
+    assert list(f.rules) == ["Q001", "Q002"] and made == [1]
+    assert f.rules["Q002"].name == "later" and made == [1]  # once
+    assert f.severities() == {"Q001": Severity.ERROR, "Q002": Severity.INFO}
+
+
+@pytest.mark.parametrize("made", [[], [("Q002", Severity.ERROR)], [("Q002", Severity.INFO), ("Q003", Severity.INFO)]])
+def test_rules_made_later_must_be_the_ones_declared(made: list[tuple[str, Severity]]) -> None:
+    f: Family = Family("Q", "test", "list")  # type: ignore[type-arg]
+    f.declare_later(lambda: [Rule(code, "r", sev, "s", "e", "list") for code, sev in made], {"Q002": Severity.INFO})
+    with pytest.raises(ValueError, match="not the ones it declared"):
+        _ = f.rules
+
+
+def test_a_family_declares_later_only_its_own_new_codes() -> None:
+    f: Family = Family("Q", "test", "list")  # type: ignore[type-arg]
+    f.rule("Q001", "q", Severity.ERROR, "s", "e")
+    for codes in ({"Q001": Severity.ERROR}, {"P001": Severity.ERROR}):
+        with pytest.raises(ValueError, match="does not belong to family Q or is declared twice"):
+            f.declare_later(list, codes)
+
+
+def test_the_funnel_declares_every_rule_of_the_registry() -> None:
+    assert declared_codes() == set(RULES)
+    assert all(default_severity(code) == rule.severity for code, rule in RULES.items())

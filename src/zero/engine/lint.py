@@ -29,13 +29,12 @@ from zero.records import replace
 from zero.rules import (
     MACHINE_CHECKS,
     PROGRAM_CHECKS,
-    RULES,
     MachineContext,
     ProgramContext,
     check_document,
     run_checks,
 )
-from zero.rules.base import declared_codes
+from zero.rules.base import declared_codes, default_severity
 from zero.rules.funnel import funnel
 from zero.rules.suppress import parse_comment_directives
 
@@ -237,7 +236,7 @@ def refused(path: str, data: bytes, error: ZeroError, options: LintOptions | Non
     """The result for a file zero will not read (XML: S014; a YAML/TOML/JSON form: S017): one
     finding where the reader stopped, nothing checked."""
     line, col = error.line or 1, error.column or 1
-    finding = Diagnostic(code, RULES[code].severity, f"{error.message}: not checked",
+    finding = Diagnostic(code, default_severity(code) or Severity.ERROR, f"{error.message}: not checked",
                          Span(line, col, line, col + 1), path)
     found = funnel(path, [finding], selected_rules(options or LintOptions()))
     return LintResult(path, _shown(path, data), None, found)
@@ -247,7 +246,7 @@ def unreadable(path: str, error: ZeroError, options: LintOptions | None = None) 
     """The result for a file that could not be read: one F001 finding (through the funnel, so
     ``--ignore F001`` leaves the file out in silence), nothing checked."""
     message = f"{error.message}: not checked"
-    finding = Diagnostic("F001", RULES["F001"].severity, message, Span(1, 1, 1, 1), path)
+    finding = Diagnostic("F001", default_severity("F001") or Severity.ERROR, message, Span(1, 1, 1, 1), path)
     found = funnel(path, [finding], selected_rules(options or LintOptions()))
     return LintResult(path, Document(path, "utf-8", [], [], []), None, found)
 

@@ -16,9 +16,21 @@ did not become entries live in :mod:`~zero.rules.elements`. The families are lis
 from __future__ import annotations
 
 from zero.rules.base import Context, MachineContext, ProgramContext, Rule, run_checks
-from zero.rules.families import MACHINE_CHECKS, PROGRAM_CHECKS, RULES
+from zero.rules.families import MACHINE_CHECKS, PROGRAM_CHECKS
 from zero.rules.families import TITLES as FAMILIES  # letter → title
 from zero.rules.lists import check_document
 
 __all__ = ["FAMILIES", "MACHINE_CHECKS", "PROGRAM_CHECKS", "RULES", "Context", "MachineContext",
            "ProgramContext", "Rule", "check_document", "run_checks"]
+
+TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (mypy and ruff read it alike)
+if TYPE_CHECKING:
+    from zero.rules.families import RULES
+else:
+    def __getattr__(name: str) -> object:
+        """``RULES`` (:mod:`zero.rules.families`), made at its first use: a list's lint reads none of it."""
+        if name != "RULES":
+            raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+        from zero.rules import families  # start-up: made at the first use
+
+        return families.RULES

@@ -16,7 +16,7 @@ an NC program (:class:`ProgramContext`).
 
 from __future__ import annotations
 
-from collections.abc import Callable, Iterator, Sequence
+from collections.abc import Callable, Iterable, Iterator, Sequence
 
 from zero.catalog.evidence import Claim, rule_claim
 from zero.catalog.evidence import claim as evidence_claim
@@ -186,23 +186,54 @@ class Family(Generic[C]):
         self.letter = letter
         self.title = title
         self.scope = scope
-        self.rules: dict[str, Rule] = {}
+        self._rules: dict[str, Rule] = {}
+        self._later: tuple[Callable[[], Iterable[Rule]], dict[str, Severity]] | None = None
         self.checks: list[Check[C]] = []
+
+    @property
+    def rules(self) -> dict[str, Rule]:
+        """Code → rule, in the order declared (those declared later made here, at the first look)."""
+        later = self._later
+        if later is not None:
+            self._later = None
+            made = {self._add(r).code: r.severity for r in later[0]()}
+            if made != later[1]:
+                raise ValueError(f"the rules made for family {self.letter} are not the ones it declared")
+        return self._rules
+
+    def severities(self) -> dict[str, Severity]:
+        """Code → declared severity of every rule (those declared later without making them: a list's lint
+        reads no K, X or N rule object, only their codes and severities; issue 40, start-up)."""
+        out = {code: r.severity for code, r in self._rules.items()}
+        if self._later is not None:
+            out.update(self._later[1])
+        return out
+
+    def declare_later(self, make: Callable[[], Iterable[Rule]], severities: dict[str, Severity]) -> None:
+        """Rules made at the first look at :attr:`rules` by ``make``, whose codes and severities are
+        ``severities`` (checked then)."""
+        for code in severities:
+            if not code.startswith(self.letter) or code in self._rules:
+                raise ValueError(f"rule {code} does not belong to family {self.letter} or is declared twice")
+        self._later = (make, severities)
+
+    def _add(self, r: Rule) -> Rule:
+        code = r.code
+        if not code.startswith(self.letter) or code in self._rules:
+            raise ValueError(f"rule {code} does not belong to family {self.letter} or is declared twice")
+        self._rules[code] = r
+        return r
 
     def rule(self, code: str, name: str, severity: Severity, summary: str, explanation: str,
              opt_in: bool = False, reads: tuple[str, ...] = ()) -> Rule:
         """Declare a rule of this family (its code is never reused) and the parameters it reads."""
-        if not code.startswith(self.letter) or code in self.rules:
-            raise ValueError(f"rule {code} does not belong to family {self.letter} or is declared twice")
-        r = Rule(code, name, severity, summary, explanation, self.scope, opt_in, reads)
-        self.rules[code] = r
-        return r
+        return self._add(Rule(code, name, severity, summary, explanation, self.scope, opt_in, reads))
 
-    def check(self, *rules: Rule) -> Callable[[Callable[[C], Iterator[Diagnostic]]],
-                                               Callable[[C], Iterator[Diagnostic]]]:
-        """Declare the function below as the check that reports ``rules``."""
+    def check(self, *rules: Rule | str) -> Callable[[Callable[[C], Iterator[Diagnostic]]],
+                                                     Callable[[C], Iterator[Diagnostic]]]:
+        """Declare the function below as the check that reports ``rules`` (rules, or their codes)."""
         def register(run: Callable[[C], Iterator[Diagnostic]]) -> Callable[[C], Iterator[Diagnostic]]:
-            self.checks.append(Check(tuple(r.code for r in rules), run))
+            self.checks.append(Check(tuple(r if isinstance(r, str) else r.code for r in rules), run))
             return run
 
         return register

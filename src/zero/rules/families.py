@@ -30,7 +30,7 @@ from zero.catalog.data.rules_declared import DECLARED
 from zero.diagnostics import Severity
 from zero.hints import overload
 from zero.rules import elements, files, meaning, registry, startup, suppress, syntax, update
-from zero.rules.base import C, Check, Context, Family, MachineContext, ProgramContext, Rule, declare
+from zero.rules.base import C, Check, Context, Family, MachineContext, ProgramContext, Rule, declare, default_severity
 
 TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (mypy and ruff read it alike)
 if TYPE_CHECKING:
@@ -53,8 +53,13 @@ def _written(name: str) -> Family[MachineContext] | Family[ProgramContext] | Non
     except OSError:
         return None
     family: Family[Any] = Family(letter, title, scope)
-    for code, rule_name, severity, summary, explanation, opt_in, reads in rules:
-        family.rule(code, rule_name, Severity[severity], summary, explanation, opt_in, tuple(reads))
+    by_name = {s.name: s for s in Severity}
+
+    def make() -> list[Rule]:  # at the first look at the family's rules (a list's lint reads only the severities)
+        return [Rule(code, rule_name, by_name[severity], summary, explanation, scope, opt_in, tuple(reads))
+                for code, rule_name, severity, summary, explanation, opt_in, reads in rules]
+
+    family.declare_later(make, {row[0]: by_name[row[2]] for row in rules})
     return family
 
 
@@ -116,15 +121,25 @@ def _rules() -> dict[str, Rule]:
     return out
 
 
-RULES: dict[str, Rule] = _rules()  # code → rule, family by family
+RULES: dict[str, Rule]  # code → rule, family by family: made at the first use (__getattr__ below)
 TITLES: dict[str, str] = {f.letter: f.title for f in FAMILIES}  # letter → the family's title
-declare({code: r.severity for code, r in RULES.items()})  # the declared severities the funnel grades against
+# the declared severities the funnel grades against: from each family's codes, without making the rules it
+# declares later (the K, X and N rules: a list's lint reads none of them; issue 40, start-up)
+declare({code: severity for family in FAMILIES for code, severity in sorted(family.severities().items())})
+
+
+def __getattr__(name: str) -> dict[str, Rule]:
+    """``RULES``, made at its first use (``zero rule``, the docs, SARIF's rule table, the server)."""
+    if name != "RULES":
+        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+    rules = _rules()
+    globals()["RULES"] = rules
+    return rules
 
 
 def severity_of(code: str) -> Severity | None:
     """The severity ``code`` is declared with (``None``: no such rule)."""
-    r = RULES.get(code)
-    return r.severity if r is not None else None
+    return default_severity(code)
 
 
 __all__ = ["FAMILIES", "LIST_CHECKS", "LIST_FAMILIES", "MACHINE_CHECKS", "MODULES", "ON_DEMAND", "PROGRAM_CHECKS",

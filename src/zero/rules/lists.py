@@ -47,7 +47,7 @@ def kernel_rules() -> dict[str, tuple[frozenset[str], str, str]]:
 def _kernel_codes() -> frozenset[str]:
     """The K codes (what :func:`kernel_rules` holds), without reading what each row's condition reads, nor
     making each row's check (``startup.CHECKS``)."""
-    return frozenset(startup.FAMILY.rules)
+    return startup.codes()
 
 
 def _kernel_first(ctx: Context, kept: list[Diagnostic]) -> list[Diagnostic]:

@@ -258,23 +258,36 @@ class _KernelRule(Rule):
 
 
 def _declare() -> dict[str, list[Facts]]:
-    """Each row's rule (its texts read at their first use: :class:`_KernelRule`), and its facts by list
-    kind, in order: a row's :class:`StartupError` is made where a check needs it (:func:`_error`), not
-    here (an axis list's lint checks some sixty of the 125: issue 40, start-up)."""
+    """Each row's facts by list kind, in order, and its rule's code and severity: the rule itself is made at the
+    first look at the family's rules (:func:`_rules`; its texts at their first use: :class:`_KernelRule`), and a
+    row's :class:`StartupError` where a check needs it (:func:`_error`), not here (an axis list's lint checks
+    some sixty of the 125: issue 40, start-up)."""
     out: dict[str, list[Facts]] = {"": []}  # (never empty once built)
-    rules = FAMILY.rules
+    severities: dict[str, Severity] = {}
     for f in _facts_declared():
         code = f[0]
-        if not code.startswith("K") or code in rules:
-            raise ValueError(f"rule {code} does not belong to family K or is declared twice")
+        if code in _ROWS:
+            raise ValueError(f"rule {code} is declared twice")
         _ROWS[code] = f
-        rules[code] = _KernelRule(code, f"kernel-{f[1]}", W if _letter(f) == "W" else E)
+        severities[code] = W if _letter(f) == "W" else E
         got = out.get(f[2])
         if got is None:
             out[f[2]] = [f]
         else:
             got.append(f)
+    FAMILY.declare_later(_rules, severities)
     return out
+
+
+def codes() -> frozenset[str]:
+    """Every K code (without making the rules: :func:`_rules`)."""
+    return frozenset(_ROWS)
+
+
+def _rules() -> list[Rule]:
+    """Each row's rule, in order: made at the first look at the family's rules (``zero rule``, the docs, SARIF's
+    rule table), never by a list's lint, which reads only their codes and severities."""
+    return [_KernelRule(code, f"kernel-{f[1]}", W if _letter(f) == "W" else E) for code, f in _ROWS.items()]
 
 
 _BY_KIND: dict[str, list[Facts]] = _declare()  # list kind -> its rows' facts, in order
@@ -302,7 +315,7 @@ def __getattr__(name: str) -> list[StartupError]:
     return checks
 
 
-@FAMILY.check(*FAMILY.rules.values())
+@FAMILY.check(*_ROWS)
 def check_startup(ctx: Context) -> Iterator[Diagnostic]:
     """The documented start-up checks of this list's kind, on its values (defaults where unset). One
     root cause, one finding: of the checks that fail on one line, the one that reports that line's
@@ -552,4 +565,4 @@ def _reported_entry(ctx: Context, err: StartupError, idx: tuple[int, ...],
     return None
 
 
-__all__ = ["CHECKS", "FAMILY", "StartupError", "check_startup"]
+__all__ = ["CHECKS", "FAMILY", "StartupError", "check_startup", "codes"]

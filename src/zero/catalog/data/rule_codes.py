@@ -7,18 +7,18 @@ Generated: do not edit."""
 from __future__ import annotations
 
 SOURCES: tuple[tuple[str, int], ...] = (
-    ('__init__.py', 1425),
-    ('base.py', 9980),
+    ('__init__.py', 1954),
+    ('base.py', 11632),
     ('elements.py', 7107),
-    ('families.py', 5891),
+    ('families.py', 6678),
     ('files.py', 1211),
     ('funnel.py', 3909),
-    ('lists.py', 5827),
+    ('lists.py', 5811),
     ('machine.py', 55156),
     ('meaning.py', 13136),
     ('program.py', 31485),
     ('registry.py', 62181),
-    ('startup.py', 25902),
+    ('startup.py', 26430),
     ('suppress.py', 12386),
     ('syntax.py', 16052),
     ('update.py', 4430),
