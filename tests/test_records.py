@@ -6,6 +6,7 @@ from __future__ import annotations
 import copy
 import dataclasses
 import pickle
+import re
 import subprocess
 import sys
 from pathlib import Path
@@ -366,15 +367,15 @@ def _declare(table: dict[str, tuple[Any, ...]] | None, monkeypatch: pytest.Monke
     import zero.records as records
 
     slow: list[str] = []
-    build_slow = records._build_slow
+    body_slow = records._body_slow
 
-    def counted(cls: type, frozen: bool, eq: bool, unsafe_hash: bool) -> type:
-        slow.append(cls.__qualname__)
-        return build_slow(cls, frozen, eq, unsafe_hash)
+    def counted(shell: Any, frozen: bool, eq: bool, unsafe_hash: bool) -> tuple[dict[str, Any], list[type]]:
+        slow.append(shell.qualname)
+        return body_slow(shell, frozen, eq, unsafe_hash)
 
     scope: dict[str, Any] = {"__name__": "zero_records_case"}
     with monkeypatch.context() as patch:
-        patch.setattr(records, "_build_slow", counted)
+        patch.setattr(records, "_body_slow", counted)
         if table is not None:
             patch.setitem(record_inits.RECORDS, "zero_records_case", table)  # the dict records reads
         exec(compile(text, "<cases>", "exec"), scope)
@@ -386,21 +387,21 @@ def _table_of(monkeypatch: pytest.MonkeyPatch, text: str = CASES) -> dict[str, t
     import zero.records as records
 
     gen = _gen()
-    seen: list[tuple[type, type, bool, bool, bool]] = []
-    build_slow = records._build_slow
+    seen: list[tuple[Any, dict[str, Any], bool, bool, bool]] = []
+    body_slow = records._body_slow
 
-    def capture(cls: type, frozen: bool, eq: bool, unsafe_hash: bool) -> type:
-        made = build_slow(cls, frozen, eq, unsafe_hash)
-        seen.append((cls, made, frozen, eq, unsafe_hash))
-        return made
+    def capture(shell: Any, frozen: bool, eq: bool, unsafe_hash: bool) -> tuple[dict[str, Any], list[type]]:
+        body, owner = body_slow(shell, frozen, eq, unsafe_hash)
+        seen.append((shell, body, frozen, eq, unsafe_hash))
+        return body, owner
 
     with monkeypatch.context() as patch:
-        patch.setattr(records, "_build", capture)
+        patch.setattr(records, "_body", capture)
         exec(compile(text, "<cases>", "exec"), {"__name__": "zero_records_case"})
     table = {}
-    for cls, made, frozen, eq, unsafe_hash in seen:
-        source, spec = gen.entry(cls, made, frozen, eq, unsafe_hash)
-        table[cls.__qualname__] = (*spec, gen.code_of(source))
+    for shell, body, frozen, eq, unsafe_hash in seen:
+        source, spec = gen.entry(shell, body, frozen, eq, unsafe_hash)
+        table[shell.qualname] = (*spec, gen.code_of(source))
     return table
 
 
@@ -495,3 +496,95 @@ def test_a_record_the_table_no_longer_describes_is_worked_out_the_slow_way(
     assert _shape(fast_made["Point"]) == _shape(reference["Point"])
     args = [1] * sum(f.default is MISSING and f.default_factory is MISSING for f in fields(reference["Point"]))
     assert repr(fast_made["Point"](*args)) == repr(reference["Point"](*args))
+
+
+# The class-statement form: `class X(..., Record, ARGS):` for `@record(ARGS)` and `class X(...):`.
+_DECORATED = re.compile(r"^(?P<ind>[ \t]*)@record(?:\((?P<args>[^)]*)\))?\n(?P=ind)class (?P<name>\w+)"
+                        r"(?:\((?P<bases>[^)]*)\))?:", re.M)
+
+
+def _as_record_base(text: str) -> str:
+    """``text`` with every ``@record`` declaration written as a class naming ``Record`` (what zero's source does)."""
+    def written(m: re.Match[str]) -> str:
+        parts = [p for p in ((m["bases"] or "").strip(), "Record", (m["args"] or "").strip()) if p]
+        return f"{m['ind']}class {m['name']}({', '.join(parts)}):"
+
+    out = _DECORATED.sub(written, text)
+    return out.replace("from zero.records import field, record\n", "from zero.records import Record, field, record\n")
+
+
+def test_a_record_base_makes_the_record_the_decorator_makes(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Each case declared as a class naming Record is made the same as with ``@record``, the slow way and from
+    the table (whose entries do not depend on the form), and in one step: no class is made twice."""
+    text = _as_record_base(CASES)
+    assert "@record" not in text and len(re.findall(r"^class \w+\(.*\bRecord\b", text, re.M)) == CASES.count("@record")
+    table = _table_of(monkeypatch)
+    assert _table_of(monkeypatch, text) == table  # the generator reads both forms alike
+    decorated, _ = _declare(None, monkeypatch)
+    for which in (None, table):
+        made, slow = _declare(which, monkeypatch, text)
+        assert slow == ([] if which else list(table))
+        for name in table:
+            assert _shape(made[name]) == _shape(decorated[name]), name
+            assert type(made[name]) is type and all(b.__name__ != "Record" for b in made[name].__mro__)
+    made, _ = _declare(table, monkeypatch, text)
+    p = made["Point"]
+    assert repr(p(1, 2, ["a"], "n", 4)) == "Point(x=1, y=2, tags=['a'], note='n')" and p(1) == p(1, note="z")
+    s = made["Span"](1, 2)
+    with pytest.raises(AttributeError):
+        s.line = 3
+    assert hash(s) == hash(made["Span"](1, 2))
+
+
+RECORD_CASES = """
+from __future__ import annotations
+from zero.hints import Generic, TypeVar
+from zero.records import Record, field, fields
+
+T = TypeVar("T")
+
+class Base(Record, frozen=True):
+    a: int
+    b: int = 1
+
+    def who(self) -> type:
+        return __class__
+
+    def plain_repr(self) -> str:
+        return super().__repr__()
+
+class Sub(Base, Record, frozen=True):
+    c: str = ""
+
+class Plain(Base):
+    def label(self) -> str:
+        return f"plain {self.a}"
+
+class Boxed(Generic[T], Record):
+    value: T
+    notes: list[str] = field(default_factory=list)
+"""
+
+
+def test_a_record_names_record_to_be_one() -> None:
+    """A subclass naming Record is a record (its base's fields first); one that does not is a plain subclass, as
+    a class deriving from a ``@record`` class is. Methods see their own class (``__class__``, ``super()``), which
+    a decorator's second class cannot give them."""
+    scope: dict[str, Any] = {"__name__": "zero_records_base_case"}
+    exec(compile(RECORD_CASES, "<record cases>", "exec"), scope)
+    base, sub, plain, boxed = scope["Base"], scope["Sub"], scope["Plain"], scope["Boxed"]
+    assert [f.name for f in fields(sub)] == ["a", "b", "c"] and sub.__slots__ == ("c",)
+    assert repr(sub(1, 2, "x")) == "Sub(a=1, b=2, c='x')" and sub(1) == sub(1) and sub(1) != base(1)
+    assert base(1).who() is base and base(1).plain_repr().startswith("<zero_records_base_case.Base object at ")
+    assert "__slots__" not in vars(plain) and plain(3).label() == "plain 3" and repr(plain(3)) == "Plain(a=3, b=1)"
+    assert boxed(5).notes == [] and boxed(5).notes is not boxed(5).notes and boxed[int] is boxed
+    for cls in (base, sub, plain, boxed):
+        assert type(cls) is type  # isinstance with it stays the interpreter's fast check
+    for protocol in range(pickle.HIGHEST_PROTOCOL + 1):
+        state = pickle.loads(pickle.dumps(sub(1, 2, "x").__getstate__(), protocol))
+        again = object.__new__(sub)
+        again.__setstate__(state)
+        assert again == sub(1, 2, "x")
+    with pytest.raises(TypeError, match="without a default follows one with a default"):
+        exec(compile("from zero.records import Record\nclass Bad(Record):\n    a: int = 0\n    b: int\n",
+                     "<bad>", "exec"), {"__name__": "zero_records_bad"})

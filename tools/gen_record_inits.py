@@ -7,7 +7,7 @@ forty records in a ``zero lint`` of one list, most of the cost of declaring them
 table holds, by module and qualified name, what that gives for each record of zero with no record base (its
 field names, those shown and compared, its ``__init__`` compiled with the table) together with what it was
 worked out from (the class's own annotations, its flags, which fields have values and of which kind), which
-:func:`zero.records._build` checks against the class before taking the rest. A record the table does not
+:func:`zero.records._body` checks against the class before taking the rest. A record the table does not
 describe (a test's, a record with a record base, or a table not regenerated after a record changed) is
 worked out as before: slower, never wrong; a test fails while the table is stale. The ``__init__`` of a
 record with a record base is kept by its text. Run it after adding, removing or changing a record.
@@ -30,6 +30,7 @@ import sys
 import tempfile
 from pathlib import Path
 from types import CodeType
+from typing import Any
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 sys.path.insert(0, str(Path(__file__).resolve().parent.parent / "src"))
@@ -76,20 +77,23 @@ def lint_modules() -> set[str]:
     return loaded
 
 
-def declared() -> list[tuple[type, type, bool, bool, bool]]:
-    """Every record of every zero module as declared (the class its body made, the record made of it,
-    and its flags), each built the slow way (:func:`zero.records._build_slow`), whatever the tables hold."""
+Declared = tuple[Any, dict[str, Any], bool, bool, bool]  # (records._Shell, the body made of it, flags)
+
+
+def declared() -> list[Declared]:
+    """Every record of every zero module as declared (what it is made from, the body worked out of it, its
+    flags), each worked out the slow way (:func:`zero.records._body_slow`), whatever the tables hold."""
     import zero.records as records
 
-    seen: list[tuple[type, type, bool, bool, bool]] = []
+    seen: list[Declared] = []
 
-    def capture(cls: type, frozen: bool, eq: bool, unsafe_hash: bool) -> type:
-        made = records._build_slow(cls, frozen, eq, unsafe_hash)
-        seen.append((cls, made, frozen, eq, unsafe_hash))
-        return made
+    def capture(shell: Any, frozen: bool, eq: bool, unsafe_hash: bool) -> tuple[dict[str, Any], list[type]]:
+        body, owner = records._body_slow(shell, frozen, eq, unsafe_hash)
+        seen.append((shell, body, frozen, eq, unsafe_hash))
+        return body, owner
 
-    build = records._build
-    records._build = capture
+    body_of = records._body
+    records._body = capture
     try:
         import zero
 
@@ -102,29 +106,29 @@ def declared() -> list[tuple[type, type, bool, bool, bool]]:
                 if not info.name.startswith(_OPTIONAL):
                     raise
     finally:
-        records._build = build
+        records._body = body_of
     return seen
 
 
-def _listable(cls: type) -> bool:
-    """Whether :func:`zero.records._build` can take ``cls`` from the table: no record base, declared once
+def _listable(shell: Any) -> bool:
+    """Whether :func:`zero.records._body` can take a record from the table: no record base, declared once
     by its module (not in a function), annotations as text."""
     import zero.records as records
 
-    ns = cls.__dict__
-    annotations = ns.get("__annotations__") or {}
-    return (not any(records._FIELDS in base.__dict__ for base in cls.__mro__[1:-1])
-            and "<locals>" not in cls.__qualname__ and all(isinstance(a, str) for a in annotations.values()))
+    annotations = shell.ns.get("__annotations__") or {}
+    return (not any(records._FIELDS in base.__dict__ for base in shell.ancestors)
+            and "<locals>" not in shell.qualname and all(isinstance(a, str) for a in annotations.values()))
 
 
-def entry(cls: type, made: type, frozen: bool, eq: bool, unsafe_hash: bool) -> tuple[str, tuple[object, ...]]:
+def entry(shell: Any, body: dict[str, Any], frozen: bool, eq: bool,
+          unsafe_hash: bool) -> tuple[str, tuple[object, ...]]:
     """A record's ``__init__`` text and its entry in the table but for the code (see
-    :func:`zero.records._build`): the class its body made, the record made of it (the slow way), its flags."""
+    :func:`zero.records._body`): what it is made from, the body worked out of it (the slow way), its flags."""
     import zero.records as records
 
-    ns = cls.__dict__
-    all_fields = records.fields(made)
-    post_init = "__post_init__" in ns or any(hasattr(b, "__post_init__") for b in cls.__mro__[1:-1])
+    ns = shell.ns
+    all_fields = body[records._FIELDS]
+    post_init = "__post_init__" in ns or any(hasattr(b, "__post_init__") for b in shell.ancestors)
     valued = tuple(f.name for f in all_fields if f.name in ns)
     declared = tuple((at, (f.default is not records.MISSING, f.default_factory is not records.MISSING, f.repr,
                            f.compare))
@@ -135,7 +139,7 @@ def entry(cls: type, made: type, frozen: bool, eq: bool, unsafe_hash: bool) -> t
     compared = tuple(f.name for f in all_fields if f.compare)
     source = records.init_source(all_fields, frozen, post_init)[0]
     return source, (ns.get("__annotations__"), (frozen, eq, unsafe_hash, post_init), valued, declared, required,
-                    names, made.__dict__["__record_shown__"], compared)
+                    names, body["__record_shown__"], compared)
 
 
 def code_of(source: str) -> CodeType:
@@ -150,12 +154,12 @@ def _function(source: str) -> list[str]:
     return [_DEFAULT.sub("=None", head), body if body else "    pass"]
 
 
-def render(found: list[tuple[type, type, bool, bool, bool]], which: str, rest_modules: list[str] | None) -> str:
+def render(found: list[Declared], which: str, rest_modules: list[str] | None) -> str:
     """A table's module text: the ``__init__`` code of its records, each distinct text once, the records
-    :func:`zero.records._build` takes from it by module and qualified name, and by its text the ``__init__``
+    :func:`zero.records._body` takes from it by module and qualified name, and by its text the ``__init__``
     of the others (a record with a record base)."""
     out = [f'"""The records {which}, worked out ahead of time: written by tools/gen_record_inits.py',
-           "(see :func:`zero.records._build`).",
+           "(see :func:`zero.records._body`).",
            "",
            "``RECORDS``: by module and qualified name, what declaring the record takes (its own annotations and",
            "flags, the fields with values, which of them are field()s and of which kind, the fields without: all",
@@ -175,9 +179,9 @@ def render(found: list[tuple[type, type, bool, bool, bool]], which: str, rest_mo
     codes: dict[str, str] = {}
     listed: dict[str, dict[str, str]] = {}
     by_text: list[str] = []
-    for cls, made, frozen, eq, unsafe_hash in found:
-        source, spec = entry(cls, made, frozen, eq, unsafe_hash)
-        if not _listable(cls):
+    for shell, body, frozen, eq, unsafe_hash in found:
+        source, spec = entry(shell, body, frozen, eq, unsafe_hash)
+        if not _listable(shell):
             if source not in by_text:
                 by_text.append(source)
             continue
@@ -186,7 +190,7 @@ def render(found: list[tuple[type, type, bool, bool, bool]], which: str, rest_mo
             out.extend(_function(source))
             out.append(f"{codes[source]} = __init__.__code__")
             out.append("")
-        listed.setdefault(cls.__module__, {})[cls.__qualname__] = f"{repr(spec)[:-1]}, {codes[source]})"
+        listed.setdefault(shell.module, {})[shell.qualname] = f"{repr(spec)[:-1]}, {codes[source]})"
     for source in sorted(by_text):
         out.extend(_function(source))
         out.append(f"INITS[{source!r}] = __init__.__code__")
@@ -210,9 +214,9 @@ def tables() -> dict[Path, str]:
     """Each table's file and text."""
     hot = lint_modules()
     found = declared()
-    first = [r for r in found if r[0].__module__ in hot]
-    rest = [r for r in found if r[0].__module__ not in hot]
-    rest_modules = sorted({r[0].__module__ for r in rest})
+    first = [r for r in found if r[0].module in hot]
+    rest = [r for r in found if r[0].module not in hot]
+    rest_modules = sorted({r[0].module for r in rest})
     return {SRC / "record_inits.py": render(first, "of the modules a list's lint loads", rest_modules),
             SRC / "record_inits_rest.py": render(rest, "of the other modules", None)}
 

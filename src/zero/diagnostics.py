@@ -7,7 +7,7 @@ character), so a span of width zero marks a position between two characters.
 
 from __future__ import annotations
 
-from zero.records import field, record
+from zero.records import Record, field
 
 TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (mypy and ruff read it alike)
 if TYPE_CHECKING:
@@ -119,8 +119,7 @@ _BY_NAME = {m.name: m for m in _MEMBERS}
 _BY_VALUE: dict[object, Severity] = {m.value: m for m in _MEMBERS}
 
 
-@record(frozen=True)
-class Span:
+class Span(Record, frozen=True):
     """A region of a file: 1-based line and column, end column exclusive."""
 
     line: int
@@ -134,16 +133,14 @@ class Span:
         return cls(line, start + 1, line, max(end, start) + 1)
 
 
-@record(frozen=True)
-class Edit:
+class Edit(Record, frozen=True):
     """Replace the text of ``span`` with ``replacement``."""
 
     span: Span
     replacement: str
 
 
-@record(frozen=True)
-class Fix:
+class Fix(Record, frozen=True):
     """A change that resolves a finding. ``safe`` fixes keep what the controller reads."""
 
     title: str
@@ -167,8 +164,7 @@ class Fix:
         }
 
 
-@record(frozen=True)
-class Related:
+class Related(Record, frozen=True):
     """Another place a finding is about, e.g. the earlier entry a duplicate overwrites; ``path``
     ``None`` is the finding's own file."""
 
@@ -177,8 +173,7 @@ class Related:
     path: str | None = None
 
 
-@record(frozen=True)
-class Diagnostic:
+class Diagnostic(Record, frozen=True):
     """One finding. ``hint`` is a one-line suggestion shown under the source line."""
 
     code: str

@@ -22,7 +22,7 @@ from zero.errors import ZeroError
 from zero.lists.model import Comment, Document, Entry, Key, ValueKind, parse_key
 from zero.lists.tokenizer import tokenize_text
 from zero.markup import read_document
-from zero.records import field, record
+from zero.records import Record, field
 
 TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (mypy and ruff read it alike)
 if TYPE_CHECKING:
@@ -31,8 +31,7 @@ if TYPE_CHECKING:
 ADDED, REMOVED, CHANGED, SAME, COMMENT = "added", "removed", "changed", "same", "comment"
 
 
-@record
-class Side:
+class Side(Record):
     """One file as the controller reads it: effective entries by key."""
 
     path: str
@@ -47,8 +46,7 @@ class Side:
                     {**target.comments, **self.comments})
 
 
-@record
-class Change:
+class Change(Record):
     key: str
     param_id: str | None
     kind: str  # added, removed, changed, same (equal effective value, shown with strict), comment
@@ -425,8 +423,7 @@ def key_order(key: str) -> tuple[Any, ...]:
 # ----------------------------------------------------------------- the diff
 
 
-@record
-class DiffOptions:
+class DiffOptions(Record):
     strict: bool = False  # also show default vs absent and respelled equal values
     comments: bool = False  # comment changes count
 

@@ -1,5 +1,5 @@
 """The records of the other modules, worked out ahead of time: written by tools/gen_record_inits.py
-(see :func:`zero.records._build`).
+(see :func:`zero.records._body`).
 
 ``RECORDS``: by module and qualified name, what declaring the record takes (its own annotations and
 flags, the fields with values, which of them are field()s and of which kind, the fields without: all

@@ -3,14 +3,19 @@
 ``dataclasses`` imports :mod:`inspect` (and with it ``ast``, ``dis`` and ``tokenize``: about
 10 ms) and compiles each method of each class. ``zero lint`` declares some forty records
 before it reads the first line, so a pre-commit run spent a third of its start-up there.
-:func:`record` writes only ``__init__`` (which must be as fast as a dataclass's: a big list
-builds one record per line); ``__repr__``, ``__eq__`` and ``__hash__`` are shared by all records.
+A record is declared as a class naming :class:`Record` among its bases, ``class Span(Record,
+frozen=True):``, which makes the record of the class statement's body in one step; the
+:func:`record` decorator (``@record(frozen=True)``) makes the same record of a class already made,
+a second class (what zero's ``Rule`` needs: its K subclass is a plain class). Only ``__init__`` is
+written per record (it must be as fast as a dataclass's: a big list builds one record per line);
+``__repr__``, ``__eq__`` and ``__hash__`` are shared by all records.
 For the records of zero, what the fields are and their ``__init__`` compiled are worked out ahead
 of time (:mod:`zero.record_inits`, by ``tools/gen_record_inits.py``): declaring one checks that the
 table still describes the class and takes the rest from there. Any other record (a test's, or one
 with a record base) is worked out as it is declared, its ``__init__`` compiled at its first
-instance. It is marked ``dataclass_transform``, so type checkers read a record exactly as they
-read a dataclass.
+instance. Both are marked ``dataclass_transform``, so type checkers read a record exactly as they
+read a dataclass (a subclass of a Record is a record to them; at run time it is one where it names
+``Record`` too, as a subclass of a decorated class is one where it is decorated).
 
 What it builds, as ``@dataclass(slots=True, ...)`` does: ``__slots__`` (always),
 ``__init__`` (calling ``__post_init__`` when the class has one), ``__repr__``, ``__eq__``
@@ -30,11 +35,12 @@ from types import FunctionType
 from zero.hints import dataclass_transform, overload
 from zero.record_inits import INITS, RECORDS, REST_MODULES
 
-__all__ = ["Field", "field", "fields", "record", "replace"]
+__all__ = ["Field", "Record", "field", "fields", "record", "replace"]
 
 # typing is imported for type checkers only (zero.hints: `overload` and `dataclass_transform` at run time)
 TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (mypy and ruff read it alike)
 if TYPE_CHECKING:
+    from types import MappingProxyType
     from typing import Any, TypeVar
 
     _T = TypeVar("_T")
@@ -188,45 +194,57 @@ class _LazyFields(tuple):  # type: ignore[type-arg]  # (Any is for type checkers
         return out
 
 
-def _build(cls: type, frozen: bool, eq: bool, unsafe_hash: bool) -> type:
-    """``cls`` made a record: from what ``tools/gen_record_inits.py`` worked out ahead of time for it, kept in
-    :mod:`zero.record_inits` (or ``record_inits_rest``) by module and qualified name, where that still
-    describes the class (its own annotations, flags, which fields have values and of which kind); else by
-    :func:`_build_slow`. Working fields, defaults and ``__init__`` out was most of declaring a record (issue 40)."""
-    module = cls.__module__
+class _Shell:
+    """What a record is made from: its name, module and qualified name, the classes its MRO will hold
+    between it and ``object`` (less :class:`Record`), and its class body (``ns``: the class's dict, or
+    the namespace its class statement built)."""
+
+    __slots__ = ("ancestors", "module", "name", "ns", "qualname")
+
+    def __init__(self, name: str, qualname: str, module: str, ancestors: tuple[type, ...],
+                 ns: dict[str, Any] | MappingProxyType[str, Any]) -> None:
+        self.name, self.qualname, self.module, self.ancestors, self.ns = name, qualname, module, ancestors, ns
+
+
+def _body(shell: _Shell, frozen: bool, eq: bool, unsafe_hash: bool) -> tuple[dict[str, Any], list[type] | None]:
+    """The body of the record ``shell`` describes, from what ``tools/gen_record_inits.py`` worked out ahead of
+    time for it, kept in :mod:`zero.record_inits` (or ``record_inits_rest``) by module and qualified name,
+    where that still describes the class (its own annotations, flags, which fields have values and of which
+    kind); else by :func:`_body_slow`. Working fields, defaults and ``__init__`` out was most of declaring a
+    record (issue 40). The list returned (the slow way only) is to hold the class made of the body."""
+    module = shell.module
     listed = RECORDS.get(module)
     if listed is None:
         if module not in REST_MODULES:
-            return _build_slow(cls, frozen, eq, unsafe_hash)
+            return _body_slow(shell, frozen, eq, unsafe_hash)
         from zero.record_inits_rest import RECORDS as rest  # start-up: the records a list's lint does not load
 
         listed = rest.get(module)
         if listed is None:
-            return _build_slow(cls, frozen, eq, unsafe_hash)
-    spec = listed.get(cls.__qualname__)
-    ns = cls.__dict__
+            return _body_slow(shell, frozen, eq, unsafe_hash)
+    spec = listed.get(shell.qualname)
+    ns = shell.ns
     if spec is None:
-        return _build_slow(cls, frozen, eq, unsafe_hash)
+        return _body_slow(shell, frozen, eq, unsafe_hash)
     annotations, flags, valued, declared, without, names, shown, compared, code = spec
-    mro = cls.__mro__
+    bases = shell.ancestors
     post_init = "__post_init__" in ns
-    if len(mro) > 2:
-        bases = mro[1:-1]
+    if bases:
         for base in bases:
             if _FIELDS in base.__dict__:  # fields of a record base: worked out as it is
-                return _build_slow(cls, frozen, eq, unsafe_hash)
+                return _body_slow(shell, frozen, eq, unsafe_hash)
         post_init = post_init or any(hasattr(b, "__post_init__") for b in bases)
     if (ns.get("__annotations__") != annotations or flags != (frozen, eq, unsafe_hash, post_init)
             or not ns.keys().isdisjoint(without)):
-        return _build_slow(cls, frozen, eq, unsafe_hash)
+        return _body_slow(shell, frozen, eq, unsafe_hash)
     body = ns.copy()  # the class dict itself, copied (dict(ns) reads a mappingproxy key by key)
     try:
         values = list(map(body.pop, valued))  # the fields' values, out of the body
     except KeyError:  # a field the table says has one has none
-        return _build_slow(cls, frozen, eq, unsafe_hash)
+        return _body_slow(shell, frozen, eq, unsafe_hash)
     scope = _SCOPE
     if list(map(type, values)).count(Field) != len(declared):  # not the fields the table says are field()s
-        return _build_slow(cls, frozen, eq, unsafe_hash)
+        return _body_slow(shell, frozen, eq, unsafe_hash)
     defaults = values
     if declared:
         defaults = values.copy()
@@ -235,7 +253,7 @@ def _build(cls: type, frozen: bool, eq: bool, unsafe_hash: bool) -> type:
             f = values[at]
             if f.__class__ is not Field or kind != (f.default is not MISSING, f.default_factory is not MISSING,
                                                      f.repr, f.compare):
-                return _build_slow(cls, frozen, eq, unsafe_hash)
+                return _body_slow(shell, frozen, eq, unsafe_hash)
             if kind[1]:
                 if scope is _SCOPE:
                     scope = dict(_SCOPE)
@@ -249,16 +267,17 @@ def _build(cls: type, frozen: bool, eq: bool, unsafe_hash: bool) -> type:
         if required:
             defaults = [d for d in defaults if d is not _Missing]
     init = ns.get("__init__") or FunctionType(code, scope, "__init__", tuple(defaults) or None)
-    return _finish(cls, body, mro[1:-1], names, _LazyFields((names, valued, values)), init, shown, compared,
-                   frozen, eq, unsafe_hash)
+    return _finish(shell, body, names, _LazyFields((names, valued, values)), init, shown, compared, frozen, eq,
+                   unsafe_hash), None
 
 
-def _finish(cls: type, body: dict[str, Any], bases: tuple[type, ...], names: tuple[str, ...], fields: Any,
-            init: Any, shown: tuple[str, ...], compared: tuple[str, ...], frozen: bool, eq: bool,
-            unsafe_hash: bool) -> type:
-    """The record made of ``cls``'s ``body``: its slots, fields, ``__init__`` and the shared methods, each
-    where the class does not define its own (both ways of declaring a record end here)."""
-    ns = cls.__dict__
+def _finish(shell: _Shell, body: dict[str, Any], names: tuple[str, ...], fields: Any, init: Any,
+            shown: tuple[str, ...], compared: tuple[str, ...], frozen: bool, eq: bool,
+            unsafe_hash: bool) -> dict[str, Any]:
+    """The record's ``body`` completed: its slots, fields, ``__init__`` and the shared methods, each where
+    the class does not define its own (both ways of working a record out end here)."""
+    ns = shell.ns
+    bases = shell.ancestors
     body.pop("__dict__", None)
     body.pop("__weakref__", None)
     if bases:
@@ -294,8 +313,8 @@ def _finish(cls: type, body: dict[str, Any], bases: tuple[type, ...], names: tup
             body["__delattr__"] = _frozen_delattr
         body["__record_frozen__"] = True
         body["__record_names__"] = frozenset(names)
-    body["__qualname__"] = cls.__qualname__
-    return type(cls)(cls.__name__, cls.__bases__, body)
+    body["__qualname__"] = shell.qualname
+    return body
 
 
 def _own_fields(cls: type) -> tuple[Field, ...]:
@@ -304,15 +323,15 @@ def _own_fields(cls: type) -> tuple[Field, ...]:
     return got.__get__(None, cls) if got.__class__ is _LazyFields else got
 
 
-def _build_slow(cls: type, frozen: bool, eq: bool, unsafe_hash: bool) -> type:
+def _body_slow(shell: _Shell, frozen: bool, eq: bool, unsafe_hash: bool) -> tuple[dict[str, Any], list[type]]:
     # The class's own annotations (strings: every zero module imports annotations from __future__;
     # 3.10 and later answer for the class alone); inspect is what this module avoids.
-    ns = cls.__dict__
+    ns = shell.ns
     own: dict[str, Any] = ns.get("__annotations__") or {}
     declared_here = [name for name, annotation in own.items()
                      if not (annotation.startswith(_CLASSVAR) if annotation.__class__ is str
                              else _is_classvar(annotation))]
-    bases = cls.__mro__[1:-1]
+    bases = shell.ancestors
     body = ns.copy()  # the class dict itself, copied (dict(ns) reads a mappingproxy key by key)
     if any(_FIELDS in base.__dict__ for base in bases):
         by_name: dict[str, Field] = {}
@@ -333,17 +352,77 @@ def _build_slow(cls: type, frozen: bool, eq: bool, unsafe_hash: bool) -> type:
     for f in all_fields:
         if f.default is MISSING and f.default_factory is MISSING:
             if seen_default:
-                raise TypeError(f"{cls.__name__}: field {f.name!r} without a default follows one with a default")
+                raise TypeError(f"{shell.name}: field {f.name!r} without a default follows one with a default")
         else:
             seen_default = True
 
-    owner: list[type] = []  # the class built below, whose __init__ the first call makes
+    owner: list[type] = []  # the class made of the body, whose __init__ the first call makes
     post_init = "__post_init__" in body or any(hasattr(b, "__post_init__") for b in bases)
     init = ns.get("__init__") or _first_init(all_fields, frozen, post_init, owner)
-    new = _finish(cls, body, bases, names, all_fields, init, tuple(f.name for f in all_fields if f.repr),
-                  tuple(f.name for f in all_fields if f.compare), frozen, eq, unsafe_hash)
-    owner.append(new)
-    return new
+    return _finish(shell, body, names, all_fields, init, tuple(f.name for f in all_fields if f.repr),
+                   tuple(f.name for f in all_fields if f.compare), frozen, eq, unsafe_hash), owner
+
+
+def _build(cls: type, frozen: bool, eq: bool, unsafe_hash: bool) -> type:
+    """``cls`` made a record (``@record``): a second class, made of its body with slots."""
+    shell = _Shell(cls.__name__, cls.__qualname__, cls.__module__, cls.__mro__[1:-1], cls.__dict__)
+    body, owner = _body(shell, frozen, eq, unsafe_hash)
+    made: type = type(cls)(cls.__name__, cls.__bases__, body)
+    if owner is not None:
+        owner.append(made)
+    return made
+
+
+def _linearized(bases: tuple[type, ...]) -> list[type]:
+    """The MRO a class with ``bases`` gets, less the class itself (C3, as ``type`` works it out)."""
+    seqs = [list(b.__mro__) for b in bases] + [list(bases)]
+    out: list[type] = []
+    while True:
+        seqs = [q for q in seqs if q]
+        if not seqs:
+            return out
+        for q in seqs:
+            head = q[0]
+            if not any(head in other[1:] for other in seqs):
+                break
+        else:
+            raise TypeError(f"no consistent method resolution order for bases {bases}")
+        out.append(head)
+        for q in seqs:
+            if q[0] is head:
+                del q[0]
+
+
+@dataclass_transform(field_specifiers=(field, Field))
+class _RecordMeta(type):
+    """The class of :class:`Record` alone: a class statement naming ``Record`` among its bases makes a record of
+    its body in one step (a decorator is handed a class already made and has to make a second one with slots:
+    issue 40, start-up). The record made is a plain class, ``Record`` left out of its bases: a class of another
+    metaclass would make every ``isinstance`` with it take Python's slow way (``__instancecheck__``). A
+    subclass of a record is thus a record only where it names ``Record`` too, as with ``@record``."""
+
+    def __new__(mcls, name: str, bases: tuple[type, ...], ns: dict[str, Any], *, frozen: bool = False,
+                eq: bool = True, unsafe_hash: bool = False) -> _RecordMeta:
+        if not bases:  # Record itself
+            return super().__new__(mcls, name, bases, ns)
+        real = tuple(b for b in bases if b is not Record)
+        ancestors = (real[0].__mro__[:-1] if len(real) == 1
+                     else tuple(c for c in _linearized(real) if c is not object))
+        shell = _Shell(name, ns.get("__qualname__", name), ns.get("__module__", ""), ancestors, ns)
+        body, owner = _body(shell, frozen, eq, unsafe_hash)
+        made: _RecordMeta = type.__new__(type, name, real, body)  # type: ignore[assignment]
+        if owner is not None:
+            owner.append(made)
+        return made
+
+
+class Record(metaclass=_RecordMeta):
+    """Names a record: ``class Span(Record, frozen=True):`` with fields as annotations, as
+    ``@dataclass(slots=True, frozen=True)`` reads them (``frozen``, ``eq`` and ``unsafe_hash`` as there).
+    The record is made in one step (the class statement's body made a record before the class is), a plain
+    class with slots: ``Record`` is not among its bases once made."""
+
+    __slots__ = ()
 
 
 def init_source(all_fields: tuple[Field, ...], frozen: bool, post_init: bool) -> tuple[str, dict[str, Any],

@@ -15,7 +15,7 @@ first finding, once per process; a claim's rows become :class:`Claim` objects at
 from __future__ import annotations
 
 from zero.diagnostics import Severity
-from zero.records import record
+from zero.records import Record
 
 # consequences that a document must back for an error (and `unchecked`: zero could not read the file)
 DOCUMENTED = frozenset({"ignored", "limited", "zeroed", "replaced", "corrected", "rejected", "aborted"})
@@ -23,8 +23,7 @@ DOCUMENTED = frozenset({"ignored", "limited", "zeroed", "replaced", "corrected",
 CONSEQUENCES = DOCUMENTED | {"undocumented", "behaviour", "not-applicable", "vendor-writes", "unchecked", "reported"}
 
 
-@record(frozen=True)
-class Claim:
+class Claim(Record, frozen=True):
     """One claim about the controller, as the evidence table states it."""
 
     name: str

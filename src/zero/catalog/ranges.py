@@ -22,7 +22,7 @@ from __future__ import annotations
 from collections.abc import Callable
 
 from zero.patterns import VERBOSE, compiled
-from zero.records import record
+from zero.records import Record
 
 TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (mypy and ruff read it alike)
 if TYPE_CHECKING:
@@ -57,8 +57,7 @@ def format_number(n: Number | None) -> str:
     return str(n)
 
 
-@record(frozen=True)
-class Num:
+class Num(Record, frozen=True):
     value: Number
 
     def eval(self, resolve: Resolver) -> Number | None:
@@ -68,8 +67,7 @@ class Num:
         return str(self.value)
 
 
-@record(frozen=True)
-class Limit:
+class Limit(Record, frozen=True):
     """``MIN(TYPE)`` or ``MAX(TYPE)``."""
 
     which: str
@@ -85,8 +83,7 @@ class Limit:
         return f"{self.which}({self.type})"
 
 
-@record(frozen=True)
-class Ref:
+class Ref(Record, frozen=True):
     """Another parameter's value: ``P-AXIS-00008`` or ``P-AXIS-00209.1``."""
 
     id: str
@@ -99,8 +96,7 @@ class Ref:
         return self.id if self.index is None else f"{self.id}.{self.index}"
 
 
-@record(frozen=True)
-class BinOp:
+class BinOp(Record, frozen=True):
     op: str
     left: Expr
     right: Expr
@@ -123,8 +119,7 @@ class BinOp:
         return f"{self.left}{self.op}{self.right}"
 
 
-@record(frozen=True)
-class Neg:
+class Neg(Record, frozen=True):
     operand: Expr
 
     def eval(self, resolve: Resolver) -> Number | None:
@@ -138,8 +133,7 @@ class Neg:
 Expr = Num | Limit | Ref | BinOp | Neg
 
 
-@record(frozen=True)
-class Bounds:
+class Bounds(Record, frozen=True):
     """Evaluated limits: ``None`` where a side is open or could not be resolved."""
 
     low: Number | None
@@ -155,8 +149,7 @@ class Bounds:
         )
 
 
-@record(frozen=True)
-class Range:
+class Range(Record, frozen=True):
     """A parsed range: bounds, or an explicit set of allowed values."""
 
     low: Expr | None = None

@@ -21,7 +21,7 @@ from operator import itemgetter
 
 from zero.catalog.ranges import Range, decode_range, encoded_refers, parse_range
 from zero.forms import kind_hint
-from zero.records import field, record
+from zero.records import Record, field
 
 try:  # the C search itself: bisect.py only re-exports it (half the import's cost at start-up)
     from _bisect import bisect_left
@@ -71,8 +71,7 @@ def kind_from_name(text: str) -> str | None:
     return _NAME_TO_KIND.get(t.lower())
 
 
-@record
-class ParamSpec:
+class ParamSpec(Record):
     """Everything zero knows about one parameter."""
 
     id: str
@@ -428,8 +427,7 @@ class SpecTable(Mapping[str, "ParamSpec"]):
         return [t for t in self.keys_by_kind() if t[2].endswith("_anzahl")]
 
 
-@record
-class Registry:
+class Registry(Record):
     """Lookup by ID and by concrete key, per list kind."""
 
     specs: Mapping[str, ParamSpec]

@@ -27,7 +27,7 @@ from collections.abc import Callable
 from zero.errors import ZeroError
 from zero.lists.model import format_key
 from zero.patterns import compiled
-from zero.records import record
+from zero.records import Record
 
 TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (mypy and ruff read it alike)
 if TYPE_CHECKING:
@@ -77,8 +77,7 @@ def _release_tuple(release: str) -> tuple[int, ...] | None:
     return None if release == UNKNOWN_RELEASE else parse_release(release)
 
 
-@record(frozen=True)
-class Rename:
+class Rename(Record, frozen=True):
     """``old`` is an older spelling of today's ``new`` (``id``), as ``source`` shows.
 
     ``release`` is the kernel release of the list the source shows ``old`` in (``"unknown"``
@@ -105,8 +104,7 @@ class Rename:
         return self.source.startswith(VENDOR_SOURCE)
 
 
-@record(frozen=True)
-class Removal:
+class Removal(Record, frozen=True):
     """``old`` is absent from the catalogue; ``source`` shows it in a list of ``release``.
 
     What zero knows is exactly that: not whether that release's kernel read the key, nor what
@@ -121,8 +119,7 @@ class Removal:
     release_tuple = property(lambda self: _release_tuple(self.release), doc="The release, comparable.")
 
 
-@record(frozen=True)
-class Prefix:
+class Prefix(Record, frozen=True):
     """A subtree written ``old…`` in older lists and ``new…`` today (``antr_simu.`` → ``antr.simu.``)."""
 
     old: str
@@ -133,8 +130,7 @@ class Prefix:
     see: tuple[str, ...] = ()
 
 
-@record(frozen=True)
-class ReleaseTable:
+class ReleaseTable(Record, frozen=True):
     """The rows of ``data/releases.toml``, in file order."""
 
     renames: tuple[Rename, ...]

@@ -21,7 +21,7 @@ from zero.catalog.registry import INTEGER_TYPES, NO_DEFAULT, ParamSpec, Registry
 from zero.hints import overload
 from zero.lists.model import HUGE_INDEX, MAX_INDEX_DIGITS, Document, Entry, ValueKind, format_key, parse_key
 from zero.patterns import compiled
-from zero.records import field, record
+from zero.records import Record, field
 
 TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (mypy and ruff read it alike)
 if TYPE_CHECKING:
@@ -107,8 +107,7 @@ def canonical_key(registry: Registry, kind: str | None, entry: Entry) -> str:
     return format_key(pattern, key.indices)
 
 
-@record
-class Value:
+class Value(Record):
     """An entry's value as the controller reads it for its parameter."""
 
     number: Number | None = None  # the numeric value, when there is one
@@ -366,8 +365,7 @@ def _unindexed(text: str) -> tuple[str, tuple[int, ...], bool] | None:
     return got  # type: ignore[no-any-return]
 
 
-@record
-class ListValues:
+class ListValues(Record):
     """The entries of one list bound to their parameters, and the values the controller uses.
 
     Bound per distinct key pattern, over the document's columns (:attr:`Document.columns`): the rows

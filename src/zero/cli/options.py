@@ -17,7 +17,7 @@ from zero.files import path_str
 from zero.forms import LIST_SUFFIXES, PROGRAM_SUFFIXES, XML_SUFFIX
 from zero.output.formats import OUTPUT_FORMATS
 from zero.output.formats import help_text as format_help
-from zero.records import record
+from zero.records import Record
 
 TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (mypy and ruff read it alike)
 if TYPE_CHECKING:
@@ -30,8 +30,7 @@ class PathOption:
     start-up), a ``pathlib.Path`` to typer (:mod:`zero.cli.app`, which completes file names for it)."""
 
 
-@record(frozen=True)
-class Option:
+class Option(Record, frozen=True):
     dest: str  # the keyword of zero.cli.run.lint
     flags: tuple[str, ...]  # long name first
     help: str

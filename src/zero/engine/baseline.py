@@ -15,15 +15,14 @@ import re
 from zero.engine.lint import LintResult
 from zero.lists.encoding import document_bytes
 from zero.lists.model import CommentStyle, Entry
-from zero.records import record
+from zero.records import Record
 
 _NOQA_CODES = re.compile(r"noqa\s*:\s*([A-Z][0-9A-Z]*(?:[\s,]+[A-Z][0-9A-Z]*)*)", re.IGNORECASE)
 
 NOT_RECORDED = ("Z001", "Z002")  # findings about suppressions themselves
 
 
-@record
-class Baseline:
+class Baseline(Record):
     data: bytes
     added: int  # lines that got a directive
     unplaced: int  # findings on lines without an entry

@@ -22,7 +22,7 @@ from zero.engine.selection import known_code, rule_table
 from zero.errors import ZeroError
 from zero.files import path_str, read_file, switched_on, write_atomic
 from zero.forms import PROJECT_ROOTS, TWINCAT_ROOT, is_list, is_program, is_update, is_xml, walked_names
-from zero.records import field, record, replace
+from zero.records import Record, field, replace
 
 TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (mypy and ruff read it alike)
 if TYPE_CHECKING:
@@ -35,8 +35,7 @@ if TYPE_CHECKING:
 Progress = Callable[[int, int], None]
 
 
-@record
-class Echo:
+class Echo(Record):
     """Where a command's streamed text goes (standard output and error on the command line)."""
 
     out: Callable[[str], None]
@@ -73,8 +72,7 @@ def parse_kind(kind: str | None) -> str | None:
 # ------------------------------------------------------------------------------ lint
 
 
-@record
-class LintRequest:
+class LintRequest(Record):
     """What ``zero lint`` was asked to do (option names as on the command line)."""
 
     paths: Sequence[str] = ()
@@ -105,8 +103,7 @@ class LintRequest:
         return paths in ([], ["-"]) and (self.stdin_filename is not None or paths == ["-"])
 
 
-@record
-class LintRun:
+class LintRun(Record):
     # A list, or with ``LintRequest.stream`` an iterator to read once (count with ``Totals``)
     results: Iterable[LintResult] = field(default_factory=list)
     report: bool = True  # False: nothing to report (standard input excluded by the configuration)

@@ -26,7 +26,7 @@ from zero.errors import ZeroError
 from zero.files import path_str, read_file
 from zero.forms import CONFIG_NAMES, DEFAULT_INCLUDE
 from zero.patterns import compiled
-from zero.records import field, record, replace
+from zero.records import Record, field, replace
 
 TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (mypy and ruff read it alike)
 if TYPE_CHECKING:
@@ -111,8 +111,7 @@ def _suffixes(globs: tuple[str, ...]) -> tuple[str, ...] | None:
 _OPTIONS: dict[tuple[object, ...], tuple[Config, LintOptions, LintOptions]] = {}
 
 
-@record
-class Config:
+class Config(Record):
     path: str | None = None  # the file it came from, as a Path prints it (zero.files.path_str); None: defaults
     select: tuple[str, ...] = ()
     extend_select: tuple[str, ...] = ()

@@ -22,7 +22,7 @@ from zero.errors import ZeroError
 from zero.files import nearest_holding, within
 from zero.forms import DEFAULT_INCLUDE, controller_absolute
 from zero.lists.model import parse_key
-from zero.records import record
+from zero.records import Record
 
 TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (mypy and ruff read it alike)
 if TYPE_CHECKING:  # (pathlib only for the keys that name files: param-desc, [tool.zero.machine])
@@ -105,8 +105,7 @@ def _roots(value: Any, folder: Path, root: Path,
 # [tool.zero]) are all made from OPTIONS; tests/test_declarations.py holds the page and the schema to it.
 
 
-@record(frozen=True)
-class ConfigOption:
+class ConfigOption(Record, frozen=True):
     """One key of the configuration (as ruff's ``#[option(default, value_type, example)]``)."""
 
     key: str

@@ -26,13 +26,12 @@ from zero.files import read_file, write_atomic
 from zero.forms import CONFIG_NAMES, EXTENSION, TWINCAT, format_of, split_part, xml_form
 from zero.lists.encoding import document_bytes
 from zero.lists.tokenizer import tokenize
-from zero.records import field, record
+from zero.records import Record, field
 from zero.structured.formats import read_tree, write_tree
 from zero.structured.tree import Tree, from_document
 
 
-@record
-class Conversion:
+class Conversion(Record):
     output: bytes
     tree: Tree
     notes: list[str] = field(default_factory=list)
@@ -135,8 +134,7 @@ def source_format(given: str | None, path: str) -> str:
     return fmt
 
 
-@record
-class ConvertItem:
+class ConvertItem(Record):
     """One input of ``zero convert``: its output, or why there is none."""
 
     name: str

@@ -19,7 +19,7 @@ from zero.forms import is_xml
 from zero.lists.encoding import document_bytes
 from zero.lists.model import Document
 from zero.lists.tokenizer import split_lines, tokenize
-from zero.records import record
+from zero.records import Record
 
 MAX_PASSES = 8
 
@@ -64,8 +64,7 @@ def _fixable(diagnostics: list[Diagnostic], unsafe: bool) -> list[Edit]:
     return [e for d in diagnostics if d.fix is not None and (d.fix.safe or unsafe) for e in d.fix.edits]
 
 
-@record
-class FixResult:
+class FixResult(Record):
     fixed: bytes
     applied: int
     result: LintResult  # the findings left after fixing

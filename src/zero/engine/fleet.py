@@ -63,7 +63,7 @@ from zero.errors import ZeroError
 from zero.files import read_file, within
 from zero.machine.effective import entries_of
 from zero.machine.model import Machine
-from zero.records import field, record
+from zero.records import Record, field
 
 TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (mypy and ruff read it alike)
 if TYPE_CHECKING:  # start-up: the cache only when it is on; typing for type checkers only
@@ -83,8 +83,7 @@ MISSING, EXTRA = "missing", "extra"  # ListDrift.status
 # ----------------------------------------------------------------------------- results
 
 
-@record
-class FleetValue:
+class FleetValue(Record):
     """One value some machines have instead of the golden one."""
 
     value: str | None  # as the first machine with it writes it; None: not set there (the catalogue default)
@@ -98,8 +97,7 @@ class FleetValue:
         return len(self.machines)
 
 
-@record
-class ParamDrift:
+class ParamDrift(Record):
     """One effective parameter of one list that differs from the golden machine on some machines."""
 
     scope: str  # the list, as zero diff --machine names it: axis 1 (achs_mds[0])
@@ -122,8 +120,7 @@ class ParamDrift:
         return [m for v in self.values for m in v.machines]
 
 
-@record
-class ListDrift:
+class ListDrift(Record):
     """A list the golden machine loads and some machines do not (``missing``), or the reverse (``extra``)."""
 
     scope: str  # axis 2 (achs_mds[1]), or a default list by its start-up key (default_achs_mds)
@@ -136,14 +133,12 @@ class ListDrift:
         return len(self.machines)
 
 
-@record
-class Unreadable:
+class Unreadable(Record):
     machine: str
     error: str
 
 
-@record
-class FleetDrift:
+class FleetDrift(Record):
     """What ``zero diff --fleet`` found."""
 
     golden: str
@@ -233,8 +228,7 @@ def machine_startups(paths: Sequence[str | Path], golden: str | Path | None = No
 # ----------------------------------------------------------------------------- one machine
 
 
-@record
-class _Found:
+class _Found(Record):
     """One parameter of one machine that differs from the golden machine (what a worker sends back)."""
 
     scope: str
@@ -252,8 +246,7 @@ class _Found:
     same: Hashable  # the effective value: machines with equal ones are one value
 
 
-@record
-class _MachineDrift:
+class _MachineDrift(Record):
     machine: str
     found: list[_Found] = field(default_factory=list)
     lists: list[tuple[str, str, str]] = field(default_factory=list)  # scope, status, reason
@@ -261,8 +254,7 @@ class _MachineDrift:
     deps: tuple[Any, ...] | None = None  # what the machine was read from, for the cache (None: not kept)
 
 
-@record
-class _Scope:
+class _Scope(Record):
     name: str
     key: str  # the start-up key that names the list (achs_mds[0]); the scope name for the start-up list
     kind: str | None
@@ -271,8 +263,7 @@ class _Scope:
     based: bool  # a default list lies under it
 
 
-@record
-class _Golden:
+class _Golden(Record):
     """The golden machine, as each comparison needs it (kept by the workers)."""
 
     project: Project
@@ -521,8 +512,7 @@ def _gather(golden: str, scopes: list[str], defaults: list[str], startups: list[
 # ----------------------------------------------------------------------------- the command
 
 
-@record
-class FleetRequest:
+class FleetRequest(Record):
     """What ``zero diff --fleet`` was asked (option names as on the command line)."""
 
     golden: str

@@ -20,7 +20,7 @@ from zero.forms import PROJECT_ROOTS, TWINCAT_ROOT, XML_ROOTS, is_list, is_xml
 from zero.lists.encoding import encode_text, foreign_control
 from zero.lists.model import Document
 from zero.lists.tokenizer import tokenize
-from zero.records import record
+from zero.records import Record
 from zero.structured.tree import DEFAULT_VALUE_COLUMN, from_document, to_list_text
 
 COMMENT_OFFSET = 15  # comments start this many columns after the value column
@@ -98,8 +98,7 @@ def _format_xml(data: bytes, path: str, registry: Registry, value_column: int | 
 # ------------------------------------------------------------------ zero format (the command)
 
 
-@record
-class FormatRun:
+class FormatRun(Record):
     """What ``zero format`` did: files looked at, changed, that could not be formatted or read."""
 
     files: int = 0

@@ -29,7 +29,7 @@ from collections.abc import Callable, Iterator
 from zero.errors import ZeroError
 from zero.files import describe, path_str
 from zero.forms import split_part
-from zero.records import record
+from zero.records import Record
 
 TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (mypy and ruff read it alike)
 if TYPE_CHECKING:  # start-up: subprocess only when git is asked (and pathlib never: folders are strings)
@@ -108,8 +108,7 @@ def run(folder: FileName, *args: str, timeout: float = TIMEOUT) -> subprocess.Co
 # ---------------------------------------------------------------------------- ignore rules
 
 
-@record
-class Visible:
+class Visible(Record):
     """What git says a walk of a folder sees: the files it does not ignore (relative paths,
     ``os.sep``-separated), or ``None`` with the reason (``""``: not a git work tree, or no git)."""
 

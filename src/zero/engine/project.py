@@ -39,7 +39,7 @@ from zero.engine.config import Config, ConfigFinder, is_inline
 from zero.engine.results import LintOptions
 from zero.errors import ZeroError
 from zero.files import path_str, read_file, resolve
-from zero.records import field, record
+from zero.records import Record, field
 
 TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (mypy and ruff read it alike)
 if TYPE_CHECKING:  # start-up: `zero lint` of lists loads no machine model (nor pathlib: its files are strings)
@@ -82,8 +82,7 @@ def shown_path(path: FileName, base: FileName | None) -> Path:
     return full
 
 
-@record(frozen=True)
-class Common:
+class Common(Record, frozen=True):
     """The options of every command that reads lists (declared once in :mod:`zero.cli.options`):
     ``--config`` (a file, or ``KEY = VALUE`` over the configuration that applies), ``--isolated``,
     ``--param-desc`` and the kernel release (``--kernel``, laid over as ``kernel = …``)."""
@@ -110,8 +109,7 @@ def common_of(config: FileName | Sequence[str] | None, isolated: bool = False,
     return Common(tuple(str(c) for c in given), isolated, path_str(param_desc) if param_desc else None, kernel)
 
 
-@record(frozen=True, eq=False)
-class Settings:
+class Settings(Record, frozen=True, eq=False):
     """Everything that applies to one file, resolved once: its configuration, the lint options with
     the command line laid over them (per-file ignores, severities, kind, code page, kernel release),
     the catalogue it is read against, and (lazily) the machine it belongs to. Every command and the

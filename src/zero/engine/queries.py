@@ -23,7 +23,7 @@ from zero.lists.model import parse_key
 from zero.machine.effective import Scope, effective, entries_of, summary
 from zero.machine.limits import Ip247Violation, LimitRow, ip247, pcs_limits
 from zero.machine.model import Machine
-from zero.records import field, record
+from zero.records import Record, field
 
 
 def load_side(name: str, fmt: str | None, kind: str | None, registry: Registry,
@@ -46,8 +46,7 @@ def _file_of(name: str) -> str:
     return file if part is not None and not os.path.exists(name) else name
 
 
-@record
-class DiffRun:
+class DiffRun(Record):
     changes: list[Change]
     header: str
 
@@ -136,8 +135,7 @@ def machine_changes(old: Machine, new: Machine, registry: Registry, options: Dif
 # ---------------------------------------------------------------------------- param
 
 
-@record
-class ParamLookup:
+class ParamLookup(Record):
     """What ``zero param NAME`` found: one parameter (with the indices the name gave), or the
     parameters whose key, ID or description contain the word."""
 
@@ -172,8 +170,7 @@ def find_param(registry: Registry, name: str, kind: str | None = None) -> ParamL
 # ---------------------------------------------------------------------------- limits
 
 
-@record
-class LimitsRun:
+class LimitsRun(Record):
     rows: list[LimitRow]
     violations: list[Ip247Violation] = field(default_factory=list)
 
@@ -202,8 +199,7 @@ def run_limits(project: Project, all_groups: bool = False, profile: str | None =
     return LimitsRun(pcs_limits(m, all_groups), ip247(m) if profile == "ip247" else [])
 
 
-@record
-class EffectiveRun:
+class EffectiveRun(Record):
     summary: dict[str, object]
     scopes: list[Scope]
 

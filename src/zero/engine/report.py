@@ -22,7 +22,7 @@ from zero.engine.queries import machine_changes, machine_of, program_travel_of
 from zero.errors import ZeroError
 from zero.forms import split_part
 from zero.machine.model import Machine
-from zero.records import field, record
+from zero.records import Record, field
 
 if TYPE_CHECKING:  # start-up: the fleet only for a report with --fleet
     from zero.engine.fleet import FleetDrift
@@ -31,8 +31,7 @@ Reader = Callable[[Path], bytes]
 Travel = tuple[str, int, dict[int, tuple[float, float]]]  # program, line past a soft limit (-1: none), axis spans
 
 
-@record
-class Compared:
+class Compared(Record):
     """The machine ``--against`` names, and how this machine differs from it."""
 
     given: str
@@ -41,8 +40,7 @@ class Compared:
     changes: list[Change] = field(default_factory=list)
 
 
-@record
-class ReportFacts:
+class ReportFacts(Record):
     """What ``zero report`` found: the page is laid out from it and from nothing else."""
 
     machine: Machine

@@ -11,15 +11,14 @@ from __future__ import annotations
 from collections.abc import Iterable, Iterator
 
 from zero.diagnostics import Diagnostic, Severity
-from zero.records import field, record
+from zero.records import Record, field
 
 TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (mypy and ruff read it alike)
 if TYPE_CHECKING:
     from zero.lists.model import Document
 
 
-@record
-class LintOptions:
+class LintOptions(Record):
     select: tuple[str, ...] = ()  # code prefixes; empty = all
     ignore: tuple[str, ...] = ()
     kind: str | None = None  # force the list kind
@@ -30,8 +29,7 @@ class LintOptions:
     ignore_noqa: bool = False  # report what `noqa` and the other suppression directives hide (--ignore-noqa)
 
 
-@record
-class LintResult:
+class LintResult(Record):
     path: str
     document: Document
     kind: str | None
@@ -47,8 +45,7 @@ def is_unreadable(result: LintResult) -> bool:
     return any(d.code == "F001" for d in result.diagnostics)
 
 
-@record
-class Totals:
+class Totals(Record):
     """What a report says at its end (the summary line, ``--statistics``, the exit code), counted
     as the results pass: a report of many files need not keep them to say it."""
 

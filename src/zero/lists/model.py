@@ -14,7 +14,7 @@ from itertools import accumulate, pairwise
 
 from zero.forms import XML_ROOTS, root_of
 from zero.patterns import compiled
-from zero.records import Field, record
+from zero.records import Field, Record
 
 TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (mypy and ruff read it alike)
 if TYPE_CHECKING:
@@ -135,8 +135,7 @@ CommentStyle.BLOCK = CommentStyle("BLOCK", "/*")
 CommentStyle.TEXT = CommentStyle("TEXT", "text")
 
 
-@record(unsafe_hash=True)
-class Key:
+class Key(Record, unsafe_hash=True):
     """A parameter key such as ``np_grp[5].achse[2].versch``.
 
     ``pattern`` has the indices removed (``np_grp[].achse[].versch``), which is
@@ -256,8 +255,7 @@ def format_key(pattern: str, indices: tuple[int, ...] | list[int]) -> str:
     return "".join(out)
 
 
-@record(eq=False)
-class Entry:
+class Entry(Record, eq=False):
     """``KEY VALUE [COMMENT]`` on one line.
 
     Offsets are 0-based into ``Document.lines[line - 1]``. ``key_text`` is the
@@ -283,8 +281,7 @@ class Entry:
     after_end: bool = False
 
 
-@record(eq=False)
-class Comment:
+class Comment(Record, eq=False):
     """A full-line comment. ``commented_out`` holds a ``#key value`` entry."""
 
     line: int
@@ -292,21 +289,18 @@ class Comment:
     commented_out: Entry | None = None
 
 
-@record(eq=False)
-class Blank:
+class Blank(Record, eq=False):
     line: int
 
 
-@record(eq=False)
-class End:
+class End(Record, eq=False):
     """The ``Ende`` line: the controller stops reading here."""
 
     line: int
     start: int
 
 
-@record(eq=False)
-class Invalid:
+class Invalid(Record, eq=False):
     """A line that is no entry, comment or blank line."""
 
     line: int
@@ -322,8 +316,7 @@ def _F(name: str) -> Field:
     return f
 
 
-@record(frozen=True)
-class Problem:
+class Problem(Record, frozen=True):
     """A fault the tokenizer saw, named by ``kind``; :mod:`zero.rules` gives it a code."""
 
     kind: str
@@ -333,8 +326,7 @@ class Problem:
     detail: str = ""
 
 
-@record(eq=False)
-class Origin:
+class Origin(Record, eq=False):
     """Where the lines of a list came from, when the file the user has open is not the list text
     itself: an XML list (one list line for one XML line) or a list inside a TwinCAT export.
 
@@ -633,8 +625,7 @@ class Columns:
         return cols
 
 
-@record(eq=False)
-class Shape:
+class Shape(Record, eq=False):
     """A key without its first index: ``head`` (``wz``, ``kenngr.swe_pos``), then the index, then
     ``tail`` (``.kinematic.param[3]``); ``indices`` are the tail's (all of the key's when not
     ``indexed``), ``pattern`` an id into :attr:`Columns.patterns`."""

@@ -18,13 +18,12 @@ from zero.catalog.rows import Rows, own_entries
 from zero.catalog.values import ListValues, Slot, bind, canonical_key, slot_of
 from zero.lists.model import Entry, format_key, parse_key
 from zero.machine.model import ListFile, Machine
-from zero.records import field, record, replace
+from zero.records import Record, field, replace
 
 LIST, DEFAULT_LIST, CATALOGUE, NOT_SET = "list", "default list", "catalogue default", "not set"
 
 
-@record(frozen=True)
-class Origin:
+class Origin(Record, frozen=True):
     """Where a value comes from: a line of a list, or the catalogue."""
 
     source: str  # list, default list, catalogue default, not set
@@ -41,8 +40,7 @@ class Origin:
         return {"source": self.source, "path": self.path, "line": self.line}
 
 
-@record(frozen=True)
-class Value:
+class Value(Record, frozen=True):
     key: str
     param_id: str | None
     value: str | None  # as written in the list, or the catalogue's default
@@ -57,8 +55,7 @@ class Value:
         return out
 
 
-@record
-class Scope:
+class Scope(Record):
     """One list of the machine and its effective values."""
 
     name: str  # axis 1 (achs_mds[0])
@@ -80,8 +77,7 @@ def canonical(values: ListValues, entry: Entry) -> str:
     return canonical_key(values.registry, values.kind, entry)
 
 
-@record(frozen=True)
-class Setting:
+class Setting(Record, frozen=True):
     """The entry that gives one element its value, in the list or a default list under it."""
 
     key: str  # the documented key, indices as numbers

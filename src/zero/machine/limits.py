@@ -24,11 +24,10 @@ from zero.catalog.ids import (
     in_units,
 )
 from zero.machine.model import Machine
-from zero.records import record
+from zero.records import Record
 
 
-@record
-class LimitRow:
+class LimitRow(Record):
     channel: int
     group: int
     axis_index: int
@@ -88,8 +87,7 @@ def pcs_limits(machine: Machine, all_groups: bool = False) -> list[LimitRow]:
     return rows
 
 
-@record
-class Ip247Violation:
+class Ip247Violation(Record):
     what: str
     value: Number
     where: str

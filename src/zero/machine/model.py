@@ -56,7 +56,7 @@ from zero.forms import (
 )
 from zero.lists.model import Document, Entry, Invalid
 from zero.markup import read_document
-from zero.records import field, record, replace
+from zero.records import Record, field, replace
 
 # Soft limits the controller uses when no list sets them (±10 m, the catalogue default).
 DEFAULT_SOFT_LIMIT = 100_000_000
@@ -68,8 +68,7 @@ LIST_FOLDER = "listen"  # the vendor's folder of lists, which its start-up lists
 MAX_MACHINE_ENTRIES = 500_000
 
 
-@record(frozen=True)
-class Reference:
+class Reference(Record, frozen=True):
     """A start-up key that names a list, as the catalogue documents it."""
 
     key: str  # pattern: "achs_mds[]", "hand_mds"
@@ -100,8 +99,7 @@ BY_KEY = {r.key: r for r in REFERENCES}
 COUNT_KEYS = {CHANNELS: "kanal_anzahl", AXIS_LISTS: "zahl_mds", COMP_LISTS: "zahl_kw"}
 
 
-@record
-class ListFile:
+class ListFile(Record):
     """One list of the machine with the values the controller takes from it (the default
     list's under this list's, where there is one)."""
 
@@ -122,8 +120,7 @@ class ListFile:
         return layer.entry_of(pid, indices) if layer is self.values else None
 
 
-@record
-class Named:
+class Named(Record):
     """A list reference of the start-up list and what became of it."""
 
     key: str  # as written: achs_mds[4]
@@ -136,8 +133,7 @@ class Named:
     reason: str = ""
 
 
-@record
-class Axis:
+class Axis(Record):
     nr: int  # logical axis number (kopf.achs_nr)
     name: str
     rotary: bool
@@ -150,8 +146,7 @@ class Axis:
         return "°" if self.rotary else "mm"  # the unit of its lengths, as is_rotary decided
 
 
-@record
-class ChannelAxis:
+class ChannelAxis(Record):
     index: int  # j in np_grp[i].achse[j]
     log_nr: int
     name: str
@@ -159,8 +154,7 @@ class ChannelAxis:
     source: Path | None = None  # the list that entry is in (the channel list or its default list)
 
 
-@record
-class Channel:
+class Channel(Record):
     index: int
     lists: ListFile | None  # the channel list
     zero: ListFile | None  # the zero-offset list
@@ -169,8 +163,7 @@ class Channel:
     others: dict[str, ListFile] = field(default_factory=dict)  # pzv_data, ve_var by key pattern
 
 
-@record
-class Missing:
+class Missing(Record):
     key: str
     raw: str  # the path as written
     line: int
@@ -178,8 +171,7 @@ class Missing:
     consequence: str = ""
 
 
-@record
-class Machine:
+class Machine(Record):
     startup: ListFile
     workdir: Path = Path(".")
     named: list[Named] = field(default_factory=list)

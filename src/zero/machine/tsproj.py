@@ -19,7 +19,7 @@ from zero.files import read_file, within
 from zero.forms import split_part
 from zero.markup.documents import embedded_documents, pick
 from zero.markup.tsproj import VIRTUAL_RE, Block, read_project
-from zero.records import record
+from zero.records import Record
 
 
 class Named(Protocol):
@@ -41,8 +41,7 @@ MAX_FILES = 2000  # independent project files followed at most (a project has on
 MAX_WALK = 50_000  # entries of `_Config` looked at at most
 
 
-@record(eq=False)
-class Found:
+class Found(Record, eq=False):
     """A block of the project and the file that holds it."""
 
     path: Path

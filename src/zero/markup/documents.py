@@ -32,7 +32,7 @@ from zero.lists.model import Document, Origin
 from zero.lists.tokenizer import tokenize_text
 from zero.markup.lists import escape, to_list
 from zero.markup.safe import Scan, scan
-from zero.records import field, record, replace
+from zero.records import Record, field, replace
 
 _LINE_RE = re.compile(r"\bline (\d+)\b")
 
@@ -71,8 +71,7 @@ def read_xml(data: bytes, path: str, registry: Registry) -> Document:
     return xml_document(data, path, registry)
 
 
-@record(eq=False)
-class Embedded:
+class Embedded(Record, eq=False):
     """A list inside a TwinCAT export: the element that holds it and its document."""
 
     element: str  # an export's element (`NullpD`); a project's block address (`Kanal_1/SdaMds`)

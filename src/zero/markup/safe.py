@@ -27,7 +27,7 @@ import defusedxml.expatreader
 
 from zero.errors import ZeroError
 from zero.lists.encoding import BOM, declarable
-from zero.records import field, record
+from zero.records import Record, field
 
 _DECL_RE = re.compile(rb"""<\?xml[^>]*?encoding\s*=\s*["']([A-Za-z0-9._-]+)["']""")
 _TOKEN_RE = re.compile(
@@ -40,8 +40,7 @@ _BREAK_RE = re.compile(rb"\r\n?|\n")  # a line break as expat counts lines
 _ATTR_RE = re.compile(r"""([^\s=/>]+)\s*=\s*(?:"([^"]*)"|'([^']*)')""")
 
 
-@record(eq=False)
-class Tag:
+class Tag(Record, eq=False):
     """A start tag (or empty-element tag) as written: where it is and what XML says it holds."""
 
     name: str
@@ -53,8 +52,7 @@ class Tag:
     raw: dict[str, tuple[int, int]] = field(default_factory=dict)  # attribute → span of its value as written
 
 
-@record(eq=False)
-class Cdata:
+class Cdata(Record, eq=False):
     """A CDATA section: its content's span in the decoded text, and the element that holds it."""
 
     parent: str
@@ -62,8 +60,7 @@ class Cdata:
     end: int
 
 
-@record(eq=False)
-class Scan:
+class Scan(Record, eq=False):
     """An XML file as zero reads it."""
 
     text: str  # decoded, without the byte order mark

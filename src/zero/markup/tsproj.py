@@ -31,7 +31,7 @@ from zero.errors import ZeroError
 from zero.forms import EMBEDDED, is_independent_file
 from zero.lists.encoding import BOM
 from zero.markup.safe import Scan, _line_starts, check, encoding_of
-from zero.records import field, record
+from zero.records import Record, field
 
 STARTUP = "Startup"
 VIRTUAL_RE = re.compile(r"^\s*\"?tc_virtual_([0-9]+)(?![0-9A-Za-z_])", re.I)  # `tc_virtual_3\achsmds1.lis`
@@ -59,8 +59,7 @@ _ENTITIES = {"&quot;": '"', "&apos;": "'"}
 _CHAR_REF = re.compile(r"&#(x[0-9A-Fa-f]+|[0-9]+);")
 
 
-@record(eq=False)
-class Block:
+class Block(Record, eq=False):
     """A ``<Data>`` element of a project holding a list in CDATA."""
 
     name: str  # the element's Name attribute
@@ -75,8 +74,7 @@ class Block:
     properties: dict[str, str] = field(default_factory=dict)  # its item's DriveType, Spindle, FeedAxis
 
 
-@record(eq=False)
-class ProjectFile:
+class ProjectFile(Record, eq=False):
     """What zero reads of a project file: its text (a :class:`Scan` without tags) and its blocks."""
 
     scan: Scan
@@ -162,8 +160,7 @@ def _items(text: str, spans: list[tuple[int, int]], blocks: list[Block]) -> None
             block.properties = dict(owner.properties)
 
 
-@record(eq=False)
-class _Entry:
+class _Entry(Record, eq=False):
     """An element open in the pass of :func:`_items`."""
 
     name: str

@@ -32,15 +32,14 @@ from zero.catalog.ids import LENGTH_UNIT
 from zero.forms import PROGRAM_SUFFIX
 from zero.nc import language as lang
 from zero.nc.program import strip_comments
-from zero.records import field, record
+from zero.records import Record, field
 
 INCH = 25.4
 MAX_DEPTH = 8  # subprogram calls followed into each other
 FOLLOW_BUDGET = 200_000  # lines of subprograms followed per program (at least four times its own)
 
 
-@record
-class AxisSetup:
+class AxisSetup(Record):
     """One axis of the channel as the program names it, its soft limits in mm or degrees."""
 
     name: str  # upper case, as the channel list names it
@@ -49,8 +48,7 @@ class AxisSetup:
     rotary: bool = False
 
 
-@record
-class Setup:
+class Setup(Record):
     """What the program runs on: the channel's axes (in channel order), the offset each work
     offset group applies to each of them, and the state at program start (P-CHAN-00063)."""
 
@@ -69,8 +67,7 @@ class Setup:
         return row[axis] if row is not None and axis < len(row) else 0.0
 
 
-@record
-class Crossing:
+class Crossing(Record):
     """A target (or the extreme of an arc) beyond a soft limit."""
 
     line: int
@@ -89,8 +86,7 @@ class Crossing:
     via: str = ""  # in a called subprogram: "in `L sub.nc` line 12"
 
 
-@record
-class Word:
+class Word(Record):
     line: int
     start: int
     end: int
@@ -98,8 +94,7 @@ class Word:
     kind: str  # "word", "$", "#"
 
 
-@record
-class Call:
+class Call(Record):
     line: int
     start: int
     end: int
@@ -108,8 +103,7 @@ class Call:
     cycle: bool  # L CYCLE [NAME=…]
 
 
-@record
-class Analysis:
+class Analysis(Record):
     moves: int = 0
     evaluated: int = 0
     skipped: dict[str, list[int]] = field(default_factory=dict)  # reason → [count, first line]
@@ -333,8 +327,7 @@ def _closing(text: str, start: int) -> int:
     return -1
 
 
-@record
-class _Tok:
+class _Tok(Record):
     """One word of a block: ``kind`` is axis, addr, call, assign, dollar, hash, label, posl."""
 
     kind: str

@@ -21,7 +21,7 @@ import re
 from zero.catalog.registry import Registry
 from zero.lists.encoding import decode
 from zero.lists.model import Document
-from zero.records import field, record
+from zero.records import Record, field
 
 _MACHINE_DATA_RE = re.compile(r"#\s*MACHINE\s+DATA\b", re.IGNORECASE)
 _WORD_RE = re.compile(r"(?<![A-Za-z_#$.])([A-Z])\s*(=?)\s*([+-]?(?:[0-9]+\.?[0-9]*|\.[0-9]+))", re.IGNORECASE)
@@ -90,8 +90,7 @@ def _closing(text: str, start: int) -> int:
     return -1
 
 
-@record
-class MachineData:
+class MachineData(Record):
     line: int
     start: int
     end: int
@@ -169,8 +168,7 @@ def parse_machine_data(text: str, line: int, start: int, registry: Registry) -> 
     return md
 
 
-@record
-class SoftLimit:
+class SoftLimit(Record):
     line: int
     start: int
     end: int
@@ -180,8 +178,7 @@ class SoftLimit:
     value: float  # programmed, in mm / degrees
 
 
-@record
-class Program:
+class Program(Record):
     """An NC program as zero reads it: its lines (for reports) and the constructs it checks."""
 
     doc: Document

@@ -12,7 +12,7 @@ from typing import TYPE_CHECKING
 from zero.catalog.registry import KINDS, ParamSpec, Registry
 from zero.diagnostics import Diagnostic, Fix
 from zero.forms import EXTENSION, format_of
-from zero.records import record, replace
+from zero.records import Record, replace
 from zero.rules import RULES
 
 if TYPE_CHECKING:
@@ -186,8 +186,7 @@ def explanation_markdown(explanation: str, why: str | None = None) -> str:
     return "\n".join(out).strip() + "\n"
 
 
-@record(frozen=True)
-class Example:
+class Example(Record, frozen=True):
     """A list a rule's page shows: its name, its text, the lines zero reports and what it reports."""
 
     title: str
@@ -197,8 +196,7 @@ class Example:
     report: str = ""
 
 
-@record(frozen=True)
-class RuleExamples:
+class RuleExamples(Record, frozen=True):
     """A rule's failing and passing example and the fixes zero offered on the failing one."""
 
     failing: Example | None
@@ -587,8 +585,7 @@ def rules_index_page() -> str:
     return "\n".join(out)
 
 
-@record(frozen=True)
-class Checked:
+class Checked(Record, frozen=True):
     """A rule that checks a parameter, and how."""
 
     code: str

@@ -55,7 +55,7 @@ from zero.machine.limits import pcs_limits
 from zero.machine.model import ListFile, Machine
 from zero.output.formats import rule_docs_template
 from zero.output.svg import REF_POINT, STYLE, AxisPicture, axis_pictures, axis_svg
-from zero.records import field, record
+from zero.records import Record, field
 from zero.rules import RULES
 from zero.rules.startup import CHECKS
 
@@ -65,16 +65,14 @@ SEVERITIES = ("error", "warning", "info")  # the order of work
 NOISE = 5  # this many warnings (or infos) of one code are a class, collapsed to its count
 
 
-@record
-class Link:
+class Link(Record):
     """A place in a file: the text shown (``path:line``) and a relative link to the file."""
 
     text: str
     href: str | None
 
 
-@record
-class ValueRow:
+class ValueRow(Record):
     scope: str
     key: str
     param_id: str | None
@@ -101,16 +99,14 @@ class ValueRow:
         return not self.repeated and (self.differs or self.used is not None or bool(self.findings))
 
 
-@record
-class AxisView:
+class AxisView(Record):
     picture: AxisPicture
     svg: str
     settings: list[tuple[str, str | None, str, Link | None]] = field(default_factory=list)  # key, value, origin, where
     monitor_where: Link | None = None  # the line that switches the monitoring off or to warnings
 
 
-@record
-class FindingGroup:
+class FindingGroup(Record):
     """The findings of one code and severity: a class, collapsed to its count where it is noise."""
 
     code: str
@@ -128,8 +124,7 @@ class FindingGroup:
         return list(dict.fromkeys(d["scope"] for d in self.results))
 
 
-@record
-class Against:
+class Against(Record):
     """The machine compared against: what was given, the changes, and which axes' soft limits changed."""
 
     given: str
@@ -138,8 +133,7 @@ class Against:
     deltas: list[str] = field(default_factory=list)  # each change's delta in engineering units ("" where none)
 
 
-@record
-class MachineReport:
+class MachineReport(Record):
     title: str
     startup: Link
     workdir: str

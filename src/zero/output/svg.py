@@ -22,7 +22,7 @@ from html import escape
 from zero.catalog.ids import SWE_BEHAVIOUR, SWE_CHECK, SWE_TOL, Number, g_code, in_units
 from zero.machine.limits import LimitRow, pcs_limits
 from zero.machine.model import Axis, Machine
-from zero.records import field, record
+from zero.records import Record, field
 
 MOD_CALC = "P-AXIS-00121"  # kenngr.mod_rechng: the axis counts modulo
 REF_POINT = "P-AXIS-00152"  # getriebe[g].pos_refpkt: the reference point (gear 0 drawn)
@@ -65,8 +65,7 @@ def _num(value: float) -> str:
     return "0" if text in ("-0", "") else text
 
 
-@record
-class ZeroPoint:
+class ZeroPoint(Record):
     """One work offset group on one channel axis: where its zero lies (ACS) and what a program may
     reach (PCS)."""
 
@@ -81,8 +80,7 @@ class ZeroPoint:
         return g_code(self.group)
 
 
-@record
-class AxisPicture:
+class AxisPicture(Record):
     """What is drawn for one axis (of a channel, where a channel maps it)."""
 
     name: str
@@ -197,8 +195,7 @@ def axis_pictures(machine: Machine, rows: Sequence[LimitRow] | None = None,
 # ------------------------------------------------------------------------- drawing
 
 
-@record
-class Scale:
+class Scale(Record):
     lo: float
     hi: float
     x0: float = LEFT

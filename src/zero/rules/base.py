@@ -25,7 +25,7 @@ from zero.catalog.values import ListValues
 from zero.diagnostics import Diagnostic, Fix, Related, Severity, Span
 from zero.hints import Generic, TypeVar
 from zero.patterns import compiled
-from zero.records import field, record
+from zero.records import Record, field, record
 
 TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (mypy and ruff read it alike)
 if TYPE_CHECKING:  # start-up: a list's lint does not load the machine and program models
@@ -40,6 +40,8 @@ if TYPE_CHECKING:
 E, W, INFO = Severity.ERROR, Severity.WARNING, Severity.INFO
 
 
+# declared with the decorator: for type checkers a subclass of a Record is a record too, and the K family's
+# rule (zero.rules.startup._KernelRule) is a plain subclass whose texts are properties read at their first use
 @record(frozen=True)
 class Rule:
     code: str
@@ -127,8 +129,7 @@ def declared_codes() -> set[str]:
     return set(_defaults)
 
 
-@record
-class Context(ListValues, Reporter):
+class Context(ListValues, Reporter, Record):
     """One list as its checks see it: its values (:class:`ListValues`) and the selected codes."""
 
     severities: dict[str, Severity] = field(default_factory=dict)
@@ -144,8 +145,7 @@ class Context(ListValues, Reporter):
         return self.kind
 
 
-@record
-class MachineContext(Reporter):
+class MachineContext(Reporter, Record):
     """A machine: its lists and axes; findings carry the path of the list they are about."""
 
     machine: Machine
@@ -154,8 +154,7 @@ class MachineContext(Reporter):
     path: str = "-"
 
 
-@record
-class ProgramContext(Reporter):
+class ProgramContext(Reporter, Record):
     """An NC program, and the machine it runs on when one is known (N003/N004 need it)."""
 
     program: Program
@@ -168,8 +167,7 @@ class ProgramContext(Reporter):
 C = TypeVar("C", Context, MachineContext, ProgramContext)
 
 
-@record(frozen=True)
-class Check(Generic[C]):
+class Check(Generic[C], Record, frozen=True):
     """A check and the rules it reports (the engine skips it when none of them is selected)."""
 
     codes: tuple[str, ...]

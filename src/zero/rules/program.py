@@ -32,7 +32,7 @@ from zero.files import read_file
 from zero.lists.encoding import decode
 from zero.lists.tokenizer import tokenize
 from zero.nc import language as lang
-from zero.records import record
+from zero.records import Record
 from zero.rules import elements, registry, syntax
 from zero.rules.base import INFO, Check, Context, E, Family, ProgramContext, W, run_checks
 
@@ -306,8 +306,7 @@ if TYPE_CHECKING:  # start-up: a list's lint does not load the program model
 MAX_CROSSINGS = 10  # findings per axis and side before one finding counts the rest
 
 
-@record
-class _AxisFacts:
+class _AxisFacts(Record):
     """What the messages say about one channel axis: its list lines and its monitoring."""
 
     name: str

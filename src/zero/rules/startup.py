@@ -25,7 +25,7 @@ from zero.catalog.registry import ParamSpec
 from zero.catalog.values import Resolved, default_number, parse_int
 from zero.diagnostics import Diagnostic, Severity, Span
 from zero.lists.model import Entry, format_key
-from zero.records import record
+from zero.records import Record
 from zero.rules.base import Context, E, Family, Rule, W
 
 TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (mypy and ruff read it alike)
@@ -38,8 +38,7 @@ if TYPE_CHECKING:
 FAMILY: Family[Context] = Family("K", "kernel start-up checks", "list")
 
 
-@record(frozen=True)
-class StartupError:
+class StartupError(Record, frozen=True):
     code: str
     number: int
     kind: str
@@ -57,8 +56,7 @@ class StartupError:
         return f"P-ERR-{self.number}"
 
 
-@record(frozen=True)
-class _Compiled:
+class _Compiled(Record, frozen=True):
     condition: Compiled
     when: Compiled | None
     read: tuple[str, ...]  # the parameters the condition reads

@@ -22,7 +22,7 @@ from collections.abc import Iterable
 from zero.diagnostics import Diagnostic, Severity, Span
 from zero.lists.model import Comment, Document, Entry
 from zero.patterns import IGNORECASE, compiled
-from zero.records import field, record
+from zero.records import Record, field
 from zero.rules.base import Context, Family, W
 
 FAMILY: Family[Context] = Family("Z", "suppressions", "suppression")
@@ -60,8 +60,7 @@ _ZERO = r"^\s*#\s*zero\s*:\s*(?P<body>.*?)\s*$"  # re.IGNORECASE
 _CODE = r"[A-Z][0-9]{0,3}"
 
 
-@record(eq=False)
-class Directive:
+class Directive(Record, eq=False):
     line: int  # where it is written
     start: int  # 0-based columns of the directive text
     end: int

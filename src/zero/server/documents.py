@@ -41,7 +41,7 @@ from zero.lists.tokenizer import tokenize
 from zero.machine.model import ListFile, Machine
 from zero.markup import read_document
 from zero.markup.documents import embedded_documents
-from zero.records import field, record, replace
+from zero.records import Record, field, replace
 from zero.server.positions import Text, path_of, source_bytes
 from zero.server.settings import Settings
 
@@ -51,8 +51,7 @@ from zero.server.settings import Settings
 _ZERO_RECORD = re.compile(r'^(?:_zero\s*+:|\[\s*+_zero\s*+\]|[ \t]*+"_zero"\s*+:)', re.MULTILINE)
 
 
-@record
-class Note:
+class Note(Record):
     """Something to show that is no rule's finding: a configuration that cannot be read, a
     structured form that is not a list, a machine that cannot be built."""
 
@@ -63,8 +62,7 @@ class Note:
     elsewhere: tuple[Path, int, int] | None = None  # the place in another file it is about (1-based)
 
 
-@record(eq=False)
-class Place:
+class Place(Record, eq=False):
     """A position of the file the editor has open in the list text it holds: the list (the list a list
     file or an XML list is, or one list of a TwinCAT export) and the 0-based line and column there."""
 
@@ -91,8 +89,7 @@ def _place(exc: ZeroError) -> tuple[Path, int, int] | None:
     return Path(exc.path), exc.line or 1, exc.column or 1
 
 
-@record(eq=False)
-class Analysis:
+class Analysis(Record, eq=False):
     uri: str
     version: int | None
     path: Path | None  # the file on disk, for file: URIs

@@ -26,7 +26,7 @@ from zero.forms import LIST, PROGRAM, STRUCTURED, format_of
 from zero.lists.model import Comment, Entry, format_key, parse_key
 from zero.machine.effective import Origin, canonical, scope_values
 from zero.output.docs import param_text
-from zero.records import record, replace
+from zero.records import Record, replace
 from zero.server.documents import Analysis, file_position
 
 _ID = re.compile(r"P-[A-Z]{4}-[0-9]{5}(?:\.([0-9]+))?")
@@ -40,8 +40,7 @@ MACHINE_DATA_TEXT = (
     "`AXPARAM` key and value valid for the axis list, `WAIT` only with `SYN` (rule N001).")
 
 
-@record
-class Target:
+class Target(Record):
     """What the cursor is on: a parameter, as a key (with indices) and maybe an entry."""
 
     spec: ParamSpec

@@ -33,7 +33,7 @@ from zero.forms import LIST, PROGRAM, STRUCTURED, TWINCAT, format_of, is_project
 from zero.lists.model import Entry, ValueKind, parse_key
 from zero.machine.tsproj import project_blocks
 from zero.markup.tsproj import VIRTUAL_RE
-from zero.records import field, record
+from zero.records import Record, field
 from zero.server.documents import Analysis, file_position
 from zero.server.findings import line_range
 from zero.server.positions import uri_of
@@ -41,8 +41,7 @@ from zero.server.positions import uri_of
 _KINDS = (types.SymbolKind.Namespace, types.SymbolKind.Object)
 
 
-@record
-class _Group:
+class _Group(Record):
     name: str
     detail: str | None
     level: int

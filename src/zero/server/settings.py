@@ -3,13 +3,12 @@
 
 from __future__ import annotations
 
-from zero.records import record
+from zero.records import Record
 
 CLIENT_KEYS = ("path", "args", "trace")  # the editor extension's own settings, sent along
 
 
-@record
-class Settings:
+class Settings(Record):
     """What the editor may set (``initializationOptions`` or ``workspace/didChangeConfiguration``,
     section ``zero``)."""
 

@@ -12,7 +12,7 @@ from collections.abc import Iterator
 from typing import Any
 
 from zero.errors import ZeroError
-from zero.records import field, record
+from zero.records import Record, field
 from zero.structured.tree import (
     FORMAT_VERSION,
     META_KEY,
@@ -62,8 +62,7 @@ def comment_suffix(after: str | None) -> str:
 
 
 
-@record
-class Found:
+class Found(Record):
     """Comments and position of one leaf, as a text scanner saw them."""
 
     line: int

@@ -29,7 +29,7 @@ from zero.diagnostics import Span
 from zero.errors import ZeroError
 from zero.lists.encoding import declarable
 from zero.lists.model import Blank, Comment, Document, End, Entry, Invalid
-from zero.records import field, record
+from zero.records import Record, field
 
 if TYPE_CHECKING:  # start-up: a configuration file's TOML is read without the catalogue
     from zero.catalog.registry import Registry
@@ -50,8 +50,7 @@ _FRAGMENT_RE = re.compile(r"([A-Za-z_][A-Za-z0-9_]*)((?:\[[0-9]+\])*)")
 _UNCARRIABLE_RE = re.compile(r"[\x00-\x08\x0a-\x1f\x7f-\x9f\u2028\u2029\ud800-\udfff]")
 
 
-@record(eq=False)
-class Leaf:
+class Leaf(Record, eq=False):
     """One parameter in the structured form."""
 
     key: str  # as the list spells it: np_grp[1].achse[0].versch
@@ -67,8 +66,7 @@ class Leaf:
     key_at: tuple[int, int, int, int] | None = None
 
 
-@record(eq=False)
-class Tree:
+class Tree(Record, eq=False):
     leaves: list[Leaf]
     meta: dict[str, Any] = field(default_factory=dict)
     tail: list[str] = field(default_factory=list)
@@ -184,8 +182,7 @@ def structured_path(path: tuple[str, ...]) -> str:
 # ------------------------------------------------------------------ nesting order
 
 
-@record
-class _Node:
+class _Node(Record):
     children: dict[str, _Node | Leaf] = field(default_factory=dict)
 
 
@@ -525,8 +522,7 @@ def list_sequence(tree: Tree) -> list[Leaf | list[str]]:
     return out
 
 
-@record
-class ListText:
+class ListText(Record):
     text: str
     lines_of: dict[int, Leaf]  # list line number → the leaf written there
 

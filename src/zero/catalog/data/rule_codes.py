@@ -8,7 +8,7 @@ from __future__ import annotations
 
 SOURCES: tuple[tuple[str, int], ...] = (
     ('__init__.py', 1954),
-    ('base.py', 11632),
+    ('base.py', 11859),
     ('elements.py', 7107),
     ('families.py', 6678),
     ('files.py', 1211),

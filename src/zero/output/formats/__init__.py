@@ -13,7 +13,7 @@ from __future__ import annotations
 import os
 from collections.abc import Callable
 
-from zero.records import record
+from zero.records import Record
 
 TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (mypy and ruff read it alike)
 if TYPE_CHECKING:
@@ -53,8 +53,7 @@ def information_uri() -> str | None:
     return site.rstrip("/") + "/" if site.startswith(("https://", "http://")) else None
 
 
-@record(frozen=True)
-class Format:
+class Format(Record, frozen=True):
     name: str  # as --output-format takes it
     module: str | None  # the module of zero.output.formats that writes it (None: zero.output.text, the report)
     function: str  # its emitter there: function(results, stream)
