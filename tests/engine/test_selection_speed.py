@@ -4,6 +4,8 @@ from __future__ import annotations
 
 import random
 
+import pytest
+
 from zero.engine.lint import ALL, LintOptions, _selected_rules, layered_selection
 from zero.rules import RULES
 
@@ -41,3 +43,28 @@ def test_mixed_codes_and_prefixes_select_as_before() -> None:
         pick = lambda: tuple(rnd.sample(pool, rnd.randint(0, 6)))  # noqa: E731
         options = LintOptions(select=pick(), ignore=pick(), extend_select=pick())
         assert _selected_rules(options) == _reference(options), options
+
+
+def test_full_codes_alone_select_as_before() -> None:
+    """What every lint asks (the fast way): only full codes selected, opt-in ones and severities included."""
+    rnd = random.Random(41)
+    codes = sorted(RULES)
+    opt_in = [c for c in codes if RULES[c].opt_in]
+    assert opt_in  # the case the fast way must keep: an opt-in rule named by its full code is enabled
+    for _ in range(200):
+        chosen = tuple(rnd.sample(codes, rnd.randint(1, len(codes))))
+        severity = {c: RULES["S001"].severity for c in rnd.sample(codes, rnd.randint(0, 5))}
+        options = LintOptions(select=chosen, severity=severity)
+        assert _selected_rules(options) == _reference(options), options
+    options = LintOptions(select=(*opt_in, "S001"))
+    assert set(_selected_rules(options)) == {*opt_in, "S001"}
+
+
+def test_a_code_that_begins_another_matches_both(monkeypatch: pytest.MonkeyPatch) -> None:
+    """Were a code a prefix of another, a selector naming it matches both: the fast way is then not taken."""
+    import zero.engine.selection as selection
+
+    severity = RULES["S001"].severity
+    monkeypatch.setattr(selection, "_TABLE", {"S001": (severity, False), "S0010": (severity, False)})
+    monkeypatch.setattr(selection, "_PREFIX_FREE", [])
+    assert _selected_rules(LintOptions(select=("S001",))) == {"S001": severity, "S0010": severity}
