@@ -22,23 +22,26 @@ import _gen
 RULES_DIR = Path(__file__).resolve().parent.parent / "src" / "zero" / "rules"
 
 
-def render() -> str:
-    """The module's text, from the family modules as they are now."""
+def _families() -> list[tuple[str, object, int]]:
     import importlib
 
     from zero.rules.families import ON_DEMAND
 
+    return [(name, importlib.import_module(f"zero.rules.{name}").FAMILY, (RULES_DIR / f"{name}.py").stat().st_size)
+            for name in ON_DEMAND]
+
+
+def render() -> str:
+    """``rules_declared.py``, from the family modules as they are now: each family and its rules' codes and
+    severities (what a start-up declares them with)."""
     out = []
-    for name in ON_DEMAND:
-        family = importlib.import_module(f"zero.rules.{name}").FAMILY
-        size = (RULES_DIR / f"{name}.py").stat().st_size
-        rules = "".join(f"\n        ({r.code!r}, {r.name!r}, {r.severity.name!r}, {r.summary!r},\n"
-                        f"         {r.explanation!r},\n         {r.opt_in!r}, {r.reads!r}),"
-                        for r in family.rules.values())
-        out.append(f"    {name!r}: ({family.letter!r}, {family.title!r}, {family.scope!r}, {size!r}, ({rules}\n    )),")
+    for name, family, size in _families():
+        rules = "".join(f"\n        ({r.code!r}, {r.severity.name!r})," for r in family.rules.values())  # type: ignore[attr-defined]
+        out.append(f"    {name!r}: ({family.letter!r}, {family.title!r}, {family.scope!r}, {size!r}, ({rules}\n    )),")  # type: ignore[attr-defined]
     return ('"""The rules of the families zero loads on demand, as their modules declare them, written by\n'
-            'tools/gen_rules.py: module -> (letter, title, scope, the size of its source, its rules: (code, name,\n'
-            'severity, summary, explanation, opt_in, reads) in the order declared).\n\n'
+            'tools/gen_rules.py: module -> (letter, title, scope, the size of its source, its rules: (code,\n'
+            'severity) in the order declared). Their names and texts are in rules_texts.py, read where the rules\n'
+            'are first looked at (a list\'s lint reads none of them).\n\n'
             'Generated: do not edit."""\n\n'
             "# ruff: noqa\n"
             "from __future__ import annotations\n\n"
@@ -48,8 +51,30 @@ def render() -> str:
             "DECLARED: dict[str, Any] = {\n" + "\n".join(out) + "\n}\n")
 
 
+def render_texts() -> str:
+    """``rules_texts.py``: each family's rules in full (code, name, severity, summary, explanation, opt_in,
+    reads), in the order declared."""
+    out = []
+    for name, family, _ in _families():
+        rules = "".join(f"\n        ({r.code!r}, {r.name!r}, {r.severity.name!r}, {r.summary!r},\n"
+                        f"         {r.explanation!r},\n         {r.opt_in!r}, {r.reads!r}),"
+                        for r in family.rules.values())  # type: ignore[attr-defined]
+        out.append(f"    {name!r}: ({rules}\n    ),")
+    return ('"""The rules of the families zero loads on demand in full, as their modules declare them, written by\n'
+            'tools/gen_rules.py: module -> its rules: (code, name, severity, summary, explanation, opt_in, reads)\n'
+            'in the order declared (their codes and severities: rules_declared.py).\n\n'
+            'Generated: do not edit."""\n\n'
+            "# ruff: noqa\n"
+            "from __future__ import annotations\n\n"
+            "TYPE_CHECKING = False\n"
+            "if TYPE_CHECKING:\n"
+            "    from typing import Any\n\n"
+            "TEXTS: dict[str, Any] = {\n" + "\n".join(out) + "\n}\n")
+
+
 def files() -> dict[Path, str | None]:
-    return {RULES_DIR.parent / "catalog" / "data" / "rules_declared.py": render()}
+    data = RULES_DIR.parent / "catalog" / "data"
+    return {data / "rules_declared.py": render(), data / "rules_texts.py": render_texts()}
 
 
 def main(argv: list[str] | None = None) -> None:

@@ -21,8 +21,9 @@ def _generator() -> ModuleType:
 
 def test_the_generated_module_is_up_to_date() -> None:
     """Run ``python tools/gen_rules.py`` after changing a rule of rules/machine.py or rules/program.py."""
-    written = (ROOT / "src" / "zero" / "catalog" / "data" / "rules_declared.py").read_text(encoding="utf-8")
-    assert written == _generator().render()  # type: ignore[attr-defined]
+    data = ROOT / "src" / "zero" / "catalog" / "data"
+    assert (data / "rules_declared.py").read_text(encoding="utf-8") == _generator().render()  # type: ignore[attr-defined]
+    assert (data / "rules_texts.py").read_text(encoding="utf-8") == _generator().render_texts()  # type: ignore[attr-defined]
 
 
 def test_the_written_families_are_the_declared_ones() -> None:

@@ -15,8 +15,9 @@ adds its rules and checks to the syntax family; both are listed in :data:`MODULE
 The X (a machine's lists) and N (NC programs) families are loaded on demand (:data:`ON_DEMAND`): a
 list's lint imports neither module (nor the machine and program models they read). Their rules are
 in the registry all the same, as their modules declare them, written by ``tools/gen_rules.py``
-(:mod:`zero.catalog.data.rules_declared`); their checks (:data:`MACHINE_CHECKS`, :data:`PROGRAM_CHECKS`) import
-the module at their first use.
+(:mod:`zero.catalog.data.rules_declared`: codes and severities; their names and texts in
+:mod:`~zero.catalog.data.rules_texts`, read where the rules are first looked at); their checks
+(:data:`MACHINE_CHECKS`, :data:`PROGRAM_CHECKS`) import the module at their first use.
 """
 
 from __future__ import annotations
@@ -46,7 +47,9 @@ def _written(name: str) -> Family[MachineContext] | Family[ProgramContext] | Non
     written = DECLARED.get(name)
     if written is None:
         return None
-    letter, title, scope, size, rules = written
+    letter, title, scope, size, codes = written
+    if any(len(row) != 2 for row in codes):  # written in another form (by an older gen_rules.py)
+        return None
     try:
         if os.stat(os.path.join(os.path.dirname(__file__), f"{name}.py")).st_size != size:
             return None
@@ -56,10 +59,12 @@ def _written(name: str) -> Family[MachineContext] | Family[ProgramContext] | Non
     by_name = {s.name: s for s in Severity}
 
     def make() -> list[Rule]:  # at the first look at the family's rules (a list's lint reads only the severities)
-        return [Rule(code, rule_name, by_name[severity], summary, explanation, scope, opt_in, tuple(reads))
-                for code, rule_name, severity, summary, explanation, opt_in, reads in rules]
+        from zero.catalog.data.rules_texts import TEXTS  # start-up: the rules' names and texts where first looked at
 
-    family.declare_later(make, {row[0]: by_name[row[2]] for row in rules})
+        return [Rule(code, rule_name, by_name[severity], summary, explanation, scope, opt_in, tuple(reads))
+                for code, rule_name, severity, summary, explanation, opt_in, reads in TEXTS[name]]
+
+    family.declare_later(make, {code: by_name[severity] for code, severity in codes})
     return family
 
 
