@@ -26,9 +26,12 @@ def _check(tool: Path, *args: str) -> subprocess.CompletedProcess[str]:
 
 
 def test_every_generator_is_checked() -> None:
-    """A new generator joins GENERATORS (or test_records.py's check)."""
-    found = {p.name for p in (ROOT / "tools").glob("gen_*.py")} - {"gen_record_inits.py"}
+    """A new generator joins GENERATORS (or test_records.py's check), and gen_all.py's order."""
+    found = {p.name for p in (ROOT / "tools").glob("gen_*.py")} - {"gen_record_inits.py", "gen_all.py"}
     assert found <= set(GENERATORS)
+    gen_all = script_module(ROOT / "tools" / "gen_all.py")
+    assert sorted(gen_all.ORDER) == sorted([*found, "gen_record_inits.py"])  # type: ignore[attr-defined]
+    assert gen_all.ORDER[-1] == "gen_record_inits.py"  # type: ignore[attr-defined]  # reads every module
 
 
 @pytest.mark.parametrize("name", GENERATORS)
@@ -93,3 +96,17 @@ def test_the_command_line_is_check_or_nothing() -> None:
     with pytest.raises(SystemExit) as stop:
         gen.done("gen_x.py", [Path("a.py")], True)
     assert stop.value.code == 1
+
+
+def test_gen_all_checks_every_generator() -> None:
+    """``python tools/gen_all.py --check``: what a hook runs after an edit (each generator in its order)."""
+    if not PARAM_DESC.is_file():
+        pytest.skip("the vendor's CncParaDesc.xml is not here")
+    done = subprocess.run([sys.executable, str(ROOT / "tools" / "gen_all.py"), "--check"], capture_output=True,
+                          text=True, check=False)
+    assert done.returncode == 0, done.stdout + done.stderr
+    gen_all = script_module(ROOT / "tools" / "gen_all.py")
+    assert done.stdout.count("every file is current") == len(gen_all.ORDER)  # type: ignore[attr-defined]
+    bad = subprocess.run([sys.executable, str(ROOT / "tools" / "gen_all.py"), "--write"], capture_output=True,
+                         text=True, check=False)
+    assert bad.returncode == 2 and "usage" in bad.stderr
