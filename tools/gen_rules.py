@@ -18,8 +18,13 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 sys.path.insert(0, str(Path(__file__).resolve().parent.parent / "src"))
 
 import _gen
+from pydata import TYPING_FOR_CHECKERS
 
 RULES_DIR = Path(__file__).resolve().parent.parent / "src" / "zero" / "rules"
+
+
+# the rest of both modules' head: the docstring's end, and the names their annotations use
+_HEAD = 'Generated: do not edit."""\n\n# ruff: noqa\n' + "\n".join(TYPING_FOR_CHECKERS) + "\n\n"
 
 
 def _families() -> list[tuple[str, object, int]]:
@@ -42,13 +47,7 @@ def render() -> str:
             'tools/gen_rules.py: module -> (letter, title, scope, the size of its source, its rules: (code,\n'
             'severity) in the order declared). Their names and texts are in rules_texts.py, read where the rules\n'
             'are first looked at (a list\'s lint reads none of them).\n\n'
-            'Generated: do not edit."""\n\n'
-            "# ruff: noqa\n"
-            "from __future__ import annotations\n\n"
-            "TYPE_CHECKING = False\n"
-            "if TYPE_CHECKING:\n"
-            "    from typing import Any\n\n"
-            "DECLARED: dict[str, Any] = {\n" + "\n".join(out) + "\n}\n")
+            + _HEAD + "DECLARED: dict[str, Any] = {\n" + "\n".join(out) + "\n}\n")
 
 
 def render_texts() -> str:
@@ -63,13 +62,7 @@ def render_texts() -> str:
     return ('"""The rules of the families zero loads on demand in full, as their modules declare them, written by\n'
             'tools/gen_rules.py: module -> its rules: (code, name, severity, summary, explanation, opt_in, reads)\n'
             'in the order declared (their codes and severities: rules_declared.py).\n\n'
-            'Generated: do not edit."""\n\n'
-            "# ruff: noqa\n"
-            "from __future__ import annotations\n\n"
-            "TYPE_CHECKING = False\n"
-            "if TYPE_CHECKING:\n"
-            "    from typing import Any\n\n"
-            "TEXTS: dict[str, Any] = {\n" + "\n".join(out) + "\n}\n")
+            + _HEAD + "TEXTS: dict[str, Any] = {\n" + "\n".join(out) + "\n}\n")
 
 
 def files() -> dict[Path, str | None]:

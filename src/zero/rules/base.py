@@ -211,15 +211,16 @@ class Family(Generic[C]):
         """Rules made at the first look at :attr:`rules` by ``make``, whose codes and severities are
         ``severities`` (checked then)."""
         for code in severities:
-            if not code.startswith(self.letter) or code in self._rules:
-                raise ValueError(f"rule {code} does not belong to family {self.letter} or is declared twice")
+            self._new(code)
         self._later = (make, severities)
 
-    def _add(self, r: Rule) -> Rule:
-        code = r.code
+    def _new(self, code: str) -> None:
         if not code.startswith(self.letter) or code in self._rules:
             raise ValueError(f"rule {code} does not belong to family {self.letter} or is declared twice")
-        self._rules[code] = r
+
+    def _add(self, r: Rule) -> Rule:
+        self._new(r.code)
+        self._rules[r.code] = r
         return r
 
     def rule(self, code: str, name: str, severity: Severity, summary: str, explanation: str,

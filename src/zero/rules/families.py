@@ -130,7 +130,7 @@ RULES: dict[str, Rule]  # code → rule, family by family: made at the first use
 TITLES: dict[str, str] = {f.letter: f.title for f in FAMILIES}  # letter → the family's title
 # the declared severities the funnel grades against: from each family's codes, without making the rules it
 # declares later (the K, X and N rules: a list's lint reads none of them; issue 40, start-up)
-declare({code: severity for family in FAMILIES for code, severity in sorted(family.severities().items())})
+declare({code: severity for family in FAMILIES for code, severity in family.severities().items()})
 
 
 def __getattr__(name: str) -> dict[str, Rule]:

@@ -8,9 +8,9 @@ from __future__ import annotations
 
 SOURCES: tuple[tuple[str, int], ...] = (
     ('__init__.py', 1954),
-    ('base.py', 11859),
+    ('base.py', 11751),
     ('elements.py', 7107),
-    ('families.py', 7060),
+    ('families.py', 7052),
     ('files.py', 1211),
     ('funnel.py', 3909),
     ('lists.py', 5811),

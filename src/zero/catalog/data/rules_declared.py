@@ -8,7 +8,7 @@ Generated: do not edit."""
 # ruff: noqa
 from __future__ import annotations
 
-TYPE_CHECKING = False
+TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (zero.hints)
 if TYPE_CHECKING:
     from typing import Any
 
