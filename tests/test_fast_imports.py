@@ -165,3 +165,17 @@ def test_a_missing_module_is_still_not_found(tmp_path: Path) -> None:
         out = subprocess.run([sys.executable, "-c", f"import {name}"], env=env, capture_output=True, text=True,
                              check=False, timeout=60, cwd=root)
         assert out.returncode == 1 and "ModuleNotFoundError" in out.stderr, out.stderr
+
+
+def test_importing_zero_again_keeps_one_finder(tmp_path: Path) -> None:
+    root = _copy(tmp_path)
+    _compile(root)
+    code = ("import importlib, sys, zero\n"
+            "importlib.reload(zero); importlib.reload(zero)\n"
+            "import zero.engine.lint as m\n"
+            "ours = sum(getattr(f, '__module__', None) == 'zero' for f in sys.meta_path)\n"
+            "print(ours, type(m.__loader__).__module__)")
+    env = {**os.environ, "PYTHONPATH": str(root), "PYTHONDONTWRITEBYTECODE": "1"}
+    out = subprocess.run([sys.executable, "-c", code], env=env, capture_output=True, text=True, check=False,
+                         timeout=60, cwd=root)
+    assert out.stdout.split() == ["1", "zero"], out.stderr

@@ -32,6 +32,10 @@ def _install() -> None:
     if (sys.implementation.name != "cpython" or sys.implementation.cache_tag is None or sys.flags.optimize
             or sys.pycache_prefix is not None or not __file__ or not __path__):
         return
+    for finder in sys.meta_path:
+        if getattr(finder, "__module__", None) == __name__:  # zero imported again (importlib.reload): replaced
+            sys.meta_path.remove(finder)
+            break
     try:
         import _frozen_importlib_external as external  # start-up: CPython's path machinery, loaded at start
         from _frozen_importlib import ModuleSpec  # start-up: as above
