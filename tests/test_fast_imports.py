@@ -55,12 +55,17 @@ def _compile(root: Path, mode: py_compile.PycInvalidationMode = py_compile.PycIn
     assert compileall.compile_dir(root / "zero", quiet=2, invalidation_mode=mode, workers=1)
 
 
+def _child(root: Path, *args: str, **env: str) -> subprocess.CompletedProcess[str]:
+    """``python ARGS`` in a fresh interpreter on the copy in ``root`` (writing no bytecode of its own)."""
+    return subprocess.run([sys.executable, *args], env={**os.environ, "PYTHONPATH": str(root),
+                                                        "PYTHONDONTWRITEBYTECODE": "1", **env},
+                          capture_output=True, text=True, check=False, timeout=120, cwd=root)
+
+
 def _probe(root: Path, *names: str, python_finders: bool = False,
            flags: tuple[str, ...] = ()) -> dict[str, dict[str, object]]:
-    env = {**os.environ, "PYTHONPATH": str(root), "PYTHONDONTWRITEBYTECODE": "1"}
     args = ["--python-finders", *names] if python_finders else list(names)
-    out = subprocess.run([sys.executable, *flags, "-c", _PROBE, *args], env=env, capture_output=True, text=True,
-                         check=False, timeout=120, cwd=root)
+    out = _child(root, *flags, "-c", _PROBE, *args)
     assert out.returncode == 0, out.stderr
     result: dict[str, dict[str, object]] = json.loads(out.stdout)
     return result
@@ -99,9 +104,7 @@ def test_a_lint_loads_every_module_through_it(tmp_path: Path) -> None:
             "    raise SystemExit(0)\n"
             "lean.end = end\nsys.argv = ['zero', 'lint', 'axis.lis']\nlean.main()\n")
     (root / "axis.lis").write_text("# axis\nkenngr.achs_name   X\nEnde\n", encoding="latin-1")
-    env = {**os.environ, "PYTHONPATH": str(root), "PYTHONDONTWRITEBYTECODE": "1", "ZERO_NO_CACHE": "1"}
-    out = subprocess.run([sys.executable, "-c", code], env=env, cwd=root, capture_output=True, text=True, check=False,
-                         timeout=120)
+    out = _child(root, "-c", code, ZERO_NO_CACHE="1")
     assert out.returncode == 0, out.stderr
     assert out.stdout.strip().splitlines()[-1] == "[]"
 
@@ -160,10 +163,8 @@ def test_optimized_runs_use_pythons_finders(tmp_path: Path) -> None:
 def test_a_missing_module_is_still_not_found(tmp_path: Path) -> None:
     root = _copy(tmp_path)
     _compile(root)
-    env = {**os.environ, "PYTHONPATH": str(root)}
     for name in ("zero.nope", "zero.engine.nope", "zero.catalog.data.nope.deeper"):
-        out = subprocess.run([sys.executable, "-c", f"import {name}"], env=env, capture_output=True, text=True,
-                             check=False, timeout=60, cwd=root)
+        out = _child(root, "-c", f"import {name}")
         assert out.returncode == 1 and "ModuleNotFoundError" in out.stderr, out.stderr
 
 
@@ -175,7 +176,5 @@ def test_importing_zero_again_keeps_one_finder(tmp_path: Path) -> None:
             "import zero.engine.lint as m\n"
             "ours = sum(getattr(f, '__module__', None) == 'zero' for f in sys.meta_path)\n"
             "print(ours, type(m.__loader__).__module__)")
-    env = {**os.environ, "PYTHONPATH": str(root), "PYTHONDONTWRITEBYTECODE": "1"}
-    out = subprocess.run([sys.executable, "-c", code], env=env, capture_output=True, text=True, check=False,
-                         timeout=60, cwd=root)
+    out = _child(root, "-c", code)
     assert out.stdout.split() == ["1", "zero"], out.stderr

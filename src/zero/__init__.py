@@ -48,7 +48,6 @@ def _install() -> None:
     root = __path__[0]
     tag = f".{sys.implementation.cache_tag}.pyc"
     header = external.MAGIC_NUMBER + b"\0\0\0\0"  # the magic number, and flags 0: checked by timestamp
-    file_io = open  # the built-in: an unbuffered read of the whole file
 
     class Loader(external.SourceFileLoader):
         """Python's own loader, given the bytecode the finder read and checked (used once)."""
@@ -83,7 +82,7 @@ def _install() -> None:
             cached = f"{folder}{sep}__pycache__{sep}{leaf}{tag}"
             try:
                 st = stat(source)
-                with file_io(cached, "rb", buffering=0) as f:
+                with open(cached, "rb", buffering=0) as f:  # unbuffered: one read of the whole file
                     data = f.readall()
             except (OSError, ValueError):
                 return None
