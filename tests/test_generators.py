@@ -15,8 +15,8 @@ from conftest import ROOT, script_module
 
 # gen_record_inits.py --check runs in tests/test_records.py (test_the_ahead_of_time_inits_are_current)
 GENERATORS = ["gen_conditions.py", "gen_config.py", "gen_evidence.py", "gen_ranges.py", "gen_registry.py",
-              "gen_pattern_codes.py", "gen_rule_codes.py", "gen_rules.py", "gen_seeds.py", "gen_startup.py",
-              "gen_startup_rules.py"]
+              "gen_pattern_codes.py", "gen_rule_codes.py", "gen_rules.py", "gen_seeds.py", "gen_specs.py",
+              "gen_startup.py", "gen_startup_rules.py"]
 PARAM_DESC = ROOT.parent / "shared" / "corpus" / "isg-sdk" / "meta-data" / "CncParaDesc.xml"  # gen_registry's
 
 

@@ -23,9 +23,9 @@ import _gen
 TOOLS = Path(__file__).resolve().parent
 # Each after what it reads: the rows before the ranges, conditions and K declarations made of them; the
 # rule modules' declarations before the codes; every module (their records) last.
-ORDER = ("gen_registry.py", "gen_seeds.py", "gen_evidence.py", "gen_config.py", "gen_ranges.py", "gen_startup.py",
-         "gen_startup_rules.py", "gen_conditions.py", "gen_rules.py", "gen_rule_codes.py", "gen_pattern_codes.py",
-         "gen_record_inits.py")
+ORDER = ("gen_registry.py", "gen_seeds.py", "gen_specs.py", "gen_evidence.py", "gen_config.py", "gen_ranges.py",
+         "gen_startup.py", "gen_startup_rules.py", "gen_conditions.py", "gen_rules.py", "gen_rule_codes.py",
+         "gen_pattern_codes.py", "gen_record_inits.py")
 
 
 def main(argv: list[str] | None = None) -> None:

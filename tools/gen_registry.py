@@ -12,6 +12,7 @@ Without an argument it reads ../shared/corpus/isg-sdk/meta-data/CncParaDesc.xml.
 
 from __future__ import annotations
 
+import hashlib
 import marshal
 import sys
 from pathlib import Path
@@ -148,6 +149,8 @@ def _kind_module(kind: str, rows: list[dict[str, object]], columns: list[str]) -
     lines.append(")")
     lines.append(_constant("KEYS", "tuple[str, ...]", tuple(keys)))
     lines.append(_constant("KEY_IDS", "tuple[str, ...]", tuple(first[k] for k in keys)))
+    # what a module made of these rows (data/specs_axis.py, tools/gen_specs.py) says it was made of
+    lines.append(_constant("DIGEST", "str", hashlib.sha256("\n".join(lines).encode()).hexdigest()[:32]))
     return "\n".join(lines) + "\n"
 
 

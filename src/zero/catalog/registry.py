@@ -21,7 +21,7 @@ from operator import itemgetter
 
 from zero.catalog.ranges import Range, decode_range, encoded_refers, parse_range
 from zero.forms import kind_hint
-from zero.records import Record, field
+from zero.records import Record, field, fields
 
 try:  # the C search itself: bisect.py only re-exports it (half the import's cost at start-up)
     from _bisect import bisect_left
@@ -374,7 +374,8 @@ class SpecTable(Mapping[str, "ParamSpec"]):
     """
 
     def __init__(self, rows: Mapping[str, dict[str, Any] | tuple[Any, ...]], index_base: dict[str, int],
-                 columns: tuple[str, ...] = (), counts: tuple[tuple[str, str, str], ...] | None = None) -> None:
+                 columns: tuple[str, ...] = (), counts: tuple[tuple[str, str, str], ...] | None = None,
+                 seeds: Mapping[str, dict[str, Any]] | None = None) -> None:
         self._rows = rows  # a row: a dictionary, or a tuple of the built-in table (fields in ``columns``' order)
         self._index_base = index_base
         self._columns = columns
@@ -382,18 +383,26 @@ class SpecTable(Mapping[str, "ParamSpec"]):
         self._counts = counts  # (id, kind, key) of the count parameters (`…_anzahl`), where known already
         # a tuple row (and a None after it) -> its fields in _SPEC_FIELDS' order (None: not given), in C
         self._pick = itemgetter(*(columns.index(f) if f in columns else len(columns) for f in _SPEC_FIELDS))
+        # the built-in table's rows with the seed overlay's facts (``seeds``: the overlay's parameters): their specs
+        # as tools/gen_specs.py wrote them are read where they were written from these rows and facts
+        self._seeds = seeds
 
     def __getitem__(self, param_id: str) -> ParamSpec:
         spec = self._built.get(param_id)
         if spec is None:
-            row = self._rows.get(param_id)  # TableRows.get: not its __getitem__ over it
-            if row is None:
-                raise KeyError(param_id)
-            if isinstance(row, tuple):
-                spec = self._built[param_id] = _spec_from_fields(self._pick((*row, None)), self._index_base)
-            else:
-                spec = self._built[param_id] = _spec_from_row(row, self._index_base)
+            fields = _written_spec(param_id, self._seeds, self._index_base) if self._seeds is not None else None
+            spec = self._built[param_id] = ParamSpec(*fields) if fields is not None else self.build(param_id)
         return spec
+
+    def build(self, param_id: str) -> ParamSpec:
+        """The spec of ``param_id`` made of its row (and the seed overlay's facts), never the one written at build
+        time (what tools/gen_specs.py writes); :class:`KeyError` where there is no such parameter."""
+        row = self._rows.get(param_id)  # TableRows.get: not its __getitem__ over it
+        if row is None:
+            raise KeyError(param_id)
+        if isinstance(row, tuple):
+            return _spec_from_fields(self._pick((*row, None)), self._index_base)
+        return _spec_from_row(row, self._index_base)
 
     def get(self, param_id: str, default: Any = None) -> Any:
         """As ``Mapping.get``, without its ``try``/``KeyError`` (a fleet asks 100,000 times)."""
@@ -827,7 +836,8 @@ def _built(rows: Mapping[str, dict[str, Any] | tuple[Any, ...]], source: str, co
         rows = {**rows, **changed}
         index = None  # rows of a user's catalogue: indexed by the registry
     index_base = overlay.get("index_base", {})
-    specs = SpecTable(rows, index_base, columns, index[3] if index is not None else None)
+    specs = SpecTable(rows, index_base, columns, index[3] if index is not None else None,
+                      params if isinstance(rows, TableRows) else None)
     aliases = {}
     for name, target in overlay.get("aliases", {}).items():
         kind, _, pattern = name.partition(":")
@@ -854,6 +864,47 @@ def _table_key(rows: TableRows, pid: str, seeded_keys: Mapping[str, str | None] 
 
 _KIND_TABLES: dict[str, Any] = {}
 _TABLE_ROWS: dict[str, tuple[Any, ...]] = {}  # the built-in table's rows unmarshalled, by ID (shared, never changed)
+_SPEC_TABLES: dict[str, Any] = {}  # kind -> its module of specs written at build time (None: none, or not usable)
+
+
+def _written_spec(pid: str, seeds: Mapping[str, dict[str, Any]], index_base: dict[str, int]) -> tuple[Any, ...] | None:
+    """The fields of the built-in parameter ``pid``'s :class:`ParamSpec`, in its order, as tools/gen_specs.py
+    wrote them (``data/specs_axis.py``, ...: the seed overlay's facts each was made of beside it): ``None`` where
+    none is written, or it was written from another table module, other facts of the overlay (``seeds``,
+    ``index_base``) or other fields of ParamSpec (a stale module is slower, never wrong). Making the spec from the
+    written fields skips the row's conversion: 2.4 M of a lint's 154 M instructions (issue 40: start-up)."""
+    if type(pid) is not str:
+        return None
+    kind = pid[2:6]
+    specs = _SPEC_TABLES.get(kind, _ABSENT)
+    if specs is _ABSENT:
+        specs = _SPEC_TABLES[kind] = _spec_table(kind, index_base)
+    if specs is None:
+        return None
+    ids = (_KIND_TABLES.get(kind) or _kind_table(kind)).IDS
+    at = bisect_left(ids, pid)
+    if at == len(ids) or ids[at] != pid:
+        return None
+    extra, fields = marshal.loads(specs[at])
+    return fields if extra == seeds.get(pid) else None
+
+
+def spec_fields() -> tuple[str, ...]:
+    """The names of :class:`ParamSpec`'s fields, in order (what tools/gen_specs.py writes each spec's fields in)."""
+    return tuple(f.name for f in fields(ParamSpec))
+
+
+def _spec_table(kind: str, index_base: dict[str, int]) -> tuple[bytes, ...] | None:
+    """One kind's specs written at build time (``SPECS``, in the order of its table's IDS), where they were
+    written for its table module, ParamSpec's fields and the overlay's ``index_base`` as they are (else ``None``)."""
+    try:  # start-up: written at build time, imported at the kind's first parameter
+        got = importlib.import_module(f"zero.catalog.data.specs_{kind.lower()}")
+    except ImportError:
+        return None
+    written_for = (got.TABLE, got.FIELDS, got.INDEX_BASE)
+    if written_for != (getattr(_kind_table(kind), "DIGEST", None), spec_fields(), index_base):
+        return None
+    return got.SPECS  # type: ignore[no-any-return]
 
 
 def _kind_table(kind: str) -> Any:

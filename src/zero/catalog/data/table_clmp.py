@@ -18,3 +18,4 @@ PACKED: tuple[bytes, ...] = (
 )
 KEYS: tuple[str, ...] = ('pzv_grp[].achse[].versatz',)
 KEY_IDS: tuple[str, ...] = ('P-CLMP-00001',)
+DIGEST: str = 'f66f77ec99c74fec75b12943c4dc0e14'

@@ -21,3 +21,4 @@ PACKED: tuple[bytes, ...] = (
 )
 KEYS: tuple[str, ...] = ('ddl[].default', 'ddl[].index', 'ddl[].token', 'ddl[].type')
 KEY_IDS: tuple[str, ...] = ('P-CMLD-00004', 'P-CMLD-00003', 'P-CMLD-00001', 'P-CMLD-00002')
+DIGEST: str = 'b742aa5fe3fcc78f86070638dad3cc31'

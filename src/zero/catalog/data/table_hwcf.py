@@ -24,3 +24,4 @@ PACKED: tuple[bytes, ...] = (
 )
 KEYS: tuple[str, ...] = ('device[].address', 'device[].baudrate', 'device[].irq', 'device[].length', 'device[].name', 'device[].prog_param[]', 'device[].type')
 KEY_IDS: tuple[str, ...] = ('P-HWCF-00003', 'P-HWCF-00006', 'P-HWCF-00005', 'P-HWCF-00004', 'P-HWCF-00002', 'P-HWCF-00007', 'P-HWCF-00001')
+DIGEST: str = '813870b15543e9afd80395ee5b1468e5'

@@ -32,3 +32,4 @@ PACKED: tuple[bytes, ...] = (
 )
 KEYS: tuple[str, ...] = ('feedhold.hr_inkr_verwerfen', 'feedhold.jog_inkr_verwerfen', 'hr_anzahl', 'hr_data[].adr_hr_zaehler', 'hr_data[].hr_abs_pos_init', 'hr_data[].hr_aufl_n', 'hr_data[].hr_aufl_z', 'hr_data[].hr_zaehler_direct_access', 'hr_data[].log_hr_nr', 'hr_data[].max_inkr_pro_takt', 'hr_data[].mode', 'move_limit_warning', 'tasten_anzahl', 'tasten_data[].adr_tasten_zaehler', 'tasten_data[].log_tasten_nr')
 KEY_IDS: tuple[str, ...] = ('P-MANU-00010', 'P-MANU-00011', 'P-MANU-00001', 'P-MANU-00004', 'P-MANU-00012', 'P-MANU-00006', 'P-MANU-00005', 'P-MANU-00003', 'P-MANU-00002', 'P-MANU-00007', 'P-MANU-00013', 'P-MANU-00014', 'P-MANU-00008', 'P-MANU-00015', 'P-MANU-00009')
+DIGEST: str = '62765e7ff3a8af6ffeeb9dfbeae64724'

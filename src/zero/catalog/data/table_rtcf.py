@@ -33,3 +33,4 @@ PACKED: tuple[bytes, ...] = (
 )
 KEYS: tuple[str, ...] = ('cycle_time', 'external_object_name', 'external_thread[].cycle', 'external_thread[].semaphore_name', 'interrupt_source', 'schedule', 'thread[].context_info', 'thread[].cycle', 'thread[].error_on_overflow', 'thread[].function[].calls_per_cycle', 'thread[].function[].name', 'thread[].function[].trace_bit', 'thread[].name', 'thread[].priority', 'time_slice', 'windows_time')
 KEY_IDS: tuple[str, ...] = ('P-RTCF-00002', 'P-RTCF-00005', 'P-RTCF-00006', 'P-RTCF-00007', 'P-RTCF-00001', 'P-RTCF-00018', 'P-RTCF-00017', 'P-RTCF-00009', 'P-RTCF-00011', 'P-RTCF-00013', 'P-RTCF-00012', 'P-RTCF-00014', 'P-RTCF-00008', 'P-RTCF-00010', 'P-RTCF-00003', 'P-RTCF-00004')
+DIGEST: str = 'ec134c795e4abb70f9e08e25f8476262'

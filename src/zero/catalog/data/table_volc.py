@@ -40,3 +40,4 @@ PACKED: tuple[bytes, ...] = (
 )
 KEYS: tuple[str, ...] = ('a', 'alternative_model', 'associate_to_channel', 'b', 'c', 'chain', 'diagnosis_file', 'enable_splicing', 'file[]', 'file_format[]', 'filter_steps', 'interpolation', 'manual_activation', 'max_iterations', 'negate', 'set_to_zero', 'tolerance', 'trace_file', 'use_axis_offsets', 'workpiece_axes', 'x', 'y', 'z')
 KEY_IDS: tuple[str, ...] = ('P-VOLC-00004', 'P-VOLC-00011', 'P-VOLC-00019', 'P-VOLC-00005', 'P-VOLC-00006', 'P-VOLC-00007', 'P-VOLC-00016', 'P-VOLC-00015', 'P-VOLC-00012', 'P-VOLC-00013', 'P-VOLC-00018', 'P-VOLC-00014', 'P-VOLC-00017', 'P-VOLC-00022', 'P-VOLC-00009', 'P-VOLC-00010', 'P-VOLC-00023', 'P-VOLC-00021', 'P-VOLC-00020', 'P-VOLC-00008', 'P-VOLC-00001', 'P-VOLC-00002', 'P-VOLC-00003')
+DIGEST: str = 'fea9c0fe3847ad5d4cbccb82ab37395a'

@@ -21,3 +21,4 @@ PACKED: tuple[bytes, ...] = (
 )
 KEYS: tuple[str, ...] = ('default_index', 'g53_verfuegbar', 'np_grp[].achse[].inaktiv', 'np_grp[].achse[].versch')
 KEY_IDS: tuple[str, ...] = ('P-ZERO-00002', 'P-ZERO-00001', 'P-ZERO-00004', 'P-ZERO-00003')
+DIGEST: str = '53798d9b5c722cfa2d94354e27bcf211'
