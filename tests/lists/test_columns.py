@@ -4,6 +4,7 @@ on the objects."""
 
 from __future__ import annotations
 
+from array import array
 from pathlib import Path
 from typing import Any
 
@@ -241,6 +242,29 @@ def test_a_small_list_like_one_read_before_has_its_own_rows(monkeypatch: pytest.
     assert list(b.line) == [2, 3, 6, 7, 8] and list(b.first) == [-1, 7, 3, -1, -1]
     b.values.append("changed")  # a document's tables are its own
     assert "changed" not in tokenize_text(_SMALL_A).columns.values
+
+
+_ROW_COLUMNS = ("line", "shape", "first", "pattern", "value", "comment")
+
+
+@pytest.mark.parametrize("widths", [False, True])
+def test_a_small_list_has_list_columns_alike_arrays(monkeypatch: pytest.MonkeyPatch, widths: bool) -> None:
+    """A small list keeps its rows in lists, a big one in arrays: the same rows, tables and entries."""
+    text = "# head\na 1 # x\nwz[1].l 2\n\nb P-AXIS-00001 ( P-TOOL-00005 n\nq \"s\"\nwz[12].l 2\nEnde\nc 1\n"
+    small = tokenize_text(text, widths=widths)
+    monkeypatch.setattr(tokenizer, "_SMALL_LIST", 0)  # every list read as a big one
+    big = tokenize_text(text, widths=widths)
+    for name in _ROW_COLUMNS:
+        assert type(getattr(small.columns, name)) is list and type(getattr(big.columns, name)) is array
+        assert list(getattr(small.columns, name)) == list(getattr(big.columns, name)), name
+    if widths:
+        assert small.columns.widths is not None and big.columns.widths is not None
+        assert all(type(w) is list for w in small.columns.widths)
+        assert [list(w) for w in small.columns.widths] == [list(w) for w in big.columns.widths]
+    assert [_fields(e) for e in small.entries] == [_fields(e) for e in big.entries]
+    assert [(type(i), _fields(i)) for i in small.items] == [(type(i), _fields(i)) for i in big.items]
+    assert small.problems == big.problems
+    _check(text)
 
 
 @pytest.mark.parametrize("text", [

@@ -8,7 +8,7 @@ findings are made from them with :meth:`zero.diagnostics.Span.on_line`.
 from __future__ import annotations
 
 from array import array
-from collections.abc import Iterator
+from collections.abc import Iterator, MutableSequence
 from functools import cache
 from itertools import accumulate, pairwise
 
@@ -397,20 +397,24 @@ class Columns:
     ``kinds``), ``comment`` (into ``comments``, ``styles``, ``notes``, ``note_at``; ``-1``: none).
     A key is ``shape.head + f"[{first}]" + shape.tail`` (``head + tail`` without a first index);
     its indices ``(first, *shape.indices)`` (``shape.indices``). A snapshot: built once, not updated
-    when entries are changed afterwards.
+    when entries are changed afterwards. Each per-row column is an array, or a list for a small list: read
+    them as sequences of ints.
     """
 
     __slots__ = ("_comment_ids", "_pattern_ids", "_shape_ids", "_value_ids", "comment", "comments", "first",
                  "kinds", "line", "note_at", "notes", "objects", "pattern", "patterns", "shape", "shapes", "styles",
                  "value", "values", "widths")
 
-    def __init__(self) -> None:
-        self.line = array("i")
-        self.shape = array("i")
-        self.first = array("q")
-        self.pattern = array("i")
-        self.value = array("i")
-        self.comment = array("i")
+    def __init__(self, small: bool = False) -> None:
+        # ``small``: the per-row columns are lists, not arrays (a short list's: an array's extend parses each int
+        # as the argument of a call, ~600 instructions, a list's takes it as it is; a 300-line list's read 1.0 M
+        # instructions fewer). A big list's are arrays: 4 or 8 bytes a row, not a pointer and an int object.
+        self.line: MutableSequence[int] = [] if small else array("i")
+        self.shape: MutableSequence[int] = [] if small else array("i")
+        self.first: MutableSequence[int] = [] if small else array("q")
+        self.pattern: MutableSequence[int] = [] if small else array("i")
+        self.value: MutableSequence[int] = [] if small else array("i")
+        self.comment: MutableSequence[int] = [] if small else array("i")
         self.shapes: list[Shape] = []
         self.patterns: list[str] = []
         self.values: list[str] = []
@@ -424,7 +428,7 @@ class Columns:
         # Per row, when the tokenizer kept them: the widths of the whitespace before the key (its start), between
         # key and value and between value and comment, from which an entry's positions follow (0 for a row whose
         # object exists). None: an entry is built by reading its line again.
-        self.widths: tuple[array[int], array[int], array[int]] | None = None
+        self.widths: tuple[MutableSequence[int], MutableSequence[int], MutableSequence[int]] | None = None
         self._shape_ids: dict[tuple[str, bool, str], int] = {}
         self._pattern_ids: dict[str, int] = {}
         self._value_ids: dict[str, int] = {}

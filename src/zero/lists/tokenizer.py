@@ -14,7 +14,7 @@ with its location, which :mod:`zero.rules.syntax` turns into a finding.
 from __future__ import annotations
 
 from array import array
-from collections.abc import Iterable, Sequence
+from collections.abc import Iterable, MutableSequence, Sequence
 from functools import cache
 from itertools import compress, islice, repeat
 from operator import length_hint
@@ -667,13 +667,14 @@ _small_tables: dict[tuple[tuple[tuple[str, str], ...], tuple[str, ...], tuple[st
 _NEW = -2  # the id of a shape or comment a reader has just seen for the first time
 
 
-def _extend(column: array[int], count: int, values: Iterable[int]) -> None:
+def _extend(column: MutableSequence[int], count: int, values: Iterable[int]) -> None:
     """``column.extend(values)``, ``count`` of them: many are packed in C first (an array's extend parses each
     int as the argument of a call: a seventh of the instructions of reading a big list). Not the rows of a short
-    list: importing struct (a library loaded) costs more than its extends."""
-    if count < _PACK_FROM:
+    list: importing struct (a library loaded) costs more than its extends; nor a list column (a small list's)."""
+    if count < _PACK_FROM or type(column) is list:
         column.extend(values)
         return
+    assert isinstance(column, array)
     from struct import pack  # start-up: only for a big part of a list
 
     column.frombytes(pack(f"{count}{column.typecode}", *values))
@@ -687,9 +688,12 @@ class _Reader:
         # dictionaries below), each distinct one decoded once
         self.binary = isinstance(text, bytes)
         self.text: Any = text
-        self.cols = Columns()
+        # A small list (one part, at most _SMALL_LIST lines) keeps its rows in lists (see Columns); counting its
+        # lines first is a scan in C
+        small = isinstance(text, str) and len(text) <= _CHUNK and text.count("\n") < _SMALL_LIST
+        self.cols = Columns(small)
         if widths:
-            self.cols.widths = (array("i"), array("i"), array("i"))
+            self.cols.widths = ([], [], []) if small else (array("i"), array("i"), array("i"))
         self.slow: list[Item] = []
         self.problems: list[Problem] = []
         self.end_line: int | None = None
