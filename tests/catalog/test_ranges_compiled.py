@@ -74,3 +74,28 @@ def test_whether_a_range_refers_is_read_from_the_written_one_as_the_range_says()
     assert not registry._ranges  # answered from the written ranges: none decoded, none parsed
     other = ParamSpec(id="P-AXIS-00001", kind="AXIS", key="x", type="SGN32", range_text="0 ≤ x ≤ P-AXIS-00008")
     assert load_registry().range_refers(other)  # a text not written: parsed
+
+
+def test_the_bounds_read_from_a_written_range_are_the_bounds_it_evaluates_to() -> None:
+    """encoded_bounds (check_values' judge of a value alone, issue 40) gives what the decoded range evaluates to,
+    number for number (1 and 1.0 are not the same here), and ``None`` for a range that refers to a parameter."""
+    from zero.catalog.ranges import encoded_bounds, encoded_refers
+
+    seen = 0
+    for pid, (_, data) in RANGES.items():
+        if data is None or data[4] is not None:
+            continue
+        if encoded_refers(data):
+            assert encoded_bounds(data) is None, pid
+            continue
+        b = decode_range(data).evaluate(lambda *_: None)  # type: ignore[union-attr]
+        want = (b.low, b.low_strict, b.high, b.high_strict)
+        assert repr(encoded_bounds(data)) == repr(want), pid
+        seen += 1
+    assert seen > 300
+    # expressions the catalogue writes seldom: a limit of an unknown type, a negation, arithmetic, an overflow
+    assert encoded_bounds((("N", ("L", "MAX", "UNS16")), True, ("B", "*", 2, ("L", "MAX", "SGN32")), False, None)) \
+        == (-65535, True, 2 * (2**31 - 1), False)
+    assert encoded_bounds((("L", "MIN", "NOPE"), False, ("B", "+", 10**400, 1.5), False, None)) == \
+        (None, False, None, False)
+    assert encoded_bounds((0, False, ("N", ("B", "-", 5, ("R", "P-AXIS-00008", None))), False, None)) is None

@@ -150,3 +150,46 @@ def test_a_range_against_an_array_of_another_meaning_tries_each_of_its_elements(
         assert got == _reference_values(_context(text, registry, "AXIS", True))
         found.append([d.span.line for d in got])
     assert found == [[], [7], [], []]
+
+
+def test_a_value_judged_alone_is_judged_as_the_range_verdict_judges_it() -> None:
+    """check_values' judge of a parameter whose findings depend on the value alone (issue 40: read from the range
+    written at build time, the default asked for only where a value fails) says what _range_verdict says: for
+    every parameter of the catalogue, with numbers at its bounds, its default and its listed values; ``None`` (the
+    entry decides) for a value that is no number; and for a range the registry parses (a text not written)."""
+    from zero.catalog.registry import ParamSpec
+    from zero.catalog.values import Value
+
+    builtin = load_registry()
+    prose = R._prose_rows()
+    other = ParamSpec(id="P-AXIS-00001", kind="AXIS", key="x", type="SGN32", range_text="-3 < x ≤ 7", default="9")
+    refers = ParamSpec(id="P-AXIS-00001", kind="AXIS", key="x", type="SGN32", range_text="0 ≤ x ≤ P-AXIS-00008")
+    judged = 0
+    # (the two made-up ones each with a registry of its own: a registry keeps one parsed range per ID)
+    for registry, spec in [*((builtin, s) for s in builtin.specs.values()), (load_registry(), other),
+                           (load_registry(), refers)]:
+        judge = R._judge(registry, spec, prose)
+        assert (judge is not None) == (spec.id not in prose and not registry.range_refers(spec)), spec.id
+        if judge is None:
+            continue
+        numbers: set[int | float] = {0, 1, -1, 0.5, 2**31, -(2**31), 10**20, *spec.enum}
+        dflt = R._default_of(spec)
+        if dflt is not None:
+            numbers |= {dflt, dflt + 1, dflt - 1}
+        rng = registry.range_of(spec)
+        if rng is not None and not rng.refs:
+            b = rng.evaluate(lambda *_: None)
+            numbers |= {x + d for x in (b.low, b.high) if x is not None for d in (-1, 0, 1)}
+            numbers |= set(rng.allowed or ())
+        for n in numbers:
+            v = Value(number=n)
+            assert R._judged(judge, v) == R._range_verdict(registry, spec, v, {}), (spec.id, n)
+        for v in (Value(text="x"), Value(number=1, problem="type"), Value(ref=("P-AXIS-00008", None))):
+            assert R._judged(judge, v) == R._range_verdict(registry, spec, v, {}), (spec.id, v)
+        judged += 1
+    assert judged > 1000
+    assert R._judge(load_registry(), refers, prose) is None
+    judge = R._judge(load_registry(), other, prose)
+    assert judge is not None and judge[2] == (-3, True, 7, False)  # parsed, not the written range of its ID
+    assert R._judged(judge, Value(number=9)) is True  # its default, outside its range
+    assert R._judged(judge, Value(number=8)) is False

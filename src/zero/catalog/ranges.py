@@ -449,3 +449,46 @@ def _decode(data: Encoded) -> Expr | None:
     if tag == "B":
         return BinOp(data[1], _decode(data[2]), _decode(data[3]))  # type: ignore[arg-type]
     return Neg(_decode(data[1]))  # type: ignore[arg-type]
+
+
+def encoded_bounds(data: Encoded) -> tuple[Number | None, bool, Number | None, bool] | None:
+    """What ``decode_range(data).evaluate(...)`` gives (low, low_strict, high, high_strict) for a range
+    :func:`encode_range` wrote that refers to no other parameter, read from the constants without building
+    the range or its bounds (a lint judges some two hundred values so, once per parameter: issue 40);
+    ``None`` for a range that refers to one. Not for a set of values (``allowed``)."""
+    low, high = data[0], data[2]
+    if type(low) is tuple:  # not a number or None: an expression (most bounds are numbers, read as they are)
+        low = _constant(low)
+    if type(high) is tuple:
+        high = _constant(high)
+    if low is _REFERS or high is _REFERS:
+        return None
+    return low, data[1], high, data[3]
+
+
+_REFERS: Any = object()  # what _constant gives for an expression that reads another parameter
+
+
+def _constant(data: Encoded) -> Any:
+    """What ``_decode(data).eval(...)`` gives for an expression without references (see the classes above),
+    else ``_REFERS``."""
+    if type(data) is not tuple:
+        return data  # a number, or None (no bound)
+    tag = data[0]
+    if tag == "L":
+        lim = TYPE_LIMITS.get(data[2])
+        return None if lim is None else lim[0] if data[1] == "MIN" else lim[1]
+    if tag == "R":
+        return _REFERS
+    if tag == "N":
+        v = _constant(data[1])
+        return v if v is None or v is _REFERS else -v
+    a, b = _constant(data[2]), _constant(data[3])
+    if a is _REFERS or b is _REFERS:
+        return _REFERS
+    if a is None or b is None:
+        return None
+    try:
+        return a * b if data[1] == "*" else a + b if data[1] == "+" else a - b
+    except OverflowError:  # as BinOp.eval
+        return None
