@@ -9,13 +9,17 @@ import pytest
 from hypothesis import example, given, settings
 from hypothesis import strategies as st
 
-from zero.lists.model import MAX_INDEX_DIGITS, ValueKind, _indices, _part, is_key, key_form
+from zero.lists.model import MAX_INDEX_DIGITS, Columns, ValueKind, _indices, _part, is_key, key_form
 from zero.lists.tokenizer import (
     _KIND_OF,
     _annotation_re,
     _comment_parts,
     _comment_table,
+    _comments_parts,
     _kind_re,
+    _shape_info,
+    _shape_of,
+    _shapes_of,
     annotation_at,
     value_kind,
 )
@@ -102,3 +106,55 @@ def _part_by_pattern(text: str) -> tuple[str, tuple[int, ...]]:
 def test_indices_as_the_pattern_any(text: str) -> None:
     assert [text[s:e] for s, e in _indices(text)] == re.findall(r"\[([0-9]+)\]", text)
     assert _part(text) == _part_by_pattern(text)
+
+
+@settings(max_examples=300, deadline=None)
+@given(st.lists(st.text(_COMMENT_CHARS + "/*", min_size=1, max_size=30), max_size=6, unique=True), st.booleans())
+@example(["( P-AXIS-00016 : a", "( P-AXIS-00017 : b"], False)
+@example(["/* c */", "plain", "# c", "( P-AXIs-00016 ( P-AXIS-00017"], True)
+def test_comments_parts_as_one_at_a_time(comments: list[str], seen: bool) -> None:
+    """The comments a list reads are told in one step (the run's first list: none seen before) as one at a time;
+    ``seen``: some of them seen before."""
+    for c in comments:
+        _comment_table.pop(c, None)
+    alone = [_comment_parts(c) for c in comments]
+    for c in comments[1 if seen else 0:]:
+        _comment_table.pop(c, None)
+    styles, notes, note_at = _comments_parts(comments)
+    assert list(zip(styles, notes, note_at, strict=True)) == alone
+    assert [_comment_table.get(c) for c in comments] == alone  # kept for the run's next lists
+
+
+_NAMES = st.text("ab_9.", min_size=1, max_size=8).filter(lambda s: s[0] not in "9.") | st.just("Ende")
+_TAILS = st.just("") | st.text("a_9.[]0", max_size=10).map(lambda s: "]" + s)
+
+
+@settings(max_examples=400, deadline=None)
+@given(st.lists(st.tuples(_NAMES, _TAILS), max_size=6, unique=True))
+@example([("a.b", ""), ("a..b", ""), ("a.", ""), ("Ende", ""), ("w", "]"), ("w", "].x.y"), ("w", "]x"), ("w", "].x."),
+          ("w", "]..x"), ("w", "][2].x"), ("w", "].x[3]"), ("w", "].x]"), ("w", "]."), ("w.", "].x")])
+def test_shapes_of_as_one_at_a_time(keys: list[tuple[str, str]]) -> None:
+    """The key shapes a list reads, told in one step as one at a time (what the row pattern gives: names, then
+    the rest of the key from its first index's `]`, or nothing)."""
+    alone = [_shape_of(k) for k in keys]
+    assert _shapes_of(keys) == alone
+    assert [_shape_info[k] for k in keys] == alone
+    for key, info in zip(keys, alone, strict=True):
+        name, tail = key
+        assert (info is not None) is (is_key(f"{name}[0{tail}") if tail else is_key(name) and name != "Ende")
+
+
+@settings(max_examples=200, deadline=None)
+@given(st.lists(st.tuples(_NAMES, _TAILS), max_size=6, unique=True), st.booleans())
+def test_shapes_added_at_once_as_one_at_a_time(keys: list[tuple[str, str]], one_before: bool) -> None:
+    """Columns.add_shapes adds shapes at once (each a key, none added before) as one at a time."""
+    infos = [_shape_of(k) for k in keys]
+    at_once, alone = Columns(), Columns()
+    if one_before:  # a shape added before (what add_entry adds): one at a time
+        for cols in (at_once, alone):
+            cols.shape_id("a", True, ".b")
+    ids = at_once.add_shapes(infos)
+    assert ids == [-1 if info is None else alone.add_shape(*info) for info in infos]
+    fields = [[(s.head, s.tail, s.pattern, s.indices, s.indexed) for s in cols.shapes] for cols in (at_once, alone)]
+    assert fields[0] == fields[1] and at_once.patterns == alone.patterns
+    assert at_once._shape_ids == alone._shape_ids and at_once._pattern_ids == alone._pattern_ids

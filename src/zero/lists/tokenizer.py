@@ -17,10 +17,11 @@ from array import array
 from collections.abc import Iterable, MutableSequence, Sequence
 from functools import cache
 from itertools import compress, islice, repeat
-from operator import length_hint
+from operator import attrgetter, itemgetter, length_hint, methodcaller
 
 from zero.lists.encoding import declarable, decode
 from zero.lists.model import (
+    _CACHE_LIMIT,
     Blank,
     Columns,
     ColumnTables,
@@ -34,6 +35,7 @@ from zero.lists.model import (
     Key,
     Problem,
     ValueKind,
+    _patterns,
     _singles,
     is_key,
     parse_key,
@@ -532,6 +534,35 @@ def _comment_parts(comment: str) -> tuple[CommentStyle, str | None, int]:
     return got
 
 
+def _comments_parts(comments: list[str]) -> tuple[list[CommentStyle], list[str | None], list[int]]:
+    """:func:`_comment_parts` of each of ``comments`` (distinct), as three lists: styles, notes, their columns.
+    Comments the run has not seen (a first list's: all) in C, a step over all of them at a time: the annotation
+    pattern searched in each, the style by its first character (one at a time a comment cost ~11,000
+    instructions, most of them its ten slices: a 230-comment list's read 2 M instructions more)."""
+    known = list(map(_comment_table.get, comments))
+    if known.count(None) < len(known):  # some seen before (another list of a fleet): one at a time
+        parts = [got or _comment_parts(c) for got, c in zip(known, comments, strict=True)]
+        return [p[0] for p in parts], [p[1] for p in parts], [p[2] for p in parts]
+    found: list[Any] = list(map(_annotation_re().search, comments))
+    notes: list[str | None]
+    if None in found:
+        notes = [m[1] if m is not None else None for m in found]
+        note_at = [m.start(1) if m is not None else -1 for m in found]
+    else:  # each holds one (`( P-AXIS-00016 : …`): the usual list
+        notes = list(map(itemgetter(1), found))
+        note_at = list(map(methodcaller("start", 1), found))
+    styles: list[Any] = list(map(_STYLE_OF.get, map(itemgetter(0), comments)))
+    if None in styles:  # neither `#` nor `(`
+        styles = [style or comment_style(c) for style, c in zip(styles, comments, strict=True)]
+    if len(_comment_table) < _TABLE_LIMIT:
+        said = zip(comments, zip(styles, notes, note_at, strict=True), strict=True)
+        if max(map(len, comments), default=0) < 512:
+            _comment_table.update(said)
+        else:
+            _comment_table.update((c, p) for c, p in said if len(c) < 512)
+    return styles, notes, note_at
+
+
 def _read_row(doc: Document, row: int) -> Entry:
     """The entry of a row the tokenizer read into columns only: from the columns' widths where it kept
     them, else its line read again, as it was."""
@@ -640,7 +671,7 @@ row_readers.extend((_read_row, _read_rows))
 # None: not a key the columns take; kept across the documents of a run.
 _ShapeInfo = tuple[str, bool, str, str, tuple[int, ...]]
 _shape_info: dict[tuple[str, str], _ShapeInfo | None] = {}
-_UNKNOWN: _ShapeInfo = ("", False, "", "", ())
+_UNKNOWN: Any = object()  # a key _shape_info does not hold (it holds None for what is no key)
 
 
 def _shape_of(key: tuple[str, str]) -> _ShapeInfo | None:
@@ -656,6 +687,34 @@ def _shape_of(key: tuple[str, str]) -> _ShapeInfo | None:
     return info
 
 
+def _shapes_of(keys: list[tuple[str, str]]) -> list[_ShapeInfo | None]:
+    """:func:`_shape_of` of each of ``keys`` (distinct), in one loop. What the row pattern matched needs few
+    checks to be a key: no empty name, and a rest (after the first index) of `.name`s; only a rest with more
+    indices is read by is_key and shape_parts, and the pattern of the others is their names and rest as they are
+    (each key through _shape_of, is_key and shape_parts cost ~16,000 instructions: 3 M of a 330-line list's read,
+    where nearly every key is a shape of its own)."""
+    if len(_patterns) + len(keys) >= _CACHE_LIMIT:  # the patterns interned no more: one at a time, as ever
+        return [_shape_of(key) for key in keys]
+    out: list[_ShapeInfo | None] = []
+    append = out.append
+    intern = _patterns.setdefault  # a pattern interned (as shape_parts interns it)
+    for name, tail in keys:
+        if ".." in name or name[-1] == ".":  # an empty name (the pattern's names never start with a dot)
+            append(None)
+        elif not tail:  # no index: the names are the key, and its pattern
+            append((name, False, "", intern(name, name), ()) if name != END_KEYWORD else None)
+        elif "[" in tail or "]" in tail[1:]:  # more indices after the first (or a stray bracket)
+            append(_shape_of((name, tail)))
+        elif tail == "]" or (tail[1] == "." and ".." not in tail and tail[-1] != "."):  # `.name`s
+            pattern = f"{name}[]{tail[1:]}"
+            append((name, True, tail[1:], intern(pattern, pattern), ()))
+        else:
+            append(None)
+    if len(_shape_info) + len(keys) <= _TABLE_LIMIT:
+        _shape_info.update(zip(keys, out, strict=True))
+    return out
+
+
 # The tables of the small lists read in this run, by the distinct key shapes, values and comments they
 # hold (in order): a fleet's lists of one kind repeat each other's, so another one copies the tables.
 _SMALL_LIST = 8192  # lines
@@ -664,6 +723,7 @@ _small_tables: dict[tuple[tuple[tuple[str, str], ...], tuple[str, ...], tuple[st
                     tuple[ColumnTables, dict[tuple[str, str], int], dict[str, int], dict[str, int], list[int]]] = {}
 
 
+_pattern_of = attrgetter("pattern")  # of a Shape
 _NEW = -2  # the id of a shape or comment a reader has just seen for the first time
 
 
@@ -720,7 +780,7 @@ class _Reader:
         cols = self.cols
         shapes, firsts, values, comments = self.shapes, self.firsts, self.values, self.comments
         add_shapes, add_comments, add_values = cols.add_shapes, cols.add_comments, cols.add_values
-        info_of, comment_table = _shape_info.get, _comment_table.get
+        info_of = _shape_info.get
         shape_pattern = self.shape_pattern
         binary = self.binary
         nl: Any = b"\n" if binary else "\n"
@@ -770,18 +830,21 @@ class _Reader:
                 if new_shapes:
                     named = ([(a.decode("ascii"), b.decode("ascii") if b is not None else "") for a, b in new_shapes]
                              if binary else [(a, b if b is not None else "") for a, b in new_shapes])
-                    shapes.update(zip(new_shapes, add_shapes(
-                        [_shape_of(k) if (info := info_of(k, _UNKNOWN)) is _UNKNOWN else info for k in named]),
-                        strict=True))
+                    infos = list(map(info_of, named, repeat(_UNKNOWN)))
+                    if infos.count(_UNKNOWN) == len(infos):  # none seen before (the run's first list)
+                        infos = _shapes_of(named)
+                    elif _UNKNOWN in infos:
+                        fresh = iter(_shapes_of([k for k, i in zip(named, infos, strict=True) if i is _UNKNOWN]))
+                        infos = [next(fresh) if i is _UNKNOWN else i for i in infos]
+                    shapes.update(zip(new_shapes, add_shapes(infos), strict=True))
                     if len(shape_pattern) < len(cols.shapes):
-                        shape_pattern.extend([sh.pattern for sh in cols.shapes[len(shape_pattern):]])
+                        shape_pattern.extend(map(_pattern_of, cols.shapes[len(shape_pattern):]))
                 if new_values:
                     said = [v.decode("ascii") for v in new_values] if binary else new_values
                     values.update(zip(new_values, add_values(said, _value_kinds(said)), strict=True))
                 if new_comments:
                     said = [c.decode("ascii") for c in new_comments] if binary else new_comments
-                    comments.update(zip(new_comments, add_comments(
-                        said, [comment_table(c) or _comment_parts(c) for c in said]), strict=True))
+                    comments.update(zip(new_comments, add_comments(said, *_comments_parts(said)), strict=True))
                 if small and len(_small_tables) < _SMALL_TABLES:
                     _small_tables[signature] = (cols.tables(), dict(shapes), dict(values), dict(comments),
                                                 list(shape_pattern))
