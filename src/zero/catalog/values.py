@@ -11,7 +11,6 @@ and ``zero diff`` all read values through this module.
 from __future__ import annotations
 
 import sys
-from array import array
 from collections.abc import Iterator, Mapping, Sequence
 from itertools import chain
 
@@ -321,15 +320,16 @@ def _rows_by_shape(shape: Sequence[int], count: int) -> list[Sequence[int]]:
     sequence of distinct shapes (a tool table: every tool writes its parameters in the same order) is
     recognised by comparing its arrays in C, and each shape's rows are a ``range`` (no int per row held)."""
     n = len(shape)
-    if n >= 4096 and isinstance(shape, array):
+    if n >= 4096:  # a list's or an array's (the column of a big list): compared, sliced and repeated in C
+        seq: Any = shape
         try:
-            period = shape.index(shape[0], 1)
+            period = seq.index(seq[0], 1)
         except ValueError:
             period = 0
-        head = shape[:period]
+        head = seq[:period]
         whole = n - n % period if period else 0
-        if period and len(set(head)) == period and shape[:whole] == head * (n // period) \
-                and shape[whole:] == head[:n - whole]:
+        if period and len(set(head)) == period and seq[:whole] == head * (n // period) \
+                and seq[whole:] == head[:n - whole]:
             ranges: list[Sequence[int]] = [[] for _ in range(count)]
             for at, sid in enumerate(head):
                 ranges[sid] = range(at, n, period)
@@ -343,10 +343,10 @@ def _rows_by_shape(shape: Sequence[int], count: int) -> list[Sequence[int]]:
 def take(column: Sequence[int], rows: Sequence[int]) -> Sequence[int]:
     """``column``'s values at ``rows`` (increasing), in order: a slice where the rows are evenly spaced (a
     shape's rows in a repeating table), taken in C; else one look-up per row."""
-    if type(rows) is range and isinstance(column, array):
+    if type(rows) is range:  # a column is a list or an array: sliced alike
         return column[rows.start:rows.stop:rows.step]
     n = len(rows)
-    if n >= 64 and isinstance(column, array):
+    if n >= 64:
         start, stop = rows[0], rows[-1]
         step = rows[1] - start
         if step > 0 and stop == start + step * (n - 1) and rows == list(range(start, stop + 1, step)):
