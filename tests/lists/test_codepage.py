@@ -156,3 +156,34 @@ def test_format_of_an_undeclared_code_page_says_how_to_declare_it() -> None:
 def test_any_bytes_in_a_declared_code_page_come_back_as_they_were(data: bytes, codec: str) -> None:
     doc = tokenize(data, "x.lis", codec)
     assert document_bytes(doc) == data
+
+
+def _decode_whole(data: bytes) -> tuple[str, str, bool]:
+    """What decode gives, the whole text decoded at each step (as it did before it decoded from the first stray
+    byte on)."""
+    try:
+        return data.decode("utf-8"), "utf-8", False
+    except UnicodeDecodeError:
+        pass
+    text = data.decode("utf-8", "surrogateescape")
+    if len(text) < len(data):
+        return text, "utf-8", False
+    if not any(0x80 <= b < 0xA0 for b in data):
+        return data.decode("latin-1"), "cp1252", False
+    try:
+        return data.decode("cp1252"), "cp1252", False
+    except UnicodeDecodeError:
+        return data.decode("latin-1"), "latin-1", False
+
+
+_PIECES = [b"a 1\n", b"# \xc3\xa4\n", b"\xb5", b"\xe2\x82\xac", b"\x81", b"\x9f", b"\xc3", b"\xa4", b"\xf0\x9f\x98\x80",
+           b"\xed\xa0\x80", b"x", b"\xef\xbb\xbf"]
+
+
+@settings(max_examples=400, deadline=None)
+@given(st.lists(st.sampled_from(_PIECES), max_size=12).map(b"".join))
+def test_decode_as_the_whole_text_decoded(data: bytes) -> None:
+    """Real UTF-8 before or after the first stray byte, C1 bytes before or after it: decoded as before."""
+    if data.startswith(b"\xef\xbb\xbf"):
+        data = b"x" + data
+    assert decode(data) == _decode_whole(data)

@@ -17,9 +17,11 @@ from zero.lists.tokenizer import (
     _comment_table,
     _comments_parts,
     _kind_re,
+    _kinds,
     _shape_info,
     _shape_of,
     _shapes_of,
+    _value_kinds,
     annotation_at,
     value_kind,
 )
@@ -158,3 +160,17 @@ def test_shapes_added_at_once_as_one_at_a_time(keys: list[tuple[str, str]], one_
     fields = [[(s.head, s.tail, s.pattern, s.indices, s.indexed) for s in cols.shapes] for cols in (at_once, alone)]
     assert fields[0] == fields[1] and at_once.patterns == alone.patterns
     assert at_once._shape_ids == alone._shape_ids and at_once._pattern_ids == alone._pattern_ids
+
+
+@settings(max_examples=300, deadline=None)
+@given(st.lists(st.text(_VALUE_CHARS + "AbZ_\u00e4", max_size=10), max_size=8, unique=True), st.booleans())
+@example(["1", "X_Achse", "0x400001", "P-AXIS-00008.0", "e5", "E", "_1", "\u00e4", "1e5", "\u0661", "-1"], False)
+def test_value_kinds_as_one_at_a_time(values: list[str], seen: bool) -> None:
+    """The values a list reads are told in one step (none seen before: ints and names in C) as one at a time;
+    ``seen``: one of them seen before."""
+    for v in values:
+        _kinds.pop(v, None)
+    if seen and values:
+        _value_kinds(values[:1])
+    assert _value_kinds(values) == [value_kind(v) for v in values]
+    assert [_kinds.get(v) for v in values] == [value_kind(v) for v in values]

@@ -17,7 +17,7 @@ from array import array
 from collections.abc import Iterable, MutableSequence, Sequence
 from functools import cache
 from itertools import compress, islice, repeat
-from operator import attrgetter, itemgetter, length_hint, methodcaller
+from operator import and_, attrgetter, itemgetter, length_hint, methodcaller
 
 from zero.lists.encoding import declarable, decode
 from zero.lists.model import (
@@ -504,7 +504,17 @@ def _value_kind(value: str) -> ValueKind:
 def _value_kinds(values: list[str]) -> list[ValueKind]:
     """:func:`_value_kind` of each of ``values``, in one call (a big list holds thousands of distinct values)."""
     got: list[Any] = list(map(_kinds.get, values))
-    if None in got:
+    if not any(got):
+        # None seen before (a run's first list): an unsigned int (most values) and a name told in C, a step over
+        # all values at a time (value_kind costs ~3,000 instructions an int, ~9,000 a name). A name (an
+        # identifier: no sign, digit, dot or `-` in front, no `.` or `-` in it) is a word to value_kind.
+        ints = map(and_, map(str.isdigit, values), map(str.isascii, values))  # [0-9]+
+        got = [ValueKind.INT if i else ValueKind.WORD if w else value_kind(v)
+               for i, w, v in zip(ints, map(str.isidentifier, values), values, strict=True)]
+        if len(_kinds) < _TABLE_LIMIT:
+            _kinds.update(zip(values, got, strict=True) if max(map(len, values), default=0) < 256
+                          else ((v, k) for v, k in zip(values, got, strict=True) if len(v) < 256))
+    elif not all(got):
         room = len(_kinds) < _TABLE_LIMIT
         for at, value in enumerate(values):
             if got[at] is None:
@@ -545,14 +555,14 @@ def _comments_parts(comments: list[str]) -> tuple[list[CommentStyle], list[str |
         return [p[0] for p in parts], [p[1] for p in parts], [p[2] for p in parts]
     found: list[Any] = list(map(_annotation_re().search, comments))
     notes: list[str | None]
-    if None in found:
+    if not all(found):  # (a match is true; `None in found` compares each with None: ~300 instructions)
         notes = [m[1] if m is not None else None for m in found]
         note_at = [m.start(1) if m is not None else -1 for m in found]
     else:  # each holds one (`( P-AXIS-00016 : …`): the usual list
         notes = list(map(itemgetter(1), found))
         note_at = list(map(methodcaller("start", 1), found))
     styles: list[Any] = list(map(_STYLE_OF.get, map(itemgetter(0), comments)))
-    if None in styles:  # neither `#` nor `(`
+    if not all(styles):  # neither `#` nor `(`
         styles = [style or comment_style(c) for style, c in zip(styles, comments, strict=True)]
     if len(_comment_table) < _TABLE_LIMIT:
         said = zip(comments, zip(styles, notes, note_at, strict=True), strict=True)
@@ -692,24 +702,27 @@ def _shapes_of(keys: list[tuple[str, str]]) -> list[_ShapeInfo | None]:
     checks to be a key: no empty name, and a rest (after the first index) of `.name`s; only a rest with more
     indices is read by is_key and shape_parts, and the pattern of the others is their names and rest as they are
     (each key through _shape_of, is_key and shape_parts cost ~16,000 instructions: 3 M of a 330-line list's read,
-    where nearly every key is a shape of its own)."""
+    where nearly every key is a shape of its own). (Not a step over all keys at a time in C, as for comments: a
+    map calling operator's functions costs as much as the few opcodes it stands for.)"""
     if len(_patterns) + len(keys) >= _CACHE_LIMIT:  # the patterns interned no more: one at a time, as ever
         return [_shape_of(key) for key in keys]
     out: list[_ShapeInfo | None] = []
     append = out.append
     intern = _patterns.setdefault  # a pattern interned (as shape_parts interns it)
-    for name, tail in keys:
-        if ".." in name or name[-1] == ".":  # an empty name (the pattern's names never start with a dot)
+    for key in keys:
+        name, tail = key
+        if not tail:  # no index: the names are the key, and its pattern (the names never start with a dot)
+            append(None if ".." in name or name[-1] == "." or name == END_KEYWORD
+                   else (name, False, "", intern(name, name), ()))
+            continue
+        rest = tail[1:]
+        if "[" in rest or "]" in rest:  # more indices after the first (or a stray bracket)
+            append(_shape_of(key))
+        elif ".." in name or name[-1] == "." or (rest and (rest[0] != "." or ".." in rest or rest[-1] == ".")):
             append(None)
-        elif not tail:  # no index: the names are the key, and its pattern
-            append((name, False, "", intern(name, name), ()) if name != END_KEYWORD else None)
-        elif "[" in tail or "]" in tail[1:]:  # more indices after the first (or a stray bracket)
-            append(_shape_of((name, tail)))
-        elif tail == "]" or (tail[1] == "." and ".." not in tail and tail[-1] != "."):  # `.name`s
-            pattern = f"{name}[]{tail[1:]}"
-            append((name, True, tail[1:], intern(pattern, pattern), ()))
-        else:
-            append(None)
+        else:  # `.name`s
+            pattern = name + "[]" + rest
+            append((name, True, rest, intern(pattern, pattern), ()))
     if len(_shape_info) + len(keys) <= _TABLE_LIMIT:
         _shape_info.update(zip(keys, out, strict=True))
     return out
