@@ -680,24 +680,26 @@ row_readers.extend((_read_row, _read_rows))
 # A key shape as the row pattern splits it (names, `]` and the rest) -> what Columns.add_shape takes,
 # None: not a key the columns take; kept across the documents of a run.
 _ShapeInfo = tuple[str, bool, str, str, tuple[int, ...]]
-_shape_info: dict[tuple[str, str], _ShapeInfo | None] = {}
+_shape_info: dict[tuple[str, str | None], _ShapeInfo | None] = {}
 _UNKNOWN: Any = object()  # a key _shape_info does not hold (it holds None for what is no key)
 
 
-def _shape_of(key: tuple[str, str]) -> _ShapeInfo | None:
+def _shape_of(key: tuple[str, str | None]) -> _ShapeInfo | None:
     """What the row pattern's names (``[A-Za-z_][A-Za-z0-9_.]*``) and rest of a key (``]`` and what follows the
-    first index, or ``""``) stand for, if they are a key: names `a.b`, then `[n]`s and `.name[n]`s."""
+    first index, or ``None`` or ``""``: no index) stand for, if they are a key: names `a.b`, then `[n]`s and
+    `.name[n]`s."""
     name, tail = key
     info: _ShapeInfo | None = None
     if (is_key(f"{name}[0{tail}") if tail
             else ".." not in name and name[-1] != "." and name != END_KEYWORD):
-        info = (name, bool(tail), tail[1:], *shape_parts(name, bool(tail), tail[1:]))
+        rest = tail[1:] if tail else ""
+        info = (name, bool(tail), rest, *shape_parts(name, bool(tail), rest))
     if len(_shape_info) < _TABLE_LIMIT:
         _shape_info[key] = info
     return info
 
 
-def _shapes_of(keys: list[tuple[str, str]]) -> list[_ShapeInfo | None]:
+def _shapes_of(keys: list[tuple[str, str | None]]) -> list[_ShapeInfo | None]:
     """:func:`_shape_of` of each of ``keys`` (distinct), in one loop. What the row pattern matched needs few
     checks to be a key: no empty name, and a rest (after the first index) of `.name`s; only a rest with more
     indices is read by is_key and shape_parts, and the pattern of the others is their names and rest as they are
@@ -841,8 +843,8 @@ class _Reader:
                     shape_pattern.extend(pattern_of)
             if known is None:
                 if new_shapes:
-                    named = ([(a.decode("ascii"), b.decode("ascii") if b is not None else "") for a, b in new_shapes]
-                             if binary else [(a, b if b is not None else "") for a, b in new_shapes])
+                    named = ([(a.decode("ascii"), b.decode("ascii") if b is not None else None) for a, b in new_shapes]
+                             if binary else new_shapes)
                     infos = list(map(info_of, named, repeat(_UNKNOWN)))
                     if infos.count(_UNKNOWN) == len(infos):  # none seen before (the run's first list)
                         infos = _shapes_of(named)
@@ -911,9 +913,17 @@ class _Reader:
         if self.end_line is not None:  # after `Ende`: every line the careful way
             self._lines(self.part(pos, end).split("\n"), 0, last, ends_nl, number)
             return
-        mask = [sid >= 0 for sid in sids]
+        # The lines that are no row (their shape id -1, the only one below 0 read() leaves), each found by a
+        # search in C, and the mask of the rows (a list comprehension over every line cost five times as much)
+        mask = [True] * len(sids)
+        others = []
+        at = -1
+        for _ in range(sids.count(-1)):
+            at = sids.index(-1, at + 1)
+            others.append(at)
+            mask[at] = False
         start = 0
-        for i in [i for i, sid in enumerate(sids) if sid < 0]:
+        for i in others:
             if not names[i]:  # the line as a whole
                 s = wholes[i].decode("ascii") if self.binary else wholes[i]
                 if s[-1:] == "\r" and (i < last or ends_nl):
