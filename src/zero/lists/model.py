@@ -7,7 +7,6 @@ findings are made from them with :meth:`zero.diagnostics.Span.on_line`.
 
 from __future__ import annotations
 
-from array import array
 from collections.abc import Iterator, MutableSequence
 from functools import cache
 from itertools import accumulate, count, pairwise
@@ -409,12 +408,19 @@ class Columns:
         # ``small``: the per-row columns are lists, not arrays (a short list's: an array's extend parses each int
         # as the argument of a call, ~600 instructions, a list's takes it as it is; a 300-line list's read 1.0 M
         # instructions fewer). A big list's are arrays: 4 or 8 bytes a row, not a pointer and an int object.
-        self.line: MutableSequence[int] = [] if small else array("i")
-        self.shape: MutableSequence[int] = [] if small else array("i")
-        self.first: MutableSequence[int] = [] if small else array("q")
-        self.pattern: MutableSequence[int] = [] if small else array("i")
-        self.value: MutableSequence[int] = [] if small else array("i")
-        self.comment: MutableSequence[int] = [] if small else array("i")
+        # (The array module is a shared library: loading it is a third of a millisecond a small list never pays.)
+        if small:
+            self.line: MutableSequence[int] = []
+            self.shape: MutableSequence[int] = []
+            self.first: MutableSequence[int] = []
+            self.pattern: MutableSequence[int] = []
+            self.value: MutableSequence[int] = []
+            self.comment: MutableSequence[int] = []
+        else:
+            from array import array  # start-up: a big list's columns only
+
+            self.line, self.shape, self.first = array("i"), array("i"), array("q")
+            self.pattern, self.value, self.comment = array("i"), array("i"), array("i")
         self.shapes: list[Shape] = []
         self.patterns: list[str] = []
         self.values: list[str] = []
@@ -695,7 +701,7 @@ class Document:
         self._text: str | bytes | None = None
         self._columns: Columns | None = None
         self._slow: list[Item] = []
-        self._starts: array[int] | None = None
+        self._starts: MutableSequence[int] | None = None
         self.line_count = len(lines) if lines is not None else 0
 
     @classmethod
@@ -953,11 +959,16 @@ class Document:
 _STARTS_STEP = 1 << 20  # characters split at a time for the index of line starts
 
 
-def _line_starts(text: str | bytes) -> array[int]:
+def _line_starts(text: str | bytes) -> MutableSequence[int]:
     """Where each line of a text starts (then one past the end, as ``text.split("\\n")`` counts them), split
-    a part at a time: a big list's lines are never all objects at once (a 60 MB list: 75 MB for a moment)."""
+    a part at a time: a big list's lines are never all objects at once (a 60 MB list: 75 MB for a moment), and
+    kept in an array (a small list's in a list: no shared library loaded for it)."""
     nl: Any = b"\n" if isinstance(text, bytes) else "\n"
-    starts = array("q", [0])
+    starts: MutableSequence[int] = [0]
+    if len(text) > _STARTS_STEP:
+        from array import array  # start-up: a big list's only
+
+        starts = array("q", starts)
     pos = 0
     while True:
         end = text.find(nl, pos + _STARTS_STEP)

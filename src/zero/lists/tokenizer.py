@@ -13,7 +13,6 @@ with its location, which :mod:`zero.rules.syntax` turns into a finding.
 
 from __future__ import annotations
 
-from array import array
 from collections.abc import Iterable, MutableSequence, Sequence
 from functools import cache
 from itertools import compress, islice, repeat
@@ -749,9 +748,10 @@ def _extend(column: MutableSequence[int], count: int, values: Iterable[int]) -> 
     if count < _PACK_FROM or type(column) is list:
         column.extend(values)
         return
-    assert isinstance(column, array)
+    from array import array  # start-up: loaded with a big list's columns already
     from struct import pack  # start-up: only for a big part of a list
 
+    assert isinstance(column, array)
     column.frombytes(pack(f"{count}{column.typecode}", *values))
 
 
@@ -768,7 +768,12 @@ class _Reader:
         small = isinstance(text, str) and len(text) <= _CHUNK and text.count("\n") < _SMALL_LIST
         self.cols = Columns(small)
         if widths:
-            self.cols.widths = ([], [], []) if small else (array("i"), array("i"), array("i"))
+            if small:
+                self.cols.widths = ([], [], [])
+            else:
+                from array import array  # start-up: a big list's columns only
+
+                self.cols.widths = (array("i"), array("i"), array("i"))
         self.slow: list[Item] = []
         self.problems: list[Problem] = []
         self.end_line: int | None = None
