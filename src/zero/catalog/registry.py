@@ -23,11 +23,6 @@ from zero.catalog.ranges import Range, decode_range, encoded_refers, parse_range
 from zero.forms import kind_hint
 from zero.records import Record, field, fields
 
-try:  # the C search itself: bisect.py only re-exports it (half the import's cost at start-up)
-    from _bisect import bisect_left
-except ImportError:  # an interpreter without the accelerator
-    from bisect import bisect_left
-
 TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (mypy and ruff read it alike)
 if TYPE_CHECKING:
     from pathlib import Path
@@ -173,22 +168,28 @@ class ParamSpec(Record):
 
 
 class SortedIndex(Mapping["Any", "Any"]):
-    """A read-only mapping over keys sorted at build time (the built-in table's index, ``data/table.py``): a
-    look-up bisects them, so that a start-up builds no dictionary of the 1766 parameters to look up a few
-    hundred (issue 40). Iterated in key order."""
+    """A read-only mapping over keys sorted at build time (the built-in table's index, ``data/table.py``),
+    iterated in key order: its dictionary is made in one call in C at the first look-up (as cheap as bisecting
+    for a list's few hundred look-ups, and no ``_bisect``, a shared library to load: issue 40)."""
 
-    __slots__ = ("_keys", "_values")
+    __slots__ = ("_by_key", "_keys", "_values")
 
     def __init__(self, keys: Sequence[Any], values: Sequence[Any]) -> None:
         self._keys, self._values = keys, values
+        self._by_key: dict[Any, Any] | None = None
+
+    def _dict(self) -> dict[Any, Any]:
+        """Key → value, made at the first look-up."""
+        got = self._by_key
+        if got is None:
+            got = self._by_key = dict(zip(self._keys, self._values, strict=True))
+        return got
 
     def get(self, key: Any, default: Any = None) -> Any:
-        keys = self._keys  # _position inline: a list of unknown keys asks once per entry
         try:
-            at = bisect_left(keys, key)
-        except TypeError:  # a key that does not compare with these: none of them
+            return (self._by_key or self._dict()).get(key, default)
+        except TypeError:  # a key that is no dictionary's key (a list): none of them
             return default
-        return self._values[at] if at < len(keys) and keys[at] == key else default
 
     def __getitem__(self, key: Any) -> Any:
         got = self.get(key, _ABSENT)
@@ -198,34 +199,23 @@ class SortedIndex(Mapping["Any", "Any"]):
 
     def get_each(self, keys: Iterable[Any], default: Any = None) -> list[Any]:
         """``[self.get(k, default) for k in keys]`` in one call (a list's kind detection asks for each pattern)."""
-        own, values, n = self._keys, self._values, len(self._keys)
+        got = (self._by_key or self._dict()).get
         out = []
         for key in keys:
             try:
-                at = bisect_left(own, key)
+                out.append(got(key, default))
             except TypeError:
                 out.append(default)
-                continue
-            out.append(values[at] if at < n and own[at] == key else default)
         return out
 
     def __contains__(self, key: object) -> bool:
-        return _position(self._keys, key) >= 0
+        return self.get(key, _ABSENT) is not _ABSENT
 
     def __iter__(self) -> Iterator[Any]:
         return iter(self._keys)
 
     def __len__(self) -> int:
         return len(self._keys)
-
-
-def _position(keys: Sequence[Any], key: Any) -> int:
-    """The position of ``key`` among the sorted ``keys``, -1 where it is none of them."""
-    try:
-        at = bisect_left(keys, key)
-    except TypeError:  # a key that does not compare with these (a number among strings): none of them
-        return -1
-    return at if at < len(keys) and keys[at] == key else -1
 
 
 class TableRows(Mapping[str, "tuple[Any, ...] | dict[str, Any]"]):
@@ -251,9 +241,8 @@ class TableRows(Mapping[str, "tuple[Any, ...] | dict[str, Any]"]):
         if got is None:  # _kind_table and _position, inline (pid a str, as the IDs are)
             kind = pid[2:6]
             table = _KIND_TABLES.get(kind) or _kind_table(kind)
-            ids = table.IDS
-            at = bisect_left(ids, pid)
-            if at == len(ids) or ids[at] != pid:
+            at = (_ID_POSITIONS.get(kind) or _id_positions(kind)).get(pid)
+            if at is None:
                 return None
             got = _TABLE_ROWS[pid] = marshal.loads(table.PACKED[at])
         return got
@@ -274,9 +263,8 @@ class TableRows(Mapping[str, "tuple[Any, ...] | dict[str, Any]"]):
         if got is None:
             kind = pid[2:6]
             table = _KIND_TABLES.get(kind) or _kind_table(kind)
-            ids = table.IDS
-            at = bisect_left(ids, pid)
-            if at == len(ids) or ids[at] != pid:
+            at = (_ID_POSITIONS.get(kind) or _id_positions(kind)).get(pid)
+            if at is None:
                 return default
             got = _TABLE_ROWS[pid] = marshal.loads(table.PACKED[at])
         return got
@@ -321,31 +309,30 @@ _ABSENT: Any = object()
 
 
 class KeyIndex(Mapping[tuple[str, str], str]):
-    """(kind, key) → ID over the built-in table's keys sorted per kind (``data/table_axis.py``, ...): a look-up
-    bisects its kind's keys, no dictionary of every key is built at start-up. Iterated in the order of the
-    IDs (the order of the rows, the first row of each key)."""
+    """(kind, key) → ID over the built-in table's keys sorted per kind (``data/table_axis.py``, ...): a kind's
+    dictionary made in one call at its first look-up (as :class:`SortedIndex`), none of the other kinds'.
+    Iterated in the order of the IDs (the order of the rows, the first row of each key)."""
 
-    __slots__ = ("_keys_of", "_kinds", "_order", "_tables")
+    __slots__ = ("_dicts", "_keys_of", "_kinds", "_order", "_tables")
 
     def __init__(self, kinds: Mapping[str, Any], keys_of: Callable[[str], tuple[Sequence[str], Sequence[str]]]) -> None:
         self._kinds = kinds  # the kinds that have keys
         self._keys_of = keys_of  # a kind's keys sorted, and the ID of each
         self._order: list[tuple[str, str]] | None = None  # every pair in the IDs' order, once iterated
         self._tables: dict[str, tuple[Sequence[str], Sequence[str]]] = {}  # keys_of's answers, by kind
+        self._dicts: dict[str, dict[str, str]] = {}  # a kind's keys → their IDs, made at its first look-up
 
     def get(self, pair: tuple[str, str], default: Any = None) -> Any:
         try:
             kind, key = pair
-            table = self._tables.get(kind)
+            table = self._dicts.get(kind)
             if table is None:
                 if kind not in self._kinds:
                     return default
-                table = self._tables[kind] = self._keys_of(kind)
-            keys, ids = table
-            at = bisect_left(keys, key)
+                table = self._dicts[kind] = dict(zip(*self._keys_of(kind), strict=True))
+            return table.get(key, default)
         except (TypeError, ValueError):  # no (kind, key) pair
             return default
-        return ids[at] if at < len(keys) and keys[at] == key else default
 
     def __getitem__(self, pair: tuple[str, str]) -> str:
         got = self.get(pair, _ABSENT)
@@ -441,7 +428,7 @@ class Registry(Record):
 
     specs: Mapping[str, ParamSpec]
     source: str = "built-in"
-    # (kind, key) → ID; key → its kinds (the built-in table's: sorted tuples bisected, SortedIndex)
+    # (kind, key) → ID; key → its kinds (the built-in table's: KeyIndex, SortedIndex)
     _by_key: Mapping[tuple[str, str], str] = field(default_factory=dict)
     _kinds_of: Mapping[str, Sequence[str]] = field(default_factory=dict)
     _ranges: dict[str, Range | None] = field(default_factory=dict)
@@ -864,7 +851,15 @@ def _table_key(rows: TableRows, pid: str, seeded_keys: Mapping[str, str | None] 
 
 _KIND_TABLES: dict[str, Any] = {}
 _TABLE_ROWS: dict[str, tuple[Any, ...]] = {}  # the built-in table's rows unmarshalled, by ID (shared, never changed)
-_SPEC_TABLES: dict[str, Any] = {}  # kind -> its module of specs written at build time (None: none, or not usable)
+_SPEC_TABLES: dict[str, Any] = {}
+_ID_POSITIONS: dict[str, dict[str, int]] = {}  # kind -> each of its IDs' position in its table
+
+
+def _id_positions(kind: str) -> dict[str, int]:
+    """Each ID of a kind's table and its position in IDS (and PACKED, SPECS), made in one call at its first row."""
+    ids = _kind_table(kind).IDS
+    got = _ID_POSITIONS[kind] = dict(zip(ids, range(len(ids)), strict=True))
+    return got  # kind -> its module of specs written at build time (None: none, or not usable)
 
 
 def _written_spec(pid: str, seeds: Mapping[str, dict[str, Any]], index_base: dict[str, int]) -> tuple[Any, ...] | None:
@@ -881,9 +876,8 @@ def _written_spec(pid: str, seeds: Mapping[str, dict[str, Any]], index_base: dic
         specs = _SPEC_TABLES[kind] = _spec_table(kind, index_base)
     if specs is None:
         return None
-    ids = (_KIND_TABLES.get(kind) or _kind_table(kind)).IDS
-    at = bisect_left(ids, pid)
-    if at == len(ids) or ids[at] != pid:
+    at = (_ID_POSITIONS.get(kind) or _id_positions(kind)).get(pid)
+    if at is None:
         return None
     extra, fields = marshal.loads(specs[at])
     return fields if extra == seeds.get(pid) else None
