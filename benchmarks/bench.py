@@ -175,7 +175,7 @@ def main() -> None:
         if lint_cmd and name != "million":
             with tempfile.TemporaryDirectory() as tmp:
                 y = Path(tmp) / "data.yaml"
-                y.write_bytes(convert(data, "lis", "yaml", "b.lis").output)
+                y.write_bytes(convert(data, "lis", "yaml", load_registry(), "b.lis").output)
                 sec = wall([*lint_cmd, str(y)], 3)
                 row(label, "anchor: yamllint", sec, entries, y.stat().st_size, None, "whole process")
                 lis = Path(tmp) / "data.lis"
@@ -199,7 +199,7 @@ def main() -> None:
         lint_cmd = yamllint_cmd()
         if lint_cmd:
             y = Path(tmp) / "achsmds.yaml"
-            y.write_bytes(convert(axis.read_bytes(), "lis", "yaml", "a.lis").output)
+            y.write_bytes(convert(axis.read_bytes(), "lis", "yaml", load_registry(), "a.lis").output)
             t_yl = wall([*lint_cmd, str(y)], 5)
             print(f"  yamllint (same as YAML)  {t_yl * 1000:7.1f} ms  (zero lint = {t_zero / t_yl:.2f}x of it)")
 

@@ -116,8 +116,10 @@ def main() -> None:
         subprocess.run([PY, str(SHARED), "--zero", zero, "--out", str(out), "--tools", str(tools),
                         "--machines", str(machines)], check=True)
     # An installed zero has its bytecode compiled; a work tree under PYTHONDONTWRITEBYTECODE would
-    # otherwise compile every edited module at every start and measure that instead.
-    subprocess.run([PY, "-m", "compileall", "-q", str(ROOT / "src" / "zero")], check=False,
+    # otherwise compile every edited module at every start and measure that instead. Forced (-f): compileall
+    # takes a cached file for current when its source's time matches to the second, and the import system,
+    # which also checks the size, then compiles a source edited within that second at every start.
+    subprocess.run([PY, "-m", "compileall", "-q", "-f", str(ROOT / "src" / "zero")], check=False,
                    stdout=subprocess.DEVNULL)
     n_tools = entries(out / "tools.lis")
     print(f"workloads in {out}: tools.lis {n_tools:,} entries, fleet {machines} machines\n")
