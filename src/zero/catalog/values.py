@@ -308,10 +308,6 @@ def read_text(spec: ParamSpec, raw: str, kind: ValueKind | None) -> Value:
 
 if TYPE_CHECKING:
     _V = TypeVar("_V", bound="ListValues")
-_NO_KEY: tuple[str, tuple[int, ...], bool] = ("", (), False)
-# a key without a first index (`kenngr.swe_pos`) -> its shape key (pattern, indices, False), or None where
-# it is no key: parsed once per run (a fleet's lists repeat their keys)
-_UNINDEXED: dict[str, tuple[str, tuple[int, ...], bool] | None] = {}
 _MISSING: Any = object()  # what a memo's .get gives for a key it does not hold
 
 
@@ -352,17 +348,6 @@ def take(column: Sequence[int], rows: Sequence[int]) -> Sequence[int]:
         if step > 0 and stop == start + step * (n - 1) and rows == list(range(start, stop + 1, step)):
             return column[start:stop + 1:step]
     return list(map(column.__getitem__, rows))
-
-
-def _unindexed(text: str) -> tuple[str, tuple[int, ...], bool] | None:
-    """``ListValues.shape_keys``'s entry of a shape without a first index, from its key text."""
-    got = _UNINDEXED.get(text, _MISSING)  # not try/except: a list's first look-ups all miss
-    if got is _MISSING:
-        key = parse_key(text)
-        got = (key.pattern, key.indices, False) if key is not None else None
-        if len(_UNINDEXED) < 65_536:
-            _UNINDEXED[text] = got
-    return got  # type: ignore[no-any-return]
 
 
 class ListValues(Record):
@@ -406,14 +391,10 @@ class ListValues(Record):
         shape_keys: list[tuple[str, tuple[int, ...], bool]] = []
         patterns = cols.patterns
         for sh, rows in zip(shapes, shape_rows, strict=True):
-            got: tuple[str, tuple[int, ...], bool] | None
-            if sh.indexed:
-                got = (patterns[sh.pattern], sh.indices, True)
-            else:  # a key without a first index, or written so that it is read the careful way (`[01]`)
-                got = _unindexed(sh.head + sh.tail)
-                if got is None:  # rows without a key
-                    got = _NO_KEY
-                    rows = shape_rows[len(shape_keys)] = []
+            # A shape is a key's (Columns.shape_id): its pattern, and its indices after the first (all of them for a
+            # key without a first index, or one read the careful way, `[01]`), as parse_key reads the key (held by
+            # tests/catalog/test_shape_keys.py; no key parsed again here, a third of binding 300 keys' patterns)
+            got = (patterns[sh.pattern], sh.indices, sh.indexed)
             shape_keys.append(got)
             if not rows:
                 continue
