@@ -448,10 +448,18 @@ class ListValues(Record):
                 rows.__getitem__, ids))) for p, ids in self.pattern_shapes.items()}
         return got
 
+    def rows_of(self, pattern: str) -> Sequence[int]:
+        """``groups[pattern]``, without making every pattern's group (a list's checks ask for a few dozen)."""
+        got = self._groups
+        if got is not None:
+            return got[pattern]
+        ids, rows = self.pattern_shapes[pattern], self.shape_rows
+        return rows[ids[0]] if len(ids) == 1 else sorted(chain.from_iterable(map(rows.__getitem__, ids)))
+
     def value_rows(self, pattern: str) -> Sequence[int]:
         """The rows of ``pattern`` whose entries have a value the controller reads (what ``resolved``
         holds of it), in order."""
-        rows = self.groups[pattern]
+        rows = self.rows_of(pattern)
         if self.valueless:
             valueless, value = self.valueless, self.doc.columns.value
             rows = [r for r in rows if value[r] not in valueless]

@@ -65,8 +65,8 @@ def printable(text: str, escape: bool = False) -> str:
     """Make control characters and stray bytes visible: each one character wide, as U+FFFD (the
     default: a source line keeps its columns under its caret), or as its escape (``escape``: a
     file name or a message on one line of a report, ``\\n``, ``\\r``, ``\\xff``)."""
-    if text.isascii() and text.replace("\t", " ").isprintable():  # nothing to replace: no loop per character
-        return text
+    if text.replace("\t", " ").isprintable():  # nothing to replace (a printable character is never a control
+        return text  # character nor a surrogate; a truncated line's `…` included): no loop per character
     return "".join(
         ch if ch == "\t" or (" " <= ch < "\x7f") or (ord(ch) > 0x9F and not 0xD800 <= ord(ch) <= 0xDFFF)
         else _escaped(ch) if escape else "\ufffd"

@@ -1182,7 +1182,7 @@ def check_duplicates(ctx: Context) -> Iterator[Diagnostic]:
                 if len(group) > 1 and len(set(take(cols.first, group))) < len(group):
                     rows.extend(group)
             continue
-        group = ctx.groups[pattern]
+        group = ctx.rows_of(pattern)
         if len(group) > 1 and len(set(ctx.indices_at(group))) < len(group):
             rows.extend(group)
     rows.sort()
