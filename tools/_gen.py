@@ -35,6 +35,14 @@ def _shown(path: Path) -> str:
         return str(path)
 
 
+def in_folder(folder: Path, pattern: str, texts: Mapping[str, str]) -> dict[Path, str | None]:
+    """``texts`` by file name as files of ``folder``, and ``None`` for each other file there that ``pattern``
+    matches (the module of a kind that has nothing to write any more: removed)."""
+    files: dict[Path, str | None] = {path: None for path in sorted(folder.glob(pattern))}
+    files.update((folder / name, text) for name, text in texts.items())
+    return files
+
+
 def stale(files: Mapping[Path, str | None]) -> list[Path]:
     """The files whose bytes are not the text given (``None``: the file exists)."""
     out = []

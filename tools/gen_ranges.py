@@ -72,9 +72,7 @@ def render() -> dict[str, str]:
 
 def files() -> dict[Path, str | None]:
     """The modules' texts, and ``None`` for the module of a kind that has no range any more."""
-    texts: dict[Path, str | None] = {path: None for path in sorted(DATA.glob("ranges_compiled_*.py"))}
-    texts.update((DATA / name, text) for name, text in render().items())
-    return texts
+    return _gen.in_folder(DATA, "ranges_compiled_*.py", render())
 
 
 def main(argv: list[str] | None = None) -> None:
