@@ -238,7 +238,7 @@ class TableRows(Mapping[str, "tuple[Any, ...] | dict[str, Any]"]):
         if type(pid) is not str or pid[2:6] not in self._kinds:
             return None
         got = _TABLE_ROWS.get(pid)
-        if got is None:  # _kind_table and _position, inline (pid a str, as the IDs are)
+        if got is None:  # _kind_table and the ID's position, inline (pid a str, as the IDs are)
             kind = pid[2:6]
             table = _KIND_TABLES.get(kind) or _kind_table(kind)
             at = (_ID_POSITIONS.get(kind) or _id_positions(kind)).get(pid)
@@ -313,13 +313,12 @@ class KeyIndex(Mapping[tuple[str, str], str]):
     dictionary made in one call at its first look-up (as :class:`SortedIndex`), none of the other kinds'.
     Iterated in the order of the IDs (the order of the rows, the first row of each key)."""
 
-    __slots__ = ("_dicts", "_keys_of", "_kinds", "_order", "_tables")
+    __slots__ = ("_dicts", "_keys_of", "_kinds", "_order")
 
     def __init__(self, kinds: Mapping[str, Any], keys_of: Callable[[str], tuple[Sequence[str], Sequence[str]]]) -> None:
         self._kinds = kinds  # the kinds that have keys
         self._keys_of = keys_of  # a kind's keys sorted, and the ID of each
         self._order: list[tuple[str, str]] | None = None  # every pair in the IDs' order, once iterated
-        self._tables: dict[str, tuple[Sequence[str], Sequence[str]]] = {}  # keys_of's answers, by kind
         self._dicts: dict[str, dict[str, str]] = {}  # a kind's keys → their IDs, made at its first look-up
 
     def get(self, pair: tuple[str, str], default: Any = None) -> Any:

@@ -350,6 +350,12 @@ def take(column: Sequence[int], rows: Sequence[int]) -> Sequence[int]:
     return list(map(column.__getitem__, rows))
 
 
+def _group(shape_rows: list[Sequence[int]], shapes: list[int]) -> Sequence[int]:
+    """The rows of a pattern whose keys have ``shapes`` (ids into ``shape_rows``), in order."""
+    return shape_rows[shapes[0]] if len(shapes) == 1 else sorted(chain.from_iterable(map(shape_rows.__getitem__,
+                                                                                          shapes)))
+
+
 class ListValues(Record):
     """The entries of one list bound to their parameters, and the values the controller uses.
 
@@ -444,8 +450,7 @@ class ListValues(Record):
         got = self._groups
         if got is None:
             rows = self.shape_rows
-            got = self._groups = {p: rows[ids[0]] if len(ids) == 1 else sorted(chain.from_iterable(map(
-                rows.__getitem__, ids))) for p, ids in self.pattern_shapes.items()}
+            got = self._groups = {p: _group(rows, ids) for p, ids in self.pattern_shapes.items()}
         return got
 
     def rows_of(self, pattern: str) -> Sequence[int]:
@@ -453,8 +458,7 @@ class ListValues(Record):
         got = self._groups
         if got is not None:
             return got[pattern]
-        ids, rows = self.pattern_shapes[pattern], self.shape_rows
-        return rows[ids[0]] if len(ids) == 1 else sorted(chain.from_iterable(map(rows.__getitem__, ids)))
+        return _group(self.shape_rows, self.pattern_shapes[pattern])
 
     def value_rows(self, pattern: str) -> Sequence[int]:
         """The rows of ``pattern`` whose entries have a value the controller reads (what ``resolved``
