@@ -32,11 +32,11 @@ def test_a_lint_reads_the_ranges_of_its_kind_alone() -> None:
     import importlib
 
     from zero.catalog.data import ranges_compiled
-    from zero.catalog.registry import _written_range
+    from zero.catalog.registry import written_range
 
-    assert _written_range("P-HWCF-00001") is None and _written_range("P-a.b-00001") is None
+    assert written_range("P-HWCF-00001") is None and written_range("P-a.b-00001") is None
     for pid, written in RANGES.items():
-        assert pid[2:6] in ranges_compiled.KINDS and _written_range(pid) == written
+        assert pid[2:6] in ranges_compiled.KINDS and written_range(pid) == written
         module = importlib.import_module(f"zero.catalog.data.ranges_compiled_{pid[2:6].lower()}")
         assert all(p[2:6] == pid[2:6] for p in module.RANGES)
 

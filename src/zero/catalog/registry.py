@@ -553,7 +553,7 @@ class Registry(Record):
             if not text:
                 rng = None
             else:
-                written = _written_range(spec.id)
+                written = written_range(spec.id)
                 rng = decode_range(written[1]) if written is not None and written[0] == text else \
                     parse_range(text, spec.id)
             self._ranges[spec.id] = rng
@@ -565,7 +565,7 @@ class Registry(Record):
         binds, and reads the range of half of them)."""
         rng = self._ranges.get(spec.id, _ABSENT)
         if rng is _ABSENT and spec.range_text:
-            written = _written_range(spec.id)
+            written = written_range(spec.id)
             if written is not None and written[0] == spec.range_text:
                 return encoded_refers(written[1])
             rng = self.range_of(spec)
@@ -722,7 +722,7 @@ def _counts(registry: Registry) -> dict[str, tuple[tuple[str, int], ...]]:
 _COMPILED_RANGES: dict[str, dict[str, tuple[str, Any]]] = {}
 
 
-def _written_range(pid: str) -> tuple[str, Any] | None:
+def written_range(pid: str) -> tuple[str, Any] | None:
     """(range text, that text parsed, encoded by :func:`~zero.catalog.ranges.encode_range`) of ``pid`` in
     the built-in catalogue, written by ``tools/gen_ranges.py`` (``None``: none written): its kind's module
     (``data/ranges_compiled_axis.py``) imported at the kind's first range (an axis list's lint reads no

@@ -9,7 +9,7 @@ from collections.abc import Callable, Iterator
 from zero.catalog.evidence import Claim, claim, drive_types
 from zero.catalog.ids import SOFT_LIMITS
 from zero.catalog.ranges import TYPE_LIMITS, Bounds, Number, Range, Ref, encoded_bounds, format_number
-from zero.catalog.registry import BUILTIN_SOURCE, KINDS, ParamSpec, Registry, _written_range
+from zero.catalog.registry import BUILTIN_SOURCE, KINDS, ParamSpec, Registry, written_range
 from zero.catalog.values import Resolved, Value, default_number, take
 from zero.diagnostics import Diagnostic, Edit, Fix, Related, Span
 from zero.errors import ZeroError
@@ -737,7 +737,7 @@ def _judge(registry: Registry, spec: ParamSpec, prose: dict[str, Any]) -> Judge 
     text = spec.range_text
     allowed = bounds = None
     if text:
-        written = _written_range(spec.id)
+        written = written_range(spec.id)
         if written is not None and written[0] == text:  # as registry.range_of reads it
             data = written[1]
             if data is not None:
