@@ -21,6 +21,8 @@ import sys
 import tempfile
 from pathlib import Path
 
+from workloads import ready_bytecode
+
 ROOT = Path(__file__).resolve().parent.parent
 SHARED = ROOT.parent / "shared" / "bench" / "workloads_real.py"
 PY = sys.executable
@@ -115,12 +117,7 @@ def main() -> None:
         zero = shutil.which("zero") or str(Path(PY).parent / "zero")
         subprocess.run([PY, str(SHARED), "--zero", zero, "--out", str(out), "--tools", str(tools),
                         "--machines", str(machines)], check=True)
-    # An installed zero has its bytecode compiled; a work tree under PYTHONDONTWRITEBYTECODE would
-    # otherwise compile every edited module at every start and measure that instead. Forced (-f): compileall
-    # takes a cached file for current when its source's time matches to the second, and the import system,
-    # which also checks the size, then compiles a source edited within that second at every start.
-    subprocess.run([PY, "-m", "compileall", "-q", "-f", str(ROOT / "src" / "zero")], check=False,
-                   stdout=subprocess.DEVNULL)
+    ready_bytecode(PY, ROOT / "src" / "zero")
     n_tools = entries(out / "tools.lis")
     print(f"workloads in {out}: tools.lis {n_tools:,} entries, fleet {machines} machines\n")
     print(f"{'workload':<44}{'time':>13}{'cpu':>12}{'peak':>13}   {'anchor':<34}{'ratio':>8}    target")

@@ -27,6 +27,8 @@ import sys
 import tempfile
 from pathlib import Path
 
+from workloads import ready_bytecode
+
 ROOT = Path(__file__).resolve().parent.parent
 SHARED = ROOT.parent / "shared" / "bench" / "workloads_real.py"
 PY = sys.executable
@@ -37,6 +39,8 @@ _PHASES = """
 import gc, os, sys
 from zero.cli import GC_THRESHOLDS
 gc.set_threshold(*GC_THRESHOLDS)  # as the console entry sets them before zero is imported
+import zero
+zero.preload("lint"), zero.preload("check")  # as a lint does (zero.bundles), where the bundles are current
 import zero.cli.exits, zero.cli.options, zero.cli.run, zero.engine.lint, zero.engine.parallel
 stage = int(sys.argv[1])
 if stage >= 1:
@@ -88,10 +92,7 @@ def main() -> None:
         zero = shutil.which("zero") or str(Path(PY).parent / "zero")
         subprocess.run([PY, str(SHARED), "--zero", zero, "--out", str(out), "--tools", "30", "--machines", "1"],
                        check=True, stdout=subprocess.DEVNULL)
-    # an installed zero has its bytecode compiled; a work tree under PYTHONDONTWRITEBYTECODE would otherwise
-    # compile every edited module at every start and count that instead
-    subprocess.run([PY, "-m", "compileall", "-q", "-f", str(ROOT / "src" / "zero")], check=False,  # -f: bench_real.py
-                   stdout=subprocess.DEVNULL)
+    ready_bytecode(PY, ROOT / "src" / "zero")
     empty = out / "zero_bench_empty.py"
     empty.write_text("", encoding="ascii")
     # its bytecode written: an interpreter's first compile() readies the compiler, some 12 M instructions

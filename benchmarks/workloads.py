@@ -1,6 +1,11 @@
-"""Deterministic workloads shared by the benchmark scripts (no randomness, no files needed)."""
+"""Deterministic workloads shared by the benchmark scripts (no randomness, no files needed), and the
+cached bytecode every script readies before it measures."""
 
 from __future__ import annotations
+
+import os
+import subprocess
+from pathlib import Path
 
 HEADER = [
     "# ****************************************",
@@ -83,3 +88,14 @@ def small_list(i: int) -> bytes:
     lines = ["# clamp offsets", *[f"pzv_grp[{g}].achse[{a}].versatz".ljust(54) + str((i * 7 + g * 3 + a) % 5000)
                                   for g in range(3) for a in range(3)], "Ende"]
     return ("\n".join(lines) + "\n").encode()
+
+
+def ready_bytecode(python: str, package: Path) -> None:
+    """Compile zero's modules and write its bundles (``zero.bundles``), as an installed zero has them after
+    its first run: a work tree under ``PYTHONDONTWRITEBYTECODE`` would otherwise compile every edited module
+    at every start and measure that instead. Forced (``-f``): compileall takes a cached file for current
+    when its source's time matches to the second, and the import system, which also checks the size, then
+    compiles a source edited within that second at every start."""
+    subprocess.run([python, "-m", "compileall", "-q", "-f", str(package)], check=False, stdout=subprocess.DEVNULL)
+    env = {k: v for k, v in os.environ.items() if k != "PYTHONDONTWRITEBYTECODE"}
+    subprocess.run([python, "-m", "zero.bundles"], check=False, env={**env, "PYTHONPATH": str(package.parent)})

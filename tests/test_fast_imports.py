@@ -1,10 +1,13 @@
 """zero's own finder (``zero/__init__.py``, issue 40: start-up): zero's modules from their current cached
-bytecode, exactly what Python's finders give, and Python's finders for everything else."""
+bytecode, exactly what Python's finders give, and Python's finders for everything else; and the bundles
+(``zero.bundles``, ``zero.preload``): a command's modules run from one file, as Python's import runs them."""
 
 from __future__ import annotations
 
+import ast
 import compileall
 import json
+import marshal
 import os
 import py_compile
 import shutil
@@ -15,6 +18,7 @@ from pathlib import Path
 import pytest
 
 import zero
+from zero.bundled_modules import COMMANDS
 
 SRC = Path(zero.__file__).parent
 
@@ -178,3 +182,171 @@ def test_importing_zero_again_keeps_one_finder(tmp_path: Path) -> None:
             "print(ours, type(m.__loader__).__module__)")
     out = _child(root, "-c", code)
     assert out.stdout.split() == ["1", "zero"], out.stderr
+
+
+# --- bundles (zero.bundles, zero.preload): a command's modules from one file -----------------------------
+
+# A child's view of every bundled module, after the bundles were run ("preload") or after Python imported
+# each ("import"): what the import system leaves on a module, and the names its body made (with their types).
+_BUNDLE_PROBE = r"""
+import importlib, json, sys, types
+import zero
+from zero.bundled_modules import COMMANDS
+how = sys.argv[1]
+for command, names in COMMANDS.items():
+    if how == "preload":
+        assert zero.preload(command), command
+    else:
+        for name in names:
+            importlib.import_module(name)
+out = {"modules": sorted(n for n in sys.modules if n.startswith("zero"))}
+for names in COMMANDS.values():
+    for name in names:
+        m = sys.modules[name]
+        spec = m.__spec__
+        out[name] = {
+            "file": m.__file__, "cached": m.__cached__, "path": getattr(m, "__path__", None), "package": m.__package__,
+            "spec": [spec.name, spec.origin, spec.cached, spec.parent, spec.has_location,
+                     spec.submodule_search_locations],
+            "loader": [type(m.__loader__).__module__, m.__loader__.name, m.__loader__.path,
+                       m.__loader__ is spec.loader],
+            "on_parent": getattr(sys.modules[name.rpartition(".")[0]], name.rpartition(".")[2], None) is m,
+            "names": sorted((k, v.__name__ if isinstance(v, types.ModuleType) else type(v).__name__)
+                            for k, v in vars(m).items() if k not in ("__spec__", "__loader__", "__builtins__")),
+        }
+print(json.dumps(out))
+"""
+
+
+def _bundle(root: Path, command: str) -> Path:
+    return root / "zero" / "__pycache__" / f"bundle-{command}.{sys.implementation.cache_tag}.bin"
+
+
+def _write_bundles(root: Path) -> None:
+    out = _child(root, "-m", "zero.bundles", PYTHONDONTWRITEBYTECODE="")
+    assert out.returncode == 0, out.stderr
+    assert all(_bundle(root, command).is_file() for command in COMMANDS)
+
+
+# A lint of axis.lis in the child that says, as its last line, which bundles it asked for and used.
+_LINT = ("import sys, zero, zero.cli.lean as lean\n"
+         "end = lean.end\n"
+         "def told(code):\n"
+         "    print(sorted(zero.BUNDLES_ASKED.items()))\n"
+         "    end(code)\n"
+         "lean.end = told\nsys.argv = ['zero', 'lint', 'axis.lis']\nlean.main()\n")
+
+
+def _lint(root: Path, **env: str) -> tuple[str, list[tuple[str, bool]]]:
+    if not (root / "axis.lis").exists():
+        (root / "axis.lis").write_text("# axis\nkenngr.achs_name   X\nkenngr.achs_typ   9\nEnde\n", encoding="latin-1")
+    out = _child(root, "-c", _LINT, ZERO_NO_CACHE="1", **env)
+    assert out.returncode in (0, 1), out.stderr
+    *said, used = out.stdout.strip().splitlines()
+    return "\n".join(said) + out.stderr, [tuple(pair) for pair in ast.literal_eval(used)]
+
+
+def test_bundled_modules_are_what_pythons_import_gives(tmp_path: Path) -> None:
+    root = _copy(tmp_path)
+    _compile(root)
+    _write_bundles(root)
+    preloaded = json.loads(_child(root, "-c", _BUNDLE_PROBE, "preload").stdout)
+    imported = json.loads(_child(root, "-c", _BUNDLE_PROBE, "import").stdout)
+    assert preloaded == imported
+    assert preloaded["zero.rules"]["path"] == [str(root / "zero" / "rules")]
+    assert preloaded["zero.engine.lint"]["loader"][0] == "zero"  # zero's own loader, as its finder gives
+
+
+def test_a_lint_writes_its_bundles_and_the_next_runs_them(tmp_path: Path) -> None:
+    root = _copy(tmp_path)
+    _compile(root)
+    first, used = _lint(root, PYTHONDONTWRITEBYTECODE="")
+    assert used == [("check", False), ("lint", False)]
+    assert all(_bundle(root, command).is_file() for command in COMMANDS)
+    again, used = _lint(root)
+    assert used == [("check", True), ("lint", True)]
+    assert again == first and "1 file checked" in first
+
+
+def test_no_bundle_is_written_where_python_writes_no_cached_bytecode(tmp_path: Path) -> None:
+    root = _copy(tmp_path)
+    _compile(root)
+    for env in ({}, {"PYTHONDONTWRITEBYTECODE": "", "PYTHONOPTIMIZE": "1"}):  # _child: -B; then -O (no finder)
+        _, used = _lint(root, **env)
+        assert not any(ok for _, ok in used)
+        assert not any(_bundle(root, command).exists() for command in COMMANDS)
+
+
+@pytest.mark.parametrize("change", ["content", "same size, other time", "module list"])
+def test_a_stale_bundle_is_not_run_and_is_written_again(tmp_path: Path, change: str) -> None:
+    root = _copy(tmp_path)
+    _compile(root)
+    _write_bundles(root)
+    module = root / "zero" / ("bundled_modules.py" if change == "module list" else "rules/syntax.py")
+    st = module.stat()
+    if change == "same size, other time":
+        os.utime(module, ns=(st.st_atime_ns, st.st_mtime_ns + 1))  # a nanosecond later: no longer the same file
+    else:
+        module.write_text(module.read_text(encoding="utf-8") + "\nMARKER = 'edited'\n", encoding="utf-8")
+    before = _bundle(root, "check").read_bytes()
+    _, used = _lint(root, PYTHONDONTWRITEBYTECODE="")
+    assert dict(used) == {"lint": change != "module list", "check": False}
+    assert _bundle(root, "check").read_bytes() != before  # written again, of the module as it is now
+    _, used = _lint(root)
+    assert used == [("check", True), ("lint", True)]
+    if change == "content":
+        code = ("import zero; zero.preload('lint'); zero.preload('check')\n"
+                "import zero.rules.syntax as m; print(m.MARKER)")
+        assert _child(root, "-c", code).stdout.strip() == "edited"
+
+
+@pytest.mark.parametrize("damage", ["empty", "cut short", "another format", "not marshal", "moved"])
+def test_a_damaged_or_foreign_bundle_is_not_run(tmp_path: Path, damage: str) -> None:
+    root = _copy(tmp_path)
+    _compile(root)
+    _write_bundles(root)
+    bundle = _bundle(root, "check")
+    data = bundle.read_bytes()
+    if damage == "moved":  # the same files elsewhere: each module's file names would be wrong
+        moved = tmp_path / "elsewhere"
+        shutil.copytree(root / "zero", moved / "zero")
+        root = moved
+    else:
+        size = int.from_bytes(data[:4], "little")
+        header = marshal.dumps((99, *marshal.loads(data[4:4 + size])[1:]))  # another format number
+        bundle.write_bytes({"empty": b"", "cut short": data[: len(data) // 2],
+                            "another format": len(header).to_bytes(4, "little") + header + data[4 + size:],
+                            "not marshal": b"\xff" * 64}[damage])
+    said, used = _lint(root)
+    assert dict(used) == {"lint": damage != "moved", "check": False}
+    assert "Traceback" not in said
+
+
+def test_a_module_already_imported_is_not_run_again(tmp_path: Path) -> None:
+    root = _copy(tmp_path)
+    _compile(root)
+    _write_bundles(root)
+    code = ("import sys, zero, zero.rules.syntax as before\n"
+            "assert zero.preload('lint') and zero.preload('check')\n"
+            "import zero.rules.syntax as after, zero.rules as rules\n"
+            "print(before is after is rules.syntax, zero.preload('check'))")
+    out = _child(root, "-c", code)
+    assert out.stdout.split() == ["True", "False"], out.stderr  # and a bundle is run once in a process
+
+
+def test_a_module_whose_body_fails_is_not_left_behind() -> None:
+    """As Python's import: the failing module, and those made for it and not run, leave sys.modules."""
+    fails = compile("raise RuntimeError('in the body')", "fails.py", "exec")
+    items = ((f"zero.{PACKAGE}.child", False, f"{PACKAGE}/child.py", compile("", "child.py", "exec")),
+             (f"zero.{PACKAGE}.fails", False, f"{PACKAGE}/fails.py", fails),
+             (f"zero.{PACKAGE}.after", False, f"{PACKAGE}/after.py", compile("", "after.py", "exec")),
+             (f"zero.{PACKAGE}", True, f"{PACKAGE}/__init__.py", compile("", "__init__.py", "exec")))
+    with pytest.raises(RuntimeError, match="in the body"):
+        zero._run(items, str(SRC))
+    left = sorted(n for n in sys.modules if n.startswith(f"zero.{PACKAGE}"))
+    for name in left:
+        del sys.modules[name]
+    assert left == [f"zero.{PACKAGE}.child"]  # run to its end, as Python keeps an imported module
+
+
+PACKAGE = "bundle_test_package"

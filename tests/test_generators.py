@@ -14,9 +14,9 @@ import pytest
 from conftest import ROOT, script_module
 
 # gen_record_inits.py --check runs in tests/test_records.py (test_the_ahead_of_time_inits_are_current)
-GENERATORS = ["gen_conditions.py", "gen_config.py", "gen_evidence.py", "gen_ranges.py", "gen_registry.py",
-              "gen_pattern_codes.py", "gen_rule_codes.py", "gen_rules.py", "gen_seeds.py", "gen_specs.py",
-              "gen_startup.py", "gen_startup_rules.py"]
+GENERATORS = ["gen_bundled_modules.py", "gen_conditions.py", "gen_config.py", "gen_evidence.py", "gen_ranges.py",
+              "gen_registry.py", "gen_pattern_codes.py", "gen_rule_codes.py", "gen_rules.py", "gen_seeds.py",
+              "gen_specs.py", "gen_startup.py", "gen_startup_rules.py"]
 PARAM_DESC = ROOT.parent / "shared" / "corpus" / "isg-sdk" / "meta-data" / "CncParaDesc.xml"  # gen_registry's
 
 
@@ -31,7 +31,8 @@ def test_every_generator_is_checked() -> None:
     assert found <= set(GENERATORS)
     gen_all = script_module(ROOT / "tools" / "gen_all.py")
     assert sorted(gen_all.ORDER) == sorted([*found, "gen_record_inits.py"])  # type: ignore[attr-defined]
-    assert gen_all.ORDER[-1] == "gen_record_inits.py"  # type: ignore[attr-defined]  # reads every module
+    # the records read every module; the bundles' modules are what a lint imports once every table is current
+    assert gen_all.ORDER[-2:] == ("gen_record_inits.py", "gen_bundled_modules.py")  # type: ignore[attr-defined]
 
 
 @pytest.mark.parametrize("name", GENERATORS)

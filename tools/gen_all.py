@@ -22,10 +22,10 @@ import _gen
 
 TOOLS = Path(__file__).resolve().parent
 # Each after what it reads: the rows before the ranges, conditions and K declarations made of them; the
-# rule modules' declarations before the codes; every module (their records) last.
+# rule modules' declarations before the codes; every module (their records), then what a lint imports, last.
 ORDER = ("gen_registry.py", "gen_seeds.py", "gen_specs.py", "gen_evidence.py", "gen_config.py", "gen_ranges.py",
          "gen_startup.py", "gen_startup_rules.py", "gen_conditions.py", "gen_rules.py", "gen_rule_codes.py",
-         "gen_pattern_codes.py", "gen_record_inits.py")
+         "gen_pattern_codes.py", "gen_record_inits.py", "gen_bundled_modules.py")
 
 
 def main(argv: list[str] | None = None) -> None:

@@ -10,15 +10,22 @@ modification time and size), then hands Python a spec with a standard ``SourceFi
 Anything else (no cached file, a stale or hash-based one, another Python, ``-O``, a
 ``pycache_prefix``, a name that is not a module here) it leaves to Python's finders, which compile and
 write the cache as always.
+
+A command's modules can also come all at once from a bundle (:func:`preload`): the code of every module a
+lint loads, written by :mod:`zero.bundles` beside the cached bytecode and used only while each of their
+sources is the file it was written from.
 """
 
 from __future__ import annotations
 
+import marshal
+import os
 import sys
 
 TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing
 if TYPE_CHECKING:
-    from types import CodeType
+    from os import stat_result
+    from types import CodeType, ModuleType
 
 __version__ = "0.1.0"
 
@@ -28,7 +35,139 @@ PACKAGES = frozenset({"catalog", "catalog.data", "cli", "engine", "lists", "mach
                       "output.formats", "rules", "server", "structured"})
 
 
+# What the finder was installed with (None: not installed, and no bundle is read or written): the package's
+# folder, the cached bytecode's suffix, its header (magic number, flags 0), the loader and spec classes.
+_FOUND: tuple[str, str, bytes, type, type] | None = None
+
+BUNDLE_FORMAT = 1  # the layout of a bundle (see preload): another one is not read
+# The bundles this process asked for, and whether each was used (zero.bundles writes the others at the end).
+BUNDLES_ASKED: dict[str, bool] = {}
+
+
+def current_bytecode(source: str, cached: str) -> tuple[stat_result, bytes] | None:
+    """The source's ``stat`` and the cached bytecode of it, when that is current exactly as Python's loader
+    checks it (the magic number, a timestamp-based file, the source's modification time and size); ``None``
+    otherwise (no such file, a stale or hash-based one, another Python, zero's finder not installed)."""
+    if _FOUND is None:
+        return None
+    try:
+        st = os.stat(source)
+        with open(cached, "rb", buffering=0) as f:  # unbuffered: one read of the whole file
+            data = f.readall()
+    except (OSError, ValueError):
+        return None
+    if (data[:8] != _FOUND[2] or len(data) < 16
+            or int.from_bytes(data[8:12], "little") != int(st.st_mtime) & 0xFFFFFFFF
+            or int.from_bytes(data[12:16], "little") != st.st_size & 0xFFFFFFFF):
+        return None
+    return st, data
+
+
+def bundle_path(command: str) -> str | None:
+    """The file of ``command``'s bundle (beside zero's cached bytecode, named for this Python as a cached
+    module is); ``None`` where zero's finder is not installed (another Python, ``-O``, a ``pycache_prefix``)."""
+    if _FOUND is None:
+        return None
+    return f"{_FOUND[0]}{os.sep}__pycache__{os.sep}bundle-{command}{_FOUND[1][:-4]}.bin"
+
+
+def preload(command: str) -> bool:
+    """Run the modules of ``command``'s bundle, each as Python's import would (in ``sys.modules``, on its
+    package, with its spec, loader, file and cached file), in the order a run of the command imported them;
+    ``False`` where there is no bundle to use (none written, or one source differs in time or size from the
+    one it was written from: a stale bundle is never used, and Python's import loads every module).
+
+    A bundle is one file: the length of its header, the header (:data:`BUNDLE_FORMAT`, Python's magic
+    number, the package's folder, and each source's path below it, modification time in nanoseconds and
+    size) and the modules (name, whether a package, source path, code), both in ``marshal``'s format:
+    reading it is one ``read`` and two ``loads``, where importing the modules one by one is a search, a
+    read and a check each, and the names and constants they share are read once.
+    """
+    path = bundle_path(command)
+    if path is None or command in BUNDLES_ASKED:
+        return False
+    BUNDLES_ASKED[command] = False
+    root = _FOUND[0]  # type: ignore[index]
+    try:
+        with open(path, "rb", buffering=0) as f:
+            data = f.readall()
+        view = memoryview(data)
+        size = int.from_bytes(view[:4], "little")
+        form, magic, where, sources = marshal.loads(view[4:4 + size])
+        if form != BUNDLE_FORMAT or magic != _FOUND[2][:4] or where != root:  # type: ignore[index]
+            return False
+        for rel, mtime, length in sources:
+            st = os.stat(f"{root}{os.sep}{rel}")
+            if st.st_mtime_ns != mtime or st.st_size != length:
+                return False
+        items = marshal.loads(view[4 + size:])
+    except (OSError, EOFError, ValueError, TypeError):  # none, or not a bundle: as none
+        return False
+    _run(items, root)
+    BUNDLES_ASKED[command] = True
+    return True
+
+
+def _run(items: tuple[tuple[str, bool, str, CodeType], ...], root: str) -> None:
+    """Run each module of ``items`` not loaded yet, in their order (see :func:`preload`)."""
+    sep = os.sep
+    modules = sys.modules
+    _, tag, _, loader_class, spec_class = _FOUND  # type: ignore[misc]
+    known = {item[0]: item for item in items}
+    waiting: dict[str, ModuleType] = {}  # made here, their body not run yet
+
+    def made(name: str) -> ModuleType:
+        """The module ``name`` of the bundle before its body runs, as Python's import makes it."""
+        _, package, rel, _ = known[name]
+        parent = name.rpartition(".")[0]
+        if parent not in modules:  # a package whose body imports this module runs after it, as in a run
+            if parent in known:
+                made(parent)
+            else:
+                __import__(parent)  # a package the bundle does not hold: Python imports it
+        source = f"{root}{sep}{rel}"
+        folder, _, leaf = source.rpartition(sep)
+        cached = f"{folder}{sep}__pycache__{sep}{leaf[:-3]}{tag}"
+        loader = loader_class(name, source)
+        spec = spec_class(name, loader, origin=source, is_package=package)
+        spec.cached = cached
+        spec.has_location = True
+        module = type(sys)(name)
+        module.__loader__ = loader
+        module.__package__ = name if package else parent
+        module.__spec__ = spec
+        if package:
+            spec.submodule_search_locations = module.__path__ = [folder]
+        module.__file__ = source
+        module.__cached__ = cached  # type: ignore[attr-defined]
+        modules[name] = waiting[name] = module
+        return module
+
+    name = ""
+    try:
+        for name, _, _, code in items:
+            module = waiting.pop(name, None)
+            if module is None:
+                if name in modules:
+                    continue  # imported already
+                parent = name.rpartition(".")[0]
+                if parent not in modules and parent not in known:
+                    __import__(parent)  # a package the bundle does not hold: Python imports it
+                    if name in modules:
+                        continue
+                module = made(name)
+                waiting.pop(name)
+            exec(code, module.__dict__)
+            parent, _, leaf = name.rpartition(".")
+            setattr(modules[parent], leaf, module)
+    except BaseException:
+        for gone in (name, *waiting):  # as Python's import: a module whose body did not finish is not kept
+            modules.pop(gone, None)
+        raise
+
+
 def _install() -> None:
+    global _FOUND
     if (sys.implementation.name != "cpython" or sys.implementation.cache_tag is None or sys.flags.optimize
             or sys.pycache_prefix is not None or not __file__ or not __path__):
         return
@@ -42,12 +181,10 @@ def _install() -> None:
         from _imp import _fix_co_filename  # type: ignore[attr-defined]  # start-up: built in
     except ImportError:  # pragma: no cover - CPython always has them
         return
-    from marshal import loads  # start-up: built in
-    from os import sep, stat  # start-up: loaded at start
-
+    loads = marshal.loads
+    sep = os.sep
     root = __path__[0]
     tag = f".{sys.implementation.cache_tag}.pyc"
-    header = external.MAGIC_NUMBER + b"\0\0\0\0"  # the magic number, and flags 0: checked by timestamp
 
     class Loader(external.SourceFileLoader):
         """Python's own loader, given the bytecode the finder read and checked (used once)."""
@@ -80,18 +217,11 @@ def _install() -> None:
                 return None  # the parent's search path moved elsewhere: Python's finders look there
             source = f"{folder}{sep}{leaf}.py"
             cached = f"{folder}{sep}__pycache__{sep}{leaf}{tag}"
-            try:
-                st = stat(source)
-                with open(cached, "rb", buffering=0) as f:  # unbuffered: one read of the whole file
-                    data = f.readall()
-            except (OSError, ValueError):
-                return None
-            if (data[:8] != header or len(data) < 16
-                    or int.from_bytes(data[8:12], "little") != int(st.st_mtime) & 0xFFFFFFFF
-                    or int.from_bytes(data[12:16], "little") != st.st_size & 0xFFFFFFFF):
+            found = current_bytecode(source, cached)
+            if found is None:
                 return None
             loader = Loader(name, source)
-            loader.data = data
+            loader.data = found[1]
             spec = ModuleSpec(name, loader, origin=source, is_package=package)
             spec.cached = cached
             spec.has_location = True
@@ -99,6 +229,7 @@ def _install() -> None:
                 spec.submodule_search_locations = [folder]
             return spec
 
+    _FOUND = (root, tag, external.MAGIC_NUMBER + b"\0\0\0\0", Loader, ModuleSpec)
     sys.meta_path.insert(0, Finder)
 
 

@@ -14,6 +14,7 @@ import gc
 import os
 import sys
 
+from zero import BUNDLES_ASKED, preload
 from zero.cli import GC_THRESHOLDS
 
 TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (mypy and ruff read it alike)
@@ -23,10 +24,12 @@ if TYPE_CHECKING:
 
 def main() -> None:
     gc.set_threshold(*GC_THRESHOLDS)  # before zero is imported (its tables and rules: some twenty passes)
+    args = sys.argv[1:]
+    if args[:1] == ["lint"]:
+        preload("lint")  # its modules at once, where their bundle is current (zero.bundles)
     from zero.cli.exits import guard, of_system_exit  # start-up: imported with the collector's thresholds set
     from zero.cli.options import parse_fleet_args, parse_lint_args  # start-up: as above
 
-    args = sys.argv[1:]
     if args[:1] == ["lint"]:
         parsed = parse_lint_args(args[1:])
         if parsed is not None:
@@ -62,4 +65,8 @@ def end(code: int) -> NoReturn:
     for stream in (sys.stdout, sys.stderr):
         with contextlib.suppress(OSError, ValueError):  # a closed pipe or stream: nothing more to say
             stream.flush()
+    if not all(BUNDLES_ASKED.values()):  # once the output is out: as Python writes cached bytecode
+        from zero.bundles import write_missing  # start-up: only when a bundle is missing or stale
+
+        write_missing()
     os._exit(code)

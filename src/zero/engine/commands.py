@@ -13,6 +13,7 @@ import os
 from collections import Counter
 from collections.abc import Callable, Iterable, Sequence
 
+from zero import preload
 from zero.diagnostics import Diagnostic, Severity
 from zero.engine.config import one_resolution
 from zero.engine.discovery import collect_files, skipped_note
@@ -154,6 +155,8 @@ def _run_lint(request: LintRequest, registries: Registries, echo: Echo,
         cache = open_lint_cache(project)
     kept = cache.lookup(files) if cache is not None else {}
     todo = [f for f in files if f not in kept] if kept else files
+    if todo:
+        preload("check")  # what checking a list needs, at once, where its bundle is current (zero.bundles)
     groups: dict[FileName | None, list[str]] = {}
     for f in todo:  # files sharing a parameter description share a registry
         groups.setdefault(project.settings(f).param_desc, []).append(f)
