@@ -237,13 +237,13 @@ _LINT = ("import sys, zero, zero.cli.lean as lean\n"
          "lean.end = told\nsys.argv = ['zero', 'lint', 'axis.lis']\nlean.main()\n")
 
 
-def _lint(root: Path, **env: str) -> tuple[str, list[tuple[str, bool]]]:
+def _lint(root: Path, **env: str) -> tuple[str, dict[str, bool]]:
     if not (root / "axis.lis").exists():
         (root / "axis.lis").write_text("# axis\nkenngr.achs_name   X\nkenngr.achs_typ   9\nEnde\n", encoding="latin-1")
     out = _child(root, "-c", _LINT, ZERO_NO_CACHE="1", **env)
     assert out.returncode in (0, 1), out.stderr
     *said, used = out.stdout.strip().splitlines()
-    return "\n".join(said) + out.stderr, [tuple(pair) for pair in ast.literal_eval(used)]
+    return "\n".join(said) + out.stderr, dict(ast.literal_eval(used))
 
 
 def test_bundled_modules_are_what_pythons_import_gives(tmp_path: Path) -> None:
@@ -261,10 +261,10 @@ def test_a_lint_writes_its_bundles_and_the_next_runs_them(tmp_path: Path) -> Non
     root = _copy(tmp_path)
     _compile(root)
     first, used = _lint(root, PYTHONDONTWRITEBYTECODE="")
-    assert used == [("check", False), ("lint", False)]
-    assert all(_bundle(root, command).is_file() for command in COMMANDS)
+    assert used == {"lint": False, "check": False, "kind-axis": False}  # an axis list's: no other kind's
+    assert all(_bundle(root, command).is_file() for command in used)
     again, used = _lint(root)
-    assert used == [("check", True), ("lint", True)]
+    assert used == {"lint": True, "check": True, "kind-axis": True}
     assert again == first and "1 file checked" in first
 
 
@@ -273,7 +273,7 @@ def test_no_bundle_is_written_where_python_writes_no_cached_bytecode(tmp_path: P
     _compile(root)
     for env in ({}, {"PYTHONDONTWRITEBYTECODE": "", "PYTHONOPTIMIZE": "1"}):  # _child: -B; then -O (no finder)
         _, used = _lint(root, **env)
-        assert not any(ok for _, ok in used)
+        assert not any(used.values())
         assert not any(_bundle(root, command).exists() for command in COMMANDS)
 
 
@@ -290,10 +290,11 @@ def test_a_stale_bundle_is_not_run_and_is_written_again(tmp_path: Path, change: 
         module.write_text(module.read_text(encoding="utf-8") + "\nMARKER = 'edited'\n", encoding="utf-8")
     before = _bundle(root, "check").read_bytes()
     _, used = _lint(root, PYTHONDONTWRITEBYTECODE="")
-    assert dict(used) == {"lint": change != "module list", "check": False}
+    others = change != "module list"  # the list of modules is in every bundle's sources
+    assert used == {"lint": others, "check": False, "kind-axis": others}
     assert _bundle(root, "check").read_bytes() != before  # written again, of the module as it is now
     _, used = _lint(root)
-    assert used == [("check", True), ("lint", True)]
+    assert used == {"lint": True, "check": True, "kind-axis": True}
     if change == "content":
         code = ("import zero; zero.preload('lint'); zero.preload('check')\n"
                 "import zero.rules.syntax as m; print(m.MARKER)")
@@ -318,7 +319,7 @@ def test_a_damaged_or_foreign_bundle_is_not_run(tmp_path: Path, damage: str) -> 
                             "another format": len(header).to_bytes(4, "little") + header + data[4 + size:],
                             "not marshal": b"\xff" * 64}[damage])
     said, used = _lint(root)
-    assert dict(used) == {"lint": damage != "moved", "check": False}
+    assert used == {"lint": damage != "moved", "check": False, "kind-axis": damage != "moved"}
     assert "Traceback" not in said
 
 

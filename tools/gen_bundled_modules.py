@@ -8,7 +8,10 @@ records the order in which their bodies finish.
 - ``lint``: the modules every run loads after the console script knows the command is ``lint`` and before
   it checks a file (a run the cache answers loads these and little else);
 - ``check``: the other modules every run that checks a list loads (the catalogue, the reader, the rules),
-  whatever the list's kind: a kind's own tables stay out, and are imported as the kind needs them.
+  whatever the list's kind: a kind's own tables stay out;
+- ``kind-<kind>`` for each kind of the built-in table: its data modules (its specs, ranges and K conditions
+  as written at build time), asked for at the kind's first parameter (its rows are read before, when a
+  list's kind is told).
 
 Each in the order the first run (without the cache) finished them, so that a module runs after what it
 imports. Run it after changing what a lint imports (a stale list is not wrong: a module it misses is
@@ -34,6 +37,9 @@ import _gen
 ROOT = _gen.ROOT
 SRC = ROOT / "src"
 LISTS = ROOT / "fixtures" / "machine-clean" / "listen"
+DATA = SRC / "zero" / "catalog" / "data"
+# in the order a lint imports them; not the kind's table, which telling a list's kind reads before
+KIND_DATA = ("specs", "ranges_compiled", "startup_compiled")
 
 # A run of ``zero lint LIST`` that records each zero module as its body finishes, and each bundle asked for
 # (as "@name"), then writes them as JSON to the file named by ZERO_RECORD.
@@ -112,7 +118,18 @@ def bundles() -> dict[str, list[str]]:
     if not lint or not check:
         raise SystemExit("gen_bundled_modules: no run of a list asked for both bundles")
     first = [n for n in lint[0] if all(n in run for run in lint)]
-    return {"lint": first, "check": [n for n in check[0] if n not in first and all(n in run for run in check)]}
+    made = {"lint": first, "check": [n for n in check[0] if n not in first and all(n in run for run in check)]}
+    kinds = [table.stem.removeprefix("table_") for table in sorted(DATA.glob("table_*.py"))]
+    for kind in kinds:
+        made[f"kind-{kind}"] = [f"zero.catalog.data.{part}_{kind}" for part in KIND_DATA
+                                if (DATA / f"{part}_{kind}.py").is_file()]
+    bundled = {n for names in made.values() for n in names}
+    for order in check:  # every data module of a kind that a run loaded is in its kind's bundle
+        for name in order:
+            if (name.rpartition("_")[2] in kinds and name.startswith("zero.catalog.data.")
+                    and not name.startswith("zero.catalog.data.table_") and name not in bundled):
+                raise SystemExit(f"gen_bundled_modules: {name}, a kind's data module, is in no bundle")
+    return made
 
 
 def render() -> str:

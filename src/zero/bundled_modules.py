@@ -66,4 +66,64 @@ COMMANDS: dict[str, tuple[str, ...]] = {
         'zero.pattern_codes',
         'zero.catalog.data.prose_compiled',
     ),
+    'kind-axis': (
+        'zero.catalog.data.specs_axis',
+        'zero.catalog.data.ranges_compiled_axis',
+        'zero.catalog.data.startup_compiled_axis',
+    ),
+    'kind-chan': (
+        'zero.catalog.data.specs_chan',
+        'zero.catalog.data.ranges_compiled_chan',
+        'zero.catalog.data.startup_compiled_chan',
+    ),
+    'kind-clmp': (
+        'zero.catalog.data.specs_clmp',
+        'zero.catalog.data.ranges_compiled_clmp',
+    ),
+    'kind-cmld': (
+        'zero.catalog.data.specs_cmld',
+    ),
+    'kind-comp': (
+        'zero.catalog.data.specs_comp',
+        'zero.catalog.data.ranges_compiled_comp',
+        'zero.catalog.data.startup_compiled_comp',
+    ),
+    'kind-extv': (
+        'zero.catalog.data.specs_extv',
+        'zero.catalog.data.ranges_compiled_extv',
+        'zero.catalog.data.startup_compiled_extv',
+    ),
+    'kind-hwcf': (
+        'zero.catalog.data.specs_hwcf',
+    ),
+    'kind-manu': (
+        'zero.catalog.data.specs_manu',
+        'zero.catalog.data.ranges_compiled_manu',
+    ),
+    'kind-rtcf': (
+        'zero.catalog.data.specs_rtcf',
+        'zero.catalog.data.ranges_compiled_rtcf',
+        'zero.catalog.data.startup_compiled_rtcf',
+    ),
+    'kind-seco': (
+        'zero.catalog.data.specs_seco',
+        'zero.catalog.data.ranges_compiled_seco',
+    ),
+    'kind-stup': (
+        'zero.catalog.data.specs_stup',
+        'zero.catalog.data.ranges_compiled_stup',
+    ),
+    'kind-tool': (
+        'zero.catalog.data.specs_tool',
+        'zero.catalog.data.ranges_compiled_tool',
+    ),
+    'kind-volc': (
+        'zero.catalog.data.specs_volc',
+        'zero.catalog.data.ranges_compiled_volc',
+    ),
+    'kind-zero': (
+        'zero.catalog.data.specs_zero',
+        'zero.catalog.data.ranges_compiled_zero',
+        'zero.catalog.data.startup_compiled_zero',
+    ),
 }

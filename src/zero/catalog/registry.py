@@ -19,6 +19,7 @@ from collections import Counter
 from collections.abc import Callable, Iterable, Iterator, Mapping, Sequence
 from operator import itemgetter
 
+from zero import preload
 from zero.catalog.ranges import Range, decode_range, encoded_refers, parse_range
 from zero.forms import kind_hint
 from zero.records import Record, field, fields
@@ -890,6 +891,9 @@ def spec_fields() -> tuple[str, ...]:
 def _spec_table(kind: str, index_base: dict[str, int]) -> tuple[bytes, ...] | None:
     """One kind's specs written at build time (``SPECS``, in the order of its table's IDS), where they were
     written for its table module, ParamSpec's fields and the overlay's ``index_base`` as they are (else ``None``)."""
+    # the kind's data modules at once, where their bundle is current (zero.bundles): at its first parameter,
+    # not at its table, which telling a list's kind reads for every kind
+    preload(f"kind-{kind.lower()}")
     try:  # start-up: written at build time, imported at the kind's first parameter
         got = importlib.import_module(f"zero.catalog.data.specs_{kind.lower()}")
     except ImportError:
