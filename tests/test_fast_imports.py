@@ -351,3 +351,23 @@ def test_a_module_whose_body_fails_is_not_left_behind() -> None:
 
 
 PACKAGE = "bundle_test_package"
+
+
+def test_a_bundle_is_read_where_it_cannot_be_mapped(tmp_path: Path) -> None:
+    """Without ``mmap`` (another system, a trimmed Python) the bundle is read instead, to the same modules."""
+    root = _copy(tmp_path)
+    _compile(root)
+    _write_bundles(root)
+    code = ("import sys\nsys.modules['mmap'] = None  # import mmap fails\n"
+            "import zero\nprint(zero.preload('lint'), zero.preload('check'))\n"
+            "import zero.rules.syntax as m; print(m.__file__)")
+    out = _child(root, "-c", code)
+    assert out.stdout.split() == ["True", "True", str(root / "zero" / "rules" / "syntax.py")], out.stderr
+    empty = tmp_path / "empty"
+    empty.write_bytes(b"")
+    with open(empty, "rb", buffering=0) as f:
+        assert zero._mapped(f) == b""  # no mapping of nothing: read
+    with open(_bundle(root, "lint"), "rb", buffering=0) as f:
+        mapped = zero._mapped(f)
+        assert not isinstance(mapped, bytes) and mapped[:] == _bundle(root, "lint").read_bytes()
+        mapped.close()

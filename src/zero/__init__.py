@@ -24,8 +24,10 @@ import sys
 
 TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing
 if TYPE_CHECKING:
+    from mmap import mmap
     from os import stat_result
     from types import CodeType, ModuleType
+    from typing import BinaryIO
 
 __version__ = "0.1.0"
 
@@ -90,22 +92,41 @@ def preload(command: str) -> bool:
     root = _FOUND[0]  # type: ignore[index]
     try:
         with open(path, "rb", buffering=0) as f:
-            data = f.readall()
-        view = memoryview(data)
-        size = int.from_bytes(view[:4], "little")
-        form, magic, where, sources = marshal.loads(view[4:4 + size])
-        if form != BUNDLE_FORMAT or magic != _FOUND[2][:4] or where != root:  # type: ignore[index]
-            return False
-        for rel, mtime, length in sources:
-            st = os.stat(f"{root}{os.sep}{rel}")
-            if st.st_mtime_ns != mtime or st.st_size != length:
-                return False
-        items = marshal.loads(view[4 + size:])
-    except (OSError, EOFError, ValueError, TypeError):  # none, or not a bundle: as none
+            data = _mapped(f)
+    except OSError:  # none
         return False
+    try:
+        with memoryview(data) as view:
+            size = int.from_bytes(view[:4], "little")
+            form, magic, where, sources = marshal.loads(view[4:4 + size])
+            if form != BUNDLE_FORMAT or magic != _FOUND[2][:4] or where != root:  # type: ignore[index]
+                return False
+            for rel, mtime, length in sources:
+                st = os.stat(f"{root}{os.sep}{rel}")
+                if st.st_mtime_ns != mtime or st.st_size != length:
+                    return False
+            items = marshal.loads(view[4 + size:])
+    except (OSError, EOFError, ValueError, TypeError):  # not a bundle: as none
+        return False
+    finally:
+        if not isinstance(data, bytes):
+            data.close()
     _run(items, root)
     BUNDLES_ASKED[command] = True
     return True
+
+
+def _mapped(f: BinaryIO) -> bytes | mmap:
+    """The bytes of the open file ``f``, mapped where the system can: a read copies them into memory the
+    process has not touched yet, which the system hands over a page at a time (some 3 µs each on a virtual
+    machine: a third of a bundle's time), where a mapping takes them from its file cache many pages at a
+    time; read where ``mmap`` cannot map it (an empty file, another system)."""
+    try:
+        import mmap  # start-up: only where a bundle is read (an extension module, cheaper than the pages it saves)
+
+        return mmap.mmap(f.fileno(), 0, access=mmap.ACCESS_READ)
+    except (ImportError, OSError, ValueError):
+        return f.read()
 
 
 def _run(items: tuple[tuple[str, bool, str, CodeType], ...], root: str) -> None:
