@@ -8,8 +8,9 @@ follows its claim: an **error** only where the source documents that the control
 changes or ignores the value or stops; a **warning** where nothing is documented; **info** for what
 the vendor itself writes or what does not apply.
 
-The table is compiled to ``data/evidence_table.py`` by ``tools/gen_startup.py`` and read at the
-first finding, once per process; a claim's rows become :class:`Claim` objects at its first use.
+The table is compiled to ``data/evidence_table.py`` by ``tools/gen_evidence.py`` (a row a line of text)
+and read at the first finding, once per process; a claim's lines are found and become :class:`Claim`
+objects at its first use, and a rule's claim is found at the first finding of the rule.
 """
 
 from __future__ import annotations
@@ -39,36 +40,44 @@ class Claim(Record, frozen=True):
         return not self.kinds or (kind is not None and kind in self.kinds)
 
 
-_rows: dict[str, list[dict[str, object]]] | None = None  # claim name -> its rows, in order (read once)
-_rules: dict[str, str] | None = None  # rule code -> the name of its claim
+_table: tuple[str, str] | None = None  # the table's claims and rules, as written (read once)
 _built: dict[str, list[Claim]] = {}  # claim name -> its rows as claims (each name's at its first use)
+_named: dict[str, str | None] = {}  # rule code -> the name of its claim (each code's at its first use)
 _drives: list[tuple[str, tuple[int, ...], str]] | None = None
 
 
-def _load() -> tuple[dict[str, list[dict[str, object]]], dict[str, str]]:
-    """The table's rows by claim name, and the rules' claims (one pass over the rows, no claim built: a
-    lint's findings ask for a few of them)."""
-    global _rows, _rules
-    if _rows is None or _rules is None:
+def _load() -> tuple[str, str]:
+    """The table's claims and its rules' claims, each a text of a row a line (``data/evidence_table.py``):
+    a lint's findings ask for one or two claims, which are found in it, not the whole table built."""
+    global _table
+    if _table is None:
         from zero.catalog.data.evidence_table import CLAIMS, RULES  # start-up: at the first finding
 
-        rows: dict[str, list[dict[str, object]]] = {}
-        for row in CLAIMS:
-            rows.setdefault(str(row["name"]), []).append(row)
-        _rows, _rules = rows, {str(k): str(v) for k, v in RULES.items()}
-    return _rows, _rules
+        _table = CLAIMS, RULES
+    return _table
+
+
+def _claim(line: str) -> Claim:
+    """A row of the table (its fields separated by tabs, as tools/gen_evidence.py writes them) as a claim."""
+    name, consequence, severity, says, source, releases, kinds, kernel_error = line.split("\t")
+    return Claim(name, consequence, Severity.parse(severity), says, source, releases,
+                 tuple(kinds.split(",")) if kinds else (), kernel_error or None)
 
 
 def _claims(name: str) -> list[Claim]:
-    """The rows of claim ``name`` as claims (none: no such claim), built at its first use."""
+    """The rows of claim ``name`` as claims (none: no such claim), built at its first use from its lines
+    (a claim's rows are together, each line after a line break)."""
     got = _built.get(name)
     if got is None:
-        got = _built[name] = [
-            Claim(str(row["name"]), str(row["consequence"]), Severity.parse(str(row["severity"])), str(row["says"]),
-                  str(row["source"]), str(row.get("releases", "all")),
-                  tuple(str(k) for k in row.get("kinds", ()) or ()),  # type: ignore[attr-defined]
-                  str(row.get("kernel_error") or "") or None)
-            for row in _load()[0].get(name, ())]
+        text = _load()[0]
+        head = f"\n{name}\t"
+        got = []
+        at = text.find(head)
+        while at >= 0:
+            end = text.index("\n", at + 1)
+            got.append(_claim(text[at + 1:end]))
+            at = end if text.startswith(head, end) else -1
+        _built[name] = got
     return got
 
 
@@ -83,10 +92,22 @@ def claim(name: str, kind: str | None = None) -> Claim:
     return rows[-1]
 
 
+def _claim_name(code: str) -> str | None:
+    """The name of rule ``code``'s claim (its line: the code, a tab, the name), found at its first finding."""
+    text = _load()[1]
+    at = text.find(f"\n{code}\t")
+    name = None
+    if at >= 0:
+        at += len(code) + 2
+        name = text[at:text.index("\n", at)]
+    _named[code] = name
+    return name
+
+
 def rule_claim(code: str, kind: str | None = None) -> Claim | None:
     """The claim a rule's finding carries where its check names none (``None``: the rule has none,
     as the K rules, whose claim is their own row of the start-up errors)."""
-    name = _load()[1].get(code)
+    name = _named[code] if code in _named else _claim_name(code)
     return claim(name, kind) if name is not None else None
 
 
@@ -106,12 +127,13 @@ def drive_types(pattern: str) -> tuple[tuple[int, ...], str] | None:
 
 def claims() -> list[Claim]:
     """Every row of the table."""
-    return [c for name in _load()[0] for c in _claims(name)]
+    names = dict.fromkeys(line.split("\t", 1)[0] for line in _load()[0].splitlines() if line)
+    return [c for name in names for c in _claims(name)]
 
 
 def rule_claims() -> dict[str, str]:
     """Rule code → the name of its claim."""
-    return dict(_load()[1])
+    return {code: name for code, name in (line.split("\t") for line in _load()[1].splitlines() if line)}
 
 
 __all__ = ["CONSEQUENCES", "DOCUMENTED", "Claim", "claim", "claims", "drive_types", "rule_claim", "rule_claims"]

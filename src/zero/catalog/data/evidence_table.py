@@ -1,5 +1,8 @@
 """The claims of evidence.toml (what the controller does, and the source), compiled; DRIVES from drive_types.toml.
 
+CLAIMS: a line per row, a claim's rows together, its fields separated by tabs: name, consequence, severity, says, source, releases, kinds, kernel_error (kinds separated by commas).
+RULES: a line per rule: its code, a tab, the name of its claim.
+
 Generated: do not edit."""
 
 from __future__ import annotations
@@ -8,53 +11,117 @@ TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (zero.hin
 if TYPE_CHECKING:
     from typing import Any
 
-CLAIMS: list[dict[str, Any]] = [
-    {'name': 'unknown-element', 'kinds': ['ZERO'], 'consequence': 'aborted', 'severity': 'error', 'says': 'the plausibility check of a zero-offset list reports an unknown or incorrectly written parameter or an invalid value (P-ERR-20407), and the kernel aborts the job', 'kernel_error': 'P-ERR-20407', 'source': 'https://infosys.beckhoff.com/content/1033/tf5200_diagnosis/251542155.html', 'releases': 'TF5200 diagnosis documentation'},
-    {'name': 'unknown-element', 'kinds': ['AXIS'], 'consequence': 'ignored', 'severity': 'error', 'says': 'the kernel ignores an element of an axis parameter list it cannot interpret (P-ERR-1001119)', 'kernel_error': 'P-ERR-1001119', 'source': 'https://infosys.beckhoff.com/content/1033/tf5200_diagnosis/269215627.html', 'releases': 'TF5200 diagnosis documentation (kernel V3.1)'},
-    {'name': 'unknown-element', 'consequence': 'undocumented', 'severity': 'warning', 'says': 'the vendor documents no reaction to an unknown element of this list kind (P-ERR-1001119 covers axis parameter lists only)', 'source': 'none: the diagnosis documentation covers unknown elements of axis parameter lists only (P-ERR-1001119)', 'releases': 'all'},
-    {'name': 'vendor-writes', 'consequence': 'vendor-writes', 'severity': 'info', 'says': "the vendor's own lists or templates write it, which is evidence that the kernel of their release accepts it", 'source': "the vendor's lists and templates (zero's tables name the file of each)", 'releases': 'the release of the list or template named'},
-    {'name': 'other-release', 'consequence': 'undocumented', 'severity': 'warning', 'says': "zero's catalogue does not document it; whether the machine's kernel accepts it is not documented", 'source': "none: zero's table of renames and removals names where each spelling was seen", 'releases': 'all'},
-    {'name': 'number-format', 'kinds': ['ZERO'], 'consequence': 'aborted', 'severity': 'error', 'says': 'the plausibility check of a zero-offset list reports an unknown or incorrectly written parameter or an invalid value (P-ERR-20407), and the kernel aborts the job', 'kernel_error': 'P-ERR-20407', 'source': 'https://infosys.beckhoff.com/content/1033/tf5200_diagnosis/251542155.html', 'releases': 'TF5200 diagnosis documentation'},
-    {'name': 'number-format', 'kinds': ['AXIS'], 'consequence': 'zeroed', 'severity': 'error', 'says': 'the kernel goes on with the list and sets a value of an invalid number format to 0 (P-ERR-1001138)', 'kernel_error': 'P-ERR-1001138', 'source': 'https://infosys.beckhoff.com/content/1033/tf5200_diagnosis/269276555.html', 'releases': 'TF5200 diagnosis documentation (kernel V3.1)'},
-    {'name': 'number-format', 'consequence': 'undocumented', 'severity': 'warning', 'says': 'what the controller does with a value of the wrong type in this list kind is not documented (P-ERR-1001138 covers axis parameter lists only)', 'source': 'none: the diagnosis documentation covers number formats of axis parameter lists only (P-ERR-1001138)', 'releases': 'all'},
-    {'name': 'out-of-range', 'kinds': ['ZERO'], 'consequence': 'aborted', 'severity': 'error', 'says': 'the plausibility check of a zero-offset list reports an unknown or incorrectly written parameter or an invalid value (P-ERR-20407), and the kernel aborts the job', 'kernel_error': 'P-ERR-20407', 'source': 'https://infosys.beckhoff.com/content/1033/tf5200_diagnosis/251542155.html', 'releases': 'TF5200 diagnosis documentation'},
-    {'name': 'out-of-range', 'kinds': ['AXIS'], 'consequence': 'limited', 'severity': 'error', 'says': 'the kernel goes on with the list and limits the value to the permissible minimum or maximum (P-ERR-1001138)', 'kernel_error': 'P-ERR-1001138', 'source': 'https://infosys.beckhoff.com/content/1033/tf5200_diagnosis/269276555.html', 'releases': 'TF5200 diagnosis documentation (kernel V3.1)'},
-    {'name': 'out-of-range', 'consequence': 'undocumented', 'severity': 'warning', 'says': 'the vendor does not document that the controller checks this range in this list kind, nor what it would do (P-ERR-1001138 covers axis parameter lists only)', 'source': 'none: the diagnosis documentation covers value ranges of axis parameter lists only (P-ERR-1001138)', 'releases': 'all'},
-    {'name': 'not-listed', 'kinds': ['ZERO'], 'consequence': 'aborted', 'severity': 'error', 'says': 'the plausibility check of a zero-offset list reports an unknown or incorrectly written parameter or an invalid value (P-ERR-20407), and the kernel aborts the job', 'kernel_error': 'P-ERR-20407', 'source': 'https://infosys.beckhoff.com/content/1033/tf5200_diagnosis/251542155.html', 'releases': 'TF5200 diagnosis documentation'},
-    {'name': 'not-listed', 'consequence': 'undocumented', 'severity': 'warning', 'says': 'the documentation lists the allowed values but does not say what the controller does with another one', 'source': "none: P-ERR-1001138 speaks of a range's minimum and maximum, not of listed values", 'releases': 'all'},
-    {'name': 'application-specific', 'consequence': 'undocumented', 'severity': 'info', 'says': "the documentation calls this range application-specific: a given controller's limit may differ (the vendor's own lists exceed some), and what it does beyond it is not documented", 'source': "the parameter's documented range (`application-specific`), e.g. https://infosys.beckhoff.com/content/1033/tf5200_axis_parameter/117379083.html", 'releases': 'all'},
-    {'name': 'drive-type', 'kinds': ['AXIS'], 'consequence': 'not-applicable', 'severity': 'info', 'says': 'the documentation gives the parameter for another drive type than the axis has (P-AXIS-00020): the kernel does not use it for this axis', 'source': "the parameter's documented drive types, e.g. https://infosys.beckhoff.com/content/1033/tf5200_axis_parameter/117337611.html and https://infosys.beckhoff.com/content/1033/tf5200_axis_parameter/117965323.html", 'releases': 'TF5200 axis parameter documentation'},
-    {'name': 'relation', 'consequence': 'undocumented', 'severity': 'warning', 'says': 'the vendor documents no start-up check of this relation: what the controller does with the value is not documented', 'source': "none: the relation is the catalogue's range; no diagnosis page reports it (where one does, its K rule says so instead)", 'releases': 'all'},
-    {'name': 'unknown-reference', 'consequence': 'undocumented', 'severity': 'warning', 'says': 'what the controller does with a reference to a parameter it does not have is not documented', 'source': 'none', 'releases': 'all'},
-    {'name': 'catalogue-contradiction', 'consequence': 'undocumented', 'severity': 'warning', 'says': 'the catalogue contradicts itself here, and what the controller does is not documented', 'source': 'the catalogue (CncParaDesc.xml): its default lies outside its own range', 'releases': "the catalogue's"},
-    {'name': 'unit-unknown', 'consequence': 'undocumented', 'severity': 'info', 'says': 'the catalogue gives no unit for the value, so whether it lies inside the range is not known', 'source': 'the catalogue (CncParaDesc.xml)', 'releases': "the catalogue's"},
-    {'name': 'duplicate', 'consequence': 'behaviour', 'severity': 'warning', 'says': 'the later value is the one that stays', 'source': "the list format: entries are read top to bottom (the vendor's SERCOS lists set kenngr.antr_typ twice)", 'releases': 'all'},
-    {'name': 'annotation', 'consequence': 'behaviour', 'severity': 'warning', 'says': 'nothing for the controller, which ignores comments', 'source': 'the list format', 'releases': 'all'},
-    {'name': 'malformed-line', 'kinds': ['ZERO'], 'consequence': 'aborted', 'severity': 'error', 'says': 'the plausibility check of a zero-offset list reports an unknown or incorrectly written parameter or an invalid value (P-ERR-20407), and the kernel aborts the job', 'kernel_error': 'P-ERR-20407', 'source': 'https://infosys.beckhoff.com/content/1033/tf5200_diagnosis/251542155.html', 'releases': 'TF5200 diagnosis documentation'},
-    {'name': 'malformed-line', 'kinds': ['AXIS'], 'consequence': 'ignored', 'severity': 'error', 'says': 'the kernel ignores an element of an axis parameter list it cannot interpret (P-ERR-1001119)', 'kernel_error': 'P-ERR-1001119', 'source': 'https://infosys.beckhoff.com/content/1033/tf5200_diagnosis/269215627.html', 'releases': 'TF5200 diagnosis documentation (kernel V3.1)'},
-    {'name': 'malformed-line', 'consequence': 'undocumented', 'severity': 'warning', 'says': 'what the controller does with a line it cannot read in this list kind is not documented', 'source': 'none: P-ERR-1001119 covers axis parameter lists only', 'releases': 'all'},
-    {'name': 'unreadable-entry', 'kinds': ['ZERO'], 'consequence': 'aborted', 'severity': 'error', 'says': 'the plausibility check of a zero-offset list reports an unknown or incorrectly written parameter or an invalid value (P-ERR-20407), and the kernel aborts the job', 'kernel_error': 'P-ERR-20407', 'source': 'https://infosys.beckhoff.com/content/1033/tf5200_diagnosis/251542155.html', 'releases': 'TF5200 diagnosis documentation'},
-    {'name': 'unreadable-entry', 'consequence': 'undocumented', 'severity': 'warning', 'says': 'what the controller does with such an entry is not documented', 'source': 'none', 'releases': 'all'},
-    {'name': 'unknown-parameter-id', 'consequence': 'undocumented', 'severity': 'warning', 'says': 'what the kernel does with an XML element of a parameter ID its catalogue does not have is not documented', 'source': 'none', 'releases': 'all'},
-    {'name': 'text', 'consequence': 'undocumented', 'severity': 'warning', 'says': 'what the controller does with these bytes is not documented', 'source': 'none', 'releases': 'all'},
-    {'name': 'after-end', 'consequence': 'behaviour', 'severity': 'warning', 'says': 'the list ends at `Ende`', 'source': 'the list format (SPEC: a list ends with `Ende`)', 'releases': 'all'},
-    {'name': 'style', 'consequence': 'behaviour', 'severity': 'warning', 'says': "nothing for the controller: the manual's form of a list", 'source': "the vendor's list format", 'releases': 'all'},
-    {'name': 'style-info', 'consequence': 'behaviour', 'severity': 'info', 'says': "nothing for the controller: the manual's form of a list, which the vendor's own lists do not keep", 'source': "the vendor's list format and lists", 'releases': 'all'},
-    {'name': 'unchecked', 'consequence': 'unchecked', 'severity': 'error', 'says': 'zero could not read the file, so nothing in it was checked', 'source': 'zero: the file did not read', 'releases': 'all'},
-    {'name': 'empty-soft-limits', 'kinds': ['AXIS'], 'consequence': 'undocumented', 'severity': 'warning', 'says': 'the kernel documents an error for an empty travel range (P-ERR-110110, K042), not for inverted soft limits: what it does with these is not documented', 'source': 'https://infosys.beckhoff.com/content/1033/tf5200_diagnosis/262387339.html', 'releases': 'TF5200 diagnosis documentation'},
-    {'name': 'behaviour', 'consequence': 'behaviour', 'severity': 'warning', 'says': 'the documented behaviour of the value, which may not be what was meant', 'source': "the parameter's documentation (each rule names it)", 'releases': 'all'},
-    {'name': 'information', 'consequence': 'behaviour', 'severity': 'info', 'says': 'the documented behaviour; often intended', 'source': "the parameter's documentation", 'releases': 'all'},
-    {'name': 'feed-constant', 'kinds': ['AXIS'], 'consequence': 'behaviour', 'severity': 'info', 'says': 'the TwinCAT CNC axis documentation puts wegaufz/wegaufn (P-AXIS-00234/00233) into the feed-constant formula as the gear ratio; the TF5200 documentation names gear_fact_num/denom (P-AXIS-00511/00512) for it', 'source': 'https://infosys.beckhoff.com/content/1033/tccncaxisparameter/15267153035.html and https://infosys.beckhoff.com/content/1033/tf5200_axis_parameter/131271307.html', 'releases': 'TwinCAT CNC (V3.01) and TF5200 axis parameter documentation'},
-    {'name': 'restart', 'consequence': 'behaviour', 'severity': 'warning', 'says': 'the catalogue marks the parameter as taking effect only at a restart', 'source': 'the catalogue (CncParaDesc.xml restart flag)', 'releases': "the catalogue's"},
-    {'name': 'update-axis-zero', 'consequence': 'rejected', 'severity': 'error', 'says': 'the kernel refuses to interpret an axis list for the logical axis number 0: the list is not updated (P-ERR-110597)', 'kernel_error': 'P-ERR-110597', 'source': 'https://infosys.beckhoff.com/content/1033/tf5200_diagnosis/263988875.html', 'releases': 'TF5200 diagnosis documentation'},
-    {'name': 'update-axis-unknown', 'consequence': 'rejected', 'severity': 'error', 'says': 'the kernel rejects an order to take over parameters for a logical axis number no axis has (P-ERR-1000099)', 'kernel_error': 'P-ERR-1000099', 'source': 'https://infosys.beckhoff.com/content/1033/tf5200_diagnosis/268837003.html', 'releases': 'TF5200 diagnosis documentation'},
-    {'name': 'duplicate-axis', 'consequence': 'rejected', 'severity': 'error', 'says': 'the kernel rejects the data transfer of the second axis with the same logical axis number (P-ERR-110064) or does not configure it (P-ERR-1001121)', 'source': 'https://infosys.beckhoff.com/content/1033/tf5200_diagnosis/262200203.html and https://infosys.beckhoff.com/content/1033/tf5200_diagnosis/269224331.html', 'releases': 'TF5200 diagnosis documentation'},
-    {'name': 'missing-list', 'consequence': 'aborted', 'severity': 'error', 'says': 'where the system tries to open a list file it cannot find, it outputs error messages and aborts the start-up (P-STUP-00015)', 'source': 'https://infosys.beckhoff.com/content/1033/tf5200_startup_list/123509643.html', 'releases': 'TF5200 start-up list documentation'},
-    {'name': 'channel-axis-without-list', 'consequence': 'rejected', 'severity': 'error', 'says': 'at start-up the channel whose axis number no axis list has gets no axes (P-ERR-3210)', 'source': 'https://infosys.beckhoff.com/content/1033/tf5200_diagnosis/249505419.html', 'releases': 'TF5200 diagnosis documentation'},
-    {'name': 'machine-undocumented', 'consequence': 'undocumented', 'severity': 'warning', 'says': 'what the controller does is not documented', 'source': 'none', 'releases': 'all'},
-    {'name': 'machine-information', 'consequence': 'behaviour', 'severity': 'info', 'says': 'information about what zero checked', 'source': 'zero', 'releases': 'all'},
-    {'name': 'machine-data-rejected', 'consequence': 'rejected', 'severity': 'error', 'says': 'the controller rejects the block when the program runs', 'source': "the vendor's #MACHINE DATA manual (shared/seeds, seed 003)", 'releases': 'all'},
-    {'name': 'programmed-limits-crossed', 'consequence': 'rejected', 'severity': 'error', 'says': 'the value is not taken over and the controller resets (P-ERR-21649, P-ERR-21878)', 'source': 'https://infosys.beckhoff.com/content/1033/tf5200_diagnosis/ (P-ERR-21649, P-ERR-21878), as the N004 rule cites', 'releases': 'TF5200 diagnosis documentation'},
-]
-RULES: dict[str, Any] = {'S001': 'malformed-line', 'S002': 'unreadable-entry', 'S003': 'unreadable-entry', 'S004': 'malformed-line', 'S005': 'style', 'S006': 'style', 'S007': 'text', 'S008': 'text', 'S009': 'after-end', 'S010': 'text', 'S011': 'style-info', 'S012': 'style-info', 'S013': 'unchecked', 'S014': 'unchecked', 'S015': 'unknown-parameter-id', 'S016': 'machine-information', 'S017': 'unchecked', 'R001': 'unknown-element', 'R002': 'vendor-writes', 'R003': 'unknown-element', 'R004': 'number-format', 'R005': 'out-of-range', 'R006': 'relation', 'R007': 'duplicate', 'R008': 'annotation', 'R009': 'unknown-reference', 'R010': 'vendor-writes', 'R011': 'catalogue-contradiction', 'R012': 'unit-unknown', 'R013': 'other-release', 'M001': 'empty-soft-limits', 'M002': 'behaviour', 'M003': 'information', 'M004': 'behaviour', 'M005': 'behaviour', 'M006': 'behaviour', 'M007': 'behaviour', 'M008': 'machine-undocumented', 'M009': 'feed-constant', 'U001': 'restart', 'U002': 'update-axis-zero', 'U003': 'update-axis-unknown', 'X001': 'behaviour', 'X002': 'machine-undocumented', 'X003': 'machine-undocumented', 'X004': 'duplicate-axis', 'X005': 'missing-list', 'X006': 'behaviour', 'X007': 'channel-axis-without-list', 'X008': 'behaviour', 'X009': 'machine-undocumented', 'X010': 'machine-undocumented', 'X011': 'machine-undocumented', 'X012': 'machine-information', 'X013': 'behaviour', 'X014': 'machine-undocumented', 'N001': 'machine-data-rejected', 'N002': 'behaviour', 'N003': 'behaviour', 'N004': 'programmed-limits-crossed', 'F001': 'unchecked'}
 DRIVES: list[dict[str, Any]] = [{'key': 'lr_hw[].mask_mess_1', 'types': [2], 'source': 'https://infosys.beckhoff.com/content/1033/tf5200_axis_parameter/117337611.html'}, {'key': 'kenngr.echtzeit_bit_nr', 'types': [2], 'source': 'https://infosys.beckhoff.com/content/1031/tf5200_axis_parameter/117336075.html'}, {'key': 'antr.sercos.', 'types': [2], 'source': 'https://infosys.beckhoff.com/content/1033/tf5200_axis_parameter/117965323.html'}, {'key': 'kenngr.homing_overflow_evaluation', 'types': [5], 'source': 'https://infosys.beckhoff.com/content/1031/tf5200_axis_parameter/117257867.html'}, {'key': 'antr.cnc_homing_encoder', 'types': [2], 'source': 'https://infosys.beckhoff.com/content/1031/tf5200_axis_parameter/117920395.html'}, {'key': 'kenngr.measure.input_edge_banding', 'types': [2, 3], 'source': 'https://infosys.beckhoff.com/content/1033/tf5200_axis_parameter/117333003.html'}, {'key': 'antr.encoder_bit_range', 'types': [2, 5, 8], 'source': 'https://infosys.beckhoff.com/content/1033/tf5200_axis_parameter/117260939.html'}, {'key': 'kenngr.write_reference_position_to_drive', 'types': [2, 8], 'source': 'https://infosys.beckhoff.com/content/1033/tf5200_axis_parameter/478018443.html'}, {'key': 'kenngr.homing.torq_homing_dir', 'types': [2], 'source': 'https://infosys.beckhoff.com/content/1033/tf5200_axis_parameter/117292939.html'}, {'key': 'antr.add_ready_for_operation.bit_nr', 'types': [4, 2, 3, 8, 6], 'source': 'https://infosys.beckhoff.com/content/1031/tf5200_axis_parameter/117947403.html'}, {'key': 'antr.reference_check.element_name', 'types': [2], 'source': 'https://infosys.beckhoff.com/content/1033/tf5200_axis_parameter/117303691.html'}, {'key': 'antr.reference_check.bit_nr', 'types': [2], 'source': 'https://infosys.beckhoff.com/content/1033/tf5200_axis_parameter/117302155.html'}, {'key': 'antr.encoder_coarsening_factor', 'types': [2, 8], 'source': 'https://infosys.beckhoff.com/content/1031/tf5200_axis_parameter/117930507.html'}, {'key': 'lr_param.distance_control_on', 'types': [2, 3, 8], 'source': 'https://infosys.beckhoff.com/content/1033/tf5200_axis_parameter/117797003.html'}]
+CLAIMS: str = (
+    "\n"
+    'unknown-element\taborted\terror\tthe plausibility check of a zero-offset list reports an unknown or incorrectly written parameter or an invalid value (P-ERR-20407), and the kernel aborts the job\thttps://infosys.beckhoff.com/content/1033/tf5200_diagnosis/251542155.html\tTF5200 diagnosis documentation\tZERO\tP-ERR-20407\n'
+    'unknown-element\tignored\terror\tthe kernel ignores an element of an axis parameter list it cannot interpret (P-ERR-1001119)\thttps://infosys.beckhoff.com/content/1033/tf5200_diagnosis/269215627.html\tTF5200 diagnosis documentation (kernel V3.1)\tAXIS\tP-ERR-1001119\n'
+    'unknown-element\tundocumented\twarning\tthe vendor documents no reaction to an unknown element of this list kind (P-ERR-1001119 covers axis parameter lists only)\tnone: the diagnosis documentation covers unknown elements of axis parameter lists only (P-ERR-1001119)\tall\t\t\n'
+    "vendor-writes\tvendor-writes\tinfo\tthe vendor's own lists or templates write it, which is evidence that the kernel of their release accepts it\tthe vendor's lists and templates (zero's tables name the file of each)\tthe release of the list or template named\t\t\n"
+    "other-release\tundocumented\twarning\tzero's catalogue does not document it; whether the machine's kernel accepts it is not documented\tnone: zero's table of renames and removals names where each spelling was seen\tall\t\t\n"
+    'number-format\taborted\terror\tthe plausibility check of a zero-offset list reports an unknown or incorrectly written parameter or an invalid value (P-ERR-20407), and the kernel aborts the job\thttps://infosys.beckhoff.com/content/1033/tf5200_diagnosis/251542155.html\tTF5200 diagnosis documentation\tZERO\tP-ERR-20407\n'
+    'number-format\tzeroed\terror\tthe kernel goes on with the list and sets a value of an invalid number format to 0 (P-ERR-1001138)\thttps://infosys.beckhoff.com/content/1033/tf5200_diagnosis/269276555.html\tTF5200 diagnosis documentation (kernel V3.1)\tAXIS\tP-ERR-1001138\n'
+    'number-format\tundocumented\twarning\twhat the controller does with a value of the wrong type in this list kind is not documented (P-ERR-1001138 covers axis parameter lists only)\tnone: the diagnosis documentation covers number formats of axis parameter lists only (P-ERR-1001138)\tall\t\t\n'
+    'out-of-range\taborted\terror\tthe plausibility check of a zero-offset list reports an unknown or incorrectly written parameter or an invalid value (P-ERR-20407), and the kernel aborts the job\thttps://infosys.beckhoff.com/content/1033/tf5200_diagnosis/251542155.html\tTF5200 diagnosis documentation\tZERO\tP-ERR-20407\n'
+    'out-of-range\tlimited\terror\tthe kernel goes on with the list and limits the value to the permissible minimum or maximum (P-ERR-1001138)\thttps://infosys.beckhoff.com/content/1033/tf5200_diagnosis/269276555.html\tTF5200 diagnosis documentation (kernel V3.1)\tAXIS\tP-ERR-1001138\n'
+    'out-of-range\tundocumented\twarning\tthe vendor does not document that the controller checks this range in this list kind, nor what it would do (P-ERR-1001138 covers axis parameter lists only)\tnone: the diagnosis documentation covers value ranges of axis parameter lists only (P-ERR-1001138)\tall\t\t\n'
+    'not-listed\taborted\terror\tthe plausibility check of a zero-offset list reports an unknown or incorrectly written parameter or an invalid value (P-ERR-20407), and the kernel aborts the job\thttps://infosys.beckhoff.com/content/1033/tf5200_diagnosis/251542155.html\tTF5200 diagnosis documentation\tZERO\tP-ERR-20407\n'
+    "not-listed\tundocumented\twarning\tthe documentation lists the allowed values but does not say what the controller does with another one\tnone: P-ERR-1001138 speaks of a range's minimum and maximum, not of listed values\tall\t\t\n"
+    "application-specific\tundocumented\tinfo\tthe documentation calls this range application-specific: a given controller's limit may differ (the vendor's own lists exceed some), and what it does beyond it is not documented\tthe parameter's documented range (`application-specific`), e.g. https://infosys.beckhoff.com/content/1033/tf5200_axis_parameter/117379083.html\tall\t\t\n"
+    "drive-type\tnot-applicable\tinfo\tthe documentation gives the parameter for another drive type than the axis has (P-AXIS-00020): the kernel does not use it for this axis\tthe parameter's documented drive types, e.g. https://infosys.beckhoff.com/content/1033/tf5200_axis_parameter/117337611.html and https://infosys.beckhoff.com/content/1033/tf5200_axis_parameter/117965323.html\tTF5200 axis parameter documentation\tAXIS\t\n"
+    "relation\tundocumented\twarning\tthe vendor documents no start-up check of this relation: what the controller does with the value is not documented\tnone: the relation is the catalogue's range; no diagnosis page reports it (where one does, its K rule says so instead)\tall\t\t\n"
+    'unknown-reference\tundocumented\twarning\twhat the controller does with a reference to a parameter it does not have is not documented\tnone\tall\t\t\n'
+    "catalogue-contradiction\tundocumented\twarning\tthe catalogue contradicts itself here, and what the controller does is not documented\tthe catalogue (CncParaDesc.xml): its default lies outside its own range\tthe catalogue's\t\t\n"
+    "unit-unknown\tundocumented\tinfo\tthe catalogue gives no unit for the value, so whether it lies inside the range is not known\tthe catalogue (CncParaDesc.xml)\tthe catalogue's\t\t\n"
+    "duplicate\tbehaviour\twarning\tthe later value is the one that stays\tthe list format: entries are read top to bottom (the vendor's SERCOS lists set kenngr.antr_typ twice)\tall\t\t\n"
+    'annotation\tbehaviour\twarning\tnothing for the controller, which ignores comments\tthe list format\tall\t\t\n'
+    'malformed-line\taborted\terror\tthe plausibility check of a zero-offset list reports an unknown or incorrectly written parameter or an invalid value (P-ERR-20407), and the kernel aborts the job\thttps://infosys.beckhoff.com/content/1033/tf5200_diagnosis/251542155.html\tTF5200 diagnosis documentation\tZERO\tP-ERR-20407\n'
+    'malformed-line\tignored\terror\tthe kernel ignores an element of an axis parameter list it cannot interpret (P-ERR-1001119)\thttps://infosys.beckhoff.com/content/1033/tf5200_diagnosis/269215627.html\tTF5200 diagnosis documentation (kernel V3.1)\tAXIS\tP-ERR-1001119\n'
+    'malformed-line\tundocumented\twarning\twhat the controller does with a line it cannot read in this list kind is not documented\tnone: P-ERR-1001119 covers axis parameter lists only\tall\t\t\n'
+    'unreadable-entry\taborted\terror\tthe plausibility check of a zero-offset list reports an unknown or incorrectly written parameter or an invalid value (P-ERR-20407), and the kernel aborts the job\thttps://infosys.beckhoff.com/content/1033/tf5200_diagnosis/251542155.html\tTF5200 diagnosis documentation\tZERO\tP-ERR-20407\n'
+    'unreadable-entry\tundocumented\twarning\twhat the controller does with such an entry is not documented\tnone\tall\t\t\n'
+    'unknown-parameter-id\tundocumented\twarning\twhat the kernel does with an XML element of a parameter ID its catalogue does not have is not documented\tnone\tall\t\t\n'
+    'text\tundocumented\twarning\twhat the controller does with these bytes is not documented\tnone\tall\t\t\n'
+    'after-end\tbehaviour\twarning\tthe list ends at `Ende`\tthe list format (SPEC: a list ends with `Ende`)\tall\t\t\n'
+    "style\tbehaviour\twarning\tnothing for the controller: the manual's form of a list\tthe vendor's list format\tall\t\t\n"
+    "style-info\tbehaviour\tinfo\tnothing for the controller: the manual's form of a list, which the vendor's own lists do not keep\tthe vendor's list format and lists\tall\t\t\n"
+    'unchecked\tunchecked\terror\tzero could not read the file, so nothing in it was checked\tzero: the file did not read\tall\t\t\n'
+    'empty-soft-limits\tundocumented\twarning\tthe kernel documents an error for an empty travel range (P-ERR-110110, K042), not for inverted soft limits: what it does with these is not documented\thttps://infosys.beckhoff.com/content/1033/tf5200_diagnosis/262387339.html\tTF5200 diagnosis documentation\tAXIS\t\n'
+    "behaviour\tbehaviour\twarning\tthe documented behaviour of the value, which may not be what was meant\tthe parameter's documentation (each rule names it)\tall\t\t\n"
+    "information\tbehaviour\tinfo\tthe documented behaviour; often intended\tthe parameter's documentation\tall\t\t\n"
+    'feed-constant\tbehaviour\tinfo\tthe TwinCAT CNC axis documentation puts wegaufz/wegaufn (P-AXIS-00234/00233) into the feed-constant formula as the gear ratio; the TF5200 documentation names gear_fact_num/denom (P-AXIS-00511/00512) for it\thttps://infosys.beckhoff.com/content/1033/tccncaxisparameter/15267153035.html and https://infosys.beckhoff.com/content/1033/tf5200_axis_parameter/131271307.html\tTwinCAT CNC (V3.01) and TF5200 axis parameter documentation\tAXIS\t\n'
+    "restart\tbehaviour\twarning\tthe catalogue marks the parameter as taking effect only at a restart\tthe catalogue (CncParaDesc.xml restart flag)\tthe catalogue's\t\t\n"
+    'update-axis-zero\trejected\terror\tthe kernel refuses to interpret an axis list for the logical axis number 0: the list is not updated (P-ERR-110597)\thttps://infosys.beckhoff.com/content/1033/tf5200_diagnosis/263988875.html\tTF5200 diagnosis documentation\t\tP-ERR-110597\n'
+    'update-axis-unknown\trejected\terror\tthe kernel rejects an order to take over parameters for a logical axis number no axis has (P-ERR-1000099)\thttps://infosys.beckhoff.com/content/1033/tf5200_diagnosis/268837003.html\tTF5200 diagnosis documentation\t\tP-ERR-1000099\n'
+    'duplicate-axis\trejected\terror\tthe kernel rejects the data transfer of the second axis with the same logical axis number (P-ERR-110064) or does not configure it (P-ERR-1001121)\thttps://infosys.beckhoff.com/content/1033/tf5200_diagnosis/262200203.html and https://infosys.beckhoff.com/content/1033/tf5200_diagnosis/269224331.html\tTF5200 diagnosis documentation\t\t\n'
+    'missing-list\taborted\terror\twhere the system tries to open a list file it cannot find, it outputs error messages and aborts the start-up (P-STUP-00015)\thttps://infosys.beckhoff.com/content/1033/tf5200_startup_list/123509643.html\tTF5200 start-up list documentation\t\t\n'
+    'channel-axis-without-list\trejected\terror\tat start-up the channel whose axis number no axis list has gets no axes (P-ERR-3210)\thttps://infosys.beckhoff.com/content/1033/tf5200_diagnosis/249505419.html\tTF5200 diagnosis documentation\t\t\n'
+    'machine-undocumented\tundocumented\twarning\twhat the controller does is not documented\tnone\tall\t\t\n'
+    'machine-information\tbehaviour\tinfo\tinformation about what zero checked\tzero\tall\t\t\n'
+    "machine-data-rejected\trejected\terror\tthe controller rejects the block when the program runs\tthe vendor's #MACHINE DATA manual (shared/seeds, seed 003)\tall\t\t\n"
+    'programmed-limits-crossed\trejected\terror\tthe value is not taken over and the controller resets (P-ERR-21649, P-ERR-21878)\thttps://infosys.beckhoff.com/content/1033/tf5200_diagnosis/ (P-ERR-21649, P-ERR-21878), as the N004 rule cites\tTF5200 diagnosis documentation\t\t\n'
+)
+RULES: str = (
+    "\n"
+    'S001\tmalformed-line\n'
+    'S002\tunreadable-entry\n'
+    'S003\tunreadable-entry\n'
+    'S004\tmalformed-line\n'
+    'S005\tstyle\n'
+    'S006\tstyle\n'
+    'S007\ttext\n'
+    'S008\ttext\n'
+    'S009\tafter-end\n'
+    'S010\ttext\n'
+    'S011\tstyle-info\n'
+    'S012\tstyle-info\n'
+    'S013\tunchecked\n'
+    'S014\tunchecked\n'
+    'S015\tunknown-parameter-id\n'
+    'S016\tmachine-information\n'
+    'S017\tunchecked\n'
+    'R001\tunknown-element\n'
+    'R002\tvendor-writes\n'
+    'R003\tunknown-element\n'
+    'R004\tnumber-format\n'
+    'R005\tout-of-range\n'
+    'R006\trelation\n'
+    'R007\tduplicate\n'
+    'R008\tannotation\n'
+    'R009\tunknown-reference\n'
+    'R010\tvendor-writes\n'
+    'R011\tcatalogue-contradiction\n'
+    'R012\tunit-unknown\n'
+    'R013\tother-release\n'
+    'M001\tempty-soft-limits\n'
+    'M002\tbehaviour\n'
+    'M003\tinformation\n'
+    'M004\tbehaviour\n'
+    'M005\tbehaviour\n'
+    'M006\tbehaviour\n'
+    'M007\tbehaviour\n'
+    'M008\tmachine-undocumented\n'
+    'M009\tfeed-constant\n'
+    'U001\trestart\n'
+    'U002\tupdate-axis-zero\n'
+    'U003\tupdate-axis-unknown\n'
+    'X001\tbehaviour\n'
+    'X002\tmachine-undocumented\n'
+    'X003\tmachine-undocumented\n'
+    'X004\tduplicate-axis\n'
+    'X005\tmissing-list\n'
+    'X006\tbehaviour\n'
+    'X007\tchannel-axis-without-list\n'
+    'X008\tbehaviour\n'
+    'X009\tmachine-undocumented\n'
+    'X010\tmachine-undocumented\n'
+    'X011\tmachine-undocumented\n'
+    'X012\tmachine-information\n'
+    'X013\tbehaviour\n'
+    'X014\tmachine-undocumented\n'
+    'N001\tmachine-data-rejected\n'
+    'N002\tbehaviour\n'
+    'N003\tbehaviour\n'
+    'N004\tprogrammed-limits-crossed\n'
+    'F001\tunchecked\n'
+)
