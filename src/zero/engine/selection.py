@@ -11,7 +11,6 @@ from __future__ import annotations
 
 import os
 from collections.abc import Sequence
-from itertools import pairwise
 
 from zero.diagnostics import Severity
 from zero.engine.results import LintOptions
@@ -72,16 +71,39 @@ def selected_rules(options: LintOptions) -> dict[str, Severity]:
 
 ALL = "ALL"  # as in ruff: every rule, opt-in ones included, the least specific selector
 
-_PREFIX_FREE: list[bool] = []  # whether no code of the rule table (read once) is a prefix of another
+_PREFIX_FREE: list[tuple[dict[str, tuple[Severity, bool]], bool]] = []  # (the rule table, is it prefix-free)
 
 
 def _prefix_free(table: dict[str, tuple[Severity, bool]]) -> bool:
     """Whether no code of ``table`` (:func:`rule_table`'s) begins another: a selector naming a code then
-    matches that code alone."""
-    if not _PREFIX_FREE:
-        codes = sorted(table)
-        _PREFIX_FREE.append(not any(b.startswith(a) for a, b in pairwise(codes)))
-    return _PREFIX_FREE[0]
+    matches that code alone. Worked out once per table."""
+    if not _PREFIX_FREE or _PREFIX_FREE[0][0] is not table:
+        codes = sorted(table)  # a code that begins another sorts right before it, or before one it begins
+        _PREFIX_FREE[:] = [(table, not any(map(str.startswith, codes[1:], codes)))]  # b.startswith(a), in C
+    return _PREFIX_FREE[0][1]
+
+
+class _Default:
+    """What no selector changes, worked out once per rule table: ``codes``, every rule that is not opt-in,
+    sorted (the selection :func:`layered_selection` gives where no layer selects or ignores), and
+    ``severities``, their code → declared severity in the table's order (what :func:`selected_rules` gives
+    for those codes, or for no selector at all, before per-code severities)."""
+
+    __slots__ = ("codes", "severities", "table")
+
+    def __init__(self, table: dict[str, tuple[Severity, bool]]) -> None:
+        self.table = table
+        self.severities = {code: severity for code, (severity, opt_in) in table.items() if not opt_in}
+        self.codes = tuple(sorted(self.severities))
+
+
+_DEFAULT: list[_Default] = []  # the rule table's (one: a test may put in another table)
+
+
+def _default(table: dict[str, tuple[Severity, bool]]) -> _Default:
+    if not _DEFAULT or _DEFAULT[0].table is not table:
+        _DEFAULT[:] = [_Default(table)]
+    return _DEFAULT[0]
 
 
 def _match(prefixes: Sequence[str], code: str, names: frozenset[str] = frozenset()) -> int:
@@ -103,12 +125,24 @@ def _selected_rules(options: LintOptions) -> dict[str, Severity]:
     """All rules (or those ``select`` names), plus ``extend_select``, less ``ignore``; the longest
     matching prefix decides, and at equal length ``ignore`` wins. An opt-in rule runs only when
     named by its full code (or by ``ALL``)."""
-    out: dict[str, Severity] = {}
+    table = rule_table()
+    if not options.extend_select and not options.ignore:
+        default = _default(table)
+        if not options.select or options.select == default.codes:
+            # what a lint asks but for a configuration that selects: every rule that is not opt-in, by its full
+            # code (layered_selection of no selector) or by no selector at all, each matched by itself (an
+            # opt-in rule is not named); worked out once, not tried code by code (with layered_selection's
+            # default: a lint 132.34 M -> 131.71 M instructions)
+            out = dict(default.severities)
+            for code, severity in options.severity.items():
+                if code in out:
+                    out[code] = severity
+            return out
+    out = {}
     # sets, where a selector names full codes: a configuration's layered selection names every rule
     # (199 codes), and 199 prefixes tried on each code were the slowest part of start-up
     select, extend, ignore = (frozenset(options.select), frozenset(options.extend_select),
                               frozenset(options.ignore))
-    table = rule_table()
     if select and not extend and not ignore and _prefix_free(table) and select <= table.keys():
         # what every lint asks (layered_selection: each enabled rule by its full code): the codes named, each
         # matched by itself alone (no code is a prefix of another), opt-in ones included (named by full code)
@@ -153,10 +187,13 @@ def _layered_selection(layers: Sequence[Layer], dropped: Sequence[str] = ()) -> 
     layer matches keeps its state. An opt-in rule is enabled only by its full code. ``dropped``
     (the file's per-file ignores) removes every code it matches, whatever selected it."""
     table = rule_table()
-    enabled = {code for code, (_, opt_in) in table.items() if not opt_in}
+    default = _default(table)
+    enabled: set[str] | None = None  # None: what no layer changed, the default (a lint without a selection)
     for select, extend, ignore in layers:
         if not (select or extend or ignore):
             continue
+        if enabled is None:
+            enabled = set(default.codes)
         for code, (_, opt_in) in table.items():
             on = _match((*select, *extend), code)
             off = _match(ignore, code)
@@ -169,8 +206,8 @@ def _layered_selection(layers: Sequence[Layer], dropped: Sequence[str] = ()) -> 
             else:
                 enabled.discard(code)
     if dropped:
-        enabled = {c for c in enabled if not any(c.startswith(p) for p in dropped)}
-    kept = tuple(sorted(enabled))
+        enabled = {c for c in (default.codes if enabled is None else enabled) if not any(map(c.startswith, dropped))}
+    kept = default.codes if enabled is None else tuple(sorted(enabled))
     return LintOptions(select=kept) if kept else LintOptions(ignore=("",))  # "" matches every code
 
 
