@@ -1,0 +1,93 @@
+"""Steps of reading a list into columns that take a short way for the usual list (issue 40: start-up): each
+gives what the general way gives."""
+
+from __future__ import annotations
+
+from typing import Any
+
+import pytest
+from hypothesis import example, given, settings
+from hypothesis import strategies as st
+
+from zero.lists import tokenizer
+from zero.lists.model import CommentStyle, Entry
+from zero.lists.tokenizer import annotation_at, comment_style, tokenize, tokenize_text
+
+
+def _fields(obj: Any) -> dict[str, Any]:
+    return {k: _fields(v) if isinstance(v, Entry) else v for k in obj.__slots__ for v in [getattr(obj, k)]}
+
+
+def _items(text: str) -> list[tuple[type, dict[str, Any]]]:
+    return [(type(i), _fields(i)) for i in tokenize_text(text).items]
+
+
+# --- the lines after `Ende`, split off from the end of the text
+_TAILS = ["", "\n", "\n\n", "a 1\n", "a 1", "# c\n", "  \n", "b 2\n# c\nd 4", "Ende\n", "\r\n", "x\r\ny 1\r\n", "\r"]
+
+
+@pytest.mark.parametrize("tail", _TAILS)
+@pytest.mark.parametrize("head", ["", "k 1\n", "# h\nk 1\n\n", "k 1\r\nq 2\r\n"])
+@pytest.mark.parametrize("ende", ["Ende", "Ende\r", "  Ende  ", "Ende # stop"])
+def test_the_lines_after_ende_as_the_careful_scanner_reads_them(head: str, ende: str, tail: str) -> None:
+    text = f"{head}{ende}\n{tail}" if tail else f"{head}{ende}"
+    careful = tokenize_text(text, use_fast=False)
+    assert _items(text) == [(type(i), _fields(i)) for i in careful.items]
+    assert tokenize_text(text).problems == careful.problems
+    doc = tokenize_text(text)
+    assert [doc.line_text(n) for n in range(1, doc.line_count + 1)] == careful.lines
+
+
+def test_the_lines_after_ende_of_a_list_read_as_its_bytes(monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.setattr(tokenizer, "_BYTES_FROM", -1)
+    text = "k 1\n# h\nEnde\nafter 2\n\n# c\r\nz 3"
+    doc = tokenize(text.encode("ascii"))
+    assert isinstance(doc._text, bytes)
+    careful = tokenize_text(text, use_fast=False)
+    assert [(type(i), _fields(i)) for i in doc.items] == [(type(i), _fields(i)) for i in careful.items]
+    assert doc.problems == careful.problems
+
+
+# --- comments that each start `( P-XXXX-00000`, told at once
+_COMMENT_PARTS = st.sampled_from([
+    "( P-AXIS-00016", "( P-AXIS-0001", "(  P-AXIS-00016", "(P-AXIS-00016", "( P-axis-00016", "( P-ÄXIS-00016",
+    "( P-AXIS-000167", " : x", " ( P-TOOL-00005 ", "µ", "#", "(", "|", "\x85", "\u2028", "\t", "( ", "P-",
+])
+_COMMENTS = st.lists(st.lists(_COMMENT_PARTS, min_size=1, max_size=4).map("".join)
+                     .filter(lambda c: not c[0].isspace()), min_size=1, max_size=12, unique=True)
+
+
+def _told(comments: list[str]) -> tuple[list[CommentStyle], list[str | None], list[int]]:
+    """What _comments_parts must give: each comment's style, annotation and its column, one at a time."""
+    at = [annotation_at(c) for c in comments]
+    notes = [c[a:a + 12] if a >= 0 else None for c, a in zip(comments, at, strict=True)]
+    return [comment_style(c) for c in comments], notes, at
+
+
+@settings(max_examples=300, deadline=None)
+@given(_COMMENTS)
+@example(["( P-AXIS-00016 : a", "( P-AXIS-00017 : b"])
+@example(["( P-AXIS-00016 : a", "( P-AXIS-0017 : b"])
+@example(["( P-AXIS-00016 : a", "(  P-AXIS-00017"])
+@example(["( P-AXIS-00016 : a", "# c ( P-AXIS-00017"])
+@example(["( P-AXIS-00016 ( P-TOOL-00001", "( P-AXIS-00017"])
+def test_comments_told_at_once_as_one_at_a_time(comments: list[str]) -> None:
+    saved = dict(tokenizer._comment_table)
+    tokenizer._comment_table.clear()  # none seen before: the run's first list
+    try:
+        styles, notes, note_at = tokenizer._comments_parts(comments)
+        assert (styles, notes, note_at) == _told(comments)
+        assert all(s is t for s, t in zip(styles, _told(comments)[0], strict=True))
+        # and kept for the next list, as one at a time would keep them
+        assert [tokenizer._comment_table[c] for c in comments] == list(zip(styles, notes, note_at, strict=True))
+    finally:
+        tokenizer._comment_table.clear()
+        tokenizer._comment_table.update(saved)
+
+
+def test_a_list_whose_comments_all_hold_a_leading_note() -> None:
+    tokenizer._comment_table.pop("( P-AXIS-00016 : number", None)
+    tokenizer._comment_table.pop("( P-AXIS-00110 : ident (x)", None)
+    doc = tokenize_text("a 1 ( P-AXIS-00016 : number\nb 2 ( P-AXIS-00110 : ident (x)\n")
+    assert [(e.comment_style, e.annotation, e.annotation_start) for e in doc.entries] == [
+        (CommentStyle.PAREN, "P-AXIS-00016", 6), (CommentStyle.PAREN, "P-AXIS-00110", 6)]
