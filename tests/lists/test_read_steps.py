@@ -9,9 +9,10 @@ import pytest
 from hypothesis import example, given, settings
 from hypothesis import strategies as st
 
-from zero.lists import tokenizer
+from zero.lists import model, tokenizer
 from zero.lists.model import CommentStyle, Entry
 from zero.lists.tokenizer import annotation_at, comment_style, tokenize, tokenize_text
+from zero.records import fields
 
 
 def _fields(obj: Any) -> dict[str, Any]:
@@ -91,3 +92,43 @@ def test_a_list_whose_comments_all_hold_a_leading_note() -> None:
     doc = tokenize_text("a 1 ( P-AXIS-00016 : number\nb 2 ( P-AXIS-00110 : ident (x)\n")
     assert [(e.comment_style, e.annotation, e.annotation_start) for e in doc.entries] == [
         (CommentStyle.PAREN, "P-AXIS-00016", 6), (CommentStyle.PAREN, "P-AXIS-00110", 6)]
+
+
+# --- the shapes a reader makes in bulk
+def test_shapes_made_in_bulk_are_the_records_init_makes() -> None:
+    heads, tails, patterns = ["wz", "kenngr.swe_pos", "a"], [".laenge", "", ".b[3]"], [0, 1, 2]
+    indices, indexed = [(), (), (3,)], [True, False, True]
+    made = model._made_shapes(heads, tails, patterns, indices, indexed)
+    expected = list(map(model.Shape, heads, tails, patterns, indices, indexed))
+    assert [type(s) for s in made] == [model.Shape] * 3
+    assert [_fields(s) for s in made] == [_fields(s) for s in expected]
+    # every field is set there: a field the record gains (with a default, or a __post_init__) fails here first
+    assert [f.name for f in fields(model.Shape)] == ["head", "tail", "pattern", "indices", "indexed"]
+    assert not hasattr(model.Shape, "__post_init__")
+    assert model._made_shapes([], [], [], [], []) == []
+
+
+# --- the tables of a small list, kept without a copy
+_SMALL = "# head\na 1 # x\nwz[1].l 2\n\nb P-AXIS-00001 ( P-TOOL-00005 n\n"
+
+
+def test_tables_kept_uncopied_give_the_items_they_held(monkeypatch: pytest.MonkeyPatch) -> None:
+    monkeypatch.setattr(tokenizer, "_small_tables", {})
+    # the careful lines (a quoted value, an odd key) add to the first list's tables after they were kept
+    first = tokenize_text(_SMALL + 'q "s t"\nk[1 2\nr "u" ( P-AXIS-00002 z\n')
+    second = tokenize_text(_SMALL)  # the same distinct shapes, values and comments: the tables loaded
+    careful = tokenize_text(_SMALL, use_fast=False)
+    cols = second.columns
+    assert cols.shapes[0] is first.columns.shapes[0]  # loaded, not made again
+    assert len(first.columns.values) > len(cols.values) and '"s t"' not in cols.values
+    assert [(c, cols.kinds[v]) for c, v in zip(cols.values, range(len(cols.values)), strict=True)] == [
+        (c, k) for c, k in zip(first.columns.values, first.columns.kinds, strict=False)][:len(cols.values)]
+    assert [_fields(e) for e in second.entries] == [_fields(e) for e in careful.entries]
+    assert set(cols._value_ids) == set(cols.values) and len(cols._shape_ids) == len(cols.shapes)
+    assert len(cols._comment_ids) == len(cols.comments) and len(cols._pattern_ids) == len(cols.patterns)
+    # a loaded document's tables are its own: a third list loads them as they were kept
+    cols.values.append("changed")
+    cols._value_ids["changed"] = len(cols.values) - 1
+    third = tokenize_text(_SMALL).columns
+    assert "changed" not in third.values and "changed" not in third._value_ids
+    assert third.values == cols.values[:-1]

@@ -7,9 +7,9 @@ findings are made from them with :meth:`zero.diagnostics.Span.on_line`.
 
 from __future__ import annotations
 
-from collections.abc import Iterator, MutableSequence
+from collections.abc import Iterator, MutableSequence, Sequence
 from functools import cache
-from itertools import accumulate, count, pairwise
+from itertools import accumulate, count, islice, pairwise, repeat
 
 from zero.forms import XML_ROOTS, root_of
 from zero.patterns import compiled
@@ -377,10 +377,18 @@ def shape_parts(head: str, indexed: bool, tail: str) -> tuple[str, tuple[int, ..
     return parts
 
 
-# What Columns.tables gives: its tables and their indexes, as copies.
-ColumnTables = tuple[list["Shape"], list[str], dict[tuple[str, bool, str], int], dict[str, int], list[str],
-                     list[ValueKind | None], dict[str, int], list[str], list[CommentStyle], list[str | None],
-                     list[int], dict[str, int]]
+# What Columns.tables gives: its tables and their indexes as they are (not copied), and how many items each held.
+ColumnTables = tuple[tuple[list["Shape"], list[str], dict[tuple[str, bool, str], int], dict[str, int], list[str],
+                           list[ValueKind | None], dict[str, int], list[str], list[CommentStyle], list[str | None],
+                           list[int], dict[str, int]], tuple[int, ...]]
+
+
+def _head(table: Any, size: int) -> Any:
+    """A copy of the first ``size`` items of a list or dictionary that has only grown at its end since it held
+    ``size``."""
+    if len(table) == size:
+        return table.copy()
+    return table[:size] if type(table) is list else dict(islice(table.items(), size))
 
 
 class Columns:
@@ -512,15 +520,17 @@ class Columns:
             # Each a key: in C, a step over all of them at a time (one at a time ~5,000 instructions a shape)
             heads, indexed, tails, pattern_texts, tail_indices = zip(*infos, strict=True)
             keys = list(zip(heads, indexed, tails, strict=True))
-            if shape_ids.keys().isdisjoint(keys):  # none added before (by add_entry): all new, in order
+            # none added before (by add_entry): all new, in order (an empty dictionary asked first: isdisjoint
+            # hashes each key)
+            if not shape_ids or shape_ids.keys().isdisjoint(keys):
                 new = list(dict.fromkeys(pattern_texts))
                 if pattern_ids and not pattern_ids.keys().isdisjoint(new):
                     new = [p for p in new if p not in pattern_ids]
                 pattern_ids.update(zip(new, count(len(patterns)), strict=False))  # (count: endless)
                 patterns.extend(new)
                 start = len(shapes)
-                shapes.extend(map(Shape, heads, tails, map(pattern_ids.__getitem__, pattern_texts), tail_indices,
-                                  indexed))
+                shapes.extend(_made_shapes(heads, tails, list(map(pattern_ids.__getitem__, pattern_texts)),
+                                           tail_indices, indexed))
                 shape_ids.update(zip(keys, count(start), strict=False))
                 return list(range(start, len(shapes)))
         out: list[int] = []
@@ -555,7 +565,7 @@ class Columns:
     def add_values(self, values: list[str], kinds: list[ValueKind]) -> list[int]:
         """:meth:`value_id` of each of ``values`` (distinct) with its kind, in bulk."""
         ids = self._value_ids
-        if not ids.keys().isdisjoint(values):
+        if ids and not ids.keys().isdisjoint(values):
             return [self.value_id(v, k) for v, k in zip(values, kinds, strict=True)]
         start = len(self.values)
         stop = start + len(values)
@@ -582,7 +592,7 @@ class Columns:
                      note_at: list[int]) -> list[int]:
         """:meth:`comment_id` of each of ``comments`` (distinct) with its style, note and note's column, in bulk."""
         ids = self._comment_ids
-        if not ids.keys().isdisjoint(comments):
+        if ids and not ids.keys().isdisjoint(comments):
             return [self.comment_id(*p) for p in zip(comments, styles, notes, note_at, strict=True)]
         start = len(self.comments)
         stop = start + len(comments)
@@ -594,21 +604,22 @@ class Columns:
         return list(range(start, stop))
 
     def tables(self) -> ColumnTables:
-        """A copy of the tables (shapes, patterns, values, comments), for :meth:`load_tables`. The
-        :class:`Shape` objects are shared: nothing changes a shape once made."""
-        return (list(self.shapes), list(self.patterns), dict(self._shape_ids), dict(self._pattern_ids),
-                list(self.values), list(self.kinds), dict(self._value_ids), list(self.comments), list(self.styles),
-                list(self.notes), list(self.note_at), dict(self._comment_ids))
+        """The tables (shapes, patterns, values, comments) and their indexes as they are now, for
+        :meth:`load_tables`: not copied (a reader keeps those of each small list, mostly never loaded: copying
+        them was a fortieth of reading a 330-line list). Each only grows at its end (nothing changes or removes an
+        item), so their first items, as many as each holds now, stay what they are now. The :class:`Shape`
+        objects are shared: nothing changes a shape once made."""
+        held = (self.shapes, self.patterns, self._shape_ids, self._pattern_ids, self.values, self.kinds,
+                self._value_ids, self.comments, self.styles, self.notes, self.note_at, self._comment_ids)
+        each: tuple[Any, ...] = held
+        return held, tuple(map(len, each))
 
     def load_tables(self, tables: ColumnTables) -> None:
-        """Take a copy of :meth:`tables` of other columns (a reader's, for a list like one read before)."""
-        (shapes, patterns, shape_ids, pattern_ids, values, kinds, value_ids, comments, styles, notes, note_at,
-         comment_ids) = tables
-        self.shapes, self.patterns = list(shapes), list(patterns)
-        self._shape_ids, self._pattern_ids = dict(shape_ids), dict(pattern_ids)
-        self.values, self.kinds, self._value_ids = list(values), list(kinds), dict(value_ids)
-        self.comments, self.styles, self.notes, self.note_at = list(comments), list(styles), list(notes), list(note_at)
-        self._comment_ids = dict(comment_ids)
+        """Take a copy of :meth:`tables` of other columns (a reader's, for a list like one read before): of each
+        table, the items it held then."""
+        held, sizes = tables
+        (self.shapes, self.patterns, self._shape_ids, self._pattern_ids, self.values, self.kinds, self._value_ids,
+         self.comments, self.styles, self.notes, self.note_at, self._comment_ids) = map(_head, held, sizes)
 
     def add_entry(self, entry: Entry) -> int:
         """Append an entry built as an object (the careful scanner's, or a document's items): its row."""
@@ -661,6 +672,19 @@ class Shape(Record, eq=False):
     pattern: int
     indices: tuple[int, ...]
     indexed: bool
+
+
+def _made_shapes(heads: Sequence[str], tails: Sequence[str], patterns: Sequence[int],
+                 indices: Sequence[tuple[int, ...]], indexed: Sequence[bool]) -> list[Shape]:
+    """``list(map(Shape, heads, tails, patterns, indices, indexed))`` without the record's ``__init__`` called for
+    each: the objects made in C, then their fields set as the targets of one loop (what that ``__init__`` does; a
+    third fewer instructions: a call of a record's ``__init__`` from C costs more than its five stores)."""
+    made = list(map(object.__new__, repeat(Shape, len(heads))))
+    _each: Shape
+    for _each, _each.head, _each.tail, _each.pattern, _each.indices, _each.indexed in zip(
+            made, heads, tails, patterns, indices, indexed, strict=True):
+        pass  # (the targets did it all)
+    return made
 
 
 # What builds the entry of a row the tokenizer read into columns only, and every row's (zero.lists.tokenizer

@@ -891,8 +891,8 @@ class _Reader:
                     said = [c.decode("ascii") for c in new_comments] if binary else new_comments
                     comments.update(zip(new_comments, add_comments(said, *_comments_parts(said)), strict=True))
                 if small and len(_small_tables) < _SMALL_TABLES:
-                    _small_tables[signature] = (cols.tables(), dict(shapes), dict(values), dict(comments),
-                                                list(shape_pattern))
+                    # not copied: a small list is one part, whose reader changes them no more
+                    _small_tables[signature] = (cols.tables(), shapes, values, comments, shape_pattern)
             for f in dict.fromkeys(first_texts):
                 if f not in firsts:
                     firsts[f] = int(f)
