@@ -132,3 +132,23 @@ def test_tables_kept_uncopied_give_the_items_they_held(monkeypatch: pytest.Monke
     third = tokenize_text(_SMALL).columns
     assert "changed" not in third.values and "changed" not in third._value_ids
     assert third.values == cols.values[:-1]
+
+
+# --- a small list's rows in lists, told from the lines the pattern split (no count of the line feeds first)
+@pytest.mark.parametrize("widths", [False, True])
+@pytest.mark.parametrize("text", ["a 1\nb 2", "a 1\nb 2\n", "a 1\nb 2\nc 3", "a 1\nb 2\nc 3\n", "a 1\n# c\n\nd 4\n",
+                                  "a 1\r\nb 2\r\nc 3\r\n", "", "\n\n\n", "a 1\nEnde\nb 2\n"])
+def test_rows_in_lists_below_so_many_line_feeds(monkeypatch: pytest.MonkeyPatch, text: str, widths: bool) -> None:
+    monkeypatch.setattr(tokenizer, "_SMALL_LIST", 3)
+    doc = tokenize_text(text, widths=widths)
+    cols = doc.columns
+    small = text.count("\n") < 3  # what the reader counted before it read
+    for name in ("line", "shape", "first", "pattern", "value", "comment"):
+        assert (type(getattr(cols, name)) is list) is small, name
+    if widths:
+        assert cols.widths is not None and all((type(w) is list) is small for w in cols.widths)
+        assert [len(w) for w in cols.widths] == [len(cols)] * 3
+    careful = tokenize_text(text, use_fast=False)
+    assert [_fields(e) for e in doc.entries] == [_fields(e) for e in careful.entries]
+    assert [(type(i), _fields(i)) for i in tokenize_text(text, widths=widths).items] == [
+        (type(i), _fields(i)) for i in careful.items]
