@@ -152,3 +152,19 @@ def test_rows_in_lists_below_so_many_line_feeds(monkeypatch: pytest.MonkeyPatch,
     assert [_fields(e) for e in doc.entries] == [_fields(e) for e in careful.entries]
     assert [(type(i), _fields(i)) for i in tokenize_text(text, widths=widths).items] == [
         (type(i), _fields(i)) for i in careful.items]
+
+
+# --- the first part's new shapes and comments, found without an id per line first
+@pytest.mark.parametrize("text", ["", "# c\n\n", "a 1\nb 2\na 3\n", "a 1 # x\nb 2\n# y\nc 3 # x\n", "Ende\n",
+                                  "a[1].b 1 ( P-AXIS-00001\na[2].b 2\n\na[1].b 3 ( P-AXIS-00001\n", "k[1 2\nq \"s\"\n"])
+def test_a_first_part_has_the_ids_of_the_careful_scanner(text: str) -> None:
+    doc = tokenize_text(text)
+    cols = doc.columns
+    careful = tokenize_text(text, use_fast=False)
+    assert [cols.key_text(r) for r in range(len(cols))] == [e.key_text for e in careful.entries]
+    assert [cols.comment_text(r) for r in range(len(cols))] == [e.comment for e in careful.entries]
+    assert len(cols.shapes) == len({e.key_text.split("[")[0] + e.key_text.partition("]")[2]
+                                    for e in careful.entries})
+    assert len(cols.comments) == len({e.comment for e in careful.entries} - {None})
+    assert sorted(set(cols.shape)) == list(range(len(cols.shapes)))
+    assert [(type(i), _fields(i)) for i in doc.items] == [(type(i), _fields(i)) for i in careful.items]

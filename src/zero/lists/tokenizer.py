@@ -864,11 +864,21 @@ class _Reader:
             # it has one (mostly none). Values and first indices, of which most parts have new ones: the distinct
             # ones first. (names, tail) pairs made by zip as they are read, never a list of them (zip reuses its
             # tuple).
-            had_shapes, had_comments = len(shapes), len(comments)
-            sids = list(map(shapes.setdefault, zip(names, tails, strict=True), repeat(_NEW)))
-            cids = list(map(comments.setdefault, comment_texts, repeat(_NEW)))
-            new_shapes = list(islice(shapes, had_shapes, None)) if len(shapes) > had_shapes else []
-            new_comments = list(islice(comments, had_comments, None)) if len(comments) > had_comments else []
+            first_part = pos == 0  # every shape and comment new but "none" (its lines' ids read once they have them)
+            if first_part:
+                seen_shapes: dict[Any, None] = dict.fromkeys(zip(names, tails, strict=True))
+                seen_shapes.pop((None, None), None)
+                new_shapes = list(seen_shapes)
+                seen_comments: dict[Any, None] = dict.fromkeys(comment_texts)
+                seen_comments.pop(None, None)
+                new_comments = list(seen_comments)
+                del seen_shapes, seen_comments
+            else:
+                had_shapes, had_comments = len(shapes), len(comments)
+                sids = list(map(shapes.setdefault, zip(names, tails, strict=True), repeat(_NEW)))
+                cids = list(map(comments.setdefault, comment_texts, repeat(_NEW)))
+                new_shapes = list(islice(shapes, had_shapes, None)) if len(shapes) > had_shapes else []
+                new_comments = list(islice(comments, had_comments, None)) if len(comments) > had_comments else []
             new_values = [v for v in dict.fromkeys(value_texts) if v not in values]
             known = None
             count = len(names)
@@ -910,9 +920,9 @@ class _Reader:
             for f in dict.fromkeys(first_texts):
                 if f not in firsts:
                     firsts[f] = int(f)
-            if new_shapes or known is not None:
+            if new_shapes or known is not None or first_part:
                 sids = list(map(shapes.__getitem__, zip(names, tails, strict=True)))
-            if new_comments or known is not None:
+            if new_comments or known is not None or first_part:
                 cids = list(map(comments.__getitem__, comment_texts))
             if self.end_line is None and -1 not in sids:  # every line an entry of the columns
                 _extend(cols.line, count, range(number, number + count))
