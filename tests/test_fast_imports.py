@@ -301,7 +301,7 @@ def test_a_stale_bundle_is_not_run_and_is_written_again(tmp_path: Path, change: 
         assert _child(root, "-c", code).stdout.strip() == "edited"
 
 
-@pytest.mark.parametrize("damage", ["empty", "cut short", "another format", "not marshal", "moved"])
+@pytest.mark.parametrize("damage", ["empty", "cut short", "another format", "not marshal", "not modules", "moved"])
 def test_a_damaged_or_foreign_bundle_is_not_run(tmp_path: Path, damage: str) -> None:
     root = _copy(tmp_path)
     _compile(root)
@@ -317,6 +317,7 @@ def test_a_damaged_or_foreign_bundle_is_not_run(tmp_path: Path, damage: str) -> 
         header = marshal.dumps((99, *marshal.loads(data[4:4 + size])[1:]))  # another format number
         bundle.write_bytes({"empty": b"", "cut short": data[: len(data) // 2],
                             "another format": len(header).to_bytes(4, "little") + header + data[4 + size:],
+                            "not modules": data[:4 + size] + marshal.dumps((("zero.x", False, "x.py", 1),)),
                             "not marshal": b"\xff" * 64}[damage])
     said, used = _lint(root)
     assert used == {"lint": damage != "moved", "check": False, "kind-axis": damage != "moved"}

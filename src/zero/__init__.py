@@ -82,7 +82,7 @@ def preload(command: str) -> bool:
     A bundle is one file: the length of its header, the header (:data:`BUNDLE_FORMAT`, Python's magic
     number, the package's folder, and each source's path below it, modification time in nanoseconds and
     size) and the modules (name, whether a package, source path, code), both in ``marshal``'s format:
-    reading it is one ``read`` and two ``loads``, where importing the modules one by one is a search, a
+    reading it is one mapping and two ``loads``, where importing the modules one by one is a search, a
     read and a check each, and the names and constants they share are read once.
     """
     path = bundle_path(command)
@@ -106,6 +106,9 @@ def preload(command: str) -> bool:
                 if st.st_mtime_ns != mtime or st.st_size != length:
                     return False
             items = marshal.loads(view[4 + size:])
+            code = type(_run.__code__)
+            if not all(len(item) == 4 and type(item[3]) is code for item in items):
+                return False  # marshal's, but not modules
     except (OSError, EOFError, ValueError, TypeError):  # not a bundle: as none
         return False
     finally:
@@ -119,7 +122,7 @@ def preload(command: str) -> bool:
 def _mapped(f: BinaryIO) -> bytes | mmap:
     """The bytes of the open file ``f``, mapped where the system can: a read copies them into memory the
     process has not touched yet, which the system hands over a page at a time (some 3 µs each on a virtual
-    machine: a third of a bundle's time), where a mapping takes them from its file cache many pages at a
+    machine, 255 for a lint's bundles), where a mapping takes them from its file cache many pages at a
     time; read where ``mmap`` cannot map it (an empty file, another system)."""
     try:
         import mmap  # start-up: only where a bundle is read (an extension module, cheaper than the pages it saves)
