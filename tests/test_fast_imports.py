@@ -228,6 +228,14 @@ def _write_bundles(root: Path) -> None:
     assert all(_bundle(root, command).is_file() for command in COMMANDS)
 
 
+def _bundled_copy(tmp: Path) -> Path:
+    """zero's source in ``tmp/zero``, compiled, with every bundle written (``python -m zero.bundles``)."""
+    root = _copy(tmp)
+    _compile(root)
+    _write_bundles(root)
+    return root
+
+
 # A lint of axis.lis in the child that says, as its last line, which bundles it asked for and used.
 _LINT = ("import sys, zero, zero.cli.lean as lean\n"
          "end = lean.end\n"
@@ -247,9 +255,7 @@ def _lint(root: Path, **env: str) -> tuple[str, dict[str, bool]]:
 
 
 def test_bundled_modules_are_what_pythons_import_gives(tmp_path: Path) -> None:
-    root = _copy(tmp_path)
-    _compile(root)
-    _write_bundles(root)
+    root = _bundled_copy(tmp_path)
     preloaded = json.loads(_child(root, "-c", _BUNDLE_PROBE, "preload").stdout)
     imported = json.loads(_child(root, "-c", _BUNDLE_PROBE, "import").stdout)
     assert preloaded == imported
@@ -279,9 +285,7 @@ def test_no_bundle_is_written_where_python_writes_no_cached_bytecode(tmp_path: P
 
 @pytest.mark.parametrize("change", ["content", "same size, other time", "module list"])
 def test_a_stale_bundle_is_not_run_and_is_written_again(tmp_path: Path, change: str) -> None:
-    root = _copy(tmp_path)
-    _compile(root)
-    _write_bundles(root)
+    root = _bundled_copy(tmp_path)
     module = root / "zero" / ("bundled_modules.py" if change == "module list" else "rules/syntax.py")
     st = module.stat()
     if change == "same size, other time":
@@ -303,9 +307,7 @@ def test_a_stale_bundle_is_not_run_and_is_written_again(tmp_path: Path, change: 
 
 @pytest.mark.parametrize("damage", ["empty", "cut short", "another format", "not marshal", "not modules", "moved"])
 def test_a_damaged_or_foreign_bundle_is_not_run(tmp_path: Path, damage: str) -> None:
-    root = _copy(tmp_path)
-    _compile(root)
-    _write_bundles(root)
+    root = _bundled_copy(tmp_path)
     bundle = _bundle(root, "check")
     data = bundle.read_bytes()
     if damage == "moved":  # the same files elsewhere: each module's file names would be wrong
@@ -325,9 +327,7 @@ def test_a_damaged_or_foreign_bundle_is_not_run(tmp_path: Path, damage: str) -> 
 
 
 def test_a_module_already_imported_is_not_run_again(tmp_path: Path) -> None:
-    root = _copy(tmp_path)
-    _compile(root)
-    _write_bundles(root)
+    root = _bundled_copy(tmp_path)
     code = ("import sys, zero, zero.rules.syntax as before\n"
             "assert zero.preload('lint') and zero.preload('check')\n"
             "import zero.rules.syntax as after, zero.rules as rules\n"
@@ -356,9 +356,7 @@ PACKAGE = "bundle_test_package"
 
 def test_a_bundle_is_read_where_it_cannot_be_mapped(tmp_path: Path) -> None:
     """Without ``mmap`` (another system, a trimmed Python) the bundle is read instead, to the same modules."""
-    root = _copy(tmp_path)
-    _compile(root)
-    _write_bundles(root)
+    root = _bundled_copy(tmp_path)
     code = ("import sys\nsys.modules['mmap'] = None  # import mmap fails\n"
             "import zero\nprint(zero.preload('lint'), zero.preload('check'))\n"
             "import zero.rules.syntax as m; print(m.__file__)")
