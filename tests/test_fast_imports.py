@@ -207,7 +207,7 @@ for names in COMMANDS.values():
         out[name] = {
             "file": m.__file__, "cached": m.__cached__, "path": getattr(m, "__path__", None), "package": m.__package__,
             "spec": [spec.name, spec.origin, spec.cached, spec.parent, spec.has_location,
-                     spec.submodule_search_locations],
+                     spec.submodule_search_locations, getattr(spec, "_initializing", "unset")],
             "loader": [type(m.__loader__).__module__, m.__loader__.name, m.__loader__.path,
                        m.__loader__ is spec.loader],
             "on_parent": getattr(sys.modules[name.rpartition(".")[0]], name.rpartition(".")[2], None) is m,

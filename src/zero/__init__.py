@@ -181,7 +181,12 @@ def _run(items: tuple[tuple[str, bool, str, CodeType], ...], root: str) -> None:
                         continue
                 module = made(name)
                 waiting.pop(name)
-            exec(code, module.__dict__)
+            spec = module.__spec__
+            spec._initializing = True  # as Python's import: while its body runs, and ...
+            try:
+                exec(code, module.__dict__)
+            finally:
+                spec._initializing = False  # ... after (each import of it looks: it fails slowly where unset)
             parent, _, leaf = name.rpartition(".")
             setattr(modules[parent], leaf, module)
     except BaseException:
