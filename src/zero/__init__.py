@@ -27,7 +27,7 @@ if TYPE_CHECKING:
     from mmap import mmap
     from os import stat_result
     from types import CodeType, ModuleType
-    from typing import BinaryIO
+    from typing import Any, BinaryIO
 
 __version__ = "0.1.0"
 
@@ -181,7 +181,7 @@ def _run(items: tuple[tuple[str, bool, str, CodeType], ...], root: str) -> None:
                         continue
                 module = made(name)
                 waiting.pop(name)
-            spec = module.__spec__
+            spec: Any = module.__spec__
             spec._initializing = True  # as Python's import: while its body runs, and ...
             try:
                 exec(code, module.__dict__)
