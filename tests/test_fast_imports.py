@@ -370,3 +370,52 @@ def test_a_bundle_is_read_where_it_cannot_be_mapped(tmp_path: Path) -> None:
         mapped = zero._mapped(f)
         assert not isinstance(mapped, bytes) and mapped[:] == _bundle(root, "lint").read_bytes()
         mapped.close()
+
+
+# How a child's zero modules answer a missing name, each module loaded by a bundle or by zero's finder.
+_MISSING_PROBE = r"""
+import json, sys, types, zero
+if sys.argv[1] == "preload":
+    assert zero.preload("lint") and zero.preload("check")
+import zero.diagnostics as plain, zero.catalog.data.table as answers, zero.rules as package
+
+def error(run):
+    try:
+        run()
+    except (AttributeError, ImportError) as e:
+        return f"{type(e).__name__}: {e}"
+    return None
+
+print(json.dumps({
+    "classes": [type(m).__name__ for m in (zero, plain, package)],
+    "modules": all(isinstance(m, types.ModuleType) for m in (zero, plain, answers, package)),
+    "its_own_answer": type(answers) is types.ModuleType and error(lambda: answers.nothing),
+    "rows": len(answers.ROWS) > 0,
+    "paths": [hasattr(plain, "__path__"), hasattr(package, "__path__")],
+    "missing": error(lambda: plain.nothing),
+    "not_importable": error(lambda: exec("from zero.diagnostics import nothing")),
+    "default": getattr(plain, "nothing", "default"),
+    "set": (setattr(plain, "added", 1), plain.added, delattr(plain, "added"), hasattr(plain, "added")),
+}))
+"""
+
+
+@pytest.mark.parametrize("how", ["preload", "import"])
+def test_a_missing_name_of_zeros_modules_is_still_missing(tmp_path: Path, how: str) -> None:
+    """zero's modules are of a module subclass that looks a missing name up without an error made and thrown
+    away (``zero._Module``); to any caller they are modules, and one that answers missing names itself (a module
+    ``__getattr__``) keeps Python's class."""
+    root = _bundled_copy(tmp_path)
+    out = _child(root, "-c", _MISSING_PROBE, how)
+    assert out.returncode == 0, out.stderr
+    assert json.loads(out.stdout) == {
+        "classes": ["module", "module", "module"], "modules": True,
+        "its_own_answer": "AttributeError: module 'zero.catalog.data.table' has no attribute 'nothing'",
+        "rows": True, "paths": [False, True],
+        "missing": "AttributeError: 'module' object has no attribute 'nothing'",
+        "not_importable": f"ImportError: cannot import name 'nothing' from 'zero.diagnostics' "
+                          f"({root / 'zero' / 'diagnostics.py'})",
+        "default": "default", "set": [None, 1, None, False]}
+    classes = _child(root, "-c", "import sys, zero, zero.diagnostics, zero.catalog.data.table as t\n"
+                     "print(type(zero) is type(zero.diagnostics) is zero._Module, type(t) is type(sys))")
+    assert classes.stdout.split() == ["True", "True"], classes.stderr

@@ -41,6 +41,31 @@ PACKAGES = frozenset({"catalog", "catalog.data", "cli", "engine", "lists", "mach
 # folder, the cached bytecode's suffix, its header (magic number, flags 0), the loader and spec classes.
 _FOUND: tuple[str, str, bytes, type, type] | None = None
 
+
+
+class _Module(type(sys)):  # type: ignore[misc]
+    """The class of zero's modules that do not answer missing names themselves (no module ``__getattr__``):
+    a module whose missing attribute is looked for without an error made and thrown away. CPython 3.11
+    looks a module's ``__path__`` up at every ``from module import name`` (is it a package?) and, for a
+    plain module, formats "module ... has no attribute" first: some 3,500 instructions each, 400 of them in
+    a lint. Python allows a module's class to be a subclass of its own (the language reference:
+    "customizing module attribute access"); this one takes ``object``'s attribute look-up, which CPython
+    asks without an error where the attribute may be missing. A missing attribute still raises
+    ``AttributeError`` ("'module' object has no attribute ...")."""
+
+    __slots__ = ()
+    __getattribute__ = object.__getattribute__
+
+
+_Module.__name__ = _Module.__qualname__ = "module"  # the name its errors give
+
+
+def _plain(module: ModuleType) -> None:
+    """``module`` of class :class:`_Module`, unless it answers missing names itself (PEP 562)."""
+    if "__getattr__" not in module.__dict__:
+        module.__class__ = _Module
+
+
 BUNDLE_FORMAT = 1  # the layout of a bundle (see preload): another one is not read
 # The bundles this process asked for, and whether each was used (zero.bundles writes the others at the end).
 BUNDLES_ASKED: dict[str, bool] = {}
@@ -187,6 +212,7 @@ def _run(items: tuple[tuple[str, bool, str, CodeType], ...], root: str) -> None:
                 exec(code, module.__dict__)
             finally:
                 spec._initializing = False  # ... after (each import of it looks: it fails slowly where unset)
+            _plain(module)
             parent, _, leaf = name.rpartition(".")
             setattr(modules[parent], leaf, module)
     except BaseException:
@@ -229,6 +255,10 @@ def _install() -> None:
             _fix_co_filename(code, self.path)  # as Python's loader: the module's file, should it have moved
             return code
 
+        def exec_module(self, module: ModuleType) -> None:
+            super().exec_module(module)
+            _plain(module)
+
     class Finder:
         """``zero.X`` from its cached bytecode, when that is current; ``None`` (Python's finders) otherwise."""
 
@@ -263,3 +293,4 @@ def _install() -> None:
 
 
 _install()
+_plain(sys.modules[__name__])
