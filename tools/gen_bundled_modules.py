@@ -9,9 +9,10 @@ records the order in which their bodies finish.
   it checks a file (a run the cache answers loads these and little else);
 - ``check``: the other modules every run that checks a list loads (the catalogue, the reader, the rules),
   whatever the list's kind: a kind's own tables stay out;
-- ``kind-<kind>`` for each kind of the built-in table: its data modules (its specs, ranges and K conditions
-  as written at build time), asked for at the kind's first parameter (its rows are read before, when a
-  list's kind is told).
+- ``table-<kind>`` for each kind of the built-in table: its table (IDs, keys, rows), asked for where the
+  kind's table is first read (a list's unknown key is looked for in every kind's);
+- ``kind-<kind>``: the kind's other data modules (its specs, ranges and K conditions as written at build
+  time), asked for at the kind's first parameter.
 
 Each in the order the first run (without the cache) finished them, so that a module runs after what it
 imports. Run it after changing what a lint imports (a stale list is not wrong: a module it misses is
@@ -121,13 +122,13 @@ def bundles() -> dict[str, list[str]]:
     made = {"lint": first, "check": [n for n in check[0] if n not in first and all(n in run for run in check)]}
     kinds = [table.stem.removeprefix("table_") for table in sorted(DATA.glob("table_*.py"))]
     for kind in kinds:
+        made[f"table-{kind}"] = [f"zero.catalog.data.table_{kind}"]
         made[f"kind-{kind}"] = [f"zero.catalog.data.{part}_{kind}" for part in KIND_DATA
                                 if (DATA / f"{part}_{kind}.py").is_file()]
     bundled = {n for names in made.values() for n in names}
     for order in check:  # every data module of a kind that a run loaded is in its kind's bundle
         for name in order:
-            if (name.rpartition("_")[2] in kinds and name.startswith("zero.catalog.data.")
-                    and not name.startswith("zero.catalog.data.table_") and name not in bundled):
+            if name.rpartition("_")[2] in kinds and name.startswith("zero.catalog.data.") and name not in bundled:
                 raise SystemExit(f"gen_bundled_modules: {name}, a kind's data module, is in no bundle")
     return made
 

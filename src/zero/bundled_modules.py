@@ -66,60 +66,102 @@ COMMANDS: dict[str, tuple[str, ...]] = {
         'zero.pattern_codes',
         'zero.catalog.data.prose_compiled',
     ),
+    'table-axis': (
+        'zero.catalog.data.table_axis',
+    ),
     'kind-axis': (
         'zero.catalog.data.specs_axis',
         'zero.catalog.data.ranges_compiled_axis',
         'zero.catalog.data.startup_compiled_axis',
+    ),
+    'table-chan': (
+        'zero.catalog.data.table_chan',
     ),
     'kind-chan': (
         'zero.catalog.data.specs_chan',
         'zero.catalog.data.ranges_compiled_chan',
         'zero.catalog.data.startup_compiled_chan',
     ),
+    'table-clmp': (
+        'zero.catalog.data.table_clmp',
+    ),
     'kind-clmp': (
         'zero.catalog.data.specs_clmp',
         'zero.catalog.data.ranges_compiled_clmp',
     ),
+    'table-cmld': (
+        'zero.catalog.data.table_cmld',
+    ),
     'kind-cmld': (
         'zero.catalog.data.specs_cmld',
+    ),
+    'table-comp': (
+        'zero.catalog.data.table_comp',
     ),
     'kind-comp': (
         'zero.catalog.data.specs_comp',
         'zero.catalog.data.ranges_compiled_comp',
         'zero.catalog.data.startup_compiled_comp',
     ),
+    'table-extv': (
+        'zero.catalog.data.table_extv',
+    ),
     'kind-extv': (
         'zero.catalog.data.specs_extv',
         'zero.catalog.data.ranges_compiled_extv',
         'zero.catalog.data.startup_compiled_extv',
     ),
+    'table-hwcf': (
+        'zero.catalog.data.table_hwcf',
+    ),
     'kind-hwcf': (
         'zero.catalog.data.specs_hwcf',
+    ),
+    'table-manu': (
+        'zero.catalog.data.table_manu',
     ),
     'kind-manu': (
         'zero.catalog.data.specs_manu',
         'zero.catalog.data.ranges_compiled_manu',
+    ),
+    'table-rtcf': (
+        'zero.catalog.data.table_rtcf',
     ),
     'kind-rtcf': (
         'zero.catalog.data.specs_rtcf',
         'zero.catalog.data.ranges_compiled_rtcf',
         'zero.catalog.data.startup_compiled_rtcf',
     ),
+    'table-seco': (
+        'zero.catalog.data.table_seco',
+    ),
     'kind-seco': (
         'zero.catalog.data.specs_seco',
         'zero.catalog.data.ranges_compiled_seco',
+    ),
+    'table-stup': (
+        'zero.catalog.data.table_stup',
     ),
     'kind-stup': (
         'zero.catalog.data.specs_stup',
         'zero.catalog.data.ranges_compiled_stup',
     ),
+    'table-tool': (
+        'zero.catalog.data.table_tool',
+    ),
     'kind-tool': (
         'zero.catalog.data.specs_tool',
         'zero.catalog.data.ranges_compiled_tool',
     ),
+    'table-volc': (
+        'zero.catalog.data.table_volc',
+    ),
     'kind-volc': (
         'zero.catalog.data.specs_volc',
         'zero.catalog.data.ranges_compiled_volc',
+    ),
+    'table-zero': (
+        'zero.catalog.data.table_zero',
     ),
     'kind-zero': (
         'zero.catalog.data.specs_zero',

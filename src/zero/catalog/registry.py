@@ -892,7 +892,7 @@ def _spec_table(kind: str, index_base: dict[str, int]) -> tuple[bytes, ...] | No
     """One kind's specs written at build time (``SPECS``, in the order of its table's IDS), where they were
     written for its table module, ParamSpec's fields and the overlay's ``index_base`` as they are (else ``None``)."""
     # the kind's data modules at once, where their bundle is current (zero.bundles): at its first parameter,
-    # not at its table, which telling a list's kind reads for every kind
+    # not at its table, which a list's unknown keys look for in every kind's
     preload(f"kind-{kind.lower()}")
     try:  # start-up: written at build time, imported at the kind's first parameter
         got = importlib.import_module(f"zero.catalog.data.specs_{kind.lower()}")
@@ -909,6 +909,7 @@ def _kind_table(kind: str) -> Any:
     imported at the kind's first row."""
     got = _KIND_TABLES.get(kind)
     if got is None:
+        preload(f"table-{kind.lower()}")  # mapped from its bundle, where that is current (zero.bundles)
         got = _KIND_TABLES[kind] = importlib.import_module(f"zero.catalog.data.table_{kind.lower()}")
     return got
 
