@@ -3,6 +3,7 @@
 
 from __future__ import annotations
 
+import contextlib
 import os
 from pathlib import Path
 
@@ -11,10 +12,11 @@ import pytest
 from hypothesis import example, given, settings
 from hypothesis import strategies as st
 
-from zero.engine.config import Config, _resolved, _suffixes, one_resolution
+from zero.engine.config import Config, ConfigFinder, _resolved, _suffixes, one_resolution
 from zero.engine.config_file import patterns
+from zero.engine.discovery import holds_lists
 from zero.files import path_str
-from zero.forms import DEFAULT_INCLUDE
+from zero.forms import DEFAULT_INCLUDE, is_project, is_xml_name, xml_form
 
 _PARTS = st.lists(st.sampled_from(["a", ".lis", "x.lis", ".nc", "nc", "*", "[", "\\", " ", "ü", ".", "..", "",
                                    ".XML", ".xml", "lis", "#", "!"]), max_size=6)
@@ -118,3 +120,95 @@ def test_the_toml_guard_is_asked_where_a_key_could_be_too_long(tmp_path: Path) -
     pyproject = tmp_path / "pyproject.toml"
     pyproject.write_text('[tool.zero]\nselect = ["R"]\n\n[tool.other]\n' + most, encoding="utf-8")
     assert parse_config(pyproject) is not None
+
+
+_SPELLINGS = st.lists(st.sampled_from(["a", "b", "sub", ".", "..", "", "x.lis"]), min_size=1, max_size=5)
+
+
+def _tree(root: Path) -> None:
+    """Configurations at three depths, and a folder without one."""
+    for folder in ("", "a", "a/b", "sub"):
+        (root / folder).mkdir(parents=True, exist_ok=True)
+    for folder in ("", "a/b"):
+        (root / folder / "zero.toml").write_text('select = ["R"]\n', encoding="utf-8")
+
+
+def _reference_relative(cfg: Config, file: str) -> str | None:
+    """``Config.relative`` as written before its fast path: ``os.path.split`` of the file's text."""
+    parent, name = os.path.split(file)
+    folder = os.path.realpath(parent or ".")
+    own = os.fspath(cfg.path) if cfg.path is not None else None
+    root = os.path.realpath((os.path.dirname(own) or ".") if own is not None else os.getcwd())
+    head = root if root.endswith("/") else root + "/"
+    rel = "" if folder == root else folder[len(head):] if folder.startswith(head) else "\0"
+    if not rel:
+        return name if name else "."
+    return None if rel == "\0" else rel + "/" + name if name else rel
+
+
+@pytest.mark.skipif(os.altsep is not None, reason="the fast paths are POSIX's (one separator)")
+@given(st.lists(st.tuples(_SPELLINGS, st.sampled_from(["relative", "below the tree", "from /"])), min_size=1,
+                max_size=4))
+@example([(["x.lis"], "relative"), (["x.lis"], "from /")])  # `x.lis` here, then `/x.lis`: two folders
+@example([(["a", "", "b", "x.lis"], "relative"), (["a", "b", "x.lis"], "below the tree")])  # `a//b/x.lis`
+@settings(max_examples=300, deadline=None)
+def test_a_files_configuration_and_place_are_its_folders(tmp_path_factory: pytest.TempPathFactory,
+                                                         names: list[tuple[list[str], str]]) -> None:
+    """``ConfigFinder.for_path`` of a file answers per folder as the name writes it (its text to the last
+    separator) and ``Config.relative`` splits by that text: both as ``os.path.dirname``/``os.path.split``
+    would have them, for any spelling of a name (doubled, ``.`` and ``..`` parts, relative, absolute, at the
+    file system's root), one finder asked for several names in turn, each twice, inside one resolution or
+    not."""
+    root = tmp_path_factory.mktemp("fast")
+    _tree(root)
+    texts = ["/".join(parts) for parts, _ in names]
+    texts = [str(root) + "/" + t if how == "below the tree" else "/" + t if how == "from /" else t
+             for t, (_, how) in zip(texts, names, strict=True)]
+    old = os.getcwd()
+    os.chdir(root)
+    try:
+        for resolution in (False, True):
+            with one_resolution() if resolution else contextlib.nullcontext():
+                finder = ConfigFinder()
+                for name in texts * 2:
+                    got = finder.for_path(name, directory=False)
+                    want = ConfigFinder()._for_path(name, False)
+                    assert got.path == want.path, name
+                    assert got.relative(name) == _reference_relative(got, name), name
+    finally:
+        os.chdir(old)
+
+
+def _reference_holds_lists(path: str) -> bool:
+    """``holds_lists`` as written before its fast path: every name asked of its suffixes."""
+    if is_project(os.path.basename(path)):
+        try:
+            return b"<Data " in Path(path).read_bytes()
+        except OSError:
+            return True
+    if not is_xml_name(path):
+        return True
+    try:
+        head = Path(path).read_bytes()[:65536]
+    except OSError:
+        return True
+    return xml_form(head) is not None
+
+
+@given(st.lists(st.sampled_from(["a", ".", "xml", "XML", "Xml", "tsproj", "TSPROJ", "xti", "lis", "#", "#Achse",
+                                 "_", " "]), min_size=1, max_size=6),
+       st.sampled_from([b"<other/>", b"<Data x='1'/>", b"", b"\x00\xff"]))
+@example(["a", ".", "tsproj", "#Achse"], b"<other/>")  # a project's element by its name: read, and no list
+@example(["a", ".", "XML"], b"<other/>")  # an XML file by a suffix in capitals: read, and no list
+@settings(max_examples=300, deadline=None)
+def test_which_walked_files_hold_lists_is_as_before(tmp_path_factory: pytest.TempPathFactory, parts: list[str],
+                                                     content: bytes) -> None:
+    """``holds_lists`` answers by the name alone for a file neither XML nor a TwinCAT project by its name,
+    and as before for every name and content."""
+    folder = tmp_path_factory.mktemp("walked")
+    name = "".join(parts)
+    if name in (".", "..") or "/" in name:
+        return
+    path = folder / name
+    path.write_bytes(content)
+    assert holds_lists(str(path)) == _reference_holds_lists(str(path))

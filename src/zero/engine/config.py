@@ -149,12 +149,15 @@ class Config(Record):
                 return _resolved(file).relative_to(self.root.resolve()).as_posix()
             except ValueError:
                 return None
-        parent, name = os.path.split(os.fspath(file))  # a Path's text: file.parent and file.name
+        text = os.fspath(file)
+        cut = text.rfind("/") + 1
+        head, name = text[:cut], text[cut:]  # os.path.split's, its head's trailing separators still on
         own = os.fspath(self.path) if self.path is not None else None
         memo = _RESOLVED[-1] if _RESOLVED else {}
-        key = f"\0rel\0{own}\0{parent}"  # the files of a folder: its place below the configuration's, once
+        key = f"\0rel\0{own}\0{head}"  # the files of a folder: its place below the configuration's, once
         rel = memo.get(key)
         if rel is None:
+            parent = head.rstrip("/") or head  # file.parent as os.path.split gives it ("/" stays "/")
             folder = _resolved_folder(parent or ".")
             root = _resolved_folder((os.path.dirname(own) or ".") if own is not None else _cwd())
             head = root if root.endswith("/") else root + "/"
@@ -174,7 +177,9 @@ class Config(Record):
         name = rel if rel is not None else os.path.basename(os.fspath(file))
         suffixes = _suffixes(globs)
         if suffixes is not None and "\n" not in name and not name.startswith("/"):
-            return any(part.endswith(suffixes) for part in name.split("/"))
+            # the last part first: it ends with a suffix exactly when the name does (no suffix holds a `/`)
+            return name.endswith(suffixes) or ("/" in name and any(
+                part.endswith(suffixes) for part in name.split("/")[:-1]))
         from zero.engine.config_file import patterns  # start-up: only for patterns other than `*.suffix`
 
         return patterns(globs).match_file(name)
@@ -408,6 +413,9 @@ class ConfigFinder:
         self._by_dir: dict[str, Config] = {}  # a folder resolved → the configuration that applies in it
         self._by_name: dict[str, Config] = {}  # the absolute directory → its configuration
         self._by_path: dict[tuple[object, ...], Config] = {}  # a path's text (and the directory if relative)
+        # a file's folder as its name writes it (the text to its last separator) and the current directory → the
+        # configuration: a file's is its folder's, and a walk names the files of a folder alike
+        self._by_folder: dict[tuple[str, str], Config] = {}
         self._default = Config()
         if overrides:
             self._overlay(self._default)  # a bad override is an error before any file is read
@@ -436,6 +444,20 @@ class ConfigFinder:
         name = os.fspath(path)  # a Path's text is made once; hashing the text is cheaper than the Path
         if directory is None:
             directory = os.path.isdir(name)
+        if not directory and os.altsep is None:
+            # os.path.dirname of a name depends only on its text to the last separator: a folder's files share
+            # one look-up, without dirname and abspath per file (a third of collecting a fleet's 6,300 files)
+            slot = (name[:name.rfind(os.sep) + 1], _cwd())
+            hit = self._by_folder.get(slot)
+            if hit is None:
+                if len(self._by_folder) > 65536:
+                    self._by_folder.clear()
+                hit = self._by_folder[slot] = self._for_path(name, False)
+            return hit
+        return self._for_path(name, directory)
+
+    def _for_path(self, name: str, directory: bool) -> Config:
+        """:meth:`for_path` of a path's text, told whether it is a directory."""
         given = (name, directory) if os.path.isabs(name) else (name, directory, _cwd())
         hit = self._by_path.get(given)  # the files of a run are asked about several times each
         if hit is not None:

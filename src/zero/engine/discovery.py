@@ -10,7 +10,7 @@ from collections.abc import Callable, Iterable
 
 from zero.errors import ZeroError
 from zero.files import check_regular, path_str, read_file
-from zero.forms import WALKED_SUFFIXES, is_project, is_xml_name, xml_form
+from zero.forms import PROJECT_SUFFIXES, WALKED_SUFFIXES, XML_SUFFIX, is_project, is_xml_name, xml_form
 
 TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (mypy and ruff read it alike)
 if TYPE_CHECKING:
@@ -39,10 +39,17 @@ def _stderr(text: str) -> None:
 _WALKED = WALKED_SUFFIXES
 
 
+# The suffixes of the files whose content says whether they hold lists (an XML file, a TwinCAT project).
+_READ_FOR_LISTS = (XML_SUFFIX, *PROJECT_SUFFIXES)
+
+
 def holds_lists(path: FileName) -> bool:
     """Does a walked file hold parameter lists? Always, but for XML, which is a list only by its
     content: a kernel XML list or a TwinCAT export (every other XML file of a project is skipped in
     silence). An XML file that cannot be read is kept, so that the lint reports it."""
+    text = os.fspath(path)
+    if "#" not in text and not text.lower().endswith(_READ_FOR_LISTS):
+        return True  # neither an XML file nor a TwinCAT project by its name (most files of a walk): at once
     if is_project(os.path.basename(path)):  # a TwinCAT project: one that holds a `<Data>` block
         try:
             check_regular(path)
