@@ -54,17 +54,14 @@ _NAME_START = rb"[A-Za-z_]"  # compiled at their first use (re keeps them): XML 
 _NAME_END = rb"[\s/>]"
 
 
-_SUFFIXES: dict[str, str] = {}  # a name → its suffix: a run asks a dozen questions of each file's name
-
-
 def _suffix(name: str | os.PathLike[str]) -> str:
+    """``os.path.splitext(name)[1].lower()``, in a few calls in C (a run asks a dozen questions of each file's
+    name; a fleet's 6,300 files outgrew a memo): the text from the last dot of the last part, where a
+    character other than a dot comes before it in that part (``.lis`` alone is a name without a suffix)."""
     text = os.fspath(name)
-    hit = _SUFFIXES.get(text)
-    if hit is None:
-        if len(_SUFFIXES) > 8192:
-            _SUFFIXES.clear()
-        hit = _SUFFIXES[text] = os.path.splitext(text)[1].lower()
-    return hit
+    cut = text.rfind(os.sep) if os.altsep is None else max(text.rfind(os.sep), text.rfind(os.altsep))
+    dot = text.rfind(".")
+    return text[dot:].lower() if dot > cut and text[cut + 1:dot].strip(".") else ""
 
 
 def form_of(name: str | os.PathLike[str]) -> str:

@@ -16,7 +16,7 @@ from zero.engine.config import Config, ConfigFinder, _resolved, _suffixes, one_r
 from zero.engine.config_file import patterns
 from zero.engine.discovery import holds_lists
 from zero.files import path_str
-from zero.forms import DEFAULT_INCLUDE, is_project, is_xml_name, xml_form
+from zero.forms import DEFAULT_INCLUDE, _suffix, is_project, is_xml_name, xml_form
 
 _PARTS = st.lists(st.sampled_from(["a", ".lis", "x.lis", ".nc", "nc", "*", "[", "\\", " ", "ü", ".", "..", "",
                                    ".XML", ".xml", "lis", "#", "!"]), max_size=6)
@@ -212,3 +212,15 @@ def test_which_walked_files_hold_lists_is_as_before(tmp_path_factory: pytest.Tem
     path = folder / name
     path.write_bytes(content)
     assert holds_lists(str(path)) == _reference_holds_lists(str(path))
+
+
+@given(st.lists(st.sampled_from(["a", ".", "..", "/", "lis", "LIS", ".Nc", "x", "ü", " ", "\\\\", "tar.gz"]),
+                max_size=8))
+@example(["/", ".", "lis"])  # `/.lis`: a hidden name, no suffix
+@example(["a", ".", ".", "lis"])  # `a..lis`: `.lis`
+@example([".", ".", ".", "lis"])  # `...lis`: only dots before the last one, no suffix
+@settings(max_examples=500)
+def test_a_names_suffix_is_splitexts(parts: list[str]) -> None:
+    """``zero.forms._suffix`` (what every question of a file's name asks) is ``os.path.splitext``'s, lower."""
+    name = "".join(parts)
+    assert _suffix(name) == os.path.splitext(name)[1].lower()
