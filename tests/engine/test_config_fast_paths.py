@@ -15,6 +15,7 @@ from hypothesis import strategies as st
 from zero.engine.config import Config, ConfigFinder, _resolved, _suffixes, one_resolution
 from zero.engine.config_file import patterns
 from zero.engine.discovery import holds_lists
+from zero.engine.results import LintOptions
 from zero.files import path_str
 from zero.forms import DEFAULT_INCLUDE, _suffix, is_project, is_xml_name, xml_form
 
@@ -224,3 +225,24 @@ def test_a_names_suffix_is_splitexts(parts: list[str]) -> None:
     """``zero.forms._suffix`` (what every question of a file's name asks) is ``os.path.splitext``'s, lower."""
     name = "".join(parts)
     assert _suffix(name) == os.path.splitext(name)[1].lower()
+
+
+_CONFIGS = ["", 'per-file-ignores = {"a/*.lis" = ["R001"]}', 'kind = {"*.lis" = "AXIS"}',
+            'encoding = {"*.lis" = "utf-8"}', 'extend-per-file-ignores = {"*.lis" = ["R002"]}', 'select = ["R"]']
+
+
+@pytest.mark.parametrize("parent", _CONFIGS)
+@pytest.mark.parametrize("child", _CONFIGS)
+@pytest.mark.parametrize("cli", [LintOptions(), LintOptions(kind="CHAN", encoding="latin-1")])
+def test_options_without_file_patterns_are_as_before(tmp_path: Path, monkeypatch: pytest.MonkeyPatch, parent: str,
+                                                     child: str, cli: LintOptions) -> None:
+    """A configuration chain without per-file patterns answers every file's options without asking its name
+    (``Config._no_file_patterns``), as asking it would."""
+    (tmp_path / "a").mkdir()
+    (tmp_path / "zero.toml").write_text(parent + "\n", encoding="utf-8")
+    (tmp_path / "a" / "zero.toml").write_text(child + "\n", encoding="utf-8")
+    cfg = ConfigFinder().for_path(tmp_path / "a" / "x.lis", directory=False)
+    files = [str(tmp_path / "a" / "x.lis"), str(tmp_path / "a" / "y.nc"), "a/x.lis"]
+    fast = [cfg.options_for(f, cli) for f in files]
+    monkeypatch.setattr(Config, "_no_file_patterns", lambda self: False)
+    assert fast == [cfg.options_for(f, cli) for f in files]

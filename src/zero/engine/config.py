@@ -239,13 +239,28 @@ class Config(Record):
         below = self.parent.layers if self.parent is not None else ()
         return (*below, (self.select, self.extend_select, self.ignore))
 
+    def _no_file_patterns(self) -> bool:
+        """Neither this configuration nor one it extends has a per-file ignore, kind or encoding pattern:
+        the per-file answers are then none (``ignored_for`` empty, ``kind_for`` and ``encoding_for``
+        ``None``) for every file."""
+        cfg: Config | None = self
+        while cfg is not None:
+            if cfg.per_file_ignores or cfg.extend_per_file_ignores or cfg.kind or cfg.encoding:
+                return False
+            cfg = cfg.parent
+        return True
+
     def options_for(self, file: FileName, cli: LintOptions) -> LintOptions:
         """The lint options for one file: the command line as the last layer over this configuration
         (and the one it extends), as ruff resolves them; the file's per-file ignores drop what they
         match whatever selected it."""
-        ignored = self.ignored_for(file)
-        kind = cli.kind or self.kind_for(file)
-        encoding = cli.encoding or self.encoding_for(file)
+        if self._no_file_patterns():  # the common case: nothing below depends on the file's name
+            ignored: tuple[str, ...] = ()
+            kind, encoding = cli.kind or None, cli.encoding or None
+        else:
+            ignored = self.ignored_for(file)
+            kind = cli.kind or self.kind_for(file)
+            encoding = cli.encoding or self.encoding_for(file)
         # the files of a folder (of a project, without per-file patterns) share one object, made once:
         # what a file's options depend on beyond this configuration and the command line is in the key
         memo = (id(self), id(cli), ignored, kind, encoding)
