@@ -42,7 +42,6 @@ PACKAGES = frozenset({"catalog", "catalog.data", "cli", "engine", "lists", "mach
 _FOUND: tuple[str, str, bytes, type, type] | None = None
 
 
-
 class _Module(type(sys)):  # type: ignore[misc]
     """The class of zero's modules that do not answer missing names themselves (no module ``__getattr__``):
     a module whose missing attribute is looked for without an error made and thrown away. CPython 3.11
