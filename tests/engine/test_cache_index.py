@@ -117,6 +117,28 @@ def test_settings_changed_miss_whatever_the_index_says(run: Run, lists: Path) ->
     assert run(lists) == first and run.linted == []  # the entries of the first settings are still there
 
 
+@pytest.mark.parametrize("changed", ["options", "catalogue", "machine"])
+def test_a_record_whose_settings_part_differs_is_not_answered_by_the_index(
+        run: Run, lists: Path, monkeypatch: pytest.MonkeyPatch, changed: str) -> None:
+    """The index answers a file from its record only where today's settings give the part of the
+    entry's name it recorded: each of the three differing alone makes the file's entry name anew."""
+    run(lists)
+    at = ["options", "catalogue", "machine"].index(changed)
+    part = cache_module.LintCache._part
+
+    def other(self: cache_module.LintCache, path: Any) -> tuple[Any, ...]:
+        got = list(part(self, path))
+        got[at] = ("other",) if at == 1 else "other"
+        return tuple(got)
+
+    monkeypatch.setattr(cache_module.LintCache, "_part", other)
+    run(lists)
+    assert run.read == [] and len(run.linted) == 3  # known by stat, but no entry holds the new names
+    if changed != "machine":  # (a machine key with no machine behind it is never kept)
+        run(lists)
+        assert run.read == [] and run.linted == []  # recorded with the new part
+
+
 def test_a_torn_index_is_a_miss_and_the_entries_answer(run: Run, lists: Path, tmp_path: Path) -> None:
     first = run(lists)
     (index,) = index_files(tmp_path)

@@ -512,11 +512,12 @@ class LintCache:
 
     Besides an entry per file, a run keeps an index of its files (one entry named by the list of
     files and the current directory): per file its stat (:func:`_stat`), the hash of its content,
-    its entry's name and its result. The same run again reads that one entry, not the files: a file
-    whose stat is the one recorded has the content whose hash was recorded (recorded only for a file
-    last changed :data:`RACY_NS` before the run that read it, as git's index does), and its result
-    is used only where the entry's name made from that hash and today's settings is the recorded one.
-    Any other file is read, hashed and looked up as without the index."""
+    its entry's name, its result and what of its settings the name holds (:meth:`_part`). The same run
+    again reads that one entry, not the files: a file whose stat is the one recorded has the content
+    whose hash was recorded (recorded only for a file last changed :data:`RACY_NS` before the run that
+    read it, as git's index does), and its result is used only where today's settings give the
+    recorded part (and so the recorded name). Any other file is read, hashed and looked up as without
+    the index."""
 
     def __init__(self, store: Store, project: Project) -> None:
         self.disk = store
@@ -524,14 +525,15 @@ class LintCache:
         self.checker = Checker(project.encoding)
         self.started = time.time_ns()  # before anything is read
         self.cwd = os.getcwd()
-        # file → (entry name, its machine's name, its stat before it was read, the hash of its content)
-        self._keys: dict[FileName, tuple[str, str | None, tuple[int, int, int, int], str]] = {}
+        # file → (entry name, its machine's name, its stat before it was read, the hash of its content, _part)
+        self._keys: dict[FileName, tuple[str, str | None, tuple[int, int, int, int], str,
+                                         tuple[str, tuple[str, ...], str | None]]] = {}
         self._catalogues: dict[FileName | None, tuple[str, ...]] = {}
         self._fingerprints: dict[int, tuple[object, str]] = {}
         self._holds: dict[str, bool] = {}  # a machine's name → do its files hold
         self._deps: dict[str, tuple[Dep, ...] | None] = {}  # a machine's name → its files (None: not settled)
         self._index_key: str | None = None  # the name of this run's index (None: none kept)
-        self._index: dict[str, tuple[Any, ...]] = {}  # as read: file → (*stat, content hash, entry name, value)
+        self._index: dict[str, tuple[Any, ...]] = {}  # as read: file → (*stat, content hash, entry name, value, _part)
         self._indexed: dict[str, tuple[Any, ...]] = {}  # as it is to be written
         self._index_same = True  # is what is to be written what was read?
         self.hits = 0
@@ -569,17 +571,26 @@ class LintCache:
         """The entry name of a file as read now (``data``: its bytes, or the hex hash of them), and
         that of its machine (``None``: it has none). :class:`TypeError` where the options cannot be
         fingerprinted, :class:`ZeroError` where the catalogue cannot be read."""
+        part = self._part(path)
+        return self._name(path, data if isinstance(data, str) else digest(data).hex(), part), part[2]
+
+    def _part(self, path: FileName) -> tuple[str, tuple[str, ...], str | None]:
+        """What of a file's settings its entry's name holds besides the file's name and content: the
+        fingerprints of its options, its catalogue and its machine (``None``: it has none)."""
         settings = self.project.settings(path)  # one look-up for the options, the catalogue and the machine
         # no machine where neither --machine nor the configuration names a start-up list (Project.startup)
         named = self.project.machine_given is not None or settings.config.machine is not None
         machine = self._machine_part(path) if named and is_list(path) else None
-        machine_key = None if machine is None else fingerprint(machine)
-        content = data if isinstance(data, str) else digest(data).hex()
-        parts = (generation(), "lint", str(path), content, self._options(path, settings.options),
-                 self._catalogue(settings.param_desc), machine_key)
+        return (self._options(path, settings.options), self._catalogue(settings.param_desc),
+                None if machine is None else fingerprint(machine))
+
+    @staticmethod
+    def _name(path: FileName, content: str, part: tuple[str, tuple[str, ...], str | None]) -> str:
+        """The entry name of a file by its name, the hash of its content and :meth:`_part`."""
+        parts = (generation(), "lint", str(path), content, *part)
         # plain strings (and a tuple of them, and None) are their own canonical form: the name is
         # fingerprint(parts), without walking them (`test_the_entry_name_is_the_fingerprint_of_its_parts`)
-        return digest(repr(parts).encode("utf-8", "surrogateescape")).hex(), machine_key
+        return digest(repr(parts).encode("utf-8", "surrogateescape")).hex()
 
     def _open_index(self, files: Sequence[FileName]) -> None:
         self._index_key = "run-" + fingerprint((generation(), "index", self.cwd, tuple(str(f) for f in files)))
@@ -591,7 +602,7 @@ class LintCache:
     def _known(self, name: str, st: os.stat_result, limit: int) -> tuple[Any, ...] | None:
         """The file's record in the index, where its stat is the one recorded."""
         rec = self._index.get(name)
-        if type(rec) is not tuple or len(rec) != 7 or rec[:4] != _stat(st) or not read_as_is(st, limit):
+        if type(rec) is not tuple or len(rec) != 8 or rec[:4] != _stat(st) or not read_as_is(st, limit):
             return None
         return rec
 
@@ -611,11 +622,19 @@ class LintCache:
                 st = os.stat(f)
                 rec = self._known(name, st, limit)
                 content = rec[4] if rec is not None else digest(read_file(f)).hex()
-                key, machine = self.key(f, content)
+                part = self._part(f)
             except (OSError, ZeroError, TypeError):
                 continue
-            self._keys[f] = (key, machine, _stat(st), content)
-            value = rec[6] if rec is not None and rec[5] == key else self.disk.get(key)
+            # a file the index holds with the content and settings of now has the entry name it recorded (the
+            # name is made of them and the file's name): not made again (a hash per file, a sixth of a run
+            # that the cache answers)
+            if rec is not None and rec[7] == part:
+                key, value = rec[5], rec[6]
+            else:
+                key = self._name(f, content, part)
+                value = rec[6] if rec is not None and rec[5] == key else self.disk.get(key)
+            machine = part[2]
+            self._keys[f] = (key, machine, _stat(st), content, part)
             if value is None:
                 continue
             try:
@@ -629,7 +648,7 @@ class LintCache:
                 out[f] = unpack_result(packed)
             except (TypeError, ValueError, KeyError, IndexError):
                 continue
-            self._note(name, (*_stat(st), content, key, value), rec)
+            self._note(name, (*_stat(st), content, key, value, part), rec)
         self.hits = len(out)
         return out
 
@@ -652,7 +671,7 @@ class LintCache:
         if known is None or not self.on or refused_or_unreadable(result):
             self._index_same = False
             return
-        key, machine_key, before, content = known
+        key, machine_key, before, content, part = known
         try:
             st = os.stat(path)
         except OSError:
@@ -669,7 +688,7 @@ class LintCache:
         with contextlib.suppress(ValueError, TypeError):
             value = (pack_result(result), deps)
             if self.disk.put(key, value):
-                self._note(str(path), (*before, content, key, value), None)
+                self._note(str(path), (*before, content, key, value, part), None)
                 return
         self._index_same = False
 
