@@ -47,6 +47,21 @@ def _object(d: Diagnostic) -> str:
     return text
 
 
+# A message (a source, a fix's title) as JSON, by its text: a fleet's lists repeat each other's findings,
+# and a long text costs some ten times as much to escape as to hash (a tenth of a fleet's report from the
+# cache). Bounded.
+_MESSAGES: dict[str, str] = {}
+
+
+def _message(text: str) -> str:
+    hit = _MESSAGES.get(text)
+    if hit is None:
+        if len(_MESSAGES) >= 16384:
+            _MESSAGES.clear()
+        hit = _MESSAGES[text] = ESCAPE(text)
+    return hit
+
+
 def _text(value: str | None) -> str:
     return "null" if value is None else ESCAPE(value)
 
@@ -63,11 +78,12 @@ def _template(d: Diagnostic) -> str:
             f'          "end_line": {e.span.end_line},\n          "end_column": {e.span.end_column},\n'
             f'          "replacement": {ESCAPE(e.replacement)}\n        }}' for e in fix.edits)
         listed = "[\n        " + edits + "\n      ]" if edits else "[]"
-        fixed = (f'{{\n      "title": {ESCAPE(fix.title)},\n      "safe": {"true" if fix.safe else "false"},\n'
+        fixed = (f'{{\n      "title": {_message(fix.title)},\n      "safe": {"true" if fix.safe else "false"},\n'
                  f'      "edits": {listed}\n    }}')
     return (f'{{\n    "path": {_text(d.path)},\n    "line": {s.line},\n    "column": {s.column},\n'
             f'    "end_line": {s.end_line},\n    "end_column": {s.end_column},\n    "code": {ESCAPE(d.code)},\n'
-            f'    "severity": {ESCAPE(d.severity.label)},\n    "message": {ESCAPE(d.message)},\n'
+            f'    "severity": {ESCAPE(d.severity.label)},\n    "message": {_message(d.message)},\n'
             f'    "param_id": {_text(d.param_id)},\n    "kernel_error": {_text(d.kernel_error)},\n'
-            f'    "consequence": {_text(d.consequence)},\n    "source": {_text(d.source)},\n'
+            f'    "consequence": {_text(d.consequence)},\n'
+            f'    "source": {"null" if d.source is None else _message(d.source)},\n'
             f'    "fix": {fixed}\n  }}')
