@@ -353,6 +353,34 @@ def test_a_stored_result_says_all_a_finding_says() -> None:
     assert (back.document.encoding, back.document.bom, back.document.end_line) == ("cp1252", True, 4)
 
 
+def test_lists_of_equal_findings_pack_them_once_and_unpack_each_with_its_own_file() -> None:
+    """Two files with the same findings pack one tuple of them (marshal then writes it once in an
+    index); unpacked, each finding names its own file, a finding about another file keeps that file,
+    and a related place without a file (this file) stays without one."""
+    import marshal
+
+    def result(path: str) -> LintResult:
+        doc = Document(path, "ascii", ["l1", "l2"], ["\n"] * 2, [], end_line=2)
+        return LintResult(path, doc, "AXIS", [
+            Diagnostic("R001", Severity.ERROR, "same", Span(1, 1, 1, 3), path, related=(
+                Related(Span(2, 1, 2, 2), "here"), Related(Span(2, 1, 2, 2), "own", path),
+                Related(Span(1, 1, 1, 1), "other", "x.lis"))),
+            Diagnostic("X001", Severity.WARNING, "elsewhere", Span(2, 1, 2, 2), "other.lis")])
+
+    a, b = result("m1/a.lis"), result("m2/a.lis")
+    packed_a, packed_b = pack_result(a), pack_result(b)
+    assert packed_a[4] is packed_b[4] and packed_a[3][4] is packed_b[3][4]
+    assert len(marshal.dumps((packed_a, packed_b), 4)) < 1.5 * len(marshal.dumps(packed_a, 4))
+    made: dict[int, tuple[object, Any]] = {}
+    for original, packed in ((a, packed_a), (b, packed_b), (a, packed_a)):
+        back = unpack_result(marshal.loads(marshal.dumps(packed, 4)), made)
+        assert back.diagnostics == original.diagnostics
+        assert [d.related for d in back.diagnostics] == [d.related for d in original.diagnostics]
+    shared_a, shared_b = unpack_result(packed_a, made), unpack_result(packed_b, made)
+    assert shared_a.diagnostics == a.diagnostics and shared_b.diagnostics == b.diagnostics
+    assert shared_a.diagnostics[0].span is shared_b.diagnostics[0].span  # made once
+
+
 def test_the_fingerprint_of_settings_is_deterministic() -> None:
     a = LintOptions(select=("R",), severity={"R001": Severity.INFO, "M002": Severity.ERROR})
     b = LintOptions(select=("R",), severity={"M002": Severity.ERROR, "R001": Severity.INFO})

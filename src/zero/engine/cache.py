@@ -72,7 +72,7 @@ if TYPE_CHECKING:  # start-up: a plain lint loads no machine model (nor pathlib:
     FileName: TypeAlias = str | os.PathLike[str]  # a file as the engine names it (a Path from the library)
 
 FOLDER = ".zero_cache"
-FORMAT = 1  # of an entry; a new one makes every entry of the old one a miss
+FORMAT = 2  # of an entry; a new one makes every entry of the old one a miss
 MAX_ENTRIES = 50_000  # past this many entries, the oldest go (to three quarters of it)
 MAX_BYTES = 512 * 1024 * 1024  # the same for their size
 PRUNE_EVERY = 600  # seconds between two looks at the folder's size by runs that keep few entries
@@ -454,37 +454,75 @@ def _fix(f: Fix | None) -> tuple[Any, ...] | None:
     return (f.title, f.safe, tuple((*_span(e.span), e.replacement) for e in f.edits))
 
 
+# Equal parts of the results packed in this process, one object each (bounded): the lists of a fleet repeat
+# each other's findings, and :mod:`marshal` writes an object it meets again as a reference, so an index of a
+# fleet's results holds each distinct set of findings once and loads it once (a sixth of a run the cache answers).
+_SHARED: dict[Any, Any] = {}
+
+
+def _shared(value: Any) -> Any:
+    """The object equal to ``value`` that this process packed before, else ``value`` (kept)."""
+    try:
+        hit = _SHARED.get(value)
+        if hit is None:
+            if len(_SHARED) >= 65536:
+                _SHARED.clear()
+            hit = _SHARED[value] = value
+    except TypeError:  # pragma: no cover - what pack_result makes is hashable
+        return value
+    return hit
+
+
+_OWN = 0  # a packed finding's (or related place's) file where it is the result's (a file is a str or None)
+
+
 def pack_result(r: LintResult) -> tuple[Any, ...]:
     """A lint result as plain tuples: the findings with everything they say, and of the document
-    only the lines they show (as many-file runs keep them)."""
+    only the lines they show (as many-file runs keep them). A finding's file is :data:`_OWN` where
+    it is the result's (so that lists of equal content pack equal findings, :func:`_shared`)."""
     doc = r.document
+    own = r.path
     lines: dict[int, str] = {}
     diagnostics = []
     for d in r.diagnostics:
         for n in (d.span.line, d.span.end_line):
             if n not in lines and doc.has_line(n):
                 lines[n] = doc.line_text(n)
-        diagnostics.append((d.code, int(d.severity), d.message, _span(d.span), d.path, d.param_id, _fix(d.fix),
-                            d.hint, tuple((_span(x.span), x.message, x.path) for x in d.related), d.kernel_error,
-                            d.consequence, d.source))
-    shown = (doc.path, doc.encoding, doc.bom, doc.end_line, tuple(sorted(lines.items())))
-    return (r.path, r.kind, r.note, shown, tuple(diagnostics))
+        diagnostics.append((d.code, int(d.severity), d.message, _span(d.span), _OWN if d.path == own else d.path,
+                            d.param_id, _fix(d.fix), d.hint,
+                            tuple((_span(x.span), x.message, _OWN if x.path == own else x.path) for x in d.related),
+                            d.kernel_error, d.consequence, d.source))
+    shown = (doc.path, doc.encoding, doc.bom, doc.end_line, _shared(tuple(sorted(lines.items()))))
+    return (r.path, r.kind, r.note, shown, _shared(tuple(diagnostics)))
 
 
 _SEVERITIES = {int(s): s for s in Severity}  # a stored severity → its member (a look-up, not an enum call)
 
 
-def unpack_result(packed: tuple[Any, ...]) -> LintResult:
+def unpack_result(packed: tuple[Any, ...], made: dict[int, tuple[object, Any]] | None = None) -> LintResult:
+    """:func:`pack_result` undone. ``made``: the findings unpacked before, by the identity of their
+    packed tuple (kept with it), as their fields with the span and fix made, whatever their file: the results
+    of a run's index share them (:func:`_shared`)."""
     path, kind, note, (doc_path, encoding, bom, end_line, lines), found = packed
     doc: Document = Excerpt(doc_path, encoding, [], [], [], [], bom, end_line, shown=dict(lines))
-    severities = _SEVERITIES
+    hit = made.get(id(found)) if made is not None else None
+    if hit is not None and hit[0] is found:
+        parts = hit[1]
+    else:
+        severities = _SEVERITIES
+        parts = [(code, severities.get(severity) or Severity(severity), message, Span(*span), where, param_id,
+                  None if fix is None else Fix(fix[0], tuple(Edit(Span(*e[:4]), e[4]) for e in fix[2]), fix[1]),
+                  hint, related, kernel_error, consequence, source)
+                 for (code, severity, message, span, where, param_id, fix, hint, related, kernel_error, consequence,
+                      source) in found]
+        if made is not None:
+            made[id(found)] = (found, parts)
     diagnostics = [
-        Diagnostic(code, severities.get(severity) or Severity(severity), message, Span(*span), where, param_id,
-                   None if fix is None else Fix(fix[0], tuple(Edit(Span(*e[:4]), e[4]) for e in fix[2]), fix[1]),
-                   hint, tuple([Related(Span(*s), m, p) for s, m, p in related]) if related else (), kernel_error,
-                   consequence, source)
+        Diagnostic(code, severity, message, span, path if where is _OWN else where, param_id, fix, hint,
+                   tuple([Related(Span(*s), m, path if p is _OWN else p) for s, m, p in related]) if related else (),
+                   kernel_error, consequence, source)
         for (code, severity, message, span, where, param_id, fix, hint, related, kernel_error, consequence,
-             source) in found]
+             source) in parts]
     return LintResult(path, doc, kind, diagnostics, note)
 
 
@@ -614,6 +652,7 @@ class LintCache:
         files = list(files)
         self._open_index(files)
         limit = max_file_bytes()
+        made: dict[int, tuple[object, Any]] = {}
         for f in files:
             if is_program(f):
                 continue
@@ -645,7 +684,7 @@ class LintCache:
                         holds = self._holds[machine] = self.checker.holds(deps)
                     if not holds:
                         continue
-                out[f] = unpack_result(packed)
+                out[f] = unpack_result(packed, made)
             except (TypeError, ValueError, KeyError, IndexError):
                 continue
             self._note(name, (*_stat(st), content, key, value, part), rec)
