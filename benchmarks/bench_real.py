@@ -6,6 +6,9 @@ list of N tools made of the vendor's tool block, a fleet of M machines of all co
 temporary directory outside any git work tree, then times each command in a fresh process and
 reads its peak memory and CPU time (user + system: on a machine shared with other work, compare
 CPU times, and run the script twice to see its noise). Prints figures; it passes or fails nothing.
+Each goal of issue 40 that is a ratio to an anchor is also measured paired, each run of zero next to the
+anchor's runs just before and after it (:func:`paired`): that median is the verdict, on a machine whose
+speed moves within seconds.
 
 usage: python benchmarks/bench_real.py [--quick] [--tools N] [--machines M] [--keep DIR] [--repeat R]
 """
@@ -69,25 +72,32 @@ def measure(cmd: list[str], repeat: int = 1, cwd: Path | None = None,
     return best, peak
 
 
-def paired_start_up(axis: Path, pairs: int) -> str:
-    """The start-up ratio as ``pairs`` alternating runs give it: each lint divided by the faster of the
-    ``python -c pass`` just before and just after it, their median and quartiles. The machine's speed swings
-    within seconds on a shared host; the best of one command and the best of the other, taken minutes
-    apart, can then differ by a third, a ratio of neighbours far less."""
-    def once(cmd: list[str]) -> float:
-        out = subprocess.run([PY, "-c", _PEAK, *cmd], capture_output=True, text=True, check=False, env=_ENV)
-        return float(out.stdout.split()[-3])
+def _once(cmd: list[str], env: dict[str, str] | None = None) -> float:
+    """The wall time (s) of one run of ``cmd`` in a child."""
+    out = subprocess.run([PY, "-c", _PEAK, *cmd], capture_output=True, text=True, check=False, env=env or _ENV)
+    return float(out.stdout.split()[-3])
 
+
+def paired(cmd: list[str], anchor: list[str], pairs: int, target: str, env: dict[str, str] | None = None) -> str:
+    """The ratio of ``cmd`` to ``anchor`` as ``pairs`` alternating runs give it: each run of ``cmd`` divided by
+    the faster of the anchor runs just before and just after it, their median (the verdict) and quartiles. The
+    machine's speed swings within seconds on a shared host; the best of one command and the best of the other,
+    taken minutes apart, can then differ by a third, a ratio of neighbours far less."""
     ratios = []
-    before = once([PY, "-c", "pass"])
+    before = _once(anchor)
     for _ in range(pairs):
-        lint = once([*ZERO, "lint", str(axis)])
-        after = once([PY, "-c", "pass"])
-        ratios.append(lint / min(before, after))
+        took = _once(cmd, env)
+        after = _once(anchor)
+        ratios.append(took / min(before, after))
         before = after
-    q1, median, q3 = statistics.quantiles(ratios, n=4)
-    return (f"{'  the same, paired (each run by its neighbours)':<82}{median:>7.2f}×   ≤ 3× (the verdict: the "
-            f"median; quartiles {q1:.2f}–{q3:.2f}×)")
+    q1, median, q3 = statistics.quantiles(ratios, n=4) if len(ratios) > 1 else ratios * 3
+    return (f"{'  the same, paired (each run by its neighbours)':<82}{median:>7.2f}×   {target} (the verdict: the "
+            f"median of {pairs}; quartiles {q1:.2f}–{q3:.2f}×)")
+
+
+def paired_start_up(axis: Path, pairs: int) -> str:
+    """The start-up ratio, paired (:func:`paired`)."""
+    return paired([*ZERO, "lint", str(axis)], [PY, "-c", "pass"], pairs, "≤ 3×")
 
 
 def entries(path: Path) -> int:
@@ -131,19 +141,22 @@ def main() -> None:
     print(paired_start_up(out / "axis.lis", 20))
 
     # anchors at least twice: the first read of a cold page cache is not what they stand for
-    toml_s, _ = measure([PY, "-c", f"import tomllib; tomllib.load(open({str(out / 'tools.toml')!r}, 'rb'))"],
-                        max(r, 2))
-    tools_s, tools_m = measure([*ZERO, "lint", "--exit-zero", "--output-format", "json", str(out / "tools.lis")], r)
+    toml = [PY, "-c", f"import tomllib; tomllib.load(open({str(out / 'tools.toml')!r}, 'rb'))"]
+    toml_s, _ = measure(toml, max(r, 2))
+    tools = [*ZERO, "lint", "--exit-zero", "--output-format", "json", str(out / "tools.lis")]
+    tools_s, tools_m = measure(tools, max(r, 2))  # as many runs as its anchor
     size = (out / "tools.lis").stat().st_size / 2**20
     row(f"zero lint tools.lis ({n_tools / tools_s:,.0f} entries/s)", tools_s, tools_m,
         f"tomllib.load {toml_s * 1000:.0f} ms", tools_s / toml_s, f"≤ 0.25×; peak ≤ {2 * size:.0f} MiB")
+    print(paired(tools, toml, 3, "≤ 0.25×"))
 
-    read_s, _ = measure([PY, "-c", "import os,sys\n"
-                         f"for d, _, fs in os.walk({str(out / 'fleet')!r}):\n"
-                         "    for f in fs: open(os.path.join(d, f), 'rb').read().splitlines()"], max(r, 2))
-    fleet_s, fleet_m = measure([*ZERO, "lint", "--exit-zero", "-j", "2", "--output-format", "json",
-                                str(out / "fleet")], r)
+    read = [PY, "-c", "import os,sys\n" f"for d, _, fs in os.walk({str(out / 'fleet')!r}):\n"
+            "    for f in fs: open(os.path.join(d, f), 'rb').read().splitlines()"]
+    read_s, _ = measure(read, max(r, 2))
+    fleet = [*ZERO, "lint", "--exit-zero", "-j", "2", "--output-format", "json", str(out / "fleet")]
+    fleet_s, fleet_m = measure(fleet, max(r, 2))
     row("zero lint fleet -j 2", fleet_s, fleet_m, f"read + split {read_s * 1000:.0f} ms", fleet_s / read_s, "≤ 5×")
+    print(paired(fleet, read, 5, "≤ 5×"))
     # The fleet's machines are copies of one machine, so zero lints each of its 21 contents once
     # (engine/parallel.SameFiles). Real fleets differ in some lists: the same fleet with every file
     # made distinct (a first comment line naming its machine) is the other end.
@@ -162,6 +175,7 @@ def main() -> None:
     again_s, again_m = measure(again, max(r, 3), env=cached)
     row("zero lint fleet -j 2 again (cache)", again_s, again_m, f"read + split {read_s * 1000:.0f} ms",
         again_s / read_s, "≤ 1.5×")
+    print(paired(again, read, 7, "≤ 1.5×", env=cached))
     one_s, one_m = measure([*ZERO, "lint", "--exit-zero", "-j", "1", "--output-format", "json", str(out / "fleet")], r)
     tenth = sorted((out / "fleet").iterdir())[: max(1, machines // 10)]
     _, tenth_m = measure([*ZERO, "lint", "--exit-zero", "-j", "1", "--output-format", "json", *map(str, tenth)])
