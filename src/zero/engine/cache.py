@@ -637,10 +637,11 @@ class LintCache:
             self._index = value
         self._index_same = type(value) is dict
 
-    def _known(self, name: str, st: os.stat_result, limit: int) -> tuple[Any, ...] | None:
-        """The file's record in the index, where its stat is the one recorded."""
+    def _known(self, name: str, st: os.stat_result, now: tuple[int, int, int, int], limit: int
+               ) -> tuple[Any, ...] | None:
+        """The file's record in the index, where its stat (``now``: :func:`_stat` of ``st``) is the one recorded."""
         rec = self._index.get(name)
-        if type(rec) is not tuple or len(rec) != 8 or rec[:4] != _stat(st) or not read_as_is(st, limit):
+        if type(rec) is not tuple or len(rec) != 8 or rec[:4] != now or not read_as_is(st, limit):
             return None
         return rec
 
@@ -659,7 +660,8 @@ class LintCache:
             name = str(f)
             try:
                 st = os.stat(f)
-                rec = self._known(name, st, limit)
+                now = _stat(st)
+                rec = self._known(name, st, now, limit)
                 content = rec[4] if rec is not None else digest(read_file(f)).hex()
                 part = self._part(f)
             except (OSError, ZeroError, TypeError):
@@ -667,13 +669,14 @@ class LintCache:
             # a file the index holds with the content and settings of now has the entry name it recorded (the
             # name is made of them and the file's name): not made again (a hash per file, a sixth of a run
             # that the cache answers)
-            if rec is not None and rec[7] == part:
-                key, value = rec[5], rec[6]
+            kept = rec if rec is not None and rec[7] == part else None
+            if kept is not None:
+                key, value = kept[5], kept[6]
             else:
                 key = self._name(f, content, part)
                 value = rec[6] if rec is not None and rec[5] == key else self.disk.get(key)
             machine = part[2]
-            self._keys[f] = (key, machine, _stat(st), content, part)
+            self._keys[f] = (key, machine, now, content, part)
             if value is None:
                 continue
             try:
@@ -687,7 +690,7 @@ class LintCache:
                 out[f] = unpack_result(packed, made)
             except (TypeError, ValueError, KeyError, IndexError):
                 continue
-            self._note(name, (*_stat(st), content, key, value, part), rec)
+            self._note(name, kept or (*now, content, key, value, part), rec)
         self.hits = len(out)
         return out
 
