@@ -63,12 +63,16 @@ class Totals(Record):
         if not result.diagnostics:
             self.clean += 1
             return
+        by_severity, by_code = self.by_severity, self.by_code
+        unreadable = False
         for d in result.diagnostics:
-            self.by_severity[d.severity] = self.by_severity.get(d.severity, 0) + 1
-            self.by_code[d.code] = self.by_code.get(d.code, 0) + 1
-            if self.worst is None or d.severity > self.worst:
-                self.worst = d.severity
-        if is_unreadable(result):
+            severity, code = d.severity, d.code
+            by_severity[severity] = by_severity.get(severity, 0) + 1
+            by_code[code] = by_code.get(code, 0) + 1
+            if code == "F001":  # is_unreadable, in the same pass
+                unreadable = True
+        self.worst = max(by_severity)  # the worst of every finding counted so far
+        if unreadable:
             self.unreadable += 1
 
 
