@@ -246,3 +246,41 @@ def test_options_without_file_patterns_are_as_before(tmp_path: Path, monkeypatch
     fast = [cfg.options_for(f, cli) for f in files]
     monkeypatch.setattr(Config, "_no_file_patterns", lambda self: False)
     assert fast == [cfg.options_for(f, cli) for f in files]
+
+
+_FOLDER_PARTS = st.sampled_from(["d", "e", "to_d", "to_up", "dangling", "loop", "f.lis", ".", "..", "", "none"])
+
+
+@pytest.fixture(scope="module")
+def linked_tree(tmp_path_factory: pytest.TempPathFactory) -> Path:
+    """Folders, a file and links of every kind: to a folder, to a folder above, dangling, a loop."""
+    root = tmp_path_factory.mktemp("resolve")
+    (root / "d" / "e" / "d").mkdir(parents=True)
+    (root / "d" / "f.lis").write_text("x\n")
+    (root / "d" / "to_d").symlink_to(root / "d")
+    (root / "d" / "e" / "to_up").symlink_to("../..")
+    (root / "d" / "dangling").symlink_to(root / "nowhere")
+    (root / "d" / "e" / "loop").symlink_to("loop")
+    return root
+
+
+@given(st.lists(_FOLDER_PARTS, min_size=1, max_size=6), st.booleans())
+@settings(max_examples=300, deadline=None)
+def test_a_folder_resolved_from_its_parent_is_realpaths(linked_tree: Path, parts: list[str], absolute: bool) -> None:
+    """A folder resolved within one command (from its parent's answer and one ``lstat`` of its last part) is
+    ``os.path.realpath`` of it, asked in any order, through links, dangling links, loops, ``.``, ``..``,
+    doubled separators, names below a file and names that do not exist, relative or absolute."""
+    from zero.engine import config as config_module
+
+    name = ("/".join([str(linked_tree), *parts]) if absolute else "/".join(parts)) or "."
+    cwd = os.getcwd()
+    os.chdir(linked_tree)
+    try:
+        with one_resolution():
+            for upper in range(1, len(parts)):  # the parents first, sometimes: their answers are reused
+                if (upper + len(name)) % 2:
+                    prefix = "/".join(([str(linked_tree)] if absolute else []) + parts[:upper]) or "."
+                    assert config_module._resolved_folder(prefix) == os.path.realpath(prefix)
+            assert config_module._resolved_folder(name) == os.path.realpath(name), name
+    finally:
+        os.chdir(cwd)

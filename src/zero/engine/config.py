@@ -17,6 +17,7 @@ from __future__ import annotations
 import contextlib
 import functools
 import os
+import stat
 from collections.abc import Callable, Iterator
 
 from zero.diagnostics import Severity
@@ -89,8 +90,30 @@ def _resolved_folder(folder: FileName) -> str:
     memo = _RESOLVED[-1]
     hit = memo.get(name)
     if hit is None:
-        hit = memo[name] = os.path.realpath(name)
+        hit = memo[name] = _resolved_below(name, memo)
     return hit
+
+
+def _resolved_below(name: str, memo: dict[str, str]) -> str:
+    """``os.path.realpath(name)``, from its parent folder's (resolved once in ``memo``) and one ``lstat`` of its
+    last part where that is a plain name (no ``.``, ``..`` or doubled separator) and no link: what realpath gives
+    then, without an ``lstat`` of every part above it (a fleet's 900 folders: 6,000 of them). Anything else, a
+    name that does not exist included, is realpath's own answer. POSIX names only."""
+    cut = name.rfind("/")
+    last = name[cut + 1:]
+    head = name[:cut]
+    if cut <= 0 or os.altsep is not None or last in ("", ".", "..") or head.endswith("/"):
+        return os.path.realpath(name)
+    parent = memo.get(head)
+    if parent is None:
+        parent = memo[head] = _resolved_below(head, memo)
+    here = parent + last if parent.endswith("/") else parent + "/" + last
+    try:
+        if stat.S_ISLNK(os.lstat(here).st_mode):
+            return os.path.realpath(name)
+    except OSError:
+        return os.path.realpath(name)
+    return here
 
 
 @functools.lru_cache(maxsize=64)
