@@ -368,8 +368,10 @@ def test_lists_of_equal_findings_pack_them_once_and_unpack_each_with_its_own_fil
             Diagnostic("X001", Severity.WARNING, "elsewhere", Span(2, 1, 2, 2), "other.lis")])
 
     a, b = result("m1/a.lis"), result("m2/a.lis")
-    packed_a, packed_b = pack_result(a), pack_result(b)
+    shared: dict[Any, Any] = {}
+    packed_a, packed_b = pack_result(a, shared), pack_result(b, shared)
     assert packed_a[4] is packed_b[4] and packed_a[3][4] is packed_b[3][4]
+    assert pack_result(a)[4] is not pack_result(b)[4]  # without a run's memo: each its own
     assert len(marshal.dumps((packed_a, packed_b), 4)) < 1.5 * len(marshal.dumps(packed_a, 4))
     made: dict[int, tuple[object, Any]] = {}
     for original, packed in ((a, packed_a), (b, packed_b), (a, packed_a)):
