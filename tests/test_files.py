@@ -258,7 +258,9 @@ def test_racing_convert_processes_without_force(tmp_path: Path) -> None:
 
 def _slow_writer(target: Path) -> subprocess.Popen[bytes]:
     script = (
-        "import os, sys, time\n"
+        "import os, signal, sys, time\n"
+        # as from a terminal: a shell's background job starts with SIGINT ignored, and Python then leaves it so
+        "signal.signal(signal.SIGINT, signal.default_int_handler)\n"
         "from pathlib import Path\n"
         "import zero.files as f\n"
         "def slow(fd):\n"
