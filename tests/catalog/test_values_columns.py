@@ -113,3 +113,24 @@ def test_a_column_taken_at_evenly_spaced_rows_is_the_rows_values(start: int, ste
     spaced = range(start, start + step * n, step)
     rows = sorted({*(r for i, r in enumerate(spaced) if i not in dropped), *extra})
     assert list(take(column, rows)) == [column[r] for r in rows]
+
+
+@settings(max_examples=150, deadline=None)
+@given(generated_lists(), st.booleans())
+def test_a_big_lists_numbers_are_read_without_its_entries_as_a_small_lists(data: bytes, built_first: bool) -> None:
+    """``number_of`` of a big list (``by_id`` a lazy :class:`_ById`: the values read from the columns, no
+    entry built) answers as that of a small one (every parameter's entries built at once), for every element
+    the list sets, one it does not set, and before or after the parameter's entries are built."""
+    from zero.catalog.values import _ById
+
+    small = ListValues.of(tokenize(data, "t.lis"), builtin_registry(), "AXIS")
+    big = ListValues.of(tokenize(data, "t.lis"), builtin_registry(), "AXIS")
+    big._by_id = _ById(big)
+    assert type(small.by_id) is dict
+    for pid, elements in small.by_id.items():
+        if built_first:
+            big.by_id.get(pid)
+        for indices in [*elements, (99,), ()]:
+            assert big.number_of(pid, indices) == small.number_of(pid, indices), (pid, indices)
+            assert big._value_of(pid, indices) == small._value_of(pid, indices)
+    assert big.number_of("P-AXIS-00001", ()) == small.number_of("P-AXIS-00001", ())

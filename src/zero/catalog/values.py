@@ -507,13 +507,18 @@ class ListValues(Record):
     def resolved_at(self, row: int) -> Resolved:
         """The entry of ``row`` (a row of a bound pattern, with a value) bound to its parameter; the entry
         itself built when first read."""
+        hit, value = self._bound_at(row)
+        return Resolved.at(self.doc, row, hit[0], value, hit[1])
+
+    def _bound_at(self, row: int) -> tuple[tuple[ParamSpec, bool], Value]:
+        """The binding of ``row`` (a row of a bound pattern, with a value) and its value as read for it."""
         cols = self.doc.columns
         hit = self.bound.get(self.shape_keys[cols.shape[row]][0])
         vid = cols.value[row]
         kind = cols.kinds[vid]
         if hit is None or kind is None:
             raise ValueError(f"row {row} is no entry bound to a parameter")
-        return Resolved.at(self.doc, row, hit[0], self.value_of_text(hit[0], cols.values[vid], kind), hit[1])
+        return hit, self.value_of_text(hit[0], cols.values[vid], kind)
 
     def sketch_at(self, row: int) -> Resolved:
         """``resolved_at(row)`` for a verdict: its entry the row's own where one is built already, else a
@@ -616,17 +621,33 @@ class ListValues(Record):
         indices = indices[: len(spec.dims)] if spec.dims else ()
         if spec.dims and len(indices) < len(spec.dims):
             indices = indices + (0,) * (len(spec.dims) - len(indices))
-        res = self.value_of(param_id, indices)
-        if res is not None and res.value.problem is not None:
+        value = self._value_of(param_id, indices)
+        if value is not None and value.problem is not None:
             return None  # a value zero cannot read (R004/R005 say so): nothing reasons on a guessed one
-        if res is not None:
-            if res.value.number is not None:
-                return res.value.number
-            if res.value.ref is not None:
-                rid, ridx = res.value.ref
+        if value is not None:
+            if value.number is not None:
+                return value.number
+            if value.ref is not None:
+                rid, ridx = value.ref
                 return self.number_of(rid, (ridx,) if ridx is not None else (), _depth + 1)
             return None
         return default_number(spec, self, _depth)
+
+    def _value_of(self, param_id: str, indices: tuple[int, ...]) -> Value | None:
+        """``value_of(param_id, indices).value``; of a big list without building the entries of the parameter
+        (a tool list's 30,000 tools each read the length of their tool: issue 40)."""
+        by_id = self._by_id
+        if by_id is None:
+            by_id = self.by_id
+        if type(by_id) is _ById:
+            got = by_id.value_at(param_id, indices)
+        else:
+            slot = by_id.get(param_id)
+            hit = slot.get(indices) if slot else None
+            got = hit.value if hit is not None else None
+        if got is None and self.base is not None:
+            return self.base._value_of(param_id, indices)
+        return got
 
     def text_of(self, param_id: str, indices: tuple[int, ...] = ()) -> str | None:
         """The text the controller uses: the list's value (unquoted), else the default."""
@@ -688,11 +709,12 @@ class _ById(Mapping[str, dict[tuple[int, ...], Resolved]]):
     """``ListValues.by_id``: a parameter's elements bound on first use (the last entry of each wins,
     the elements in the order the list first sets them)."""
 
-    __slots__ = ("_built", "_patterns", "_values")
+    __slots__ = ("_built", "_patterns", "_rows_at", "_values")
 
     def __init__(self, values: ListValues) -> None:
         self._values = values
         self._built: dict[str, dict[tuple[int, ...], Resolved]] = {}
+        self._rows_at: dict[str, dict[tuple[int, ...], int]] = {}  # parameter ID -> indices -> the row that wins
         patterns: dict[str, list[str]] = {}  # parameter ID -> the patterns bound to it
         for pattern, hit in values.bound.items():
             if hit is not None:
@@ -706,16 +728,35 @@ class _ById(Mapping[str, dict[tuple[int, ...], Resolved]]):
             return values.value_rows(patterns[0])
         return sorted(chain.from_iterable(values.value_rows(p) for p in patterns))  # an alias and its key
 
+    def _winners(self, pid: str) -> dict[tuple[int, ...], int]:
+        """A bound parameter's elements: indices -> the row that sets them (the later entry wins), in the
+        order the list first sets them."""
+        got = self._rows_at.get(pid)
+        if got is None:
+            values = self._values
+            rows = self._rows(pid)
+            got = self._rows_at[pid] = dict(zip(values.indices_at(rows), rows, strict=True))
+        return got
+
     def get(self, pid: str, default: Any = None) -> Any:
         got = self._built.get(pid)
         if got is None:
             if pid not in self._patterns:
                 return default
-            values = self._values
-            rows = self._rows(pid)
-            last = dict(zip(values.indices_at(rows), rows, strict=True))  # the later entry wins
-            got = self._built[pid] = {idx: values.resolved_at(r) for idx, r in last.items()}
+            resolved_at = self._values.resolved_at
+            got = self._built[pid] = {idx: resolved_at(r) for idx, r in self._winners(pid).items()}
         return got if got else default
+
+    def value_at(self, pid: str, indices: tuple[int, ...]) -> Value | None:
+        """The value of ``pid[indices]`` as :meth:`get` binds it, without building the parameter's entries."""
+        built = self._built.get(pid)
+        if built is not None:
+            hit = built.get(indices)
+            return hit.value if hit is not None else None
+        if pid not in self._patterns:
+            return None
+        row = self._winners(pid).get(indices)
+        return None if row is None else self._values._bound_at(row)[1]
 
     def __getitem__(self, pid: str) -> dict[tuple[int, ...], Resolved]:
         got: dict[tuple[int, ...], Resolved] | None = self.get(pid)
