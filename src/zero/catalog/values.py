@@ -27,7 +27,7 @@ if TYPE_CHECKING:
     from typing import Any, TypeVar
 
 __all__ = ["NO_DEFAULT", "ListValues", "Resolved", "Slot", "Value", "bind", "canonical_key", "default_number",
-           "parse_int", "read_text", "read_value", "slot_of", "spec_of", "take"]
+           "parse_int", "plain_number", "read_text", "read_value", "slot_of", "spec_of", "take"]
 
 # One element of a parameter: its ID and indices (``("P-AXIS-00178", ())``); an entry whose key the
 # catalogue does not know is its key pattern behind a `?` (``("?a.b[]", (1,))``). `[01]` and `[1]`
@@ -304,6 +304,30 @@ def read_text(spec: ParamSpec, raw: str, kind: ValueKind | None) -> Value:
         return Value(problem="type", detail="number")
 
     return Value(text=raw)  # STRUCT and anything undocumented: not checked
+
+
+def plain_number(t: str | None, raw: str, kind: ValueKind | None) -> Number | None:
+    """The number :func:`read_text` reads, without a problem, from a plain value of a parameter of type ``t``: a
+    real of a ``REAL64``, plain digits of an integer type or of a ``REAL64``; ``None`` for any other value (then
+    :func:`read_text` says what it is). Without making a :class:`Value`: a big list judges each of its tens of
+    thousands of distinct values by its number (held to read_text by tests/catalog/test_plain_numbers.py)."""
+    if kind is ValueKind.REAL:
+        if t != "REAL64":
+            return None
+        try:
+            r = float(raw)
+        except ValueError:
+            return None
+        return None if r in _INFINITE or r != r else r
+    if kind is not ValueKind.INT or not (raw.isdigit() and raw.isascii() and len(raw) <= 40):
+        return None
+    n = int(raw)
+    if t == "REAL64":
+        return n if n <= REAL64_MAX else None
+    if t not in INTEGER_TYPES or (t == "BOOLEAN" and n not in (0, 1)):
+        return None
+    lo, hi = TYPE_LIMITS.get(t, (None, None))
+    return n if lo is None or hi is None or lo <= n <= hi else None
 
 
 if TYPE_CHECKING:

@@ -10,7 +10,7 @@ from zero.catalog.evidence import Claim, claim, drive_types
 from zero.catalog.ids import SOFT_LIMITS
 from zero.catalog.ranges import TYPE_LIMITS, Bounds, Number, Range, Ref, encoded_bounds, format_number
 from zero.catalog.registry import BUILTIN_SOURCE, KINDS, ParamSpec, Registry, written_range
-from zero.catalog.values import Resolved, Value, default_number, take
+from zero.catalog.values import Resolved, Value, default_number, plain_number, take
 from zero.diagnostics import Diagnostic, Edit, Fix, Related, Span
 from zero.errors import ZeroError
 from zero.lists.model import HUGE_INDEX, Comment, Entry, ValueKind, format_key
@@ -631,10 +631,16 @@ def check_values(ctx: Context) -> Iterator[Diagnostic]:
                 slot = (spec.id, texts[vid])
                 verdict = passed.get(slot) or verdicts.get(slot)
                 if verdict is None:
-                    if first is None:
-                        first = dict(zip(reversed(ids), reversed(group), strict=True))  # each value's first row
-                    verdict = verdicts[slot] = _value_passes(ctx, judge, read.get(slot) or ctx.value_of_text(
-                        spec, slot[1], kinds[vid]), first[vid])
+                    # a plain number that passes: so judged without reading a Value (a tool list's 60,000 distinct
+                    # values); any other value as read_text reads it
+                    number = plain_number(spec.type, slot[1], kinds[vid])
+                    if number is not None and (judge is _ANY or _number_passes(judge, number)):
+                        verdict = verdicts[slot] = True
+                    else:
+                        if first is None:
+                            first = dict(zip(reversed(ids), reversed(group), strict=True))  # each value's first row
+                        verdict = verdicts[slot] = _value_passes(ctx, judge, read.get(slot) or ctx.value_of_text(
+                            spec, slot[1], kinds[vid]), first[vid])
                     if verdict and len(passed) < 65_536:
                         passed[slot] = True
                 if not verdict:
@@ -771,19 +777,22 @@ def _judged(judge: Judge, v: Value) -> bool | None:
     number = v.number
     if number is None or judge is _ANY:
         return True
+    if _number_passes(judge, number):
+        return True
+    dflt = _default_of(judge[0])  # type: ignore[arg-type]
+    return dflt is not None and number == dflt  # the default itself is never faulty
+
+
+def _number_passes(judge: Judge, number: Number) -> bool:
+    """Does ``number`` pass the test of ``judge`` (not _ANY), the default aside?"""
     spec, test, what = judge
     if test == _BY_BOUNDS:
         low, low_strict, high, high_strict = what  # Bounds.contains
-        passes = not (low is not None and (number <= low if low_strict else number < low)) and \
+        return not (low is not None and (number <= low if low_strict else number < low)) and \
             not (high is not None and (number >= high if high_strict else number > high))
-    elif test == _BY_ALLOWED:
-        passes = number in what
-    else:
-        passes = isinstance(number, int) and spec.enum_allows(number)  # type: ignore[union-attr]
-    if passes:
-        return True
-    dflt = _default_of(spec)  # type: ignore[arg-type]
-    return dflt is not None and number == dflt  # the default itself is never faulty
+    if test == _BY_ALLOWED:
+        return number in what
+    return isinstance(number, int) and spec.enum_allows(number)  # type: ignore[union-attr]
 
 
 def _range_verdict(registry: Registry, spec: ParamSpec, v: Value,
