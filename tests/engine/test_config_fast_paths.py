@@ -284,3 +284,17 @@ def test_a_folder_resolved_from_its_parent_is_realpaths(linked_tree: Path, parts
             assert config_module._resolved_folder(name) == os.path.realpath(name), name
     finally:
         os.chdir(cwd)
+
+
+def test_a_folder_thousands_of_levels_deep_is_resolved(tmp_path: Path, monkeypatch: pytest.MonkeyPatch) -> None:
+    """A walk can meet folders nested deeper than Python's recursion limit: each is resolved as realpath
+    resolves it, from its parent's answer, without a RecursionError."""
+    from zero.engine import config as config_module
+
+    monkeypatch.chdir(tmp_path)
+    deep = "/".join(["d"] * 1500)
+    for level in range(1, 1501):  # (os.makedirs recurses per level)
+        os.mkdir("/".join(["d"] * level))
+    with one_resolution():
+        assert config_module._resolved_folder(deep) == os.path.realpath(deep)
+        assert config_module._resolved_folder(deep + "/..") == os.path.realpath(deep + "/..")

@@ -98,22 +98,30 @@ def _resolved_below(name: str, memo: dict[str, str]) -> str:
     """``os.path.realpath(name)``, from its parent folder's (resolved once in ``memo``) and one ``lstat`` of its
     last part where that is a plain name (no ``.``, ``..`` or doubled separator) and no link: what realpath gives
     then, without an ``lstat`` of every part above it (a fleet's 900 folders: 6,000 of them). Anything else, a
-    name that does not exist included, is realpath's own answer. POSIX names only."""
-    cut = name.rfind("/")
-    last = name[cut + 1:]
-    head = name[:cut]
-    if cut <= 0 or os.altsep is not None or last in ("", ".", "..") or head.endswith("/"):
-        return os.path.realpath(name)
-    parent = memo.get(head)
-    if parent is None:
-        parent = memo[head] = _resolved_below(head, memo)
-    here = parent + last if parent.endswith("/") else parent + "/" + last
-    try:
-        if stat.S_ISLNK(os.lstat(here).st_mode):
-            return os.path.realpath(name)
-    except OSError:
-        return os.path.realpath(name)
-    return here
+    name that does not exist included, is realpath's own answer. POSIX names only. A loop, not a recursion: a
+    folder two thousand levels deep is a name like any other."""
+    below: list[tuple[str, str]] = []  # (a folder on the way to name, its last part), from name up
+    prefix = name
+    while True:
+        cut = prefix.rfind("/")
+        last, head = prefix[cut + 1:], prefix[:cut]
+        if cut <= 0 or os.altsep is not None or last in ("", ".", "..") or head.endswith("/"):
+            resolved = memo[prefix] = os.path.realpath(prefix)
+            break
+        below.append((prefix, last))
+        hit = memo.get(head)
+        if hit is not None:
+            resolved = hit
+            break
+        prefix = head
+    for prefix, last in reversed(below):  # down again, each from its parent's answer
+        here = resolved + last if resolved.endswith("/") else resolved + "/" + last
+        try:
+            plain = not stat.S_ISLNK(os.lstat(here).st_mode)
+        except OSError:
+            plain = False
+        resolved = memo[prefix] = here if plain else os.path.realpath(prefix)
+    return resolved
 
 
 @functools.lru_cache(maxsize=64)
