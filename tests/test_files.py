@@ -740,3 +740,44 @@ def test_a_leftover_is_recognised_as_the_pattern_it_replaced_did(target: str, su
     for candidate in (name, f".{target}.zero-{name}.{suffix}", f".{target}.zero-{name}"):
         m = re.fullmatch(r"\." + re.escape(target) + r"\.zero-([0-9]+)-[0-9a-f]+\." + suffix, candidate)
         assert _leftover_pid(candidate, f".{target}.zero-", f".{suffix}") == (int(m.group(1)) if m else None)
+
+
+def test_walk_is_os_walk_without_its_recursion(tmp_path: Path) -> None:
+    """zero.files.walk gives what os.walk gives, in its order, with a caller's pruning honoured: links to
+    folders listed but not entered, a dangling link a file, an unreadable folder skipped."""
+    import os
+    import random
+
+    from zero.files import walk
+
+    rng = random.Random(4)
+    folders = [tmp_path / "t"]
+    folders[0].mkdir()
+    for n in range(60):
+        parent = rng.choice(folders)
+        if rng.random() < 0.5:
+            child = parent / f"d{n}"
+            child.mkdir()
+            folders.append(child)
+        else:
+            (parent / f"f{n}.lis").write_text("x\n")
+    (folders[3] / "to_top").symlink_to(tmp_path / "t")
+    (folders[4] / "dangling").symlink_to(tmp_path / "nowhere")
+    locked = folders[5] / "locked"
+    locked.mkdir()
+    (locked / "inside.lis").write_text("x\n")
+    locked.chmod(0)
+    try:
+        for prune in (False, True):
+            def listed(walker: Any) -> list[tuple[str, list[str], list[str]]]:
+                out = []
+                for root, dirs, files in walker:
+                    dirs.sort()
+                    if prune:
+                        dirs[:] = [d for d in dirs if not d.endswith("3")]
+                    out.append((root, list(dirs), sorted(files)))
+                return out
+
+            assert listed(walk(str(tmp_path / "t"))) == listed(os.walk(str(tmp_path / "t")))
+    finally:
+        locked.chmod(0o755)

@@ -4,6 +4,7 @@ from __future__ import annotations
 
 import io
 import json
+import os
 import random
 import resource
 import subprocess
@@ -445,3 +446,26 @@ def test_the_timing_fuzzer_finds_a_backtracking_pattern() -> None:
     old = re.compile(r"""(?:(?:[A-Za-z0-9_-]+|"[^"\n]*"|'[^'\n]*')[ \t]*\.[ \t]*){64}""")
     assert check(old, 500, 4, 10, 0.002, random.Random(0)) is not None
     assert check(re.compile(r"[A-Za-z_][A-Za-z0-9_]*"), 500, 4, 10, 0.002, random.Random(0), "match") is None
+
+
+def test_a_tree_nested_deeper_than_the_recursion_limit_is_walked(tmp_path: Path) -> None:
+    """A list 1,200 folders down (deeper than Python's recursion limit, which os.walk of 3.11 recursed
+    into) is found and linted: no internal error."""
+    folder = tmp_path / "tree"
+    folder.mkdir()
+    here = str(folder)
+    for _ in range(1200):
+        here += "/d"
+        Path(here).mkdir()
+    Path(here, "a.lis").write_text("kopf.achs_nr 1\nunknown_key_here 1\nEnde\n")
+    try:
+        out = subprocess.run([sys.executable, "-m", "zero", "lint", "--output-format", "json", "--no-cache", "tree"],
+                             cwd=tmp_path, capture_output=True, text=True, timeout=120, check=False)
+    finally:  # from the bottom up: shutil.rmtree (pytest's clean-up) recurses per level too
+        Path(here, "a.lis").unlink()
+        while here != str(folder):
+            os.rmdir(here)
+            here = os.path.dirname(here)
+    assert "internal error" not in out.stderr and out.returncode in (0, 1), out.stderr
+    found = json.loads(out.stdout)
+    assert found and all(f["path"].endswith("/d/a.lis") and f["path"].count("/d") == 1200 for f in found)

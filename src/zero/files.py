@@ -159,6 +159,34 @@ def _open_error(exc: OSError, path: str | os.PathLike[str]) -> ZeroError:
     return ZeroError(str(exc.strerror or exc), where)
 
 
+def walk(top: str | os.PathLike[str]) -> Iterator[tuple[str, list[str], list[str]]]:
+    """``os.walk(top)``: each folder below ``top`` (itself first) with the names of its folders and its other
+    entries, top-down, depth first, links to folders listed but not entered, a folder that cannot be read
+    skipped, and the folders a caller takes out of the list it was given not entered. A loop, not os.walk's
+    recursion (Python 3.11's): a tree nested deeper than the interpreter's recursion limit is walked like any
+    other instead of ending the run with a RecursionError."""
+    pending: list[str] = [os.fspath(top)]
+    while pending:
+        root = pending.pop()
+        dirs: list[str] = []
+        files: list[str] = []
+        try:
+            with os.scandir(root) as entries:
+                for entry in entries:
+                    try:
+                        is_dir = entry.is_dir()
+                    except OSError:
+                        is_dir = False
+                    (dirs if is_dir else files).append(entry.name)
+        except OSError:
+            continue
+        yield root, dirs, files
+        for name in reversed(dirs):  # the first one walked next, whole, as os.walk does
+            below = os.path.join(root, name)
+            if not os.path.islink(below):
+                pending.append(below)
+
+
 def check_regular(path: str | os.PathLike[str]) -> None:
     """Raise the reason :func:`read_file` would give if ``path`` is no readable regular file,
     without reading it (for paths named on the command line, checked before any work)."""

@@ -18,7 +18,7 @@ from zero.diagnostics import Severity
 from zero.engine.commands import Echo, LintRequest, parse_kind, run_lint
 from zero.engine.results import LintResult, Totals, tallied
 from zero.errors import ZeroError
-from zero.files import max_file_bytes, path_str, read_stream, write_report
+from zero.files import max_file_bytes, path_str, read_stream, walk, write_report
 from zero.output.formats import FORMATS, OUTPUT_FORMATS, STREAMED_FORMATS, emitter
 from zero.output.text import ProgressBar, printable, render_text, statistics, statistics_json
 
@@ -265,7 +265,7 @@ def _snapshot(paths: Sequence[str | Path]) -> dict[str, tuple[int, int]]:
 
     for p in paths:
         if os.path.isdir(p):
-            for root, dirs, files in os.walk(p):
+            for root, dirs, files in walk(p):
                 dirs[:] = [d for d in dirs if not d.startswith(".")]
                 for f in files:
                     look(os.path.join(root, f))

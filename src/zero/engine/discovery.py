@@ -9,7 +9,7 @@ import sys
 from collections.abc import Callable, Iterable
 
 from zero.errors import ZeroError
-from zero.files import check_regular, path_str, read_file
+from zero.files import check_regular, path_str, read_file, walk
 from zero.forms import PROJECT_SUFFIXES, WALKED_SUFFIXES, XML_SUFFIX, is_project, is_xml_name, xml_form
 
 TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (mypy and ruff read it alike)
@@ -112,7 +112,7 @@ def collect_files(paths: Iterable[FileName], include: Callable[[str], bool] | No
             respect = respect_gitignore(p) if callable(respect_gitignore) else respect_gitignore
             visible = git_visible(p, note) if respect else None
             found: list[str] = []
-            for root, dirs, files in os.walk(p):
+            for root, dirs, files in walk(p):
                 folder = path_str(root)
                 kept_dirs = [d for d in dirs if not d.startswith(".")]
                 dirs[:] = sorted(d for d in kept_dirs if not (exclude and exclude(joined(folder, d))))
@@ -145,7 +145,7 @@ def _walkable(directory: str, include: Callable[[str], bool] | None) -> int:
     """How many files below ``directory`` a walk would pick up by their names (for the count of
     what ``exclude`` skipped; hidden folders are never walked)."""
     n = 0
-    for root, dirs, files in os.walk(directory):
+    for root, dirs, files in walk(directory):
         dirs[:] = [d for d in dirs if not d.startswith(".")]
         folder = path_str(root)
         n += sum(1 for f in files if (include(joined(folder, f)) if include else f.lower().endswith(_WALKED)))

@@ -27,7 +27,7 @@ import stat
 from collections.abc import Callable, Iterator
 
 from zero.errors import ZeroError
-from zero.files import describe, path_str
+from zero.files import describe, path_str, walk
 from zero.forms import split_part
 from zero.records import Record
 
@@ -136,7 +136,7 @@ def _ignore_sources(directory: str, top: str, git_dir: str, excludes: str) -> It
         if os.path.normcase(d) == top or parent == d:
             break
         d = parent
-    for root, dirs, files in os.walk(directory):
+    for root, dirs, files in walk(directory):
         dirs[:] = [d for d in dirs if d != ".git"]
         if ".gitignore" in files:
             yield os.path.join(path_str(root), ".gitignore")

@@ -15,7 +15,7 @@ from pathlib import Path
 from typing import Protocol
 
 from zero.errors import ZeroError
-from zero.files import read_file, within
+from zero.files import read_file, walk, within
 from zero.forms import split_part
 from zero.markup.documents import embedded_documents, pick
 from zero.markup.tsproj import VIRTUAL_RE, Block, read_project
@@ -53,7 +53,7 @@ def _walk(folder: Path) -> dict[str, list[Path]]:
     """Every file below ``folder`` by its name in lower case (at most MAX_WALK entries looked at)."""
     out: dict[str, list[Path]] = {}
     seen = 0
-    for here, dirs, files in os.walk(folder):
+    for here, dirs, files in walk(folder):
         dirs.sort()
         for name in sorted(files):
             out.setdefault(name.lower(), []).append(Path(here) / name)
