@@ -16,6 +16,7 @@ import subprocess
 import sys
 import threading
 import time
+from collections.abc import Iterator
 from pathlib import Path
 
 import pytest
@@ -768,16 +769,17 @@ def test_walk_is_os_walk_without_its_recursion(tmp_path: Path) -> None:
     (locked / "inside.lis").write_text("x\n")
     locked.chmod(0)
     try:
-        for prune in (False, True):
-            def listed(walker: Any) -> list[tuple[str, list[str], list[str]]]:
-                out = []
-                for root, dirs, files in walker:
-                    dirs.sort()
-                    if prune:
-                        dirs[:] = [d for d in dirs if not d.endswith("3")]
-                    out.append((root, list(dirs), sorted(files)))
-                return out
+        def listed(walker: Iterator[tuple[str, list[str], list[str]]], prune: bool
+                   ) -> list[tuple[str, list[str], list[str]]]:
+            out = []
+            for root, dirs, files in walker:
+                dirs.sort()
+                if prune:
+                    dirs[:] = [d for d in dirs if not d.endswith("3")]
+                out.append((root, list(dirs), sorted(files)))
+            return out
 
-            assert listed(walk(str(tmp_path / "t"))) == listed(os.walk(str(tmp_path / "t")))
+        for prune in (False, True):
+            assert listed(walk(str(tmp_path / "t")), prune) == listed(os.walk(str(tmp_path / "t")), prune)
     finally:
         locked.chmod(0o755)

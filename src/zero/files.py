@@ -170,6 +170,7 @@ def walk(top: str | os.PathLike[str]) -> Iterator[tuple[str, list[str], list[str
         root = pending.pop()
         dirs: list[str] = []
         files: list[str] = []
+        folders: dict[str, bool] = {}  # a folder's name -> is it a link (as the listing says: no lstat each)
         try:
             with os.scandir(root) as entries:
                 for entry in entries:
@@ -177,13 +178,18 @@ def walk(top: str | os.PathLike[str]) -> Iterator[tuple[str, list[str], list[str
                         is_dir = entry.is_dir()
                     except OSError:
                         is_dir = False
-                    (dirs if is_dir else files).append(entry.name)
+                    if is_dir:
+                        dirs.append(entry.name)
+                        folders[entry.name] = entry.is_symlink()
+                    else:
+                        files.append(entry.name)
         except OSError:
             continue
         yield root, dirs, files
         for name in reversed(dirs):  # the first one walked next, whole, as os.walk does
             below = os.path.join(root, name)
-            if not os.path.islink(below):
+            link = folders.get(name)
+            if not (os.path.islink(below) if link is None else link):  # (a name the caller added: asked)
                 pending.append(below)
 
 

@@ -295,6 +295,10 @@ def test_a_folder_thousands_of_levels_deep_is_resolved(tmp_path: Path, monkeypat
     deep = "/".join(["d"] * 1500)
     for level in range(1, 1501):  # (os.makedirs recurses per level)
         os.mkdir("/".join(["d"] * level))
-    with one_resolution():
-        assert config_module._resolved_folder(deep) == os.path.realpath(deep)
-        assert config_module._resolved_folder(deep + "/..") == os.path.realpath(deep + "/..")
+    try:
+        with one_resolution():
+            assert config_module._resolved_folder(deep) == os.path.realpath(deep)
+            assert config_module._resolved_folder(deep + "/..") == os.path.realpath(deep + "/..")
+    finally:  # from the bottom up: shutil.rmtree (pytest's clean-up of old temporary folders) recurses per level
+        for level in range(1500, 0, -1):
+            os.rmdir("/".join(["d"] * level))

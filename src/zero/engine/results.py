@@ -41,8 +41,11 @@ class LintResult(Record):
         return max((d.severity for d in self.diagnostics), default=None)
 
 
+UNREADABLE = "F001"  # the code of a file zero could not read
+
+
 def is_unreadable(result: LintResult) -> bool:
-    return any(d.code == "F001" for d in result.diagnostics)
+    return any(d.code == UNREADABLE for d in result.diagnostics)
 
 
 class Totals(Record):
@@ -69,7 +72,7 @@ class Totals(Record):
             severity, code = d.severity, d.code
             by_severity[severity] = by_severity.get(severity, 0) + 1
             by_code[code] = by_code.get(code, 0) + 1
-            if code == "F001":  # is_unreadable, in the same pass
+            if code == UNREADABLE:  # is_unreadable, in the same pass
                 unreadable = True
         self.worst = max(by_severity)  # the worst of every finding counted so far
         if unreadable:
