@@ -16,7 +16,8 @@ SRC = ROOT / "src"
 
 # component → the components it may import (besides itself)
 # foundation: zero (version), zero.errors, zero.records, zero.record_inits(_rest), zero.hints, zero.diagnostics,
-# zero.files, zero.forms, zero.patterns (with zero.pattern_codes), zero.bundles (with zero.bundled_modules)
+# zero.files, zero.forms, zero.patterns (with zero.pattern_codes), zero.bundles (with zero.bundled_modules),
+# zero.nearest
 FOUNDATION = "foundation"
 ALLOWED: dict[str, set[str]] = {
     FOUNDATION: set(),
@@ -51,7 +52,7 @@ def component(module: str) -> str:
     parts = module.split(".")
     if len(parts) == 1 or parts[1] in ("errors", "records", "record_inits", "record_inits_rest", "hints",
                                        "diagnostics", "files", "forms", "patterns", "pattern_codes", "bundles",
-                                       "bundled_modules", "__main__"):
+                                       "bundled_modules", "nearest", "__main__"):
         return FOUNDATION if parts[-1] != "__main__" else "cli"
     return parts[1]
 

@@ -145,9 +145,9 @@ def close_matches(word: str, candidates: Iterable[str], cutoff: float = SUGGEST_
 
     difflib's default cutoff (0.6) suggests ``--jobs`` for ``--bogus`` and ``per-file-ignores``
     for ``respect-gitignore``: only close ones are offered."""
-    import difflib  # start-up: only for a word that is not known
+    from zero.nearest import close_matches as nearest  # start-up: only for a word that is not known
 
-    return difflib.get_close_matches(word, list(candidates), n=3, cutoff=cutoff)
+    return nearest(word, candidates, n=3, cutoff=cutoff)
 
 
 def did_you_mean(word: str, candidates: Iterable[str]) -> str:

@@ -861,6 +861,17 @@ class Document:
             return [i for i in self.items if type(i) is not Entry or i.after_end]
         return [i for i in self._slow if type(i) is not Entry or i.after_end]
 
+    def comments_in_head(self, n: int) -> list[Comment]:
+        """The full-line comments among the first ``n`` items (those of ``items[:n]``), without building an
+        entry (a list's header comments: reading them built every entry of the list)."""
+        if self._items is not None or self._columns is None or self._text is None:
+            return [i for i in self.items[:n] if type(i) is Comment]
+        others = self.other_items()[:n]
+        # the line of the n-th item: the first n of each kind's lines hold the first n of both
+        lines = sorted({*self._columns.line[:n], *(o.line for o in others)})[:n]
+        last = lines[-1] if lines else 0
+        return [c for c in others if type(c) is Comment and c.line <= last]
+
     def _stream(self, build: bool = False) -> Iterator[Item]:
         """The items in line order, each built when reached (``build``: all at once, first)."""
         if self._items is not None:

@@ -13,7 +13,7 @@ from zero.catalog.registry import BUILTIN_SOURCE, KINDS, ParamSpec, Registry, wr
 from zero.catalog.values import Resolved, Value, default_number, plain_number, take
 from zero.diagnostics import Diagnostic, Edit, Fix, Related, Span
 from zero.errors import ZeroError
-from zero.lists.model import HUGE_INDEX, Comment, Entry, ValueKind, format_key
+from zero.lists.model import HUGE_INDEX, Entry, ValueKind, format_key
 from zero.patterns import compiled
 from zero.records import replace
 from zero.rules.base import INFO, Context, E, Family, W
@@ -266,12 +266,11 @@ def _kernel_of(ctx: Context) -> tuple[int, ...] | None:
 
     text = ctx.kernel
     if text is None:
-        for item in ctx.doc.items[:40]:
-            if type(item) is Comment:
-                m = compiled(_HEADER_RELEASE).search(ctx.doc.lines[item.line - 1])
-                if m is not None:
-                    text = m.group(1)
-                    break
+        for item in ctx.doc.comments_in_head(40):
+            m = compiled(_HEADER_RELEASE).search(ctx.doc.lines[item.line - 1])
+            if m is not None:
+                text = m.group(1)
+                break
     try:
         return parse_release(text) if text else None
     except ZeroError:
@@ -900,9 +899,9 @@ def _check_value(ctx: Context, res: Resolved) -> Iterator[Diagnostic]:
         return
     if v.problem == "symbol":
         names = [s for s, _ in spec.symbols]
-        import difflib  # start-up: only for a value that is not allowed
+        from zero.nearest import close_matches  # start-up: only for a value that is not allowed
 
-        near = difflib.get_close_matches(v.detail, names, n=1, cutoff=0.6)
+        near = close_matches(v.detail, names, n=1, cutoff=0.6)
         shown = ", ".join(names[:8]) + (", …" if len(names) > 8 else "")
         yield ctx.report(
             "R005",
