@@ -17,6 +17,7 @@ def fresh(monkeypatch: pytest.MonkeyPatch) -> None:
     """Nothing of the table read yet, as at a run's first finding."""
     monkeypatch.setattr(evidence, "_table", None)
     monkeypatch.setattr(evidence, "_built", {})
+    monkeypatch.setattr(evidence, "_chosen", {})
     monkeypatch.setattr(evidence, "_named", {})
 
 

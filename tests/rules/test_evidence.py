@@ -205,6 +205,7 @@ def test_a_claim_is_built_at_its_first_use_and_each_row_once(monkeypatch: pytest
     from zero.catalog import evidence
 
     monkeypatch.setattr(evidence, "_built", {})
+    monkeypatch.setattr(evidence, "_chosen", {})
     first = evidence.claim("style")
     assert list(evidence._built) == ["style"] and evidence.claim("style") is first
     every = evidence.claims()

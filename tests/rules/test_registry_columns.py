@@ -213,3 +213,59 @@ def test_a_clean_list_builds_no_entry_in_the_r_checks() -> None:
     for check, _ in PAIRS:
         assert list(check(ctx)) == []
     assert len(ctx.doc.columns.objects) - built <= 2  # a value's verdict needs no entry either
+
+
+def _past_the_cap_list(pid: str) -> str:
+    """MAX_PER_CODE + 700 rows: made-up keys of 13 patterns without a comment (R001), and among them made-up
+    keys with a comment (R001 too, their comment read), a key an annotation names today's parameter of (R013)
+    and the same key without the annotation (R001)."""
+    rows = []
+    for i in range(MAX_PER_CODE + 700):
+        if i % 50 == 7:
+            rows.append(f"alt.swe_pos {i} ( {pid} : the software limit\n")
+        elif i % 50 == 8:  # the annotated rows' pattern without a comment: R001 (the comment decides)
+            rows.append(f"alt.swe_pos {i}\n")
+        elif i % 50 == 9:
+            rows.append(f"unknown_thing[{i}] 1 ( a comment\n")
+        else:
+            rows.append(f"unknown_key_{i % 13}.member[{i}] 1\n")
+    return "".join(rows)
+
+
+def test_past_the_cap_a_key_finding_is_counted_by_its_code_alone(monkeypatch: pytest.MonkeyPatch) -> None:
+    """A list of a million made-up keys built a million entries and findings to show ten thousand and count
+    the rest. A row without a comment whose pattern's code is past the cap is now counted by its code alone:
+    the findings, and the one that counts the rest, are those of the whole path, and those rows build no entry."""
+    from zero.rules.base import run_checks
+    from zero.rules.lists import CHECKS
+
+    pid = builtin_registry().by_pattern("kenngr.swe_pos", "AXIS").id  # type: ignore[union-attr]
+    text = _past_the_cap_list(pid)
+    ctx = _context(text, "AXIS")
+    visited: list[int] = []
+    finding = R._row_finding
+
+    def counted(*args: Any) -> Diagnostic | None:
+        visited.append(args[1].line)
+        return finding(*args)
+
+    with monkeypatch.context() as m:
+        m.setattr(R, "_row_finding", counted)
+        found = run_checks(CHECKS, ctx)
+    with monkeypatch.context() as m:  # the whole path: no tally, so every row is built and reported
+        m.setattr(Context, "tally", property(lambda self: None, lambda self, value: None))
+        whole = _context(text, "AXIS")
+        reference = run_checks(CHECKS, whole)
+        assert len(whole.doc.columns.objects) == MAX_PER_CODE + 700
+    assert found == reference
+    codes = [d.code for d in found]
+    assert codes.count("R013") == (MAX_PER_CODE + 700) // 50
+    assert codes.count("R001") == MAX_PER_CODE + 1
+    more = [d for d in found if d.message.startswith(f"{MAX_PER_CODE + 700 - codes.count('R013') - MAX_PER_CODE} "
+                                                      "more R001 findings")]
+    assert len(more) == 1
+    # the rows past the cap without a comment: neither an entry nor a finding made (those with one: read)
+    commented = sum(1 for line in visited if (line - 1) % 50 in (7, 9))
+    assert commented == 2 * (MAX_PER_CODE + 700) // 50
+    plain = len(visited) - commented  # up to the 10,001st R001, the commented ones among them counted too
+    assert MAX_PER_CODE + 1 - commented // 2 <= plain <= MAX_PER_CODE + 1

@@ -42,6 +42,7 @@ class Claim(Record, frozen=True):
 
 _table: tuple[str, str] | None = None  # the table's claims and rules, as written (read once)
 _built: dict[str, list[Claim]] = {}  # claim name -> its rows as claims (each name's at its first use)
+_chosen: dict[tuple[str, str | None], Claim] = {}  # (claim name, list kind) -> the claim (each pair's at its first use)
 _named: dict[str, str | None] = {}  # rule code -> the name of its claim (each code's at its first use)
 _drives: list[tuple[str, tuple[int, ...], str]] | None = None
 
@@ -82,14 +83,16 @@ def _claims(name: str) -> list[Claim]:
 
 
 def claim(name: str, kind: str | None = None) -> Claim:
-    """The claim ``name`` for a list of ``kind``: its first row that holds for the kind."""
-    rows = _built.get(name) or _claims(name)
-    if not rows:
-        raise KeyError(f"no claim {name!r} in the evidence table")
-    for c in rows:
-        if c.holds_for(kind):
-            return c
-    return rows[-1]
+    """The claim ``name`` for a list of ``kind``: its first row that holds for the kind (chosen once per
+    name and kind: a list of many findings asks for the same two or three claims for each)."""
+    got = _chosen.get((name, kind))
+    if got is None:
+        rows = _built.get(name) or _claims(name)
+        if not rows:
+            raise KeyError(f"no claim {name!r} in the evidence table")
+        got = next((c for c in rows if c.holds_for(kind)), rows[-1])
+        _chosen[(name, kind)] = got
+    return got
 
 
 def _claim_name(code: str) -> str | None:

@@ -135,6 +135,9 @@ class Context(ListValues, Reporter, Record):
     severities: dict[str, Severity] = field(default_factory=dict)
     kernel: str | None = None  # the kernel release the machine runs, where the configuration says it
     default_list: bool = False  # a default list (the template read under the lists of its kind)
+    # code -> the findings of this list counted so far (run_checks's): a check may yield a finding's code alone
+    # where more than MAX_PER_CODE + 1 of it are counted (it is counted, not shown: see run_checks)
+    tally: dict[str, int] | None = None
 
     @property
     def path(self) -> str:  # type: ignore[override]
@@ -165,13 +168,14 @@ class ProgramContext(Reporter, Record):
 
 
 C = TypeVar("C", Context, MachineContext, ProgramContext)
+_Run = TypeVar("_Run", bound="Callable[..., Iterator[Diagnostic | str]]")  # a check function, as declared
 
 
 class Check(Generic[C], Record, frozen=True):
     """A check and the rules it reports (the engine skips it when none of them is selected)."""
 
     codes: tuple[str, ...]
-    run: Callable[[C], Iterator[Diagnostic]]
+    run: Callable[[C], Iterator[Diagnostic | str]]  # a code alone: a finding past the cap (run_checks)
 
     def wanted(self, severities: dict[str, Severity]) -> bool:
         return not severities.keys().isdisjoint(self.codes)  # no generator left unfinished (GeneratorExit)
@@ -228,10 +232,9 @@ class Family(Generic[C]):
         """Declare a rule of this family (its code is never reused) and the parameters it reads."""
         return self._add(Rule(code, name, severity, summary, explanation, self.scope, opt_in, reads))
 
-    def check(self, *rules: Rule | str) -> Callable[[Callable[[C], Iterator[Diagnostic]]],
-                                                     Callable[[C], Iterator[Diagnostic]]]:
+    def check(self, *rules: Rule | str) -> Callable[[_Run], _Run]:
         """Declare the function below as the check that reports ``rules`` (rules, or their codes)."""
-        def register(run: Callable[[C], Iterator[Diagnostic]]) -> Callable[[C], Iterator[Diagnostic]]:
+        def register(run: _Run) -> _Run:
             self.checks.append(Check(tuple(r if isinstance(r, str) else r.code for r in rules), run))
             return run
 
@@ -250,10 +253,15 @@ def run_checks(checks: Sequence[Check[C]], context: C) -> list[Diagnostic]:
     out: list[Diagnostic] = []
     counts: dict[str, int] = {}
     more: dict[str, Diagnostic] = {}
+    if isinstance(context, Context):
+        context.tally = counts  # a check that can tell a finding's code cheaply yields the code alone past the cap
     for check in checks:
         if not check.wanted(severities):
             continue
         for d in check.run(context):
+            if isinstance(d, str):  # a finding past the cap, counted only (a million made-up keys: no million findings)
+                counts[d] = counts.get(d, 0) + 1
+                continue
             n = counts.get(d.code, 0) + 1
             counts[d.code] = n
             if n <= MAX_PER_CODE:

@@ -16,7 +16,7 @@ from zero.errors import ZeroError
 from zero.lists.model import HUGE_INDEX, Entry, ValueKind, format_key
 from zero.patterns import compiled
 from zero.records import replace
-from zero.rules.base import INFO, Context, E, Family, W
+from zero.rules.base import INFO, MAX_PER_CODE, Context, E, Family, W
 
 TYPE_CHECKING = False  # typing.TYPE_CHECKING without importing typing (mypy and ruff read it alike)
 if TYPE_CHECKING:
@@ -128,7 +128,7 @@ Fix: on a newer kernel, use today's key (an unsafe fix proposes it); on the old 
 
 
 @FAMILY.check(UNKNOWN_KEY, ALIAS_KEY, INDEX_OUT_OF_RANGE, VENDOR_KEY, OTHER_RELEASE)
-def check_keys(ctx: Context) -> Iterator[Diagnostic]:
+def check_keys(ctx: Context) -> Iterator[Diagnostic | str]:
     """R001, R002, R003: key known, spelling documented, indices inside the arrays."""
     reg = ctx.registry
     proposed: set[str] = set()  # unknown patterns a spelling was looked for (the first SUGGESTIONS)
@@ -174,53 +174,72 @@ def check_keys(ctx: Context) -> Iterator[Diagnostic]:
             if min(firsts) < low or max(firsts) >= end:
                 rows.extend(r for r, first in zip(group, firsts, strict=True) if not low <= first < end)
     rows.sort()
+    tally = ctx.tally
+    # a pattern -> the code of its rows without a comment: decided by the pattern (and the list), so where that
+    # code is past the cap (run_checks), such a row is counted by its code alone, without building its entry
+    settled: dict[int, str] = {}
+    comment_of, pattern_of = cols.comment, cols.pattern
     for row in rows:
-        e = ctx.entry_at(row)
-        key = e.key
-        assert key is not None  # a row of a group
-        found = known_specs[key.pattern] if key.pattern in known_specs else reg.by_pattern(key.pattern, ctx.kind)
-        if found is None:
-            alias = reg.alias(key.pattern, ctx.kind)
-            if alias is not None:
-                yield ctx.report(
-                    "R002",
-                    _key_span(e),
-                    f"`{e.key_text}` is not in the parameter description; it stands for "
-                    f"`{alias.key}` ({alias.id}), and the vendor's own lists write it: evidence that the kernel "
-                    "of their release accepts it (its value is checked as the documented parameter's)",
-                    param_id=alias.id,
-                    hint=f"use `{format_key(alias.key or '', key.indices)}`",
-                    fix=Fix(
-                        f"Use the documented key `{alias.key}`",
-                        (Edit(_key_span(e), format_key(alias.key or "", key.indices)),),
-                        safe=False,
-                    ),
-                )
+        plain = comment_of[row] < 0
+        if plain and tally is not None:
+            code = settled.get(pattern_of[row])
+            if code is not None and tally.get(code, 0) > MAX_PER_CODE:
+                yield code
                 continue
-            vendor = reg.vendor_keys.get((ctx.kind or "", key.pattern))
-            if vendor is not None:
-                yield _vendor_key(ctx, e, *vendor)
-                continue
-            propose = key.pattern in proposed or len(proposed) < SUGGESTIONS
-            if propose:
-                proposed.add(key.pattern)
-            release = _other_release(ctx, e, known, propose)
-            yield release if release is not None else _unknown_key(ctx, e, propose, known)
-            continue
-        where = found.index_outside(key.indices)
-        if where is not None:
-            pos, idx = where
-            members = key.members
-            member = members[pos] if pos < len(members) else "?"
-            name = key.pattern.split("[]")[pos].rsplit(".", 1)[-1] or member
-            shown = str(idx) if idx < 10**18 else f"{str(idx)[:6]}…"
-            yield ctx.report(
-                "R003",
+        d = _row_finding(ctx, ctx.entry_at(row), known_specs, known, proposed)
+        if d is not None:
+            if plain:
+                settled[pattern_of[row]] = d.code
+            yield d
+
+
+def _row_finding(ctx: Context, e: Entry, known_specs: dict[str, ParamSpec | None], known: dict[str, Any],
+                 proposed: set[str]) -> Diagnostic | None:
+    """The finding of a row check_keys visits (its key unknown, or an index outside its array), if any."""
+    reg = ctx.registry
+    key = e.key
+    assert key is not None  # a row of a group
+    found = known_specs[key.pattern] if key.pattern in known_specs else reg.by_pattern(key.pattern, ctx.kind)
+    if found is None:
+        alias = reg.alias(key.pattern, ctx.kind)
+        if alias is not None:
+            return ctx.report(
+                "R002",
                 _key_span(e),
-                f"index {shown} of `{name}` is outside {found.valid_indices(pos)}: the element does not exist; "
-                f"{says(ctx, 'unknown-element')}",
-                param_id=found.id,
+                f"`{e.key_text}` is not in the parameter description; it stands for "
+                f"`{alias.key}` ({alias.id}), and the vendor's own lists write it: evidence that the kernel "
+                "of their release accepts it (its value is checked as the documented parameter's)",
+                param_id=alias.id,
+                hint=f"use `{format_key(alias.key or '', key.indices)}`",
+                fix=Fix(
+                    f"Use the documented key `{alias.key}`",
+                    (Edit(_key_span(e), format_key(alias.key or "", key.indices)),),
+                    safe=False,
+                ),
             )
+        vendor = reg.vendor_keys.get((ctx.kind or "", key.pattern))
+        if vendor is not None:
+            return _vendor_key(ctx, e, *vendor)
+        propose = key.pattern in proposed or len(proposed) < SUGGESTIONS
+        if propose:
+            proposed.add(key.pattern)
+        release = _other_release(ctx, e, known, propose)
+        return release if release is not None else _unknown_key(ctx, e, propose, known)
+    where = found.index_outside(key.indices)
+    if where is None:
+        return None
+    pos, idx = where
+    members = key.members
+    member = members[pos] if pos < len(members) else "?"
+    name = key.pattern.split("[]")[pos].rsplit(".", 1)[-1] or member
+    shown = str(idx) if idx < 10**18 else f"{str(idx)[:6]}…"
+    return ctx.report(
+        "R003",
+        _key_span(e),
+        f"index {shown} of `{name}` is outside {found.valid_indices(pos)}: the element does not exist; "
+        f"{says(ctx, 'unknown-element')}",
+        param_id=found.id,
+    )
 
 
 def _inside(bounds: tuple[tuple[int, int], ...], indices: tuple[int, ...]) -> bool:
