@@ -252,6 +252,8 @@ def test_past_the_cap_a_key_finding_is_counted_by_its_code_alone(monkeypatch: py
     with monkeypatch.context() as m:
         m.setattr(R, "_row_finding", counted)
         found = run_checks(CHECKS, ctx)
+    assert ctx.tally is None  # the counts are run_checks's while it runs: a check called after yields findings
+    assert all(isinstance(d, Diagnostic) for d in R.check_keys(ctx))
     with monkeypatch.context() as m:  # the whole path: no tally, so every row is built and reported
         m.setattr(Context, "tally", property(lambda self: None, lambda self, value: None))
         whole = _context(text, "AXIS")

@@ -135,8 +135,8 @@ class Context(ListValues, Reporter, Record):
     severities: dict[str, Severity] = field(default_factory=dict)
     kernel: str | None = None  # the kernel release the machine runs, where the configuration says it
     default_list: bool = False  # a default list (the template read under the lists of its kind)
-    # code -> the findings of this list counted so far (run_checks's): a check may yield a finding's code alone
-    # where more than MAX_PER_CODE + 1 of it are counted (it is counted, not shown: see run_checks)
+    # code -> the findings of this list counted so far, while run_checks runs the checks: a check may yield a
+    # finding's code alone where MAX_PER_CODE + 1 of that code are counted already (it is counted, not shown)
     tally: dict[str, int] | None = None
 
     @property
@@ -248,26 +248,33 @@ def run_checks(checks: Sequence[Check[C]], context: C) -> list[Diagnostic]:
     """The findings of the checks that report any selected rule (``context.severities``: a pre-filter
     for speed; what is reported is the funnel's decision, :mod:`zero.rules.funnel`): at most
     ``MAX_PER_CODE`` of one code, and then one that counts the rest (a file of five million
-    malformed lines held five million findings: 9 GB and minutes; one root cause, a bounded report)."""
+    malformed lines held five million findings: 9 GB and minutes; one root cause, a bounded report).
+    While they run, ``context.tally`` (a list's) holds the counts, and a check may yield a finding's code
+    alone, unbuilt, where ``MAX_PER_CODE + 1`` of it are counted already: it is counted the same."""
     severities = context.severities
     out: list[Diagnostic] = []
     counts: dict[str, int] = {}
     more: dict[str, Diagnostic] = {}
-    if isinstance(context, Context):
-        context.tally = counts  # a check that can tell a finding's code cheaply yields the code alone past the cap
-    for check in checks:
-        if not check.wanted(severities):
-            continue
-        for d in check.run(context):
-            if isinstance(d, str):  # a finding past the cap, counted only (a million made-up keys: no million findings)
-                counts[d] = counts.get(d, 0) + 1
+    tallied = context if isinstance(context, Context) else None
+    if tallied is not None:
+        tallied.tally = counts  # a check that can tell a finding's code cheaply yields the code alone past the cap
+    try:
+        for check in checks:
+            if not check.wanted(severities):
                 continue
-            n = counts.get(d.code, 0) + 1
-            counts[d.code] = n
-            if n <= MAX_PER_CODE:
-                out.append(d)
-            elif n == MAX_PER_CODE + 1:
-                more[d.code] = d
+            for d in check.run(context):
+                if isinstance(d, str):  # past the cap, counted only (a million made-up keys: no million findings)
+                    counts[d] = counts.get(d, 0) + 1
+                    continue
+                n = counts.get(d.code, 0) + 1
+                counts[d.code] = n
+                if n <= MAX_PER_CODE:
+                    out.append(d)
+                elif n == MAX_PER_CODE + 1:
+                    more[d.code] = d
+    finally:
+        if tallied is not None:
+            tallied.tally = None  # a check called on its own afterwards yields findings only
     for code, first in more.items():
         rest = counts[code] - MAX_PER_CODE
         out.append(Diagnostic(code, first.severity, f"{rest} more {code} finding{'s' if rest != 1 else ''} in this "
