@@ -3,7 +3,6 @@ relative to the repository, fingerprints that survive moved lines, and where the
 
 from __future__ import annotations
 
-import json
 import os
 from collections.abc import Iterable, Iterator
 
@@ -21,7 +20,12 @@ def each(results: Iterable[LintResult]) -> Iterator[Diagnostic]:
         yield from r.diagnostics
 
 
-ESCAPE = json.encoder.encode_basestring_ascii  # the C function json.dumps writes a string with (ensure_ascii)
+# the C function json.dumps writes a string with (ensure_ascii), taken from json's own C module: the json package
+# imports its decoder, and the decoder re (a JSON report's lint imported re for it alone)
+try:
+    from _json import encode_basestring_ascii as ESCAPE
+except ImportError:  # a Python without it: json's own (its pure-Python escaper, the same text)
+    from json.encoder import encode_basestring_ascii as ESCAPE
 _ESCAPE = ESCAPE
 _PADS = ["\n" + "  " * n for n in range(33)]
 
@@ -53,7 +57,11 @@ def _scalar(value: Any) -> str | None:
 
 
 def _key(key: Any) -> str:
-    return _ESCAPE(key if isinstance(key, str) else json.dumps(key))
+    if isinstance(key, str):
+        return _ESCAPE(key)
+    import json  # start-up: only for a key that is no string
+
+    return _ESCAPE(json.dumps(key))
 
 
 def indented_json(value: Any, level: int = 0) -> str:
@@ -106,7 +114,11 @@ def _write(value: Any, level: int, out: list[str]) -> None:
         out.append((_PADS[level] if level < 33 else "\n" + "  " * level) + "]")
         return
     text = _scalar(value)
-    out.append(text if text is not None else json.dumps(value))
+    if text is None:
+        import json  # start-up: only for a value that is no scalar, list or mapping
+
+        text = json.dumps(value)
+    out.append(text)
 
 
 def repo_path(path: str, root: str | None = None) -> str:
