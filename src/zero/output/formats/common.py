@@ -23,9 +23,10 @@ def each(results: Iterable[LintResult]) -> Iterator[Diagnostic]:
 # the C function json.dumps writes a string with (ensure_ascii), taken from json's own C module: the json package
 # imports its decoder, and the decoder re (a JSON report's lint imported re for it alone)
 try:
-    from _json import encode_basestring_ascii as ESCAPE
+    from _json import encode_basestring_ascii as _c_escape
 except ImportError:  # a Python without it: json's own (its pure-Python escaper, the same text)
-    from json.encoder import encode_basestring_ascii as ESCAPE
+    from json.encoder import encode_basestring_ascii as _c_escape
+ESCAPE = _c_escape
 _ESCAPE = ESCAPE
 _PADS = ["\n" + "  " * n for n in range(33)]
 
